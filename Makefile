@@ -1,0 +1,32 @@
+# Two commands for a fresh machine: `make demo` and `make test`. Both create .venv when missing.
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+EXTRAS := test,plot,units
+
+.PHONY: demo test lint generate check accuracy benchmark clean
+
+$(STAMP): pyproject.toml constraints.txt
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -c constraints.txt -e ".[$(EXTRAS)]"
+	touch $(STAMP)
+
+demo: $(STAMP)
+	$(PY) -m hertzmdr.numeric.demo
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check derive numeric tests benchmarks examples
+
+check: $(STAMP)
+	$(PY) -m hertzmdr.derive --check
+
+test: lint check
+	$(PY) -m pytest -q
+
+generate: $(STAMP)
+	$(PY) -m hertzmdr.derive
+
+clean:
+	rm -rf $(VENV) .pytest_cache .hypothesis .ruff_cache

@@ -1,0 +1,61 @@
+"""``python -m hertzmdr.derive [--check]``: write, or check, the generated files."""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import sys
+from pathlib import Path
+
+from hertzmdr.derive.codegen import render_derivations, render_errata, render_module
+from hertzmdr.derive.relation import all_relations
+
+ROOT = Path(__file__).resolve().parents[1]
+
+parser = argparse.ArgumentParser(
+    prog="python -m hertzmdr.derive",
+    description="Derive the chapter's relations with SymPy and print them into "
+    "numeric/_generated.py, docs/derivations.md and docs/errata.md.",
+)
+parser.add_argument("--check", action="store_true",
+                    help="write nothing; exit 1 with a diff if a generated file is stale")
+
+
+def targets() -> dict[Path, str]:
+    relations = all_relations()
+    return {
+        ROOT / "numeric" / "_generated.py": render_module(relations),
+        ROOT / "docs" / "derivations.md": render_derivations(relations),
+        ROOT / "docs" / "errata.md": render_errata(relations),
+    }
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = parser.parse_args(argv)
+    if not (ROOT / "numeric").is_dir() or not (ROOT / "docs").is_dir():
+        print(f"{ROOT} is not a source checkout (no numeric/ and docs/ beside derive/)",
+              file=sys.stderr)
+        return 2
+    stale = 0
+    for path, text in targets().items():
+        old = path.read_text() if path.exists() else ""
+        if old == text:
+            continue
+        rel = path.relative_to(ROOT)
+        if args.check:
+            stale += 1
+            sys.stdout.writelines(difflib.unified_diff(
+                old.splitlines(keepends=True), text.splitlines(keepends=True),
+                f"{rel} (committed)", f"{rel} (regenerated)", n=2))
+        else:
+            path.write_text(text)
+            print(f"wrote {rel}")
+    if stale:
+        print(f"\n{stale} generated file(s) stale: run `python -m hertzmdr.derive` "
+              "(make generate) and commit the result.", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,167 @@
+"""Print the derived relations as a NumPy module and as Markdown.
+
+The output is deterministic: relations are sorted by name, and everything printed is a pure
+function of the relations and the pinned SymPy release (``constraints.txt``).
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import sympy as sp
+from sympy.printing.numpy import SciPyPrinter
+
+from hertzmdr.derive.relation import Relation
+from hertzmdr.derive.symbols import DESCRIPTIONS
+
+COMMAND = "python -m hertzmdr.derive"
+
+MODULE_HEADER = f'''\
+"""Functions generated from the SymPy derivations in ``hertzmdr.derive``.
+
+GENERATED FILE -- DO NOT EDIT. Written by ``{COMMAND}`` (``make generate``);
+``{COMMAND} --check`` fails when this file is stale. Each function cites the chapter's
+equation, the derivation it comes from and the test that verifies it by an independent route.
+Arguments are floats or NumPy arrays in SI units; they are not validated here -- the
+hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
+"""
+
+import numpy
+
+'''
+
+
+class _Printer(SciPyPrinter):
+    """SciPy printer that refuses to print what it does not know, instead of a comment."""
+
+    def _print_Pi(self, expr):  # numpy.pi, not scipy.constants.pi: no SciPy import for pi
+        return "numpy.pi"
+
+    def _print_Exp1(self, expr):
+        return "numpy.e"
+
+    def _print_EulerGamma(self, expr):
+        return "numpy.euler_gamma"
+
+    def _print_hyper(self, expr):
+        if len(expr.ap) != 2 or len(expr.bq) != 1:
+            return self._print_not_supported(expr)
+        args = ", ".join(self._print(e) for e in (*expr.ap, *expr.bq, expr.argument))
+        return f"scipy.special.hyp2f1({args})"
+
+    # SymPy's elliptic_k(m), elliptic_e(m) and SciPy's ellipk(m), ellipe(m) share the parameter
+    # convention m = k^2.
+    def _print_elliptic_k(self, expr):
+        return f"scipy.special.ellipk({self._print(expr.args[0])})"
+
+    def _print_elliptic_e(self, expr):
+        if len(expr.args) != 1:
+            return self._print_not_supported(expr)
+        return f"scipy.special.ellipe({self._print(expr.args[0])})"
+
+    def _print_not_supported(self, expr):
+        raise ValueError(f"cannot print {expr!r} as NumPy/SciPy code")
+
+
+def print_expr(expr: sp.Expr) -> str:
+    printer = _Printer({"fully_qualified_modules": True, "inline": True,
+                        "allow_unknown_functions": False})
+    return printer.doprint(expr)
+
+
+def _arg_lines(rel: Relation) -> str:
+    lines = []
+    for s in rel.args:
+        unit, meaning = DESCRIPTIONS[s.name]
+        lines.append(f"{s.name} : float or ndarray\n    {meaning} [{unit}]")
+    return "\n".join(lines)
+
+
+def render_function(rel: Relation) -> str:
+    code = print_expr(rel.expr)
+    needed = [m for m in ("functools", "scipy.special") if f"{m}." in code]
+    imports = "".join(f"    import {m}\n" for m in needed) + ("\n" if needed else "")
+    notes = [f"Chapter: {rel.equation}. Derived from: {rel.origin}.",
+             f"Derivation: ``hertzmdr.derive.{rel.family}``. Verified by ``{rel.verified_by}``."]
+    if rel.stable_why:
+        notes.append(f"Printed in a stable form: {rel.stable_why}.")
+    if rel.erratum:
+        notes.append(f"Differs from the print (see docs/errata.md): {rel.erratum}")
+    notes_text = "\n\n".join(textwrap.fill(n, 88) for n in notes)
+    summary = rel.summary[0].upper() + rel.summary[1:]
+    doc = (f"{summary}.\n\n{notes_text}\n\n"
+           f"Parameters\n----------\n{_arg_lines(rel)}\n")
+    doc = textwrap.indent(doc, "    ").rstrip() + "\n    "
+    doc = doc.replace("\\", "\\\\")
+    argstr = ", ".join(s.name for s in rel.args)
+    return f'def {rel.name}({argstr}):\n    """{doc.lstrip()}"""\n{imports}    return {code}\n'
+
+
+def render_module(relations: list[Relation]) -> str:
+    parts = [MODULE_HEADER]
+    names = [rel.name for rel in relations]
+    parts.append("__all__ = [\n" + "".join(f"    {n!r},\n" for n in names) + "]\n")
+    for rel in relations:
+        parts.append("\n\n" + render_function(rel))
+    return "".join(parts)
+
+
+def _latex(expr: sp.Expr) -> str:
+    return sp.latex(expr, symbol_names={sp.Symbol("E_star", positive=True): "E^*"})
+
+
+def render_derivations(relations: list[Relation]) -> str:
+    out = ["# Derived relations\n\n",
+           f"<!-- GENERATED FILE -- DO NOT EDIT. Written by `{COMMAND}`; "
+           "`--check` fails when stale. -->\n\n",
+           "Every relation below is derived with SymPy in `derive/` from its starting point, "
+           "printed into `numeric/_generated.py`, and verified by the test named beside it "
+           "through an independent route (quadrature of the pressure, the Boussinesq kernel, "
+           "the equation of motion). Units are SI.\n\n"]
+    by_family: dict[str, list[Relation]] = {}
+    for rel in relations:
+        by_family.setdefault(rel.family, []).append(rel)
+    for fam in sorted(by_family):
+        out.append(f"## `hertzmdr.derive.{fam}`\n\n")
+        for rel in by_family[fam]:
+            out.append(f"### {rel.equation} `{rel.name}`\n\n{rel.summary}; from {rel.origin}.\n\n")
+            out.append(f"$$ {_latex(rel.derived)} $$\n\n")
+            if rel.stable is not None:
+                out.append(f"Printed as the stable form ({rel.stable_why}):\n\n"
+                           f"$$ {_latex(rel.stable)} $$\n\n")
+            if rel.erratum:
+                out.append(f"**Differs from the print** (see [errata](errata.md)): "
+                           f"{rel.erratum}\n\n")
+            out.append(f"Verified by `{rel.verified_by}`.\n\n")
+    return "".join(out)
+
+
+def render_errata(relations: list[Relation]) -> str:
+    out = ["# Errata: where the derivation disagrees with the chapter's print\n\n",
+           f"<!-- GENERATED FILE -- DO NOT EDIT. Written by `{COMMAND}` from the relations "
+           "whose derived form differs from the printed one; `--check` fails when stale. -->\n\n",
+           "For each entry: the equation, what the derivation gives, what the chapter prints, "
+           "the symbolic difference, and a numeric counterexample. The derivation wins; "
+           "`tests/test_printed.py` re-checks every entry and every agreement.\n\n"]
+    bad = [rel for rel in relations if rel.erratum]
+    if not bad:
+        out.append("No disagreement found.\n")
+    for rel in sorted(bad, key=lambda r: (r.equation, r.name)):
+        diff = sp.simplify(rel.derived - rel.printed)
+        point = counterexample(rel)
+        subs = ", ".join(f"{k} = {v}" for k, v in point.items())
+        dv = sp.N(rel.derived.subs(point), 15)
+        pv = sp.N(rel.printed.subs(point), 15)
+        out.append(f"## {rel.equation}: `{rel.name}`\n\n{rel.erratum}\n\n"
+                   f"- derived: $ {_latex(rel.derived)} $\n"
+                   f"- printed: $ {_latex(rel.printed)} $\n"
+                   f"- derived - printed: $ {_latex(diff)} $\n"
+                   f"- at {subs}: derived = {dv}, printed = {pv}\n\n")
+    return "".join(out)
+
+
+def counterexample(rel: Relation) -> dict[sp.Symbol, sp.Rational]:
+    """A fixed, simple point of the domain where a printed form is evaluated (1/2, 2/3, ...)."""
+    symbols = sorted(rel.derived.free_symbols | rel.printed.free_symbols, key=lambda s: s.name)
+    return {s: sp.Rational(1, k + 2) if s.name.startswith("nu") else sp.Rational(k + 2, k + 3)
+            for k, s in enumerate(symbols)}

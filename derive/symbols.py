@@ -1,0 +1,66 @@
+"""Symbols shared by the derivations, with the assumptions physics gives them and their SI units.
+
+The generator takes each argument's unit and meaning from :data:`DESCRIPTIONS`, so every
+symbol that is an argument of a relation must be listed there.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+# name: (unit, meaning); the name is also the argument name in the generated code.
+DESCRIPTIONS: dict[str, tuple[str, str]] = {
+    "E": ("Pa", "Young's modulus"),
+    "E_star": ("Pa", "effective modulus E* (5.8), (5.26)"),
+    "E1": ("Pa", "Young's modulus of body 1"),
+    "E2": ("Pa", "Young's modulus of body 2"),
+    "nu": ("1", "Poisson's ratio"),
+    "nu1": ("1", "Poisson's ratio of body 1"),
+    "nu2": ("1", "Poisson's ratio of body 2"),
+    "F": ("N", "normal force"),
+    "F_L": ("N/m", "normal force per unit length of a line contact"),
+    "L": ("m", "length of a line contact"),
+    "R": ("m", "radius of curvature (effective radius (5.27) for two bodies)"),
+    "R1": ("m", "radius of curvature of body 1, or first principal radius"),
+    "R2": ("m", "radius of curvature of body 2, or second principal radius"),
+    "d": ("m", "indentation depth"),
+    "a": ("m", "contact radius"),
+    "r": ("m", "radial coordinate on the surface"),
+    "x": ("m", "coordinate"),
+    "y": ("m", "coordinate"),
+    "z": ("m", "depth below the surface"),
+    "p0": ("Pa", "pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0"),
+    "theta": ("rad", "angle between the cone's surface and the plane"),
+    "m": ("kg", "mass"),
+    "rho": ("kg/m^3", "density"),
+    "v0": ("m/s", "impact velocity"),
+    "alpha": ("rad", "angle between the axes of two crossed cylinders"),
+}
+
+
+def symbol(name: str, **assumptions) -> sp.Symbol:
+    """A symbol with the given assumptions; default positive (lengths, moduli, forces)."""
+    if name not in DESCRIPTIONS:
+        raise KeyError(f"symbol {name!r}: add its unit and meaning to DESCRIPTIONS")
+    if not assumptions:
+        assumptions = {"positive": True}
+    return sp.Symbol(name, **assumptions)
+
+
+def unit_interval(name: str = "t") -> sp.Symbol:
+    """A positive symbol that the proofs sample in (0, 1): see ``Relation.domain``."""
+    if not (name == "t" or name.startswith("t_")):
+        raise ValueError(f"unit-interval symbols are named t or t_*, not {name!r}")
+    return sp.Symbol(name, positive=True)
+
+
+E = symbol("E")
+E_star = symbol("E_star")
+nu = symbol("nu", real=True)
+F = symbol("F")
+R = symbol("R")
+d = symbol("d")
+a = symbol("a")
+r = symbol("r", nonnegative=True)
+z = symbol("z", nonnegative=True)
+p0 = symbol("p0")

@@ -1,0 +1,154 @@
+"""Hertz contact of a sphere (or an effective sphere) and an elastic half-space, (5.15)-(5.25).
+
+All functions take floats or NumPy arrays in SI units, broadcast them against each other and
+raise ValueError for inputs outside their domain. The formulas themselves are generated from
+the derivations in :mod:`hertzmdr.derive.hertz`; this module only validates and dispatches.
+Two elastic bodies: pass ``E_star`` from :func:`hertzmdr.numeric.bodies.effective_modulus`
+(5.26) and ``R`` from :func:`hertzmdr.numeric.bodies.effective_radius` (5.27).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric._validate import nonnegative, positive, result
+
+__all__ = [
+    "contact_radius", "max_pressure", "mean_pressure", "force", "energy", "stiffness",
+    "depth_from_force", "contact_radius_from_force", "max_pressure_from_force",
+    "pressure", "surface_displacement",
+]
+
+
+def contact_radius(d, R):
+    """Contact radius a = sqrt(R d) [m], (5.21).
+
+    Parameters
+    ----------
+    d : float or array_like
+        Indentation depth [m], d >= 0.
+    R : float or array_like
+        Effective radius of curvature [m], R > 0.
+    """
+    return result(g.hertz_contact_radius(positive("R", R), nonnegative("d", d)))
+
+
+def max_pressure(d, R, E_star):
+    """Maximum pressure p0 = (2/pi) E* sqrt(d/R) [Pa] at the centre, (5.22).
+
+    Parameters
+    ----------
+    d : float or array_like
+        Indentation depth [m], d >= 0.
+    R : float or array_like
+        Effective radius [m], R > 0.
+    E_star : float or array_like
+        Effective modulus [Pa], E_star > 0.
+    """
+    return result(g.hertz_max_pressure(positive("E_star", E_star), positive("R", R),
+                                       nonnegative("d", d)))
+
+
+def mean_pressure(d, R, E_star):
+    """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`."""
+    return result(g.hertz_mean_pressure(positive("E_star", E_star), positive("R", R),
+                                        nonnegative("d", d)))
+
+
+def force(d, R, E_star):
+    """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`."""
+    return result(g.hertz_force(positive("E_star", E_star), positive("R", R),
+                                nonnegative("d", d)))
+
+
+def energy(d, R, E_star):
+    """Elastic energy U = (8/15) E* R^(1/2) d^(5/2) [J], (5.25).
+
+    Parameters as :func:`max_pressure`.
+    """
+    return result(g.hertz_energy(positive("E_star", E_star), positive("R", R),
+                                 nonnegative("d", d)))
+
+
+def stiffness(d, R, E_star):
+    """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5).
+
+    Parameters as :func:`max_pressure`.
+    """
+    return result(g.hertz_stiffness(positive("E_star", E_star), positive("R", R),
+                                    nonnegative("d", d)))
+
+
+def depth_from_force(F, R, E_star):
+    """Indentation depth d [m] under the normal force F, (5.23) inverted.
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], F >= 0.
+    R : float or array_like
+        Effective radius [m], R > 0.
+    E_star : float or array_like
+        Effective modulus [Pa], E_star > 0.
+    """
+    return result(g.hertz_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+                                           positive("R", R)))
+
+
+def contact_radius_from_force(F, R, E_star):
+    """Contact radius a = (3 F R / (4 E*))^(1/3) [m], (5.24).
+
+    Parameters as :func:`depth_from_force`.
+    """
+    return result(g.hertz_contact_radius_from_force(positive("E_star", E_star),
+                                                    nonnegative("F", F), positive("R", R)))
+
+
+def max_pressure_from_force(F, R, E_star):
+    """Maximum pressure p0 = (6 F E*^2 / (pi^3 R^2))^(1/3) [Pa], (5.24).
+
+    Parameters as :func:`depth_from_force`.
+    """
+    return result(g.hertz_max_pressure_from_force(positive("E_star", E_star),
+                                                  nonnegative("F", F), positive("R", R)))
+
+
+def pressure(r, d, R, E_star):
+    """Pressure p(r) = p0 sqrt(1 - r^2/a^2) [Pa] inside the contact and 0 outside, (5.15).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the centre of the contact [m], r >= 0.
+    d : float or array_like
+        Indentation depth [m], d > 0.
+    R, E_star
+        As in :func:`max_pressure`.
+    """
+    return result(g.hertz_pressure(positive("E_star", E_star), positive("R", R),
+                                   positive("d", d), nonnegative("r", r)))
+
+
+def surface_displacement(r, d, R):
+    """Surface displacement u_z(r) [m] inside (5.18) and outside (Fig. 5.2) the contact.
+
+    Inside, u_z = d - r^2/(2R); outside, the displacement of the Hertz pressure, printed in a
+    form that keeps full accuracy for r >> a, where it decays like the point-load field
+    F/(pi E* r) (5.6).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the centre [m], r >= 0.
+    d : float or array_like
+        Indentation depth [m], d > 0.
+    R : float or array_like
+        Effective radius [m], R > 0.
+    """
+    r, d, R = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R))
+    inside = r * r <= R * d  # r <= a, (5.21)
+    out = np.empty(r.shape)
+    out[inside] = g.hertz_displacement_inside(R[inside], d[inside], r[inside])
+    out[~inside] = g.hertz_displacement_outside(R[~inside], d[~inside], r[~inside])
+    return result(out)

@@ -1,0 +1,21 @@
+import mpmath as mp
+import pytest
+
+from oracle import WORST
+
+
+@pytest.fixture(autouse=True)
+def _reset_mpmath_precision():
+    """Every test starts at mpmath's default precision (as mpmath's own conftest does)."""
+    mp.mp.dps = 15
+    yield
+    mp.mp.dps = 15
+
+
+def pytest_terminal_summary(terminalreporter):
+    if not WORST:
+        return
+    tr = terminalreporter
+    tr.section("worst relative error of each float64 function against its mpmath reference")
+    for name in sorted(WORST):
+        tr.write_line(f"{name:48s} {WORST[name]:.2e}")

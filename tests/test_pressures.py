@@ -1,0 +1,120 @@
+"""(5.10)-(5.17), Fig. 5.2 and Problem 6 against the Boussinesq kernel (5.7), by 2-D quadrature.
+
+The kernel quadrature (tests/kernels.py) at 35 digits is accurate to about 1e-33 (tanh-sinh
+on smooth integrands split at the rim; checked against 50 digits when it was written), so the
+derived expressions, evaluated at 35 digits, must agree to 1e-30; the float64 functions to a
+few ulps (a handful of correctly rounded operations: 1e-14).
+"""
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from hertzmdr.numeric import _generated as g
+
+from kernels import force_axisymmetric, uz_axisymmetric
+from oracle import assert_close
+
+DPS = 35
+TOL_DERIVED = 1e-30  # kernel quadrature error ~1e-33 at 35 digits
+TOL_FLOAT = 1e-14  # a handful of correctly rounded float64 operations
+
+
+def punch(p0, a):
+    return lambda gap: p0 * a / mp.sqrt(gap)  # (5.9): p0 (1 - rho^2/a^2)^(-1/2)
+
+
+def hertzian(p0, a):
+    return lambda gap: p0 * mp.sqrt(gap) / a  # (5.15): p0 (1 - rho^2/a^2)^(1/2)
+
+
+@pytest.mark.parametrize("r_over_a", ["0", "0.25", "0.7", "0.999"])
+def test_punch_displacement_by_kernel(r_over_a):
+    E, a, p0 = 2.1e11, 3e-3, 4.5e8
+    with mp.workdps(DPS):
+        u = uz_axisymmetric(punch(mp.mpf(p0), mp.mpf(a)), mp.mpf(r_over_a) * a, a, E)
+        # uniform inside (5.10): the value does not depend on r
+        assert_close(g.punch_pressure_displacement(E, a, p0), u, TOL_FLOAT, "(5.10)")
+
+
+@pytest.mark.parametrize("r_over_a", ["0", "0.5", "0.95", "1"])
+def test_hertz_displacement_by_kernel(r_over_a):
+    E, a, p0 = 7.0e10, 2e-4, 1.3e9
+    with mp.workdps(DPS):
+        r = mp.mpf(r_over_a) * a
+        u = uz_axisymmetric(hertzian(mp.mpf(p0), mp.mpf(a)), r, a, E)
+        assert_close(g.hertz_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT, "(5.16)")
+
+
+@pytest.mark.parametrize("r_over_a", ["1.0001", "1.5", "10", "1e4"])
+def test_outside_displacement_by_kernel(r_over_a):
+    E, a, p0 = 1.0e9, 1e-3, 2e6
+    with mp.workdps(DPS):
+        r = mp.mpf(r_over_a) * a
+        u_h = uz_axisymmetric(hertzian(mp.mpf(p0), mp.mpf(a)), r, a, E)
+        u_p = uz_axisymmetric(punch(mp.mpf(p0), mp.mpf(a)), r, a, E)
+        # the punch form 2 a p0 asin(a/r)/E* has no cancellation: full float64 accuracy
+        assert_close(g.punch_pressure_displacement_outside(E, a, p0, float(r)), u_p,
+                     TOL_FLOAT, "punch outside")
+        # the n = 1/2 textbook form cancels terms of relative size (r/a)^2: allow that many ulps
+        tol = TOL_FLOAT * max(1.0, float(r / a) ** 2)
+        assert_close(g.hertz_pressure_displacement_outside(E, a, p0, float(r)), u_h, tol,
+                     "Hertz outside, textbook form")
+        # the stable form of hertzmdr.derive.hertz (in terms of d and R) keeps full accuracy
+        R = a**2 / 1e-6  # any R, with d = a^2/R; p0 = 2 E* sqrt(d/R)/pi fixes the scale below
+        d = a**2 / R
+        scale = (2 * E * mp.sqrt(mp.mpf(d) / R) / mp.pi) / p0
+        assert_close(g.hertz_displacement_outside(R, d, float(r)), u_h * scale, TOL_FLOAT,
+                     "Hertz outside, stable form")
+
+
+def test_force_by_quadrature():
+    a, p0 = 5e-3, 3e8
+    with mp.workdps(50):
+        f_p = force_axisymmetric(lambda r: p0 / mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
+        f_h = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
+    assert_close(g.punch_pressure_force(a, p0), f_p, TOL_FLOAT, "(5.11)")
+    assert_close(g.hertz_pressure_force(a, p0), f_h, TOL_FLOAT, "(5.17)")
+
+
+def test_punch_stiffness_by_kernel():
+    # k = F / u_z with both from quadrature: F from the pressure, u_z from the kernel at r = 0
+    E, a, p0 = 2e11, 1e-2, 1.0
+    with mp.workdps(DPS):
+        F = force_axisymmetric(lambda r: p0 / mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
+        u = uz_axisymmetric(punch(mp.mpf(p0), mp.mpf(a)), 0, a, E)
+        assert_close(g.punch_stiffness(E, a), F / u, TOL_FLOAT, "(5.12)")
+
+
+def test_uniform_by_kernel():
+    E, a, p0 = 1e8, 0.02, 5e5
+    with mp.workdps(DPS):
+        uniform = lambda gap: mp.mpf(p0)  # noqa: E731
+        centre = uz_axisymmetric(uniform, 0, a, E)
+        edge = uz_axisymmetric(uniform, a, a, E)
+        assert_close(g.uniform_pressure_displacement_centre(E, a, p0), centre, TOL_FLOAT, "u(0)")
+        assert_close(g.uniform_pressure_displacement_edge(E, a, p0), edge, TOL_FLOAT, "u(a)")
+
+
+def test_derived_expressions_to_30_digits():
+    """The SymPy expressions themselves (not their float64 print) against the kernel."""
+    import sympy as sp
+
+    from hertzmdr.derive import pressures
+    from hertzmdr.derive.symbols import E_star, a, p0, r
+
+    vals = {E_star: sp.Integer(3), a: sp.Rational(7, 5), p0: sp.Rational(2, 3)}
+    half = sp.Rational(1, 2)
+    with mp.workdps(DPS):
+        for n, pfun in ((half, hertzian), (-half, punch)):
+            for rv, fn in ((sp.Rational(1, 2), pressures.displacement_inside),
+                           (sp.Integer(3), pressures.displacement_outside)):
+                a_ = mp.mpf(7) / 5
+                ref = uz_axisymmetric(pfun(mp.mpf(2) / 3, a_), mp.mpf(rv), a_, 3)
+                got = sp.N(fn(n).subs({**vals, r: rv}), DPS + 5)
+                assert abs(mp.mpf(str(got)) / ref - 1) < TOL_DERIVED, (n, rv)
+
+
+def test_arrays_broadcast():
+    a = np.array([1e-3, 2e-3, 4e-3])
+    np.testing.assert_allclose(g.punch_stiffness(1e9, a), 2e9 * a, rtol=1e-15)
