@@ -1,0 +1,110 @@
+"""The ``hertzmdr`` command: run scenes, list effects.
+
+    hertzmdr run [SCENE] [--json] [--out DIR [--force]]
+    hertzmdr effects
+
+``hertzmdr run`` with no SCENE runs the built-in tour (the chapter's Problems 1-8 and figures).
+A malformed scene prints one message naming the file, the key and the problem, and exits 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+parser = argparse.ArgumentParser(
+    prog="hertzmdr",
+    description="Normal contact of elastic bodies (Boussinesq, Hertz, MDR): derived, "
+    "generated and verified. See docs/scenes.md for the scene schema.")
+sub = parser.add_subparsers(dest="command", required=True)
+p_run = sub.add_parser("run", help="run a scene file, or the built-in tour without one")
+p_run.add_argument("scene", nargs="?", help="scene file (TOML); omit for the built-in tour")
+p_run.add_argument("--json", action="store_true", help="print one JSON document to stdout")
+p_run.add_argument("--out", type=Path, help="write result.json and a PNG per field effect here")
+p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
+sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
+
+
+def tour_scenes() -> list[Path]:
+    from importlib.resources import files
+
+    folder = files("hertzmdr.numeric.tour")
+    return sorted(Path(str(p)) for p in folder.iterdir() if p.name.endswith(".toml"))
+
+
+def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: bool) -> None:
+    """Write atomically: everything goes to a temporary folder first, then is moved in."""
+    from hertzmdr.numeric.scene.figures import write_all
+
+    if folder.exists() and any(folder.iterdir()) and not force:
+        raise FileExistsError(f"{folder} is not empty; pass --force to write into it")
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
+    try:
+        for sub_name, doc, results, title in docs:
+            target = tmp / sub_name if sub_name else tmp
+            target.mkdir(parents=True, exist_ok=True)
+            (target / "result.json").write_text(json.dumps(doc, indent=2) + "\n")
+            write_all(results, title, target)
+        folder.mkdir(exist_ok=True)
+        for item in sorted(tmp.rglob("*")):
+            dest = folder / item.relative_to(tmp)
+            if item.is_dir():
+                dest.mkdir(exist_ok=True)
+            else:
+                os.replace(item, dest)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def cmd_run(args) -> int:
+    from hertzmdr.numeric import scene
+    from hertzmdr.numeric.scene.report import table
+
+    paths = [Path(args.scene)] if args.scene else tour_scenes()
+    runs = []
+    for path in paths:
+        sc = scene.load(path)
+        _, results, doc = sc.run_full()
+        runs.append((path, sc, results, doc))
+    if args.json:
+        docs = [doc for *_, doc in runs]
+        print(json.dumps(docs[0] if args.scene else docs, indent=2))
+    else:
+        for *_, results, doc in runs:
+            print(table(doc["title"], doc["model"], results))
+            print()
+    if args.out:
+        _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"])
+                              for p, _, res, doc in runs], args.force)
+        if not args.json:
+            print(f"wrote {args.out}")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = parser.parse_args(argv)
+    if args.command == "effects":
+        from hertzmdr.numeric.scene.effects import listing
+
+        print(listing())
+        return 0
+    from hertzmdr.numeric.scene.schema import SceneError
+
+    try:
+        return cmd_run(args)
+    except SceneError as exc:
+        print(f"hertzmdr: {exc}", file=sys.stderr)
+        return 2
+    except FileExistsError as exc:
+        print(f"hertzmdr: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,49 @@
+"""The registry of effects a scene can ask for.
+
+Each row names an effect, its unit, what it is, and the nodes it needs; the contact kind of the
+scene computes it (a method ``effect_<name>`` of its :class:`~.kinds.Contact`). Nodes are
+evaluated once per run and only when an asked-for effect needs them: ``state`` (the contact at
+the load), ``impact`` (the integrated equation of motion), ``stress`` (the stress solver).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Effect:
+    name: str
+    unit: str
+    doc: str
+    needs: tuple[str, ...] = ("state",)
+    field: bool = False  # an object of arrays, drawn as a PNG by --out
+
+
+EFFECTS: dict[str, Effect] = {e.name: e for e in [
+    Effect("depth", "m", "indentation depth d (the approach of the two bodies)"),
+    Effect("force", "N", "normal force F"),
+    Effect("contact_radius", "m", "contact radius a of a circular contact (5.21), (5.55)"),
+    Effect("semi_axes", "m", "semi-axes [a, b] of an elliptical contact (5.28), exact"),
+    Effect("half_width", "m", "half-width a of the contact strip of a line contact (5.35)"),
+    Effect("max_pressure", "Pa", "maximum contact pressure (5.22), (5.37)"),
+    Effect("mean_pressure", "Pa", "mean pressure: force over contact area"),
+    Effect("stiffness", "N/m", "differential normal stiffness dF/dd (Problem 5)"),
+    Effect("elastic_energy", "J", "elastic energy stored in the contact (5.25)"),
+    Effect("effective_modulus", "Pa", "effective modulus E* (5.26)", needs=()),
+    Effect("effective_radius", "m", "effective radius R (5.27), or the Gaussian radius (5.30)",
+           needs=()),
+    Effect("principal_radii", "m", "principal radii [R1, R2] of the gap (Problem 2)", needs=()),
+    Effect("pressure_profile", "{r: m, p: Pa}", "pressure p(r) across the contact",
+           field=True),
+    Effect("surface_displacement", "{r: m, u: m}",
+           "surface displacement u_z(r), inside and outside the contact (Fig. 5.2)", field=True),
+    Effect("force_depth_curve", "{depth: m, force: N}", "force against depth from 0 to the load",
+           field=True),
+]}
+
+
+def listing() -> str:
+    """The text `hertzmdr effects` prints."""
+    width = max(map(len, EFFECTS))
+    return "\n".join(f"{e.name:{width}}  [{e.unit}]  {e.doc}" for e in EFFECTS.values())

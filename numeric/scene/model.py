@@ -1,0 +1,74 @@
+"""Build the contact that a scene's two bodies call for.
+
+- E* from both materials, or from the elastic one when the other is rigid (5.26).
+- Two quadratic surfaces (flat, sphere, cylinder, ellipsoid): the gap is a quadratic form; its
+  principal radii decide: equal -> circular Hertz; different -> elliptical contact (exact, or
+  the chapter's Gaussian radius (5.28)-(5.30) with ``[model] elliptic = "gaussian"``); one zero
+  curvature from parallel cylinders (or a cylinder on a flat) -> line contact (5.34)-(5.37).
+- Axisymmetric profiles (cone, flat punch, power law, flattened parabola, samples) against a
+  flat: the MDR closed form of that profile; any other axisymmetric pair: the numerical MDR of
+  the summed gap f1(r) + f2(r).
+"""
+
+from __future__ import annotations
+
+import math
+
+from hertzmdr.numeric.scene.kinds.hertz import HertzContact
+from hertzmdr.numeric.scene.schema import SceneError, SceneSpec
+
+QUADRATIC = {"flat", "sphere", "cylinder", "ellipsoid"}
+#: relative difference of the principal radii below which a gap is treated as circular: the
+#: elliptical solution tends continuously to the circular one, and at this difference the
+#: two agree to about 1e-12 (documented in docs/scenes.md)
+CIRCULAR_RTOL = 1e-12
+
+
+def effective_modulus(spec: SceneSpec) -> float:
+    from hertzmdr.numeric import bodies
+
+    b1, b2 = spec.bodies
+    if b1.rigid:
+        b1, b2 = b2, b1
+    if b2.rigid:
+        return float(bodies.effective_modulus(b1.E, b1.nu))
+    return float(bodies.effective_modulus(b1.E, b1.nu, b2.E, b2.nu))
+
+
+def _principal(body) -> tuple[float, float, float]:
+    """(R1, R2, angle of R1's direction) of a quadratic surface; inf for flat directions."""
+    p = body.params
+    if body.shape == "flat":
+        return math.inf, math.inf, 0.0
+    if body.shape == "sphere":
+        return p["radius"], p["radius"], 0.0
+    if body.shape == "cylinder":  # curved across its axis, straight along it
+        return p["radius"], math.inf, p.get("axis", 0.0) + math.pi / 2
+    R1, R2 = p["radii"]
+    return R1, R2, p.get("axis", 0.0)
+
+
+def build(spec: SceneSpec):
+    shapes = {b.shape for b in spec.bodies}
+    E_star = effective_modulus(spec)
+    if shapes <= QUADRATIC:
+        return _quadratic(spec, E_star)
+    names = ", ".join(sorted(shapes))
+    raise SceneError(spec.source, "body", f"this combination of shapes ({names}) "
+                     "is not supported yet")
+
+
+def _quadratic(spec: SceneSpec, E_star: float):
+    from hertzmdr.numeric import bodies
+
+    (a1, b1, t1), (a2, b2, t2) = (_principal(b) for b in spec.bodies)
+    R1, R2 = (float(v) for v in bodies.gap_principal_radii(a1, b1, t1, a2, b2, t2))
+    if not (R1 > 0 and R2 > 0):
+        raise SceneError(spec.source, "body", "the gap between the bodies is not convex "
+                         f"(principal radii {R1:.6g} m and {R2:.6g} m): they do not touch at a "
+                         "single point; a concave radius must be larger than the convex one")
+    if math.isinf(R2) or math.isinf(R1):
+        raise SceneError(spec.source, "body", "line contacts are not supported yet")
+    if abs(R1 - R2) <= CIRCULAR_RTOL * max(R1, R2):
+        return HertzContact(E_star, spec.rtol, R=math.sqrt(R1 * R2), principal_radii=[R1, R2])
+    raise SceneError(spec.source, "body", "elliptical contacts are not supported yet")

@@ -1,0 +1,97 @@
+"""Run a scene: build the contact its bodies call for, then evaluate exactly the requested
+effects and the nodes they need, each once, timing each."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from hertzmdr.numeric.scene.effects import EFFECTS
+from hertzmdr.numeric.scene.model import build
+from hertzmdr.numeric.scene.schema import SceneError, SceneSpec
+
+
+@dataclass
+class Result:
+    """The outcome of one effect."""
+
+    name: str
+    value: object
+    unit: str
+    method: str
+    rel_error: float
+    seconds: float
+
+
+@dataclass
+class Run:
+    spec: SceneSpec
+    contact: object = None
+    evaluated: list[str] = field(default_factory=list)  # nodes, in the order they ran
+    _nodes: dict = field(default_factory=dict)
+
+    def node(self, name: str):
+        if name not in self._nodes:
+            self._nodes[name] = getattr(self.contact, "node_" + name)(self)
+            self.evaluated.append(name)
+        return self._nodes[name]
+
+    def effect(self, name: str) -> Result:
+        eff = EFFECTS[name]
+        t0 = time.perf_counter()
+        args = [self.node(n) for n in eff.needs]
+        v = getattr(self.contact, "effect_" + name)(*args)
+        seconds = time.perf_counter() - t0
+        self.evaluated.append(name)
+        return Result(name, v.value, eff.unit, v.method, float(v.rel_error), seconds)
+
+
+def check_applicable(spec: SceneSpec, contact) -> None:
+    for name in spec.effects:
+        if contact.has(name):
+            continue
+        why = contact.why_not.get(name, f"{contact.label} has no {name.replace('_', ' ')}")
+        alt = contact.instead.get(name)
+        hint = f"; use {alt!r}" if alt else ""
+        raise SceneError(spec.source, "effects",
+                         f"effect {name!r} does not apply to this scene: {why}{hint}")
+
+
+def run(spec: SceneSpec) -> tuple[Run, dict[str, Result]]:
+    t0 = time.perf_counter()
+    contact = build(spec)
+    r = Run(spec, contact)
+    r.evaluated.append("model")
+    check_applicable(spec, contact)
+    results = {name: r.effect(name) for name in spec.effects}
+    r.model_seconds = time.perf_counter() - t0
+    return r, results
+
+
+def to_json_value(value):
+    """Arrays to lists, NumPy scalars to floats, recursively."""
+    if isinstance(value, dict):
+        return {k: to_json_value(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [to_json_value(v) for v in value]
+    arr = np.asarray(value)
+    if arr.ndim == 0:
+        return float(arr) if arr.dtype.kind in "fiu" else value
+    if arr.size == 1 and arr.ndim == 1:
+        return float(arr[0])
+    return arr.tolist()
+
+
+def document(run_: Run, results: dict[str, Result]) -> dict:
+    """The JSON document of a run (see docs/scenes.md)."""
+    model = {k: to_json_value(v) for k, v in run_.contact.info().items()}
+    return {
+        "title": run_.spec.title,
+        "model": model,
+        "effects": {name: {"value": to_json_value(res.value), "unit": res.unit,
+                           "method": res.method, "rel_error": res.rel_error,
+                           "seconds": res.seconds}
+                    for name, res in results.items()},
+    }

@@ -1,0 +1,335 @@
+"""Read and validate a scene: a TOML file (or a dict of the same shape) describing two bodies,
+their load and the effects wanted. Everything is checked here, before any physics runs; every
+problem raises :class:`SceneError` naming the file, the key and what is wrong. Nothing from a
+scene reaches eval, exec or sympify: values are numbers, strings read by :mod:`.units`, or lists.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from hertzmdr.numeric.scene.units import UnitError, to_si
+
+
+class SceneError(ValueError):
+    """A malformed scene: ``where`` is the file, ``key`` the offending key."""
+
+    def __init__(self, where: str, key: str, message: str):
+        self.where, self.key, self.message = where, key, message
+        super().__init__(f"{where}: {key}: {message}" if key else f"{where}: {message}")
+
+
+# shape -> {key: (dimension or kind, required)}; "angle" values are radians after parsing
+SHAPES: dict[str, dict[str, tuple[str, bool]]] = {
+    "flat": {},
+    "sphere": {"radius": ("length", True)},
+    "cylinder": {"radius": ("length", True), "axis": ("angle", False), "length": ("length", False)},
+    "ellipsoid": {"radii": ("length_pair", True), "axis": ("angle", False)},
+    "cone": {"angle": ("angle", True)},
+    "flat_punch": {"radius": ("length", True)},
+    "power_law": {"coefficient": ("number", True), "exponent": ("number", True)},
+    "flattened_parabola": {"radius": ("length", True), "flat_radius": ("length", True)},
+    "profile": {"r": ("length_list", False), "f": ("length_list", False), "file": ("path", False)},
+}
+MATERIAL_KEYS = {"E", "nu", "rigid"}
+TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model"}
+
+
+@dataclass
+class Body:
+    name: str
+    shape: str
+    params: dict
+    E: float | None = None  # None when rigid
+    nu: float | None = None
+
+    @property
+    def rigid(self) -> bool:
+        return self.E is None
+
+
+@dataclass
+class Load:
+    kind: str  # "depth", "force" or "impact"
+    values: list[float] = field(default_factory=list)  # one value, or the points of a sweep
+    sweep: bool = False
+    velocity: float | None = None
+    mass: float | None = None
+    density: float | None = None
+
+
+@dataclass
+class SceneSpec:
+    title: str
+    effects: list[str]
+    bodies: list[Body]
+    load: Load
+    rtol: float | None
+    elliptic: str
+    source: str
+    base_dir: Path | None
+
+
+def read(path_or_dict, *, known_effects) -> SceneSpec:
+    """Parse and validate a scene file path or dict; raise SceneError on any problem."""
+    if isinstance(path_or_dict, dict):
+        return _Reader("<scene>", None, known_effects).scene(path_or_dict)
+    path = Path(path_or_dict)
+    where = str(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise SceneError(where, "", "no such file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SceneError(where, "", f"cannot read the file ({exc})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(where, "", f"TOML syntax error: {exc}") from None
+    return _Reader(where, path.parent, known_effects).scene(data, default_title=path.stem)
+
+
+def suggest(name: str, choices) -> str:
+    close = difflib.get_close_matches(name, sorted(choices), n=1, cutoff=0.5)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+class _Reader:
+    def __init__(self, where: str, base_dir: Path | None, known_effects):
+        self.where, self.base_dir, self.known_effects = where, base_dir, known_effects
+
+    def fail(self, key: str, message: str):
+        raise SceneError(self.where, key, message)
+
+    def table(self, value, key: str) -> dict:
+        if not isinstance(value, dict):
+            self.fail(key, f"must be a table, got {type(value).__name__}")
+        return value
+
+    def extra_keys(self, table: dict, allowed, key: str) -> None:
+        for k in table:
+            if k not in allowed:
+                names = ", ".join(sorted(allowed))
+                self.fail(f"{key}.{k}" if key else k,
+                          f"unknown key{suggest(k, allowed)} (allowed: {names})")
+
+    def quantity(self, value, dimension: str, key: str) -> float:
+        try:
+            out = to_si(value, dimension)
+        except UnitError as exc:
+            self.fail(key, str(exc))
+        if not math.isfinite(out):
+            self.fail(key, f"must be finite, got {value!r}")
+        return out
+
+    def positive(self, value, dimension: str, key: str) -> float:
+        out = self.quantity(value, dimension, key)
+        if not out > 0:
+            self.fail(key, f"must be > 0, got {value!r}")
+        return out
+
+    def scene(self, data: dict, default_title: str = "scene") -> SceneSpec:
+        self.extra_keys(data, TOP_KEYS, "")
+        title = data.get("title", default_title)
+        if not isinstance(title, str):
+            self.fail("title", "must be a string")
+        effects = data.get("effects")
+        if not (isinstance(effects, list) and effects and all(isinstance(e, str) for e in effects)):
+            self.fail("effects", "must be a non-empty list of effect names "
+                      "(`hertzmdr effects` lists them)")
+        for e in effects:
+            if e not in self.known_effects:
+                self.fail("effects", f"unknown effect {e!r}{suggest(e, self.known_effects)}")
+        if len(set(effects)) != len(effects):
+            self.fail("effects", "lists an effect twice")
+        bodies = data.get("body")
+        if not isinstance(bodies, list) or len(bodies) != 2:
+            n = len(bodies) if isinstance(bodies, list) else 0
+            self.fail("body", f"a scene has exactly two [[body]] tables, this one has {n}")
+        parsed = [self.body(self.table(b, f"body[{i}]"), i) for i, b in enumerate(bodies)]
+        if parsed[0].rigid and parsed[1].rigid:
+            self.fail("body", "both bodies are rigid: at least one must have E and nu")
+        if "load" not in data:
+            self.fail("load", "missing: give exactly one of depth, force or [load.impact]")
+        load = self.load(self.table(data["load"], "load"))
+        rtol = None
+        if "accuracy" in data:
+            acc = self.table(data["accuracy"], "accuracy")
+            self.extra_keys(acc, {"rtol"}, "accuracy")
+            if "rtol" in acc:
+                rtol = acc["rtol"]
+                if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) \
+                        or not (1e-15 <= rtol < 1):
+                    self.fail("accuracy.rtol", f"must be a number in [1e-15, 1), got {rtol!r}")
+                rtol = float(rtol)
+        elliptic = "exact"
+        if "model" in data:
+            model = self.table(data["model"], "model")
+            self.extra_keys(model, {"elliptic"}, "model")
+            elliptic = model.get("elliptic", "exact")
+            if elliptic not in ("exact", "gaussian"):
+                self.fail("model.elliptic", f"must be \"exact\" or \"gaussian\", got {elliptic!r}")
+        return SceneSpec(title, list(effects), parsed, load, rtol, elliptic, self.where,
+                         self.base_dir)
+
+    def body(self, b: dict, i: int) -> Body:
+        key = f"body[{i}]"
+        name = b.get("name", f"body {i + 1}")
+        if not isinstance(name, str):
+            self.fail(f"{key}.name", "must be a string")
+        key = f"body[{i}] ({name})"
+        shape = b.get("shape")
+        if shape is None:
+            self.fail(f"{key}.shape", f"missing (one of: {', '.join(SHAPES)})")
+        if shape not in SHAPES:
+            self.fail(f"{key}.shape", f"unknown shape {shape!r}{suggest(str(shape), SHAPES)}")
+        spec = SHAPES[shape]
+        self.extra_keys(b, {"name", "shape"} | MATERIAL_KEYS | set(spec), key)
+        params = {}
+        for k, (kind, required) in spec.items():
+            if k not in b:
+                if required:
+                    self.fail(f"{key}.{k}", f"missing: a {shape} needs {k}")
+                continue
+            params[k] = self.shape_value(b[k], kind, f"{key}.{k}")
+        self.check_shape(shape, params, key)
+        if b.get("rigid", False) is True:
+            if "E" in b or "nu" in b:
+                self.fail(key, "a rigid body has no E or nu")
+            return Body(name, shape, params)
+        if "rigid" in b and b["rigid"] is not False:
+            self.fail(f"{key}.rigid", f"must be true or false, got {b['rigid']!r}")
+        for k in ("E", "nu"):
+            if k not in b:
+                self.fail(f"{key}.{k}", "missing: give E and nu, or rigid = true")
+        E = self.positive(b["E"], "pressure", f"{key}.E")
+        nu = b["nu"]
+        if isinstance(nu, bool) or not isinstance(nu, (int, float)) or not (-1 < nu <= 0.5):
+            self.fail(f"{key}.nu", f"must be a number with -1 < nu <= 0.5, got {nu!r}")
+        return Body(name, shape, params, E, float(nu))
+
+    def shape_value(self, value, kind: str, key: str):
+        if kind in ("length", "angle"):
+            return self.quantity(value, kind, key)
+        if kind == "number":
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not math.isfinite(value):
+                self.fail(key, f"must be a finite number (SI units), got {value!r}")
+            return float(value)
+        if kind == "length_pair":
+            if not isinstance(value, list) or len(value) != 2:
+                self.fail(key, "must be a list of two radii [R1, R2]")
+            return [self.quantity(v, "length", f"{key}[{j}]") for j, v in enumerate(value)]
+        if kind == "length_list":
+            if not isinstance(value, list) or len(value) < 2:
+                self.fail(key, "must be a list of at least two values")
+            return [self.quantity(v, "length", f"{key}[{j}]") for j, v in enumerate(value)]
+        if kind == "path":
+            if not isinstance(value, str):
+                self.fail(key, "must be a file name (a string)")
+            return value
+        raise AssertionError(kind)
+
+    def check_shape(self, shape: str, p: dict, key: str) -> None:
+        if "radius" in p and p["radius"] == 0:
+            self.fail(f"{key}.radius", "must not be 0 (negative for a concave surface)")
+        if shape in ("flat_punch", "flattened_parabola") and p["radius"] < 0:
+            self.fail(f"{key}.radius", f"must be > 0 for a {shape}, got {p['radius']}")
+        if shape == "ellipsoid" and any(r == 0 for r in p["radii"]):
+            self.fail(f"{key}.radii", "radii must not be 0")
+        if shape == "cone" and not 0 < p["angle"] < math.pi / 2:
+            self.fail(f"{key}.angle", "the angle between the cone's surface and the plane (5.38) "
+                      f"must be in (0, 90 deg), got {math.degrees(p['angle']):.6g} deg")
+        if shape == "power_law":
+            if not p["exponent"] > 0:
+                self.fail(f"{key}.exponent", f"must be > 0, got {p['exponent']}")
+            if not p["coefficient"] > 0:
+                self.fail(f"{key}.coefficient", f"must be > 0, got {p['coefficient']}")
+        if shape == "flattened_parabola" and not 0 <= p["flat_radius"]:
+            self.fail(f"{key}.flat_radius", f"must be >= 0, got {p['flat_radius']}")
+        if shape == "profile":
+            self.profile(p, key)
+
+    def profile(self, p: dict, key: str) -> None:
+        if "file" in p:
+            if "r" in p or "f" in p:
+                self.fail(key, "give samples r and f, or file, not both")
+            p["r"], p["f"] = self.read_samples(p.pop("file"), f"{key}.file")
+        elif not ("r" in p and "f" in p):
+            self.fail(key, "a profile needs samples r = [...] and f = [...], or file = \"...\"")
+        r, f = p["r"], p["f"]
+        if len(r) != len(f):
+            self.fail(key, f"r has {len(r)} samples and f has {len(f)}")
+        for j in range(len(r)):
+            if not (math.isfinite(r[j]) and math.isfinite(f[j])):
+                self.fail(f"{key}.r/f[{j}]", "samples must be finite numbers, not NaN or inf")
+        if r[0] != 0 or any(b <= a for a, b in zip(r, r[1:], strict=False)):
+            self.fail(f"{key}.r", "samples must start at r = 0 and increase strictly")
+
+    def read_samples(self, name: str, key: str):
+        path = (self.base_dir or Path.cwd()) / name
+        try:
+            lines = path.read_text(encoding="utf-8").splitlines()
+        except FileNotFoundError:
+            self.fail(key, f"sample file {str(path)!r} not found")
+        except (OSError, UnicodeDecodeError) as exc:
+            self.fail(key, f"cannot read {str(path)!r} ({exc})")
+        r, f = [], []
+        for n, line in enumerate(lines, 1):
+            line = line.split("#", 1)[0].strip()
+            if not line:
+                continue
+            parts = [s for s in line.replace(",", " ").split() if s]
+            try:
+                if len(parts) != 2:
+                    raise ValueError
+                r.append(float(parts[0]))
+                f.append(float(parts[1]))
+            except ValueError:
+                if not r and n == 1:  # a header line
+                    continue
+                self.fail(key, f"{path.name} line {n}: expected two numbers r, f (in m)")
+        if len(r) < 2:
+            self.fail(key, f"{path.name} has fewer than two samples")
+        return r, f
+
+    def load(self, ld: dict) -> Load:
+        self.extra_keys(ld, {"depth", "force", "impact"}, "load")
+        given = [k for k in ("depth", "force", "impact") if k in ld]
+        if len(given) != 1:
+            self.fail("load", "give exactly one of depth, force or [load.impact]"
+                      + (f", not {' and '.join(given)}" if given else ""))
+        kind = given[0]
+        if kind == "impact":
+            imp = self.table(ld["impact"], "load.impact")
+            self.extra_keys(imp, {"velocity", "mass", "density"}, "load.impact")
+            if "velocity" not in imp:
+                self.fail("load.impact.velocity", "missing")
+            if ("mass" in imp) == ("density" in imp):
+                self.fail("load.impact", "give exactly one of mass or density")
+            v = self.positive(imp["velocity"], "velocity", "load.impact.velocity")
+            m = self.positive(imp["mass"], "mass", "load.impact.mass") if "mass" in imp else None
+            rho = (self.positive(imp["density"], "density", "load.impact.density")
+                   if "density" in imp else None)
+            return Load("impact", velocity=v, mass=m, density=rho)
+        dim = "length" if kind == "depth" else "force"
+        value = ld[kind]
+        if isinstance(value, dict):
+            self.extra_keys(value, {"from", "to", "points"}, f"load.{kind}")
+            for k in ("from", "to", "points"):
+                if k not in value:
+                    self.fail(f"load.{kind}.{k}", "missing: a sweep is {from, to, points}")
+            lo = self.quantity(value["from"], dim, f"load.{kind}.from")
+            hi = self.quantity(value["to"], dim, f"load.{kind}.to")
+            n = value["points"]
+            if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= 100_000:
+                self.fail(f"load.{kind}.points", f"must be an integer in [2, 100000], got {n!r}")
+            if not 0 <= lo < hi:
+                self.fail(f"load.{kind}", f"a sweep needs 0 <= from < to, got {lo} and {hi}")
+            return Load(kind, [lo + (hi - lo) * i / (n - 1) for i in range(n)], sweep=True)
+        v = self.positive(value, dim, f"load.{kind}")
+        return Load(kind, [v])

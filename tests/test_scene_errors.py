@@ -1,0 +1,112 @@
+"""Every malformed scene gets one clear message naming the file and the key, and exit code 2."""
+
+import subprocess
+import sys
+
+import pytest
+
+from hertzmdr.numeric.cli import main
+
+GOOD = """\
+title = "ok"
+effects = ["force"]
+
+[[body]]
+name = "ball"
+shape = "sphere"
+radius = "10 mm"
+E = "210 GPa"
+nu = 0.3
+
+[[body]]
+name = "plate"
+shape = "flat"
+rigid = true
+
+[load]
+depth = "1 um"
+"""
+
+CASES = [
+    # (what, text replacement (old, new) or full text, expected fragments of the message)
+    ("unknown shape", ('shape = "sphere"', 'shape = "sphre"'),
+     ["body[0] (ball).shape", "unknown shape 'sphre'", "did you mean 'sphere'"]),
+    ("unknown effect", ('effects = ["force"]', 'effects = ["forse"]'),
+     ["effects", "unknown effect 'forse'", "did you mean 'force'"]),
+    ("missing radius", ('radius = "10 mm"\n', ""), ["body[0] (ball).radius", "missing"]),
+    ("extra key", ('nu = 0.3\n', 'nu = 0.3\ncolour = "red"\n'),
+     ["body[0] (ball).colour", "unknown key"]),
+    ("wrong unit", ('radius = "10 mm"', 'radius = "10 kg"'),
+     ["body[0] (ball).radius", "not a length"]),
+    ("nu out of range", ("nu = 0.3", "nu = 0.7"), ["body[0] (ball).nu", "-1 < nu <= 0.5"]),
+    ("E negative", ('E = "210 GPa"', 'E = "-210 GPa"'), ["body[0] (ball).E", "must be > 0"]),
+    ("zero radius", ('radius = "10 mm"', "radius = 0"), ["body[0] (ball).radius", "not be 0"]),
+    ("two loads", ('depth = "1 um"', 'depth = "1 um"\nforce = "1 N"'),
+     ["load", "exactly one of depth, force"]),
+    ("no load", ('[load]\ndepth = "1 um"\n', ""), ["load", "missing"]),
+    ("toml syntax", ('nu = 0.3', 'nu = = 0.3'), ["TOML syntax error", "line 9"]),
+    ("three bodies", ("[load]", '[[body]]\nshape = "flat"\nrigid = true\n\n[load]'),
+     ["body", "exactly two [[body]] tables"]),
+    ("both rigid", ('E = "210 GPa"\nnu = 0.3', "rigid = true"), ["body", "both bodies are rigid"]),
+    ("cone angle", ('shape = "sphere"\nradius = "10 mm"', 'shape = "cone"\nangle = "95 deg"'),
+     ["body[0] (ball).angle", "(0, 90 deg)"]),
+    ("samples not increasing", ('shape = "sphere"\nradius = "10 mm"',
+                                'shape = "profile"\nr = [0, 2e-6, 1e-6]\nf = [0, 1e-9, 2e-9]'),
+     ["body[0] (ball).r", "increase strictly"]),
+    ("samples with NaN", ('shape = "sphere"\nradius = "10 mm"',
+                          'shape = "profile"\nr = [0, 1e-6, 2e-6]\nf = [0, nan, 2e-9]'),
+     ["body[0] (ball).f[1]", "must be finite, got nan"]),
+    ("missing sample file", ('shape = "sphere"\nradius = "10 mm"',
+                             'shape = "profile"\nfile = "no_such_tip.csv"'),
+     ["body[0] (ball).file", "not found"]),
+    ("bad rtol", ("[load]", "[accuracy]\nrtol = 2.0\n\n[load]"), ["accuracy.rtol"]),
+    ("sweep points", ('depth = "1 um"', 'depth = { from = 0, to = "1 um", points = 1 }'),
+     ["load.depth.points"]),
+]
+
+
+def _scene(tmp_path, case):
+    text = GOOD
+    old, new = case
+    assert old in text, old
+    text = text.replace(old, new, 1)
+    path = tmp_path / "scene.toml"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize("what, case, fragments", CASES, ids=[c[0] for c in CASES])
+def test_bad_scene(tmp_path, capsys, what, case, fragments):
+    path = _scene(tmp_path, case)
+    assert main(["run", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"hertzmdr: {path}"), err
+    for frag in fragments:
+        assert frag in err, f"{what}: {frag!r} not in {err!r}"
+    assert "Traceback" not in err
+
+
+def test_missing_file(tmp_path, capsys):
+    assert main(["run", str(tmp_path / "nope.toml")]) == 2
+    assert "no such file" in capsys.readouterr().err
+
+
+def test_cli_process_exit_code(tmp_path):
+    """As a user runs it: a separate process, exit status 2, one line on stderr."""
+    path = _scene(tmp_path, CASES[0][1])
+    proc = subprocess.run([sys.executable, "-m", "hertzmdr.numeric.cli", "run", str(path)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert proc.stdout == ""
+    assert len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+
+
+def test_scene_never_executes_code(tmp_path, capsys):
+    marker = tmp_path / "pwned"
+    evil = f"__import__('os').system('touch {marker}')"
+    text = GOOD.replace('radius = "10 mm"', f'radius = "{evil}"')
+    path = tmp_path / "scene.toml"
+    path.write_text(text)
+    assert main(["run", str(path)]) == 2
+    assert not marker.exists()
+    assert "cannot read" in capsys.readouterr().err
