@@ -11,6 +11,7 @@ section of mpmath's quad documentation advises.
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import cache
 
 import mpmath as mp
 
@@ -52,3 +53,27 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
 def force_axisymmetric(p: Callable[[mp.mpf], mp.mpf], a) -> mp.mpf:
     """F = integral of p(r) 2 pi r dr over [0, a] (5.11), (5.17), (5.57)."""
     return mp.quad(lambda rr: p(rr) * 2 * mp.pi * rr, [0, a])
+
+
+@cache
+def _hertz_unit_constants():
+    """U0 = u_z(0) and U1 = u_z(0) - u_z(1) of the unit pressure (1 - rho^2)^(1/2), 50 digits."""
+    with mp.workdps(50):
+        u0 = uz_axisymmetric(lambda gap: mp.sqrt(gap), 0, 1, 1)
+        u1 = uz_axisymmetric(lambda gap: mp.sqrt(gap), 1, 1, 1)
+        return +u0, u0 - u1
+
+
+def hertz_reference(E_star, R, d):
+    """(a, p0, F) of a Hertz contact at depth d from the Boussinesq kernel alone.
+
+    By linearity and scaling, the pressure p0 (1 - rho^2/a^2)^(1/2) gives u_z(r) = p0 a U(r/a)/E*.
+    Matching the sphere d - r^2/(2R) needs d = p0 a U0/E* and a^2/(2R) = p0 a U1/E*, whence
+    a^2 = 2 R d U1/U0 and p0 = d E*/(a U0); the force is the pressure integrated by quadrature.
+    No derived formula enters. Call inside ``mp.workdps`` (at most 50 digits).
+    """
+    U0, U1 = _hertz_unit_constants()
+    a = mp.sqrt(2 * R * d * U1 / U0)
+    p0 = d * E_star / (a * U0)
+    F = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), a)
+    return a, p0, F

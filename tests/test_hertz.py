@@ -1,14 +1,8 @@
 """Hertz (5.18)-(5.25) and Problem 5 by independent routes.
 
-The reference Hertz solution is built from the Boussinesq kernel alone: for the unit pressure
-(1 - rho^2)^(1/2) on the unit disc, the kernel gives U0 = u_z(0) and U1 = u_z(0) - u_z(1) by
-2-D quadrature at 50 digits. By linearity and scaling (u_z = p0 a U(r/a)/E*), matching a sphere
-d - r^2/(2R) requires d = p0 a U0/E* and a^2/(2R) = p0 a U1/E*, whence a^2 = 2 R d U1/U0 and
-p0 = d E*/(a U0); the force is then the pressure integrated by 1-D quadrature. No derived
-formula enters the reference.
+The reference Hertz solution (tests/kernels.py::hertz_reference) is built from the Boussinesq
+kernel alone; no derived formula enters it.
 """
-
-from functools import cache
 
 import mpmath as mp
 import numpy as np
@@ -19,7 +13,8 @@ from hypothesis import strategies as st
 from hertzmdr.numeric import _generated as g
 from hertzmdr.numeric import hertz
 
-from kernels import force_axisymmetric, uz_axisymmetric
+from kernels import hertz_reference as reference
+from kernels import uz_axisymmetric
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 # Domains spanning the decades the issue asks for; d/R <= 0.1 keeps the half-space assumption.
@@ -28,25 +23,6 @@ R_DOM = Arg(1e-9, 1e3)
 STRAIN = Arg(1e-12, 1e-1)  # d/R
 # Products and quotients of powers, each correctly rounded or within 1 ulp (pow): a few ulps.
 TOL = 1e-14
-
-
-@cache
-def unit_constants():
-    """U0 = u_z(0), U1 = u_z(0) - u_z(1) of the unit Hertzian pressure, 50 digits."""
-    with mp.workdps(50):
-        p = lambda gap: mp.sqrt(gap)  # noqa: E731 -- (1 - rho^2)^(1/2) on the unit disc
-        u0 = uz_axisymmetric(p, 0, 1, 1)
-        u1 = uz_axisymmetric(p, 1, 1, 1)
-        return +u0, u0 - u1
-
-
-def reference(E_star, R, d):
-    """(a, p0, F) of the Hertz contact from the kernel constants; call inside mp.workdps."""
-    U0, U1 = unit_constants()
-    a = mp.sqrt(2 * R * d * U1 / U0)
-    p0 = d * E_star / (a * U0)
-    F = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), a)
-    return a, p0, F
 
 
 def test_matching_by_kernel():
