@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
-EXTRAS := test,plot,units
+EXTRAS := test,plot,units,report
 
 .PHONY: demo test lint generate check accuracy benchmark clean
 
@@ -24,6 +24,9 @@ check: $(STAMP)
 
 test: lint check
 	$(PY) -m pytest -q
+
+accuracy: $(STAMP)
+	$(VENV)/bin/hertzmdr accuracy --out docs/accuracy.md
 
 generate: $(STAMP)
 	$(PY) -m hertzmdr.derive

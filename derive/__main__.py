@@ -15,7 +15,8 @@ ROOT = Path(__file__).resolve().parents[1]
 parser = argparse.ArgumentParser(
     prog="python -m hertzmdr.derive",
     description="Derive the chapter's relations with SymPy and print them into "
-    "numeric/_generated.py, docs/derivations.md and docs/errata.md.",
+    "numeric/_generated.py (NumPy), numeric/_generated_mp.py (mpmath), docs/derivations.md "
+    "and docs/errata.md.",
 )
 parser.add_argument("--check", action="store_true",
                     help="write nothing; exit 1 with a diff if a generated file is stale")
@@ -25,6 +26,7 @@ def targets() -> dict[Path, str]:
     relations = all_relations()
     return {
         ROOT / "numeric" / "_generated.py": render_module(relations),
+        ROOT / "numeric" / "_generated_mp.py": render_module(relations, "mpmath"),
         ROOT / "docs" / "derivations.md": render_derivations(relations),
         ROOT / "docs" / "errata.md": render_errata(relations),
     }

@@ -10,6 +10,7 @@ import textwrap
 
 import sympy as sp
 from sympy.printing.numpy import SciPyPrinter
+from sympy.printing.pycode import MpmathPrinter
 
 from hertzmdr.derive.relation import Relation
 from hertzmdr.derive.symbols import DESCRIPTIONS
@@ -27,6 +28,20 @@ hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
 """
 
 import numpy
+
+'''
+
+MP_MODULE_HEADER = f'''\
+"""The relations of ``hertzmdr.derive`` printed for mpmath: any precision, no SymPy needed.
+
+GENERATED FILE -- DO NOT EDIT. Written by ``{COMMAND}`` (``make generate``) from the same
+expressions as ``_generated.py``; ``{COMMAND} --check`` fails when this file is stale. Call with
+mpmath numbers inside ``mpmath.workdps(...)``: every constant is an exact mpmath rational, so the
+result carries the working precision. The accuracy report (``hertzmdr accuracy``) takes its
+50-digit truths from here; ``tests/`` check these expressions against independent quadratures.
+"""
+
+import mpmath
 
 '''
 
@@ -63,22 +78,36 @@ class _Printer(SciPyPrinter):
         raise ValueError(f"cannot print {expr!r} as NumPy/SciPy code")
 
 
-def print_expr(expr: sp.Expr) -> str:
-    printer = _Printer({"fully_qualified_modules": True, "inline": True,
-                        "allow_unknown_functions": False})
+class _MpPrinter(MpmathPrinter):
+    """mpmath printer with the complete elliptic integrals (parameter m, as in SymPy)."""
+
+    def _print_elliptic_k(self, expr):
+        return f"mpmath.ellipk({self._print(expr.args[0])})"
+
+    def _print_elliptic_e(self, expr):
+        if len(expr.args) != 1:
+            return self._print_not_supported(expr)
+        return f"mpmath.ellipe({self._print(expr.args[0])})"
+
+
+def print_expr(expr: sp.Expr, flavor: str = "numpy") -> str:
+    cls = _Printer if flavor == "numpy" else _MpPrinter
+    printer = cls({"fully_qualified_modules": True, "inline": True,
+                   "allow_unknown_functions": False})
     return printer.doprint(expr)
 
 
-def _arg_lines(rel: Relation) -> str:
+def _arg_lines(rel: Relation, flavor: str) -> str:
+    kind = "float or ndarray" if flavor == "numpy" else "mpmath.mpf"
     lines = []
     for s in rel.args:
         unit, meaning = DESCRIPTIONS[s.name]
-        lines.append(f"{s.name} : float or ndarray\n    {meaning} [{unit}]")
+        lines.append(f"{s.name} : {kind}\n    {meaning} [{unit}]")
     return "\n".join(lines)
 
 
-def render_function(rel: Relation) -> str:
-    code = print_expr(rel.expr)
+def render_function(rel: Relation, flavor: str = "numpy") -> str:
+    code = print_expr(rel.expr, flavor)
     needed = [m for m in ("functools", "scipy.special") if f"{m}." in code]
     imports = "".join(f"    import {m}\n" for m in needed) + ("\n" if needed else "")
     notes = [f"Chapter: {rel.equation}. Derived from: {rel.origin}.",
@@ -90,19 +119,20 @@ def render_function(rel: Relation) -> str:
     notes_text = "\n\n".join(textwrap.fill(n, 88) for n in notes)
     summary = rel.summary[0].upper() + rel.summary[1:]
     doc = (f"{summary}.\n\n{notes_text}\n\n"
-           f"Parameters\n----------\n{_arg_lines(rel)}\n")
+           f"Parameters\n----------\n{_arg_lines(rel, flavor)}\n")
     doc = textwrap.indent(doc, "    ").rstrip() + "\n    "
     doc = doc.replace("\\", "\\\\")
     argstr = ", ".join(s.name for s in rel.args)
     return f'def {rel.name}({argstr}):\n    """{doc.lstrip()}"""\n{imports}    return {code}\n'
 
 
-def render_module(relations: list[Relation]) -> str:
-    parts = [MODULE_HEADER]
+def render_module(relations: list[Relation], flavor: str = "numpy") -> str:
+    """The generated module: ``flavor`` "numpy" (float64, arrays) or "mpmath" (any precision)."""
+    parts = [MODULE_HEADER if flavor == "numpy" else MP_MODULE_HEADER]
     names = [rel.name for rel in relations]
     parts.append("__all__ = [\n" + "".join(f"    {n!r},\n" for n in names) + "]\n")
     for rel in relations:
-        parts.append("\n\n" + render_function(rel))
+        parts.append("\n\n" + render_function(rel, flavor))
     return "".join(parts)
 
 

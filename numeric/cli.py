@@ -28,6 +28,10 @@ p_run.add_argument("--json", action="store_true", help="print one JSON document 
 p_run.add_argument("--out", type=Path, help="write result.json and a PNG per field effect here")
 p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
+p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")
+p_acc.add_argument("--out", type=Path, default=Path("docs/accuracy.md"),
+                   help="the Markdown report to write (its plot goes beside it as .png)")
+p_acc.add_argument("--only", help="measure only the quantities whose name contains this")
 
 
 def tour_scenes() -> list[Path]:
@@ -93,6 +97,12 @@ def main(argv: list[str] | None = None) -> int:
         from hertzmdr.numeric.scene.effects import listing
 
         print(listing())
+        return 0
+    if args.command == "accuracy":
+        from hertzmdr.numeric import accuracy
+
+        accuracy.main(args.out, args.only)
+        print(f"wrote {args.out} and {args.out.with_suffix('.png')}")
         return 0
     from hertzmdr.numeric.scene.schema import SceneError
 

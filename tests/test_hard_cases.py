@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from hertzmdr.numeric import hertz
+
 from kernels import hertz_reference, uz_axisymmetric
 
 EPS = np.finfo(float).eps

@@ -1,0 +1,215 @@
+"""What accuracy costs in time: every way hertzmdr can compute a quantity, its error and time.
+
+``hertzmdr accuracy`` (``make accuracy``) measures, for a fixed set of quantities with 50-digit
+truths, each way of computing them (the generated closed form in float64, stable against
+textbook forms, SciPy quadrature of the defining integral at several tolerances, mpmath at 15
+to 100 digits, the numerical methods at several resolutions), and writes ``docs/accuracy.md``
+with a table per quantity and a log-log plot of error against time.
+
+The truths come from ``_generated_mp`` (the derived expressions printed for mpmath) at 60
+digits, or from 60-digit quadrature where there is no closed form; ``tests/`` verify those
+expressions against independent quadratures to >= 30 digits.
+"""
+
+from __future__ import annotations
+
+import platform
+import statistics
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+TRUTH_DPS = 60
+FLOOR = 1e-50  # errors below this are shown as "< 1e-50" and drawn at this value
+
+
+@dataclass(frozen=True)
+class Way:
+    """One way of computing a quantity."""
+
+    method: str  # "closed form", "SciPy quad", "mpmath quad", ...
+    setting: str  # "float64", "epsrel=1e-8", "30 digits", ...
+    run: Callable[[], object]
+
+
+@dataclass(frozen=True)
+class Quantity:
+    name: str
+    description: str
+    truth: Callable[[], object]  # called inside mpmath.workdps(TRUTH_DPS)
+    ways: Callable[[], list[Way]]
+
+
+@dataclass
+class Row:
+    method: str
+    setting: str
+    rel_error: float
+    seconds: float  # median time per evaluation
+    spread: tuple[float, float]  # min and max of the repeats, per evaluation
+
+
+@dataclass
+class Measured:
+    quantity: Quantity
+    rows: list[Row] = field(default_factory=list)
+
+
+def time_call(fn: Callable[[], object], repeats: int = 5, budget: float = 0.2):
+    """Median, min and max seconds per call over ``repeats`` rounds of ``number`` calls each,
+    with ``number`` chosen so that a round takes about ``budget``/``repeats`` seconds."""
+    t0 = time.perf_counter()
+    fn()
+    once = max(time.perf_counter() - t0, 1e-7)
+    number = max(1, int(budget / repeats / once))
+    per = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        per.append((time.perf_counter() - t0) / number)
+    return statistics.median(per), (min(per), max(per))
+
+
+def measure(q: Quantity, progress=None) -> Measured:
+    import mpmath as mp
+
+    with mp.workdps(TRUTH_DPS):
+        truth = q.truth()
+    out = Measured(q)
+    for way in q.ways():
+        value = way.run()
+        with mp.workdps(TRUTH_DPS):
+            err = float(abs((mp.mpf(value) - truth) / truth))
+        med, spread = time_call(way.run)
+        out.rows.append(Row(way.method, way.setting, err, med, spread))
+        if progress:
+            progress()
+    return out
+
+
+def machine() -> str:
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    import os
+
+    import mpmath
+    import numpy
+    import scipy
+
+    return (f"{cpu}, {os.cpu_count()} cores; Python {platform.python_version()}, "
+            f"NumPy {numpy.__version__}, SciPy {scipy.__version__}, mpmath {mpmath.__version__} "
+            f"(backend {mpmath.libmp.BACKEND}); {platform.system()} {platform.release()}")
+
+
+def _fmt_err(e: float) -> str:
+    return f"< {FLOOR:.0e}" if e < FLOOR else f"{e:.1e}"
+
+
+def _fmt_time(s: float) -> str:
+    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6), ("ns", 1e-9)):
+        if s >= scale:
+            return f"{s / scale:.3g} {unit}"
+    return f"{s * 1e9:.3g} ns"
+
+
+def digits(e: float) -> float:
+    import math
+
+    return 50.0 if e < FLOOR else -math.log10(max(e, 1e-300))
+
+
+def markdown(results: list[Measured], figure: str | None) -> str:
+    lines = ["# What accuracy costs in time\n",
+             "<!-- Written by `hertzmdr accuracy` (make accuracy); regenerate, do not edit. -->\n",
+             f"Measured on: {machine()}.\n",
+             "For each quantity: every way hertzmdr can compute it, the relative error against "
+             "a 50-digit truth, and the median time per evaluation with the spread (min-max of "
+             "5 rounds). *Digits* is -log10 of the error. Read it as: how many digits can I "
+             "have, and what does each digit cost.\n"]
+    if figure:
+        lines.append(f"![error against time]({figure})\n")
+    lines.append("## Headline\n")
+    lines.append("| quantity | fastest way to 1e-12 | its time | most digits | at what cost |")
+    lines.append("| --- | --- | --- | --- | --- |")
+    for m in results:
+        good = [r for r in m.rows if r.rel_error <= 1e-12]
+        fast = min(good, key=lambda r: r.seconds) if good else None
+        best = min(m.rows, key=lambda r: (r.rel_error, r.seconds))
+        lines.append(f"| {m.quantity.name} | "
+                     + (f"{fast.method} ({fast.setting}) | {_fmt_time(fast.seconds)}" if fast
+                        else "none | -")
+                     + f" | {digits(best.rel_error):.0f} ({best.method}, {best.setting}) | "
+                     f"{_fmt_time(best.seconds)} |")
+    for m in results:
+        lines.append(f"\n## {m.quantity.name}\n\n{m.quantity.description}\n")
+        lines.append("| method | setting | rel. error | digits | time per evaluation | spread |")
+        lines.append("| --- | --- | --- | --- | --- | --- |")
+        for r in sorted(m.rows, key=lambda r: r.seconds):
+            lines.append(f"| {r.method} | {r.setting} | {_fmt_err(r.rel_error)} | "
+                         f"{digits(r.rel_error):.1f} | {_fmt_time(r.seconds)} | "
+                         f"{_fmt_time(r.spread[0])} - {_fmt_time(r.spread[1])} |")
+    return "\n".join(lines) + "\n"
+
+
+def plot(results: list[Measured], path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    n = len(results)
+    cols = min(3, n)
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(5.0 * cols, 3.8 * rows), dpi=110,
+                             squeeze=False)
+    for ax, m in zip(axes.flat, results, strict=False):
+        methods = sorted({r.method for r in m.rows})
+        for meth in methods:
+            pts = [(r.seconds, max(r.rel_error, FLOOR)) for r in m.rows if r.method == meth]
+            ax.loglog(*zip(*pts, strict=True), "o", label=meth, ms=5)
+        front, best = [], float("inf")
+        for r in sorted(m.rows, key=lambda r: r.seconds):
+            if r.rel_error < best:
+                best = r.rel_error
+                front.append((r.seconds, max(r.rel_error, FLOOR)))
+        ax.loglog(*zip(*front, strict=True), "k-", lw=0.8, alpha=0.6, drawstyle="steps-post",
+                  label="Pareto front")
+        ax.set_title(m.quantity.name, fontsize=9)
+        ax.set_xlabel("seconds per evaluation")
+        ax.set_ylabel("relative error")
+        ax.grid(True, which="both", alpha=0.25)
+        ax.legend(fontsize=6)
+    for ax in list(axes.flat)[n:]:
+        ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def quantities() -> list[Quantity]:
+    from hertzmdr.numeric import _accuracy_cases
+
+    return _accuracy_cases.all_quantities()
+
+
+def main(out: Path, only: str | None = None) -> list[Measured]:
+    from tqdm import tqdm
+
+    qs = [q for q in quantities() if only is None or only in q.name]
+    with tqdm(total=sum(len(q.ways()) for q in qs), desc="ways measured", unit="way",
+              file=sys.stderr) as bar:
+        results = [measure(q, lambda: bar.update(1)) for q in qs]
+    out.parent.mkdir(parents=True, exist_ok=True)
+    fig = out.with_suffix(".png")
+    plot(results, fig)
+    out.write_text(markdown(results, fig.name))
+    return results
