@@ -1,0 +1,132 @@
+"""Scenes: exactly the requested effects, only the code they need, the documented output."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from hertzmdr.numeric import scene
+from hertzmdr.numeric.cli import main, tour_scenes
+from hertzmdr.numeric.scene.effects import EFFECTS
+
+EXAMPLES = Path(__file__).parents[1] / "examples"
+RAIL = EXAMPLES / "problem1_rail_wheel.toml"
+
+
+def test_json_document_has_exactly_the_requested_effects(capsys):
+    assert main(["run", str(RAIL), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert set(doc) == {"title", "model", "effects"}
+    assert list(doc["effects"]) == ["max_pressure", "contact_radius", "effective_modulus",
+                                    "depth"]
+    for name, eff in doc["effects"].items():
+        assert set(eff) == {"value", "unit", "method", "rel_error", "seconds"}, name
+        assert eff["unit"] == EFFECTS[name].unit
+    assert doc["model"]["kind"] == "hertz"
+
+
+def test_python_api_returns_the_same_document():
+    doc = scene.load(RAIL).run()
+    assert doc["effects"]["max_pressure"]["unit"] == "Pa"
+
+
+def test_only_what_is_asked_is_run():
+    """A scene asking only for force evaluates the model and the contact state, nothing else,
+    and never imports the stress or impact code (checked in a fresh interpreter)."""
+    spec = {"effects": ["force"], "load": {"depth": "1 um"},
+            "body": [{"shape": "sphere", "radius": "5 mm", "E": "200 GPa", "nu": 0.3},
+                     {"shape": "flat", "rigid": True}]}
+    record, results, doc = scene.load(spec).run_full()
+    assert record.evaluated == ["model", "state", "force"]
+    code = ("import sys, json; from hertzmdr.numeric import scene;"
+            f"scene.load({spec!r}).run();"
+            "print(json.dumps(sorted(m for m in sys.modules if m.startswith('hertzmdr'))))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    loaded = json.loads(out.stdout)
+    for forbidden in ("hertzmdr.numeric.stress", "hertzmdr.numeric.impact",
+                      "hertzmdr.numeric.mdr", "hertzmdr.numeric.plots", "sympy"):
+        assert forbidden not in loaded, forbidden
+
+
+def test_out_refuses_a_non_empty_folder(tmp_path, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "keep.txt").write_text("mine")
+    assert main(["run", str(RAIL), "--out", str(out)]) == 2
+    assert "not empty" in capsys.readouterr().err
+    assert (out / "keep.txt").read_text() == "mine"
+    assert main(["run", str(RAIL), "--out", str(out), "--force"]) == 0
+    assert (out / "keep.txt").read_text() == "mine"
+    assert json.loads((out / "result.json").read_text())["title"].startswith("Rail-wheel")
+
+
+def test_out_writes_nothing_when_the_run_fails(tmp_path, monkeypatch):
+    """Atomic output: a failure while writing leaves no half-written file in DIR."""
+    from hertzmdr.numeric.scene import figures
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("disk full")
+
+    spec_path = tmp_path / "s.toml"
+    spec_path.write_text(RAIL.read_text().replace(
+        'effects = ["max_pressure", "contact_radius", "effective_modulus", "depth"]',
+        'effects = ["max_pressure", "pressure_profile"]'))
+    monkeypatch.setitem(figures.FIGURES, "pressure_profile", broken)
+    out = tmp_path / "out"
+    with pytest.raises(RuntimeError):
+        main(["run", str(spec_path), "--out", str(out)])
+    assert not out.exists() or not any(out.iterdir())
+    assert not list(tmp_path.glob(".hertzmdr-*"))
+
+
+def test_field_effects_write_pngs(tmp_path):
+    spec_path = tmp_path / "s.toml"
+    spec_path.write_text(RAIL.read_text().replace(
+        'effects = ["max_pressure", "contact_radius", "effective_modulus", "depth"]',
+        'effects = ["pressure_profile", "surface_displacement", "force_depth_curve"]'))
+    out = tmp_path / "out"
+    assert main(["run", str(spec_path), "--out", str(out)]) == 0
+    for name in ("pressure_profile", "surface_displacement", "force_depth_curve"):
+        png = out / f"{name}.png"
+        assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
+
+
+def test_every_effect_is_documented():
+    text = (Path(__file__).parents[1] / "docs" / "scenes.md").read_text()
+    for name, eff in EFFECTS.items():
+        assert f"### `{name}` [{eff.unit}]" in text, name
+
+
+def test_effects_command_lists_every_effect(capsys):
+    assert main(["effects"]) == 0
+    out = capsys.readouterr().out
+    for name in EFFECTS:
+        assert name in out
+
+
+def test_tour_is_installed_with_the_package():
+    names = {p.name for p in tour_scenes()}
+    assert names == {p.name for p in EXAMPLES.glob("*.toml")}
+
+
+# The chapter's numbers, with the digits the chapter gives: a relative tolerance of half a unit
+# in the last printed digit.
+CHAPTER = {
+    "problem1_rail_wheel.toml": {"max_pressure": (1.0e9, 0.05e9), "contact_radius": (6.8e-3, 0.05e-3)},
+}
+
+
+@pytest.mark.parametrize("name", sorted(CHAPTER))
+def test_examples_give_the_chapters_numbers(name):
+    doc = scene.load(EXAMPLES / name).run()
+    for effect, (value, tol) in CHAPTER[name].items():
+        got = doc["effects"][effect]["value"]
+        assert abs(got - value) <= tol, (name, effect, got, value)
+
+
+@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.toml")), ids=lambda p: p.name)
+def test_every_example_runs(path):
+    doc = scene.load(path).run()
+    assert doc["effects"]
