@@ -88,7 +88,12 @@ def relations() -> list[Relation]:
     inner0 = chord_integral(sp.Integer(0)).subs(gamma, g0) / 2
     u_centre = sp.integrate(inner0.subs(r, 0), (phi, 0, 2 * sp.pi)) * p0 / (sp.pi * E_star)
     u_edge = sp.integrate(sp.Abs(a * sp.cos(phi)), (phi, 0, 2 * sp.pi)) * p0 / (sp.pi * E_star)
+    u_uniform = displacement_inside(sp.Integer(0))
     rels = [
+        Relation("uniform_pressure_displacement", "Problem 6", u_uniform, (E_star, a, p0, r),
+                 "surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0",
+                 "(5.7) with p = p0 (n = 0); the phi-integral is 4 a E(r^2/a^2)",
+                 f"{TEST}::test_uniform_by_kernel", domain={r: a * unit_interval()}),
         Relation("punch_pressure_displacement", "(5.10)", u_punch, (E_star, a, p0),
                  "surface displacement u_z [m] inside a disc loaded by p0*(1 - r^2/a^2)^(-1/2)",
                  "(5.7) over the pressure (5.9)", f"{TEST}::test_punch_displacement_by_kernel",

@@ -29,6 +29,7 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
 ]
@@ -417,6 +418,29 @@ def punch_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def uniform_pressure_displacement(E_star, a, p0, r):
+    """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
+
+    Chapter: Problem 6. Derived from: (5.7) with p = p0 (n = 0); the phi-integral is 4 a
+    E(r^2/a^2).
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_uniform_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return 4*a*p0*mpmath.ellipe(r**2/a**2)/(mpmath.pi*E_star)
 
 
 def uniform_pressure_displacement_centre(E_star, a, p0):

@@ -94,6 +94,12 @@ def test_uniform_by_kernel():
         edge = uz_axisymmetric(uniform, a, a, E)
         assert_close(g.uniform_pressure_displacement_centre(E, a, p0), centre, TOL_FLOAT, "u(0)")
         assert_close(g.uniform_pressure_displacement_edge(E, a, p0), edge, TOL_FLOAT, "u(a)")
+        for s in ("0", "0.5", "0.99", "1"):
+            r = mp.mpf(s) * a
+            u = uz_axisymmetric(uniform, r, a, E)
+            # scipy's ellipe is accurate to a few ulps (Cephes): the float64 tolerance holds
+            assert_close(g.uniform_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT,
+                         f"uniform u({s} a)")
 
 
 def test_derived_expressions_to_30_digits():

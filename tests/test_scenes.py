@@ -114,7 +114,8 @@ def test_tour_is_installed_with_the_package():
 # The chapter's numbers, with the digits the chapter gives: a relative tolerance of half a unit
 # in the last printed digit.
 CHAPTER = {
-    "problem1_rail_wheel.toml": {"max_pressure": (1.0e9, 0.05e9), "contact_radius": (6.8e-3, 0.05e-3)},
+    "problem1_rail_wheel.toml": {"max_pressure": (1.0e9, 0.05e9),
+                                 "contact_radius": (6.8e-3, 0.05e-3)},
 }
 
 
