@@ -70,6 +70,36 @@ def displacement_outside(n: sp.Rational) -> sp.Expr:
     return sp.simplify(u).subs(ro, r)
 
 
+@cache
+def uniform_displacement_outside() -> tuple[sp.Expr, sp.Expr]:
+    """u_z(r > a) under a uniform pressure p0: (derived form, stable form), in E*, a, p0, r.
+
+    The chord integral of n = 0 is 2 gamma, so u_z = 4 p0/(pi E*) * integral_0^asin(a/r) of
+    sqrt(a^2 - r^2 sin^2 psi) dpsi. The substitution sin psi = t sin beta (t = a/r) maps it to
+    a t * integral_0^(pi/2) cos^2 beta / sqrt(1 - t^2 sin^2 beta) dbeta, and writing cos^2 beta
+    as ((1 - m sin^2 beta) - (1 - m))/m (m = t^2) splits it into the complete integrals E and K.
+    """
+    t = unit_interval()
+    beta = sp.Symbol("beta", positive=True)  # 0 < beta < pi/2: cos(beta) > 0
+    ro = sp.Symbol("r", positive=True)
+    psi_of_beta = sp.asin(t * sp.sin(beta))
+    integrand = sp.sqrt(a**2 - ro**2 * sp.sin(psi_of_beta) ** 2) * sp.diff(psi_of_beta, beta)
+    integrand = sp.simplify(integrand.subs(ro, a / t).subs(sp.sin(beta) ** 2,
+                                                            1 - sp.cos(beta) ** 2))
+    integrand = integrand.replace(sp.Abs, lambda x: x)  # |cos beta| = cos beta on (0, pi/2)
+    m = t**2
+    root = sp.sqrt(1 - m * sp.sin(beta) ** 2)
+    split = a * t * (root - (1 - m) / root) / m
+    assert sp.simplify(split - integrand) == 0
+    integral = (a * t / m) * (sp.integrate(root, (beta, 0, sp.pi / 2))
+                              - (1 - m) * sp.integrate(1 / root, (beta, 0, sp.pi / 2)))
+    u = sp.simplify(4 * p0 / (sp.pi * E_star) * integral).subs(t, a / r)
+    # (E(m) - (1 - m) K(m))/m = (pi/4) 2F1(1/2, 1/2; 2; m): no cancellation for r >> a
+    h = sp.hyper([sp.Rational(1, 2), sp.Rational(1, 2)], [2], a**2 / r**2)
+    stable = p0 * a**2 / (E_star * r) * h
+    return u, stable
+
+
 def force(n: sp.Rational) -> sp.Expr:
     """Total force, the integral of p * 2 pi r over the disc (5.11), (5.17)."""
     xi = sp.Symbol("xi", positive=True)  # r = a*xi, so that SymPy sees 0 < xi < 1
@@ -89,7 +119,21 @@ def relations() -> list[Relation]:
     u_centre = sp.integrate(inner0.subs(r, 0), (phi, 0, 2 * sp.pi)) * p0 / (sp.pi * E_star)
     u_edge = sp.integrate(sp.Abs(a * sp.cos(phi)), (phi, 0, 2 * sp.pi)) * p0 / (sp.pi * E_star)
     u_uniform = displacement_inside(sp.Integer(0))
+    u_uniform_out, u_uniform_out_stable = uniform_displacement_outside()
     rels = [
+        Relation("uniform_pressure_displacement_outside", "Problem 6 (outside the disc)",
+                 u_uniform_out, (E_star, a, p0, r),
+                 "surface displacement u_z [m] outside a disc (r > a) under a uniform pressure p0",
+                 "(5.7) with p = p0 (n = 0) outside the disc",
+                 f"{TEST}::test_uniform_by_kernel",
+                 stable=u_uniform_out_stable,
+                 stable_why="E(m) - (1 - m) K(m) cancels like m = a^2/r^2 for r >> a; it equals "
+                 "(pi m/4) 2F1(1/2, 1/2; 2; m)",
+                 domain={r: a / unit_interval()}),
+        Relation("uniform_pressure_force", "Problem 6", force(sp.Integer(0)), (a, p0),
+                 "total force F [N] of a uniform pressure p0 on a disc of radius a",
+                 "the integral of p0 times 2 pi r over the disc",
+                 f"{TEST}::test_force_by_quadrature"),
         Relation("uniform_pressure_displacement", "Problem 6", u_uniform, (E_star, a, p0, r),
                  "surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0",
                  "(5.7) with p = p0 (n = 0); the phi-integral is 4 a E(r^2/a^2)",

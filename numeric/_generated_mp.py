@@ -32,6 +32,8 @@ __all__ = [
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
+    'uniform_pressure_displacement_outside',
+    'uniform_pressure_force',
 ]
 
 
@@ -481,3 +483,47 @@ def uniform_pressure_displacement_edge(E_star, a, p0):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
     return 4*a*p0/(mpmath.pi*E_star)
+
+
+def uniform_pressure_displacement_outside(E_star, a, p0, r):
+    """Surface displacement u_z [m] outside a disc (r > a) under a uniform pressure p0.
+
+    Chapter: Problem 6 (outside the disc). Derived from: (5.7) with p = p0 (n = 0) outside
+    the disc.
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_uniform_by_kernel``.
+
+    Printed in a stable form: E(m) - (1 - m) K(m) cancels like m = a^2/r^2 for r >> a; it
+    equals (pi m/4) 2F1(1/2, 1/2; 2; m).
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return a**2*p0*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(1)/mpmath.mpf(2)), (2,), a**2/r**2)/(E_star*r)
+
+
+def uniform_pressure_force(a, p0):
+    """Total force F [N] of a uniform pressure p0 on a disc of radius a.
+
+    Chapter: Problem 6. Derived from: the integral of p0 times 2 pi r over the disc.
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_force_by_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return mpmath.pi*a**2*p0

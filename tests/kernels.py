@@ -30,23 +30,32 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
     """
     r, a, E_star = mp.mpf(r), mp.mpf(a), mp.mpf(E_star)
 
-    def along_ray(phi):
-        sin_phi = abs(mp.sin(phi))
-        g2 = (a - r * sin_phi) * (a + r * sin_phi)
-        if g2 <= 0:  # the ray grazes the disc (rounding at phi = pi - asin(a/r))
-            return mp.mpf(0)
-        gamma = mp.sqrt(g2)
-        # inside, the ray starts at the field point, t = beta = r cos(phi); outside it crosses
-        # the whole chord, t from -gamma to gamma
-        theta_max = mp.acos(max(-1, min(1, r * mp.cos(phi) / gamma))) if r < a else mp.pi
+    def chord(gamma, theta_max):
+        """Integral of p along the part of a chord of half-length gamma, t = gamma cos(theta)."""
+        g2 = gamma * gamma
         return mp.quad(lambda th: p_gap(g2 * mp.sin(th) ** 2) * gamma * mp.sin(th),
                        [0, theta_max], method=method)
 
     if r < a:
+        def along_ray(phi):
+            sin_phi = abs(mp.sin(phi))
+            gamma = mp.sqrt((a - r * sin_phi) * (a + r * sin_phi))
+            # the ray starts at the field point: t from beta = r cos(phi) to gamma
+            return chord(gamma, mp.acos(max(-1, min(1, r * mp.cos(phi) / gamma))))
+
         total = 2 * mp.quad(along_ray, [0, mp.pi / 2, mp.pi], method=method)  # even in phi
     else:
-        phim = mp.asin(a / r)
-        total = 2 * mp.quad(along_ray, [mp.pi - phim, mp.pi], method=method)
+        # rays at angle psi from the direction of the centre meet the disc for sin(psi) < a/r;
+        # sin(psi) = (a/r) sin(beta) makes gamma = a cos(beta) exact and removes the square-root
+        # behaviour of gamma at the grazing ray; dpsi = (a/r) cos(beta)/cos(psi) dbeta
+        t = a / r
+
+        def along_beta(beta):
+            s = t * mp.sin(beta)
+            cos_psi = mp.sqrt((1 - s) * (1 + s))
+            return chord(a * mp.cos(beta), mp.pi) * t * mp.cos(beta) / cos_psi
+
+        total = 2 * mp.quad(along_beta, [0, mp.pi / 2], method=method)
     return total / (mp.pi * E_star)
 
 

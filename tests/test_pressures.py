@@ -75,6 +75,9 @@ def test_force_by_quadrature():
         f_h = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
     assert_close(g.punch_pressure_force(a, p0), f_p, TOL_FLOAT, "(5.11)")
     assert_close(g.hertz_pressure_force(a, p0), f_h, TOL_FLOAT, "(5.17)")
+    with mp.workdps(50):
+        f_u = force_axisymmetric(lambda r: mp.mpf(p0), mp.mpf(a))
+    assert_close(g.uniform_pressure_force(a, p0), f_u, TOL_FLOAT, "uniform")
 
 
 def test_punch_stiffness_by_kernel():
@@ -100,6 +103,11 @@ def test_uniform_by_kernel():
             # scipy's ellipe is accurate to a few ulps (Cephes): the float64 tolerance holds
             assert_close(g.uniform_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT,
                          f"uniform u({s} a)")
+        for s in ("1.0001", "2", "1e4"):  # the stable print keeps full accuracy far away
+            r = mp.mpf(s) * a
+            u = uz_axisymmetric(uniform, r, a, E)
+            assert_close(g.uniform_pressure_displacement_outside(E, a, p0, float(r)), u,
+                         TOL_FLOAT, f"uniform u({s} a)")
 
 
 def test_derived_expressions_to_30_digits():
