@@ -35,6 +35,12 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "rho": ("kg/m^3", "density"),
     "v0": ("m/s", "impact velocity"),
     "alpha": ("rad", "angle between the axes of two crossed cylinders"),
+    # family bodies (two elastic bodies, quadratic gaps, crossed cylinders), line, cone, impact
+    "R1a": ("m", "first principal radius of curvature of body 1 (negative: concave; inf: flat)"),
+    "R1b": ("m", "second principal radius of curvature of body 1 (negative: concave; inf: flat)"),
+    "R2a": ("m", "first principal radius of curvature of body 2 (negative: concave; inf: flat)"),
+    "R2b": ("m", "second principal radius of curvature of body 2 (negative: concave; inf: flat)"),
+    "omega": ("rad", "angle between the first principal directions of the two bodies"),
 }
 
 
