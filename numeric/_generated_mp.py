@@ -10,6 +10,25 @@ result carries the working precision. The accuracy report (``hertzmdr accuracy``
 import mpmath
 
 __all__ = [
+    'bodies_crossed_cylinders_curvature_1',
+    'bodies_crossed_cylinders_curvature_2',
+    'bodies_crossed_cylinders_gaussian_radius',
+    'bodies_effective_modulus',
+    'bodies_effective_modulus_rigid',
+    'bodies_effective_radius',
+    'bodies_gaussian_approx_area',
+    'bodies_gaussian_approx_force',
+    'bodies_gaussian_approx_max_pressure',
+    'bodies_gaussian_approx_pressure',
+    'bodies_gaussian_approx_semi_axis_1',
+    'bodies_gaussian_approx_semi_axis_2',
+    'bodies_gaussian_radius',
+    'bodies_principal_curvature_1',
+    'bodies_principal_curvature_2',
+    'bodies_problem2_force',
+    'bodies_problem2_gaussian_radius',
+    'bodies_problem2_principal_radius_1',
+    'bodies_problem2_principal_radius_2',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -35,6 +54,424 @@ __all__ = [
     'uniform_pressure_displacement_outside',
     'uniform_pressure_force',
 ]
+
+
+def bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
+    """Larger principal curvature [1/m] of the gap of two cylinders crossed at alpha.
+
+    Chapter: (5.32), (5.33), any angle. Derived from: the larger eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : mpmath.mpf
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt((mpmath.cos(2*alpha)/R2 + 1/R1)**2 + mpmath.sin(2*alpha)**2/R2**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2 + (mpmath.mpf(1)/mpmath.mpf(2))/R1
+
+
+def bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
+    """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha.
+
+    Chapter: (5.32), (5.33), any angle. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Printed in a stable form: written with the curvatures 1/R so that R = inf (flat) works;
+    the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det
+    a sum of products, positive for convex bodies: no cancellation.
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : mpmath.mpf
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return 2*mpmath.sin(alpha)**2/(R1*R2*(mpmath.sqrt((mpmath.cos(2*alpha)/R2 + 1/R1)**2 + mpmath.sin(2*alpha)**2/R2**2) + 1/R2 + 1/R1))
+
+
+def bodies_crossed_cylinders_gaussian_radius(R1, R2, alpha):
+    """Gaussian radius R~ [m] of two cylinders crossed at alpha (sqrt(R1 R2) at alpha = pi/2).
+
+    Chapter: (5.33), any angle. Derived from: 1/sqrt(kappa_1 kappa_2) of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : mpmath.mpf
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return mpmath.sqrt(R1)*mpmath.sqrt(R2)/abs(mpmath.sin(alpha))
+
+
+def bodies_effective_modulus(E1, nu1, E2, nu2):
+    """Effective modulus E* [Pa] of two elastic bodies.
+
+    Chapter: (5.26). Derived from: the sum of the two surface displacements (5.6), (5.7)
+    under one pressure.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Printed in a stable form: 1/E* as the sum of the compliances, which accepts E2 = inf
+    (rigid), with 1 - nu^2 = (1 - nu)(1 + nu) exact in floating point for nu near -1.
+
+    Parameters
+    ----------
+    E1 : mpmath.mpf
+        Young's modulus of body 1 [Pa]
+    nu1 : mpmath.mpf
+        Poisson's ratio of body 1 [1]
+    E2 : mpmath.mpf
+        Young's modulus of body 2 [Pa]
+    nu2 : mpmath.mpf
+        Poisson's ratio of body 2 [1]
+    """
+    return 1/((1 - nu2)*(nu2 + 1)/E2 + (1 - nu1)*(nu1 + 1)/E1)
+
+
+def bodies_effective_modulus_rigid(E, nu):
+    """Effective modulus E* [Pa] of an elastic body against a rigid one.
+
+    Chapter: (5.8), (5.26) with E2 -> inf. Derived from: the limit E2 -> inf of (5.26).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Printed in a stable form: 1 - nu^2 = (1 - nu)(1 + nu) is exact in floating point for nu
+    near -1, where 1 - nu^2 cancels.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return E/((1 - nu)*(nu + 1))
+
+
+def bodies_effective_radius(R1, R2):
+    """Effective radius R [m] of two spheres (negative radius: concave).
+
+    Chapter: (5.27). Derived from: the sum of the two gaps r^2/(2 R_i).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_radius_by_gap``.
+
+    Printed in a stable form: the sum of the curvatures accepts R = inf (flat).
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return 1/(1/R2 + 1/R1)
+
+
+def bodies_gaussian_approx_area(R1, R2, d):
+    """Contact area A = pi a b [m^2] of the elliptic contact (Gaussian-radius approximation).
+
+    Chapter: (5.29), approximation. Derived from: (5.28) in pi a b.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return mpmath.pi*mpmath.sqrt(R1)*mpmath.sqrt(R2)*d
+
+
+def bodies_gaussian_approx_force(E_star, R1, R2, d):
+    """Normal force F [N] of the elliptic contact (Gaussian-radius approximation).
+
+    Chapter: (5.23) with (5.30), approximation. Derived from: the ellipsoidal pressure
+    (5.31) integrated over the ellipse (5.28).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*E_star*R1**(mpmath.mpf(1)/mpmath.mpf(4))*R2**(mpmath.mpf(1)/mpmath.mpf(4))*d**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def bodies_gaussian_approx_max_pressure(E_star, R1, R2, d):
+    """Maximum pressure p0 [Pa] of the elliptic contact (Gaussian-radius approximation).
+
+    Chapter: (5.22) with (5.30), approximation. Derived from: (5.22) with R = R~.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return 2*E_star*mpmath.sqrt(d)/(mpmath.pi*R1**(mpmath.mpf(1)/mpmath.mpf(4))*R2**(mpmath.mpf(1)/mpmath.mpf(4)))
+
+
+def bodies_gaussian_approx_pressure(E_star, R1, R2, d, x, y):
+    """Pressure p(x, y) [Pa] of the elliptic contact (Gaussian-radius approximation; x along R1, 0 outside the ellipse).
+
+    Chapter: (5.31), approximation. Derived from: (5.31) with (5.28) and the p0 of (5.22) at
+    R = R~.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return 2*E_star*mpmath.sqrt(d)*mpmath.sqrt(max(0, 1 - y**2/(R2*d) - x**2/(R1*d)))/(mpmath.pi*R1**(mpmath.mpf(1)/mpmath.mpf(4))*R2**(mpmath.mpf(1)/mpmath.mpf(4)))
+
+
+def bodies_gaussian_approx_semi_axis_1(R1, d):
+    """Semi-axis a [m] along the principal radius R1 of the elliptic contact in the chapter's rough estimate.
+
+    Chapter: (5.28), approximation. Derived from: (5.21) with R = R1.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return mpmath.sqrt(R1)*mpmath.sqrt(d)
+
+
+def bodies_gaussian_approx_semi_axis_2(R2, d):
+    """Semi-axis b [m] along the principal radius R2 of the elliptic contact in the chapter's rough estimate.
+
+    Chapter: (5.28), approximation. Derived from: (5.21) with R = R2.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return mpmath.sqrt(R2)*mpmath.sqrt(d)
+
+
+def bodies_gaussian_radius(R1, R2):
+    """Gaussian radius R~ [m] of a gap with the principal radii R1, R2.
+
+    Chapter: (5.30). Derived from: the sphere with the same Gaussian curvature kappa_1
+    kappa_2.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return mpmath.sqrt(R1)*mpmath.sqrt(R2)
+
+
+def bodies_principal_curvature_1(R1a, R1b, R2a, R2b, omega):
+    """Larger principal curvature kappa_1 [1/m] of the gap between two bodies.
+
+    Chapter: (5.32), Problem 2, general. Derived from: the larger eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1a : mpmath.mpf
+        first principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R1b : mpmath.mpf
+        second principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R2a : mpmath.mpf
+        first principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    R2b : mpmath.mpf
+        second principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    omega : mpmath.mpf
+        angle between the first principal directions of the two bodies [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
+
+
+def bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
+    """Smaller principal curvature kappa_2 [1/m] of the gap between two bodies.
+
+    Chapter: (5.32), Problem 2, general. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Printed in a stable form: written with the curvatures 1/R so that R = inf (flat) works;
+    the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det
+    a sum of products, positive for convex bodies: no cancellation.
+
+    Parameters
+    ----------
+    R1a : mpmath.mpf
+        first principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R1b : mpmath.mpf
+        second principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R2a : mpmath.mpf
+        first principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    R2b : mpmath.mpf
+        second principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    omega : mpmath.mpf
+        angle between the first principal directions of the two bodies [rad]
+    """
+    return (2*(1/(R1b*R2a) + 1/(R1a*R2b))*mpmath.cos(omega)**2 + 2*(1/(R1b*R2b) + 1/(R1a*R2a))*mpmath.sin(omega)**2 + 2/(R2a*R2b) + 2/(R1a*R1b))/(mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + 1/R2b + 1/R2a + 1/R1b + 1/R1a)
+
+
+def bodies_problem2_force(E, nu, R, d):
+    """Normal force F [N] of two equal cylinders of one material crossed at pi/4 (Gaussian-radius approximation).
+
+    Chapter: Problem 2. Derived from: (5.23) with (5.26) and R~.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): with R~ = sqrt(2) R the factor is
+    2^(5/4)/3, not 2^(7/4)/3 (the printed force is sqrt(2) times too large)
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return -2*2**(mpmath.mpf(1)/mpmath.mpf(4))*E*mpmath.sqrt(R)*d**(mpmath.mpf(3)/mpmath.mpf(2))/(3*nu**2 - 3)
+
+
+def bodies_problem2_gaussian_radius(R):
+    """Gaussian radius R~ [m] of two equal cylinders crossed at pi/4.
+
+    Chapter: Problem 2. Derived from: 1/sqrt(det) of the gap's Hessian.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): with the principal radii halved, R~ =
+    sqrt(2) R, not 2 sqrt(2) R (check: R/sin(alpha) is R at alpha = pi/2, the sphere of
+    (5.33))
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return mpmath.sqrt(2)*R
+
+
+def bodies_problem2_principal_radius_1(R):
+    """Smaller principal radius [m] of two equal cylinders crossed at pi/4.
+
+    Chapter: Problem 2. Derived from: 1/kappa_1 of the gap's Hessian.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): the chapter takes the eigenvalues of the
+    coefficient matrix M of h = x^T M x, which are half the principal curvatures (the
+    Hessian is 2M): R_1,2 = R/(1 +- 1/sqrt(2)), not 2R/(1 +- 1/sqrt(2))
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -mpmath.sqrt(2)*R + 2*R
+
+
+def bodies_problem2_principal_radius_2(R):
+    """Larger principal radius [m] of two equal cylinders crossed at pi/4.
+
+    Chapter: Problem 2. Derived from: 1/kappa_2 of the gap's Hessian.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): eigenvalues of M instead of the Hessian 2M:
+    the radius is R/(1 - 1/sqrt(2)), half the printed one
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return mpmath.sqrt(2)*R + 2*R
 
 
 def hertz_contact_radius(R, d):
