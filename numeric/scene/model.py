@@ -62,11 +62,14 @@ def _quadratic(spec: SceneSpec, E_star: float):
     from hertzmdr.numeric import bodies
 
     (a1, b1, t1), (a2, b2, t2) = (_principal(b) for b in spec.bodies)
-    R1, R2 = (float(v) for v in bodies.gap_principal_radii(a1, b1, t1, a2, b2, t2))
-    if not (R1 > 0 and R2 > 0):
-        raise SceneError(spec.source, "body", "the gap between the bodies is not convex "
-                         f"(principal radii {R1:.6g} m and {R2:.6g} m): they do not touch at a "
-                         "single point; a concave radius must be larger than the convex one")
+    if math.isinf(a1) and math.isinf(b1) and math.isinf(a2) and math.isinf(b2):
+        raise SceneError(spec.source, "body", "two flat bodies have no contact point: give one "
+                         "a curved shape, or use a flat_punch")
+    try:
+        R1, R2 = (float(v) for v in bodies.principal_radii(a1, b1, a2, b2, t2 - t1))
+    except ValueError as exc:
+        raise SceneError(spec.source, "body", f"{exc}; a concave radius must be larger than "
+                         "the convex one it holds") from None
     if math.isinf(R2) or math.isinf(R1):
         raise SceneError(spec.source, "body", "line contacts are not supported yet")
     if abs(R1 - R2) <= CIRCULAR_RTOL * max(R1, R2):

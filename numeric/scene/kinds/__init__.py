@@ -60,7 +60,7 @@ class Contact:
     def node_state(self, run) -> State:
         return self.state(run.spec.load)
 
-    def effect_effective_modulus(self, st: State) -> Value:
+    def effect_effective_modulus(self) -> Value:
         return Value(self.E_star, "(5.26)", CLOSED_FORM_RTOL)
 
     def effect_depth(self, st: State) -> Value:

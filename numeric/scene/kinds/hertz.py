@@ -33,10 +33,10 @@ class HertzContact(Contact):
                          "(5.23) inverted", {})
         raise ValueError(load.kind)
 
-    def effect_effective_radius(self, st):
+    def effect_effective_radius(self):
         return Value(self.R, "(5.27)", CLOSED_FORM_RTOL)
 
-    def effect_principal_radii(self, st):
+    def effect_principal_radii(self):
         return Value(list(self.principal), "eigenvalues of the gap's quadratic form",
                      CLOSED_FORM_RTOL)
 
