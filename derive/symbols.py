@@ -35,6 +35,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "rho": ("kg/m^3", "density"),
     "v0": ("m/s", "impact velocity"),
     "alpha": ("rad", "angle between the axes of two crossed cylinders"),
+    # ellipse (exact elliptical Hertz contact)
+    "t_ba": ("1", "axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2)"),
 }
 
 
