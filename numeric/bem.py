@@ -160,15 +160,16 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
     Parameters
     ----------
     height : array_like, shape (nx, ny)
-        Height h [m] of the indenter above its lowest point at the pixel centres (axis 0 is
-        x); +inf marks pixels that can never touch (outside a punch's footprint).
+        Height h [m] of the indenter's surface at the pixel centres (axis 0 is x), measured
+        from the level h = 0 from which the depth counts (the tip of a sphere or cone, the face
+        of a punch); +inf marks pixels that can never touch (outside a punch's footprint).
     dx : float
         Pixel size along x [m], > 0.
     E_star : float
         Effective modulus [Pa], > 0 (5.8), (5.26).
     depth, force : float
-        Give exactly one: the indentation depth d [m] (> 0), measured from the first touch
-        h = min(h) = 0, or the normal force F [N] (> 0).
+        Give exactly one: the indentation depth d [m] (> 0) of the level h = 0 below the
+        undeformed surface, or the normal force F [N] (> 0).
     dy : float, optional
         Pixel size along y [m]; default dx.
     tol : float
@@ -198,7 +199,6 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
     allowed = np.isfinite(h)
     if not allowed.any():
         raise ValueError("height is +inf everywhere: no pixel can touch")
-    h = np.where(allowed, h - h[allowed].min(), np.inf)
     op = operator or HalfSpace(h.shape, dx, dy, E_star, workers=workers)
     dA = dx * dy
     hh = np.where(allowed, h, 0.0)
@@ -210,6 +210,9 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
         d = float(positive("depth", depth))
         # start: the pressure of a flat punch of the overlap region, scaled by the overlap
         over = allowed & (h < d)
+        if not over.any():
+            raise ValueError(f"depth = {d!r} is out of range; valid: depth > min(height) = "
+                             f"{h[allowed].min()!r} (the indenter must touch)")
         p = np.where(over, (d - hh) / op.self_influence, 0.0)
     t = np.zeros_like(p)
     G_old, delta = 1.0, 0.0
