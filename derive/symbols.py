@@ -41,6 +41,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "R2a": ("m", "first principal radius of curvature of body 2 (negative: concave; inf: flat)"),
     "R2b": ("m", "second principal radius of curvature of body 2 (negative: concave; inf: flat)"),
     "omega": ("rad", "angle between the first principal directions of the two bodies"),
+    # ellipse (exact elliptical Hertz contact)
+    "t_ba": ("1", "axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2)"),
 }
 
 

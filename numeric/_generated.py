@@ -29,6 +29,23 @@ __all__ = [
     'bodies_problem2_gaussian_radius',
     'bodies_problem2_principal_radius_1',
     'bodies_problem2_principal_radius_2',
+    'ellipse_area',
+    'ellipse_depth_from_force',
+    'ellipse_equivalent_radius',
+    'ellipse_force',
+    'ellipse_gaussian_area',
+    'ellipse_gaussian_depth_from_force',
+    'ellipse_gaussian_force',
+    'ellipse_gaussian_radius',
+    'ellipse_gaussian_semi_major',
+    'ellipse_gaussian_semi_minor',
+    'ellipse_max_pressure',
+    'ellipse_mean_pressure',
+    'ellipse_pressure',
+    'ellipse_radius_ratio',
+    'ellipse_semi_major',
+    'ellipse_semi_minor',
+    'ellipse_stiffness',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -474,6 +491,424 @@ def bodies_problem2_principal_radius_2(R):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
     return numpy.sqrt(2)*R + 2*R
+
+
+def ellipse_area(R1, d, t_ba):
+    """Contact area pi a b [m^2] of an elliptical contact.
+
+    Chapter: (5.29), exact. Derived from: pi a b with a, b matched.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.pi**2*R1*d*t_ba*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_depth_from_force(E_star, F, R1, t_ba):
+    """Indentation depth d [m] of an elliptical contact under the force F.
+
+    Chapter: (5.23), exact, inverted. Derived from: the exact force solved for d.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_controlled_roundtrip``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return 6**(2/3)*F**(2/3)*((1/8)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/8)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/(numpy.pi*E_star**(2/3)*R1**(1/3)*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)**(1/3))
+
+
+def ellipse_equivalent_radius(R1, t_ba):
+    """Radius R_e [m] of the sphere whose Hertz force (5.23) equals the elliptical contact's at every depth (compare with the Gaussian radius (5.30)).
+
+    Chapter: (5.23), exact. Derived from: the exact force equated to (5.23).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/8)*numpy.pi**3*R1*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**3
+
+
+def ellipse_force(E_star, R1, d, t_ba):
+    """Normal force F [N] of an elliptical Hertz contact at depth d.
+
+    Chapter: (5.23), exact. Derived from: (5.31) integrated over the ellipse, with a and p0
+    from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/3)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*d**(3/2)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
+
+
+def ellipse_gaussian_area(R1, R2, d):
+    """Contact area A = pi R~ d [m^2] of the chapter's estimate (5.29).
+
+    Chapter: (5.29). Derived from: pi a b with the semi-axes (5.28).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.pi*numpy.sqrt(R1)*numpy.sqrt(R2)*d
+
+
+def ellipse_gaussian_depth_from_force(E_star, F, R1, R2):
+    """Depth d [m] under the force F in the Gaussian-radius approximation.
+
+    Chapter: (5.24) with (5.30). Derived from: (5.23) with R -> R~, inverted.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return (1/4)*6**(2/3)*F**(2/3)/(E_star**(2/3)*R1**(1/6)*R2**(1/6))
+
+
+def ellipse_gaussian_force(E_star, R1, R2, d):
+    """Normal force F [N] of the Gaussian-radius approximation (footnote 5).
+
+    Chapter: (5.23) with (5.30). Derived from: the Hertz force (5.23) with R -> R~.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (4/3)*E_star*R1**(1/4)*R2**(1/4)*d**(3/2)
+
+
+def ellipse_gaussian_radius(R1, R2):
+    """Gaussian radius of curvature R~ [m] of the gap (5.32) (the approximation).
+
+    Chapter: (5.30), (5.33). Derived from: the Gaussian curvature of (5.32) at its minimum.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return numpy.sqrt(R1)*numpy.sqrt(R2)
+
+
+def ellipse_gaussian_semi_major(R1, d):
+    """Semi-axis a = sqrt(R1 d) [m] of the chapter's estimate (5.28).
+
+    Chapter: (5.28). Derived from: the Hertz radius (5.21) with R -> R1.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt(R1)*numpy.sqrt(d)
+
+
+def ellipse_gaussian_semi_minor(R2, d):
+    """Semi-axis b = sqrt(R2 d) [m] of the chapter's estimate (5.28).
+
+    Chapter: (5.28). Derived from: the Hertz radius (5.21) with R -> R2.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt(R2)*numpy.sqrt(d)
+
+
+def ellipse_max_pressure(E_star, R1, d, t_ba):
+    """Maximum pressure p0 [Pa] of an elliptical contact at depth d.
+
+    Chapter: (5.31), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*t_ba*numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)))
+
+
+def ellipse_mean_pressure(E_star, R1, d, t_ba):
+    """Mean pressure F/(pi a b) [Pa] of an elliptical contact.
+
+    Chapter: (5.17), exact. Derived from: the force divided by the area pi a b.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (2/3)*numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*t_ba*numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)))
+
+
+def ellipse_pressure(E_star, R1, d, t_ba, x, y):
+    """Contact pressure p(x, y) [Pa] of an elliptical contact (0 outside).
+
+    Chapter: (5.31). Derived from: (5.31) with a, b, p0 from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_pressure_field``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    import functools
+    import scipy.special
+
+    return numpy.sqrt(2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - 2*x**2*((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/(numpy.pi*R1*d*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)) - 2*y**2*((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/(numpy.pi*R1*d*t_ba**2*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))]))/(numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*t_ba*numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)))
+
+
+def ellipse_radius_ratio(t_ba):
+    """Ratio R1/R2 >= 1 of the principal radii that gives the axis ratio t = b/a.
+
+    Chapter: (5.31)-(5.32), exact. Derived from: (5.7) over (5.31) matched to the gap
+    (5.32): the y^2 and x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2)/(t_ba**2*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_semi_major(R1, d, t_ba):
+    """Semi-axis a [m] (along x, the direction of R1 >= R2) of an elliptical contact.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32): the x^0 and
+    x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_semi_minor(R1, d, t_ba):
+    """Semi-axis b = t a [m] (along y, the direction of R2) of an elliptical contact.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*numpy.sqrt(d)*t_ba*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_stiffness(E_star, R1, d, t_ba):
+    """Differential stiffness dF/dd [N/m] of an elliptical contact.
+
+    Chapter: (5.13), exact. Derived from: the derivative of the force at fixed R1, R2.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_stiffness_by_derivative``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
 
 
 def hertz_contact_radius(R, d):

@@ -1,0 +1,145 @@
+"""The boundary-element solver of numeric/bem.py against exact solutions.
+
+Routes: the pixel kernel against 2-D mpmath quadrature of the Boussinesq kernel (5.7); the FFT
+convolution against the dense sum; the contact solver against Hertz (sphere), the flat circular
+punch (5.12) and the cone (Sneddon 1965: a = 2 d/(pi tan theta), F = (pi/2) a^2 E* tan theta).
+Grids are small here (<= 64 x 64, under a second each); the convergence study with larger
+grids is benchmarks/bench_bem.py, its results docs/non_axisymmetric.md.
+"""
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import bem, hertz
+
+from oracle import assert_close
+
+
+@pytest.mark.parametrize("x, y", [(0.0, 0.0), (0.3, 0.1), (0.5, 0.25), (2.0, -1.5),
+                                  (-7.0, 3.0)])
+def test_kernel_by_quadrature(x, y):
+    """Love's closed form against the Boussinesq integral over the pixel at 30 digits.
+
+    The four-corner sum cancels terms of size |X| log|X| down to a result of size
+    dx dy/|X|: relative rounding eps (r/dx)^2, 5e-14 at r = 7.6 dx; tolerance 1e-13.
+    """
+    dx, dy, E = 1.0, 0.5, 3.0
+    got = bem.influence_kernel(x, y, dx, dy, E)
+
+    def corner(A, B):
+        """Integral of 1/r over the rectangle [0, A] x [0, B], in polar coordinates about its
+        corner (r from 0 to the far side): a 1-D quadrature in the angle."""
+        if A == 0 or B == 0:
+            return mp.mpf(0)
+        A, B = abs(A), abs(B)
+        c = mp.atan2(B, A)
+        return (mp.quad(lambda f: A / mp.cos(f), [0, c])
+                + mp.quad(lambda f: B / mp.sin(f), [c, mp.pi / 2]))
+
+    def signed(X, Y):
+        return mp.sign(X) * mp.sign(Y) * corner(X, Y)
+
+    with mp.workdps(30):
+        X0, X1 = -0.5 - mp.mpf(x), 0.5 - mp.mpf(x)  # the pixel relative to the field point
+        Y0, Y1 = -0.25 - mp.mpf(y), 0.25 - mp.mpf(y)
+        total = signed(X1, Y1) - signed(X0, Y1) - signed(X1, Y0) + signed(X0, Y0)
+        ref = total / (mp.pi * E)  # (5.7) with p = 1
+    assert_close(float(got), ref, 1e-13, f"kernel at ({x}, {y})")
+
+
+def test_convolution_is_the_dense_sum():
+    """The zero-padded FFT product equals sum_j K(x_i - x_j) p_j: no periodic images."""
+    rng = np.random.default_rng(1)
+    nx, ny, dx, dy, E = 7, 5, 0.3, 0.2, 2.0
+    p = rng.random((nx, ny))
+    op = bem.HalfSpace((nx, ny), dx, dy, E)
+    i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
+    dense = np.zeros((nx, ny))
+    for a in range(nx):
+        for b in range(ny):
+            dense[a, b] = np.sum(p * bem.influence_kernel((a - i) * dx, (b - j) * dy, dx, dy, E))
+    # float64 FFT round trip of a 14 x 10 array: a few ulps times log2(140)
+    assert np.max(np.abs(op(p) - dense)) <= 1e-14 * np.max(np.abs(dense))
+
+
+def _sphere(n, R=1.0, L=2.0):
+    x, y, dx, _ = bem.grid(n, L)
+    return (x**2 + y**2) / (2 * R), dx
+
+
+def test_hertz_sphere_depth_and_force_control():
+    """Against (5.21)-(5.23): the force converges like dx^2 (pixel collocation of a smooth
+    pressure; the contact rim costs O(dx^2) in force), the area like dx (the staircase)."""
+    E, R, d = 2.0, 1.0, 0.25
+    errs = []
+    for n in (32, 64):
+        h, dx = _sphere(n)
+        res = bem.solve(h, dx, E, depth=d)
+        errs.append(abs(res.force / hertz.force(d, R, E) - 1))
+        a = hertz.contact_radius(d, R)
+        # area: the rim pixels, +-pi 2 a dx / 2 over pi a^2 -> 1.5 dx/a at most
+        assert abs(res.area / (np.pi * a * a) - 1) < 1.5 * dx / a
+        # dF/dd = 2 a E* (Problem 5): the punch of the contact area, O(dx) as the area
+        assert abs(res.stiffness / hertz.stiffness(d, R, E) - 1) < 1.5 * dx / a
+        assert res.residual < 1e-8 and np.all(res.pressure >= 0)
+        assert np.all(res.gap[~res.contact] >= -1e-8 * d)  # no overlap, to the residual
+        by_F = bem.solve(h, dx, E, force=res.force, stiffness=False)
+        # the same discrete problem: depth back to the tolerance (1e-8 residual, x cond ~ 1e2)
+        assert abs(by_F.depth / d - 1) < 1e-6
+    assert errs[0] < 2e-3 and errs[1] < errs[0] / 3  # second order: ratio ~4
+
+
+def test_flat_circular_punch():
+    """k = 2 a E* (5.12), with a = sqrt(A/pi) of the pixelated footprint: first order in dx
+    (the edge singularity of (5.9) on pixels), -0.0036 at 64 pixels per diameter."""
+    E = 5.0
+    for n in (32, 64):
+        x, y, dx, _ = bem.grid(n, 2.0)
+        mask = x**2 + y**2 < 1.0
+        k = bem.punch_stiffness(mask, dx, E)
+        a = np.sqrt(mask.sum() * dx * dx / np.pi)
+        err = k / g.punch_stiffness(E, a) - 1
+        assert -0.5 * dx < err < 0, f"n = {n}: {err}"
+        # the same through the contact solver, depth-controlled (h = 0 on, +inf off the face)
+        res = bem.solve(np.where(mask, 0.0, np.inf), dx, E, depth=1e-3)
+        assert abs(res.force / 1e-3 / k - 1) < 1e-7
+        assert res.contact.sum() == mask.sum()
+
+
+def test_cone():
+    """Sneddon's cone: F = (pi/2) a^2 E* tan(theta), a = 2 d/(pi tan(theta)); the log
+    singularity of the pressure at the tip is integrable: force error 5e-5 at n = 64."""
+    E, theta = 1.0, 0.2
+    x, y, dx, _ = bem.grid(64, 2.0)
+    h = np.hypot(x, y) * np.tan(theta)
+    a = 0.7
+    d = np.pi * a * np.tan(theta) / 2
+    res = bem.solve(h, dx, E, depth=d)
+    assert abs(res.force / (np.pi / 2 * a**2 * E * np.tan(theta)) - 1) < 1e-3
+    assert abs(res.stiffness / (2 * a * E) - 1) < 1.5 * dx / a
+
+
+def test_polygon_punch_helper():
+    """The footprint of polygon_punch covers the polygon's area to O(dx) and is convex-closed."""
+    tri = [(0, 0), (1, 0), (0.5, np.sqrt(3) / 2)]
+    h, dx = bem.polygon_punch(tri, 64)
+    inside = np.isfinite(h)
+    assert abs(inside.sum() * dx * dx / bem.polygon_area(tri) - 1) < 3 * dx * 3 / 0.433
+    assert bem.polygon_area([(0, 0), (2, 0), (2, 1), (0, 1)]) == 2.0
+    k = bem.solve(h, dx, 1.0, depth=1.0).stiffness
+    beta = k / (2 * np.sqrt(inside.sum() * dx * dx / np.pi))  # (5.13)
+    assert 1.0 < beta < 1.1
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(height=np.zeros(3), dx=1.0, E_star=1.0, depth=1.0), "height has shape"),
+    (dict(height=np.zeros((4, 4)), dx=0.0, E_star=1.0, depth=1.0), "dx = 0.0 is out of range"),
+    (dict(height=np.ones((4, 4)), dx=1.0, E_star=1.0, depth=0.5), "depth = 0.5 is out of"),
+    (dict(height=np.zeros((4, 4)), dx=1.0, E_star=1.0), "give exactly one"),
+    (dict(height=np.full((4, 4), np.inf), dx=1.0, E_star=1.0, force=1.0), "no pixel can touch"),
+])
+def test_bad_input_is_named(kw, message):
+    with pytest.raises(ValueError, match=message):
+        bem.solve(**kw)
