@@ -117,6 +117,12 @@ CHAPTER = {
     # moves by 2.6 %, a ~ E*^(-1/3) by 1.3 % (6.875 mm exactly, 6.79 mm with the rounded E*)
     "problem1_rail_wheel.toml": {"max_pressure": (1.0e9, 0.05e9 + 0.026e9),
                                  "contact_radius": (6.8e-3, 0.05e-3 + 0.013 * 6.8e-3)},
+    # Problem 2 with the Gaussian radius, as the chapter solves it, and its erratum applied
+    # (docs/errata.md: R~ = sqrt(2) R, so F = 2^(5/4)/3 E/(1 - nu^2) R^(1/2) d^(3/2)); a few
+    # float64 roundings apart
+    "problem2_crossed_cylinders.toml": {
+        "force": (2 ** 1.25 / 3 * 210e9 / (1 - 0.3**2) * 0.02**0.5 * 5e-6**1.5, 1e-13 * 289.3),
+        "effective_radius": (2**0.5 * 0.02, 1e-15)},
 }
 
 

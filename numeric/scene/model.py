@@ -74,4 +74,6 @@ def _quadratic(spec: SceneSpec, E_star: float):
         raise SceneError(spec.source, "body", "line contacts are not supported yet")
     if abs(R1 - R2) <= CIRCULAR_RTOL * max(R1, R2):
         return HertzContact(E_star, spec.rtol, R=math.sqrt(R1 * R2), principal_radii=[R1, R2])
-    raise SceneError(spec.source, "body", "elliptical contacts are not supported yet")
+    from hertzmdr.numeric.scene.kinds.elliptic import EllipticContact
+
+    return EllipticContact(E_star, spec.rtol, R1, R2, model=spec.elliptic)

@@ -1,0 +1,103 @@
+"""Elliptical Hertz contact of a quadratic gap with unequal principal radii: exact (complete
+elliptic integrals, numeric/ellipse.py) or the chapter's Gaussian-radius estimate (5.28)-(5.30).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import ellipse
+from hertzmdr.numeric.scene.kinds import Contact, State, Value
+
+#: the tolerance to which tests/test_ellipse.py verifies the exact solution against mpmath
+EXACT_RTOL = 1e-12
+FIELD_POINTS = 201
+
+
+class EllipticContact(Contact):
+    kind = "elliptic"
+    instead = {"contact_radius": "semi_axes", "half_width": "semi_axes"}
+    why_not = {"contact_radius": "the contact is an ellipse, not a circle"}
+
+    def __init__(self, E_star, rtol, R1, R2, model="exact"):
+        super().__init__(E_star, rtol)
+        self.R1, self.R2, self.model = R1, R2, model
+        self.label = ("elliptical Hertz contact (exact, complete elliptic integrals)"
+                      if model == "exact" else
+                      "elliptical Hertz contact (the chapter's Gaussian radius (5.28)-(5.30))")
+
+    def info(self):
+        return {**super().info(), "principal_radii": [self.R1, self.R2],
+                "gaussian_radius": float(ellipse.gaussian_radius(self.R1, self.R2)),
+                "elliptic_model": self.model}
+
+    def _solve(self, **load):
+        return ellipse.solve(self.R1, self.R2, self.E_star, model=self.model, **load)
+
+    def state(self, load) -> State:
+        v = np.asarray(load.values, dtype=float)
+        c = self._solve(**{load.kind: v})
+        if self.model == "exact":
+            return State(np.atleast_1d(c.depth), np.atleast_1d(c.force), EXACT_RTOL,
+                         "elliptic integrals", {"c": c})
+        # the Gaussian estimate: its error is its deviation from the exact solution
+        exact = ellipse.solve(self.R1, self.R2, self.E_star, model="exact", **{load.kind: v})
+        return State(np.atleast_1d(c.depth), np.atleast_1d(c.force), EXACT_RTOL,
+                     "Gaussian radius (5.28)-(5.30)", {"c": c, "exact": exact})
+
+    def _value(self, st, attr, method):
+        c = st.extra["c"]
+        got = getattr(c, attr)
+        if "exact" not in st.extra:
+            return Value(got, method, EXACT_RTOL)
+        ref = getattr(st.extra["exact"], attr)
+        dev = float(np.max(np.abs(np.asarray(got) / np.asarray(ref) - 1)))
+        return Value(got, f"{method}, Gaussian estimate; rel_error = deviation from exact", dev)
+
+    def effect_depth(self, st):
+        return self._value(st, "depth", st.method)
+
+    def effect_force(self, st):
+        return self._value(st, "force", st.method)
+
+    def effect_principal_radii(self):
+        return Value([self.R1, self.R2], "eigenvalues of the gap's Hessian (Problem 2)",
+                     1e-14)
+
+    def effect_effective_radius(self):
+        return Value(float(ellipse.gaussian_radius(self.R1, self.R2)),
+                     "Gaussian radius sqrt(R1 R2) (5.30)", 1e-14)
+
+    def effect_semi_axes(self, st):
+        c = st.extra["c"]
+        a, b = np.atleast_1d(c.a), np.atleast_1d(c.b)
+        value = [float(a[0]), float(b[0])] if a.size == 1 else np.stack([a, b], axis=1)
+        out = self._value(st, "a", "(5.28)" if self.model != "exact" else "elliptic integrals")
+        if "exact" in st.extra:  # the larger deviation of the two semi-axes
+            e = st.extra["exact"]
+            dev = max(float(np.max(np.abs(np.asarray(getattr(c, k)) / getattr(e, k) - 1)))
+                      for k in ("a", "b"))
+            return Value(value, out.method, dev)
+        return Value(value, out.method, out.rel_error)
+
+    def effect_max_pressure(self, st):
+        return self._value(st, "max_pressure", "(5.31)")
+
+    def effect_mean_pressure(self, st):
+        return self._value(st, "mean_pressure", "F/(pi a b)")
+
+    def effect_stiffness(self, st):
+        return self._value(st, "stiffness", "dF/dd")
+
+    def effect_pressure_profile(self, st):
+        """Along the x axis (the direction of R1)."""
+        c = self._solve(depth=self.last(st))
+        a = float(c.a)
+        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+        return Value({"r": r, "p": c.pressure(r, 0.0)}, "(5.31) along the R1 direction",
+                     EXACT_RTOL)
+
+    def effect_force_depth_curve(self, st):
+        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
+        c = self._solve(depth=d)
+        return Value({"depth": d, "force": c.force}, self.label, EXACT_RTOL)
