@@ -1,0 +1,175 @@
+"""Problems 3 and 4 (Hertz impact) by integrating the equation of motion and by quadrature.
+
+Route 1, the equation of motion m x'' = -K x^(3/2) with the Hertz force (5.23), K = 4/3 E* R^(1/2),
+x(0) = 0, x'(0) = v0. The scales T = (m/(K v0^(1/2)))^(2/5), X = v0 T (the ODE's own, no energy
+argument) turn it into xi'' = -xi^(3/2), xi(0) = 0, xi'(0) = 1, solved once at 45 digits: a
+Frobenius series xi = sum b_k s^(1 + 5k/2) starts it at s = 1/2 (x^(3/2) is not analytic at
+x = 0), mpmath's Taylor integrator odefun carries it to the turning point xi' = 0, found by
+findroot. The contact time is twice the time of the turning point (the motion is
+time-reversible), the maximum depth is xi there.
+Route 2, the time integral 2 int_0^x0 dx / v(x) by tanh-sinh quadrature, with x0 the root of
+the energy balance found by findroot.
+"""
+
+from functools import cache
+
+import mpmath as mp
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import hertz, impact
+
+from oracle import Arg, assert_close, assert_mpmath_equal, n_points
+
+E_DOM = Arg(1e3, 1e12)
+R_DOM = Arg(1e-9, 1e3)
+V_DOM = Arg(1e-3, 1e3)
+M_DOM = Arg(1e-24, 1e12)
+RHO_DOM = Arg(1e2, 3e4)
+# products of up to eight fractional powers, each within 1 ulp, and gamma (scipy, ~1e-16):
+# about 10 ulps at worst; 1e-14 leaves margin for it.
+TOL = 1e-14
+
+
+def _series(n):
+    """Coefficients b_k of xi = sum b_k s^(1 + 5k/2) solving xi'' = -xi^(3/2), xi'(0) = 1."""
+    b, e, alpha = [mp.mpf(1)], [mp.mpf(1)], mp.mpf(3) / 2
+    for j in range(n):
+        if j:  # e_j: coefficient j of (sum b_k u^k)^(3/2), by the J.C.P. Miller recurrence
+            e.append(sum(((alpha + 1) * k - j) * b[k] * e[j - k] for k in range(1, j + 1)) / j)
+        k = j + 1
+        b.append(-e[j] / ((1 + mp.mpf(5) * k / 2) * (mp.mpf(5) * k / 2)))
+    return b
+
+
+@cache
+def turning_point():
+    """(s_m, xi_m) of xi'' = -xi^(3/2): time and depth of the turning point, 45 digits."""
+    with mp.workdps(45):
+        b = _series(60)  # terms decay like 0.04^k at s = 1/2: 1e-80, far below 1e-45
+        s0 = mp.mpf(1) / 2
+        u = s0 ** (mp.mpf(5) / 2)
+        xi = sum(bk * s0 * u**k for k, bk in enumerate(b))
+        dxi = sum(bk * (1 + mp.mpf(5) * k / 2) * u**k for k, bk in enumerate(b))
+        sol = mp.odefun(lambda s, y: [y[1], -y[0] ** (mp.mpf(3) / 2)], s0, [xi, dxi],
+                        tol=mp.mpf(10) ** -45, degree=50)
+        s_m = mp.findroot(lambda s: sol(s)[1], mp.mpf("1.6"))
+        return +s_m, +sol(s_m)[0]
+
+
+def by_equation_of_motion(E_star, R, m, v0):
+    """(x0, tau) from the equation of motion; call inside mp.workdps."""
+    s_m, xi_m = turning_point()
+    K = 4 * E_star * mp.sqrt(R) / 3  # (5.23): F = K x^(3/2)
+    T = (m / (K * mp.sqrt(v0))) ** (mp.mpf(2) / 5)
+    return v0 * T * xi_m, 2 * T * s_m
+
+
+def by_time_integral(E_star, R, m, v0):
+    """(x0, tau) from the energy balance: x0 by findroot, tau by quadrature."""
+    U = lambda x: 8 * E_star * mp.sqrt(R) * x ** (mp.mpf(5) / 2) / 15  # noqa: E731 (5.25)
+    guess = (m * v0**2 / (2 * E_star * mp.sqrt(R))) ** (mp.mpf(2) / 5)
+    x0 = mp.findroot(lambda x: U(x) - m * v0**2 / 2, guess)
+    tau = 2 * mp.quad(lambda x: 1 / mp.sqrt(v0**2 - 2 * U(x) / m), [0, x0])
+    return x0, tau
+
+
+def reference(E_star, R, m, v0):
+    """x0, tau, p0 (5.22), F (5.23), a (5.21) at the turning point of the equation of motion."""
+    x0, tau = by_equation_of_motion(E_star, R, m, v0)
+    return {"x0": x0, "tau": tau, "p0": 2 * E_star * mp.sqrt(x0 / R) / mp.pi,
+            "F": 4 * E_star * mp.sqrt(R) * x0 ** (mp.mpf(3) / 2) / 3, "a": mp.sqrt(R * x0)}
+
+
+NAMES = {"x0": "max_depth", "tau": "contact_time", "p0": "max_pressure", "F": "max_force",
+         "a": "max_contact_radius"}
+
+
+@pytest.mark.sweep
+def test_impact_by_equation_of_motion():
+    doms = {"E_star": E_DOM, "R": R_DOM, "m": M_DOM, "v0": V_DOM}
+    for key, name in NAMES.items():
+        assert_mpmath_equal(getattr(g, f"impact_{name}"),
+                            lambda key=key, **kw: reference(**kw)[key], doms, rtol=TOL,
+                            n=n_points(200, 30), dps=40, name=f"impact_{name}")
+
+    def ref_rho(key):
+        return lambda E_star, R, rho, v0: reference(E_star, R, 4 * mp.pi * R**3 * rho / 3,
+                                                    v0)[key]
+
+    doms = {"E_star": E_DOM, "R": R_DOM, "rho": RHO_DOM, "v0": V_DOM}
+    for key, name in NAMES.items():
+        if key == "p0":
+            continue
+        assert_mpmath_equal(getattr(g, f"impact_{name}_density"), ref_rho(key), doms,
+                            rtol=TOL, n=n_points(200, 30), dps=40,
+                            name=f"impact_{name}_density")
+    # p0 of a sphere of density rho does not depend on R: any R gives the same reference
+    assert_mpmath_equal(
+        g.impact_max_pressure_density,
+        lambda E_star, rho, v0: ref_rho("p0")(E_star, mp.mpf("0.37"), rho, v0),
+        {"E_star": E_DOM, "rho": RHO_DOM, "v0": V_DOM}, rtol=TOL, n=n_points(200, 30),
+        dps=40, name="impact_max_pressure_density")
+
+
+def test_impact_time_integral_agrees():
+    """Route 2 at a few points: 60-digit quadrature (1 - (x/x0)^(5/2) cancels near x0, which
+    costs digits), compared to 30 digits with route 1 and with the float64 functions."""
+    for E, R, m, v0 in ((1e11, 0.01, 0.0327, 1.0), (3e6, 1e-6, 1e-15, 20.0),
+                        (2e9, 100.0, 3e7, 0.05)):
+        with mp.workdps(60):
+            x0, tau = by_time_integral(*(mp.mpf(v) for v in (E, R, m, v0)))
+            x0_ode, tau_ode = by_equation_of_motion(*(mp.mpf(v) for v in (E, R, m, v0)))
+            assert abs(tau / tau_ode - 1) < mp.mpf(10) ** -30
+            assert abs(x0 / x0_ode - 1) < mp.mpf(10) ** -30
+            assert_close(g.impact_contact_time(E, R, m, v0), tau, TOL, "tau")
+            assert_close(g.impact_max_depth(E, R, m, v0), x0, TOL, "x0")
+
+
+def test_problem3_constant_294():
+    """Problem 3: tau = 2.94 x0/v0; the constant is 2 int_0^1 dxi/sqrt(1 - xi^(5/2))."""
+    E, R, m, v0 = 1e11, 0.01, 0.0327, 1.0
+    ratio = g.impact_contact_time(E, R, m, v0) * v0 / g.impact_max_depth(E, R, m, v0)
+    with mp.workdps(50):
+        C = 2 * mp.quad(lambda t: 1 / mp.sqrt(1 - t ** (mp.mpf(5) / 2)), [0, 1])
+    assert_close(ratio, C, 1e-14, "2 int dxi/sqrt(1 - xi^(5/2))")  # a ratio of two ~1e-15
+    assert round(float(ratio), 2) == 2.94
+
+
+def test_problem4_steel_ball():
+    """Problem 4: steel on steel, E* ~ 1e11 Pa as the chapter takes it, rho = 7.8e3 kg/m^3,
+    v0 = 1 m/s: p0 ~ 3.2e9 Pa (the chapter's two digits: agreement within 2 %)."""
+    p0 = impact.max_pressure(1.0, 0.01, 1e11, rho=7.8e3)
+    assert abs(p0 / 3.2e9 - 1) < 0.02
+    # the same through the mass of a 1 cm sphere and through (5.22) at the maximum depth
+    m = 4 / 3 * np.pi * 0.01**3 * 7.8e3
+    assert abs(impact.max_pressure(1.0, 0.01, 1e11, m=m) / p0 - 1) < 1e-14
+    x0 = impact.max_depth(1.0, 0.01, 1e11, m=m)
+    assert abs(hertz.max_pressure(x0, 0.01, 1e11) / p0 - 1) < 1e-14
+
+
+@given(st.floats(1e-2, 1e2), st.floats(1e-4, 1e1), st.floats(1e6, 1e12), st.floats(1e2, 2e4),
+       st.floats(1.0 + 1e-6, 10.0))
+def test_faster_impact_goes_deeper_and_shorter(v0, R, E, rho, factor):
+    kw = dict(R=R, E_star=E, rho=rho)
+    assert impact.max_depth(v0 * factor, **kw) > impact.max_depth(v0, **kw)
+    assert impact.contact_time(v0 * factor, **kw) < impact.contact_time(v0, **kw)
+    # mass and density forms agree
+    m = 4 / 3 * np.pi * R**3 * rho
+    assert abs(impact.contact_time(v0, R, E, m=m) / impact.contact_time(v0, **kw) - 1) < 1e-14
+    # the maximum force is the Hertz force at the maximum depth
+    x0 = impact.max_depth(v0, **kw)
+    assert abs(impact.max_force(v0, **kw) / hertz.force(x0, R, E) - 1) < 1e-14
+    assert abs(impact.max_contact_radius(v0, **kw) / hertz.contact_radius(x0, R) - 1) < 1e-14
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="exactly one"):
+        impact.max_depth(1.0, 0.01, 1e11)
+    with pytest.raises(ValueError, match="exactly one"):
+        impact.contact_time(1.0, 0.01, 1e11, m=1.0, rho=1.0)
+    with pytest.raises(ValueError, match=r"v0 = -1\.0 is out of range"):
+        impact.max_pressure(-1.0, 0.01, 1e11, rho=7.8e3)
