@@ -61,6 +61,16 @@ __all__ = [
     'hertz_pressure_displacement_outside',
     'hertz_pressure_force',
     'hertz_stiffness',
+    'impact_contact_time',
+    'impact_contact_time_density',
+    'impact_max_contact_radius',
+    'impact_max_contact_radius_density',
+    'impact_max_depth',
+    'impact_max_depth_density',
+    'impact_max_force',
+    'impact_max_force_density',
+    'impact_max_pressure',
+    'impact_max_pressure_density',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
@@ -1191,6 +1201,226 @@ def hertz_stiffness(E_star, R, d):
         indentation depth [m]
     """
     return 2*E_star*mpmath.sqrt(R)*mpmath.sqrt(d)
+
+
+def impact_contact_time(E_star, R, m, v0):
+    """Contact time tau [s] of a sphere of mass m hitting a wall at v0 (the chapter's 2.94 x0/v0, with 2.94 = (4/5) sqrt(pi) Gamma(2/5)/Gamma(9/10)).
+
+    Chapter: Problem 3. Derived from: twice the time integral of dx/v from 0 to x0, v from
+    the energy balance.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(5))*30**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.sqrt(mpmath.pi)*m**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(2)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(1)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(9)/mpmath.mpf(10)))
+
+
+def impact_contact_time_density(E_star, R, rho, v0):
+    """Contact time tau [s] of a sphere of density rho hitting a wall at v0.
+
+    Chapter: Problem 3, m = 4/3 pi R^3 rho. Derived from: twice the time integral of dx/v
+    from 0 to x0.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : mpmath.mpf
+        density [kg/m^3]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(5))*2**(mpmath.mpf(1)/mpmath.mpf(5))*5**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(9)/mpmath.mpf(10))*R*rho**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(2)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(1)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(9)/mpmath.mpf(10)))
+
+
+def impact_max_contact_radius(E_star, R, m, v0):
+    """Maximum contact radius [m] during the impact.
+
+    Chapter: Problem 4. Derived from: (5.21) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*30**(mpmath.mpf(1)/mpmath.mpf(5))*R**(mpmath.mpf(2)/mpmath.mpf(5))*m**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(2)/mpmath.mpf(5))/E_star**(mpmath.mpf(1)/mpmath.mpf(5))
+
+
+def impact_max_contact_radius_density(E_star, R, rho, v0):
+    """Maximum contact radius [m] of a sphere of density rho hitting a wall at v0.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: (5.21) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : mpmath.mpf
+        density [kg/m^3]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*2**(mpmath.mpf(3)/mpmath.mpf(5))*5**(mpmath.mpf(1)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(1)/mpmath.mpf(5))*R*rho**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(2)/mpmath.mpf(5))/E_star**(mpmath.mpf(1)/mpmath.mpf(5))
+
+
+def impact_max_depth(E_star, R, m, v0):
+    """Maximum indentation depth x0 [m] of a sphere of mass m hitting a wall at v0.
+
+    Chapter: Problem 3. Derived from: energy conservation with (5.25).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*30**(mpmath.mpf(2)/mpmath.mpf(5))*m**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(4)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5)))
+
+
+def impact_max_depth_density(E_star, R, rho, v0):
+    """Maximum indentation depth x0 [m] of a sphere of density rho hitting a wall.
+
+    Chapter: Problem 3, m = 4/3 pi R^3 rho. Derived from: energy conservation with (5.25).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : mpmath.mpf
+        density [kg/m^3]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*2**(mpmath.mpf(1)/mpmath.mpf(5))*5**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(2)/mpmath.mpf(5))*R*rho**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(4)/mpmath.mpf(5))/E_star**(mpmath.mpf(2)/mpmath.mpf(5))
+
+
+def impact_max_force(E_star, R, m, v0):
+    """Maximum contact force [N] during the impact.
+
+    Chapter: Problem 4. Derived from: (5.23) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(6))*30**(mpmath.mpf(3)/mpmath.mpf(5))*E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5))*m**(mpmath.mpf(3)/mpmath.mpf(5))*v0**(mpmath.mpf(6)/mpmath.mpf(5))
+
+
+def impact_max_force_density(E_star, R, rho, v0):
+    """Maximum contact force [N] of a sphere of density rho hitting a wall at v0.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: (5.23) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : mpmath.mpf
+        density [kg/m^3]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(3))*2**(mpmath.mpf(4)/mpmath.mpf(5))*5**(mpmath.mpf(3)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(5))*E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**2*rho**(mpmath.mpf(3)/mpmath.mpf(5))*v0**(mpmath.mpf(6)/mpmath.mpf(5))
+
+
+def impact_max_pressure(E_star, R, m, v0):
+    """Maximum contact pressure p0 [Pa] during the impact.
+
+    Chapter: Problem 4. Derived from: (5.22) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return 30**(mpmath.mpf(1)/mpmath.mpf(5))*E_star**(mpmath.mpf(4)/mpmath.mpf(5))*m**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(2)/mpmath.mpf(5))/(mpmath.pi*R**(mpmath.mpf(3)/mpmath.mpf(5)))
+
+
+def impact_max_pressure_density(E_star, rho, v0):
+    """Maximum contact pressure p0 [Pa] of a sphere of density rho hitting a wall at v0 (independent of its radius).
+
+    Chapter: Problem 4. Derived from: (5.22) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    rho : mpmath.mpf
+        density [kg/m^3]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return 2**(mpmath.mpf(3)/mpmath.mpf(5))*5**(mpmath.mpf(1)/mpmath.mpf(5))*E_star**(mpmath.mpf(4)/mpmath.mpf(5))*rho**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(2)/mpmath.mpf(5))/mpmath.pi**(mpmath.mpf(4)/mpmath.mpf(5))
 
 
 def punch_pressure_displacement(E_star, a, p0):
