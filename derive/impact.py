@@ -51,6 +51,7 @@ def solution() -> dict[str, sp.Expr]:
            "p0": sp.simplify(s["p0"].subs(at_max)), "F": sp.simplify(s["F"].subs(at_max)),
            "a": sp.simplify(s["a"].subs(at_max))}
     out.update({k + "_rho": sp.simplify(v.subs(mass)) for k, v in list(out.items())})
+    out["m_rho"] = mass[m]
     return out
 
 
@@ -103,5 +104,9 @@ def relations() -> list[Relation]:
                  s["a_rho"], (E_star, R, rho, v0),
                  "maximum contact radius [m] of a sphere of density rho hitting a wall at v0",
                  "(5.21) at the maximum depth", f"{TEST}::test_impact_by_equation_of_motion"),
+        Relation("impact_sphere_mass", "Problem 4, m = 4/3 pi R^3 rho", s["m_rho"], (R, rho),
+                 "mass m [kg] of a solid sphere of radius R and density rho",
+                 "the volume of the sphere times its density",
+                 f"{TEST}::test_sphere_mass_by_quadrature"),
     ]
     return rels

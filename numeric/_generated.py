@@ -71,6 +71,7 @@ __all__ = [
     'impact_max_force_density',
     'impact_max_pressure',
     'impact_max_pressure_density',
+    'impact_sphere_mass',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
@@ -1454,6 +1455,25 @@ def impact_max_pressure_density(E_star, rho, v0):
         impact velocity [m/s]
     """
     return 2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/numpy.pi**(4/5)
+
+
+def impact_sphere_mass(R, rho):
+    """Mass m [kg] of a solid sphere of radius R and density rho.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: the volume of the sphere times its
+    density.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_sphere_mass_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : float or ndarray
+        density [kg/m^3]
+    """
+    return (4/3)*numpy.pi*R**3*rho
 
 
 def punch_pressure_displacement(E_star, a, p0):

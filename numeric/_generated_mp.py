@@ -71,6 +71,7 @@ __all__ = [
     'impact_max_force_density',
     'impact_max_pressure',
     'impact_max_pressure_density',
+    'impact_sphere_mass',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
@@ -1421,6 +1422,25 @@ def impact_max_pressure_density(E_star, rho, v0):
         impact velocity [m/s]
     """
     return 2**(mpmath.mpf(3)/mpmath.mpf(5))*5**(mpmath.mpf(1)/mpmath.mpf(5))*E_star**(mpmath.mpf(4)/mpmath.mpf(5))*rho**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(2)/mpmath.mpf(5))/mpmath.pi**(mpmath.mpf(4)/mpmath.mpf(5))
+
+
+def impact_sphere_mass(R, rho):
+    """Mass m [kg] of a solid sphere of radius R and density rho.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: the volume of the sphere times its
+    density.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_sphere_mass_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : mpmath.mpf
+        density [kg/m^3]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.pi*R**3*rho
 
 
 def punch_pressure_displacement(E_star, a, p0):

@@ -173,3 +173,16 @@ def test_bad_input():
         impact.contact_time(1.0, 0.01, 1e11, m=1.0, rho=1.0)
     with pytest.raises(ValueError, match=r"v0 = -1\.0 is out of range"):
         impact.max_pressure(-1.0, 0.01, 1e11, rho=7.8e3)
+
+
+def test_sphere_mass_by_quadrature():
+    """m = integral of rho over the ball, as shells 4 pi r^2 dr, at 30 digits."""
+    import mpmath as mp
+
+    from hertzmdr.numeric import _generated as g
+
+    R, rho = 0.01, 7800.0
+    with mp.workdps(30):
+        ref = mp.quad(lambda r: rho * 4 * mp.pi * r**2, [0, R])
+    # one power and three products in float64
+    assert abs(g.impact_sphere_mass(R, rho) / ref - 1) < 1e-15

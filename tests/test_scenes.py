@@ -46,6 +46,7 @@ def test_only_what_is_asked_is_run():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     loaded = json.loads(out.stdout)
     for forbidden in ("hertzmdr.numeric.stress", "hertzmdr.numeric.impact",
+                      "hertzmdr.numeric.motion", "scipy.integrate",
                       "hertzmdr.numeric.mdr", "hertzmdr.numeric.plots", "sympy"):
         assert forbidden not in loaded, forbidden
 
@@ -123,7 +124,34 @@ CHAPTER = {
     "problem2_crossed_cylinders.toml": {
         "force": (2 ** 1.25 / 3 * 210e9 / (1 - 0.3**2) * 0.02**0.5 * 5e-6**1.5, 1e-13 * 289.3),
         "effective_radius": (2**0.5 * 0.02, 1e-15)},
+    # Problem 4 prints p0 = 3.2e9 Pa (two digits) for E* = 1e11 Pa, rho = 7.8e3, v0 = 1 m/s
+    "problem4_impact_pressure.toml": {"max_impact_pressure": (3.2e9, 0.05e9),
+                                      "effective_modulus": (1e11, 1e-4)},
 }
+
+
+def test_problem3_contact_time_constant():
+    """tau = 2.94 x0/v0 (the chapter prints three digits)."""
+    doc = scene.load(EXAMPLES / "problem3_impact_time.toml").run()
+    tau = doc["effects"]["contact_time"]["value"]
+    x0 = doc["effects"]["max_impact_depth"]["value"]
+    assert abs(tau * 1.0 / x0 - 2.94) < 0.005
+    # and the integrated equation of motion confirmed the closed form (default rtol 1e-10)
+    assert doc["effects"]["contact_time"]["rel_error"] < 1e-9
+
+
+def test_impact_motion_integrated_only_when_asked():
+    spec = {"effects": ["max_pressure"], "load": {"impact": {"velocity": 2.0, "mass": 0.1}},
+            "body": [{"shape": "sphere", "radius": "5 mm", "E": "200 GPa", "nu": 0.3},
+                     {"shape": "flat", "rigid": True}]}
+    record, _, _ = scene.load(spec).run_full()
+    assert "impact" not in record.evaluated
+    spec["effects"] = ["max_pressure", "contact_time"]
+    record, _, doc = scene.load(spec).run_full()
+    assert record.evaluated.count("impact") == 1
+    # the contact state at the largest compression and the impact agree on the pressure
+    assert abs(doc["effects"]["max_pressure"]["value"] / 1.0 - 1) > 0  # a number
+    assert "equation of motion" in doc["effects"]["contact_time"]["method"]
 
 
 @pytest.mark.parametrize("name", sorted(CHAPTER))

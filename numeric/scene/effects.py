@@ -40,6 +40,12 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
            "surface displacement u_z(r), inside and outside the contact (Fig. 5.2)", field=True),
     Effect("force_depth_curve", "{depth: m, force: N}", "force against depth from 0 to the load",
            field=True),
+    Effect("contact_time", "s", "duration of an elastic impact (Problem 3); the equation of "
+           "motion is integrated and compared with the closed form", needs=("impact",)),
+    Effect("max_impact_depth", "m", "largest depth during an impact (Problem 3)",
+           needs=("impact",)),
+    Effect("max_impact_pressure", "Pa", "largest pressure during an impact (Problem 4)",
+           needs=("impact",)),
 ]}
 
 

@@ -51,6 +51,8 @@ def _principal(body) -> tuple[float, float, float]:
 def build(spec: SceneSpec):
     shapes = {b.shape for b in spec.bodies}
     E_star = effective_modulus(spec)
+    if spec.load.kind == "impact":
+        return _impact(spec, E_star)
     if shapes <= QUADRATIC:
         return _quadratic(spec, E_star)
     names = ", ".join(sorted(shapes))
@@ -77,3 +79,16 @@ def _quadratic(spec: SceneSpec, E_star: float):
     from hertzmdr.numeric.scene.kinds.elliptic import EllipticContact
 
     return EllipticContact(E_star, spec.rtol, R1, R2, model=spec.elliptic)
+
+
+def _impact(spec: SceneSpec, E_star: float):
+    """Problems 3-4: a sphere strikes a fixed flat wall."""
+    shapes = sorted(b.shape for b in spec.bodies)
+    if shapes != ["flat", "sphere"]:
+        raise SceneError(spec.source, "load.impact", "an impact scene is a sphere striking a "
+                         f"flat wall (Problems 3 and 4); this one has {' and '.join(shapes)}")
+    sphere = next(b for b in spec.bodies if b.shape == "sphere")
+    R = sphere.params["radius"]
+    if R <= 0:
+        raise SceneError(spec.source, "body", "the striking sphere must be convex (radius > 0)")
+    return HertzContact(E_star, spec.rtol, R=R, striker_radius=R)

@@ -50,6 +50,9 @@ class Run:
 
 def check_applicable(spec: SceneSpec, contact) -> None:
     for name in spec.effects:
+        if "impact" in EFFECTS[name].needs and spec.load.kind != "impact":
+            raise SceneError(spec.source, "effects", f"effect {name!r} needs an impact: give "
+                             "[load.impact] with velocity and mass or density")
         if contact.has(name):
             continue
         why = contact.why_not.get(name, f"{contact.label} has no {name.replace('_', ' ')}")

@@ -60,6 +60,10 @@ class Contact:
     def node_state(self, run) -> State:
         return self.state(run.spec.load)
 
+    def node_impact(self, run):
+        """The impact's closed forms and integrated motion; only kinds that can strike."""
+        return None
+
     def effect_effective_modulus(self) -> Value:
         return Value(self.E_star, "(5.26)", CLOSED_FORM_RTOL)
 

@@ -16,15 +16,27 @@ class HertzContact(Contact):
     label = "circular Hertz contact (effective sphere on an elastic half-space)"
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
 
-    def __init__(self, E_star, rtol, R, principal_radii=None):
+    def __init__(self, E_star, rtol, R, principal_radii=None, striker_radius=None):
         super().__init__(E_star, rtol)
         self.R = R
         self.principal = principal_radii if principal_radii is not None else [R, R]
+        self.striker_radius = striker_radius  # the sphere of an impact scene, else None
 
     def info(self):
         return {**super().info(), "effective_radius": self.R, "principal_radii": self.principal}
 
+    @staticmethod
+    def _mass(load):
+        return {"m": load.mass} if load.mass is not None else {"rho": load.density}
+
     def state(self, load) -> State:
+        if load.kind == "impact":  # the contact at its largest compression
+            from hertzmdr.numeric import impact
+
+            d = np.atleast_1d(impact.max_depth(load.velocity, self.R, self.E_star,
+                                               **self._mass(load)))
+            return State(d, hertz.force(d, self.R, self.E_star), CLOSED_FORM_RTOL,
+                         "Problem 3 (largest compression)", {})
         v = np.asarray(load.values, dtype=float)
         if load.kind == "depth":
             return State(v, hertz.force(v, self.R, self.E_star), CLOSED_FORM_RTOL, "(5.23)", {})
@@ -75,3 +87,42 @@ class HertzContact(Contact):
         d = np.linspace(0.0, self.last(st), FIELD_POINTS)
         return Value({"depth": d, "force": hertz.force(d, self.R, self.E_star)}, "(5.23)",
                      CLOSED_FORM_RTOL)
+
+    def node_impact(self, run):
+        """Closed forms of Problems 3 and 4, and the equation of motion integrated to check
+        them (numeric/motion.py) at the scene's rtol (default 1e-10)."""
+        from hertzmdr.numeric import _generated, impact, motion
+
+        load = run.spec.load
+        if load.kind != "impact":
+            return None
+        kw = self._mass(load)
+        m = load.mass if load.mass is not None else \
+            float(_generated.impact_sphere_mass(self.striker_radius, load.density))
+        rtol = self.rtol or 1e-10
+        mo = motion.integrate(load.velocity, self.R, self.E_star, m, rtol=rtol)
+        closed = {"time": float(impact.contact_time(load.velocity, self.R, self.E_star, **kw)),
+                  "depth": float(impact.max_depth(load.velocity, self.R, self.E_star, **kw)),
+                  "pressure": float(impact.max_pressure(load.velocity, self.R, self.E_star,
+                                                        **kw))}
+        return {"closed": closed, "motion": mo}
+
+    def _impact_value(self, imp, key, numeric):
+        if imp is None:
+            raise ValueError("impact effects need [load.impact]")
+        dev = abs(numeric / imp["closed"][key] - 1)
+        return Value(imp["closed"][key],
+                     f"closed form (Problems 3-4); the equation of motion (DOP853, rtol "
+                     f"{imp['motion'].rtol:g}) agrees to {dev:.1e}", max(CLOSED_FORM_RTOL, dev))
+
+    def effect_contact_time(self, imp):
+        return self._impact_value(imp, "time", imp["motion"].contact_time if imp else 0)
+
+    def effect_max_impact_depth(self, imp):
+        return self._impact_value(imp, "depth", imp["motion"].max_depth if imp else 0)
+
+    def effect_max_impact_pressure(self, imp):
+        if imp is None:
+            return self._impact_value(imp, "pressure", 0)
+        p = float(hertz.max_pressure(imp["motion"].max_depth, self.R, self.E_star))  # (5.22)
+        return self._impact_value(imp, "pressure", p)
