@@ -38,8 +38,13 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
         # inside, the ray starts at the field point, t = beta = r cos(phi); outside it crosses
         # the whole chord, t from -gamma to gamma
         theta_max = mp.acos(max(-1, min(1, r * mp.cos(phi) / gamma))) if r < a else mp.pi
+        pts = [0, theta_max]
+        if method == "tanh-sinh" and theta_max > mp.pi / 2:
+            # theta = pi/2 (t = 0) is the ray's closest approach to the centre, where a
+            # pressure singular at rho = 0 (the cone's) peaks: make it an endpoint
+            pts = [0, mp.pi / 2, theta_max]
         return mp.quad(lambda th: p_gap(g2 * mp.sin(th) ** 2) * gamma * mp.sin(th),
-                       [0, theta_max], method=method)
+                       pts, method=method)
 
     if r < a:
         total = 2 * mp.quad(along_ray, [0, mp.pi / 2, mp.pi], method=method)  # even in phi
