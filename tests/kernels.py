@@ -33,8 +33,13 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
     def chord(gamma, theta_max):
         """Integral of p along the part of a chord of half-length gamma, t = gamma cos(theta)."""
         g2 = gamma * gamma
+        pts = [0, theta_max]
+        if method == "tanh-sinh" and theta_max > mp.pi / 2:
+            # theta = pi/2 (t = 0) is the ray's closest approach to the centre, where a
+            # pressure singular at rho = 0 (the cone's) peaks: make it an endpoint
+            pts = [0, mp.pi / 2, theta_max]
         return mp.quad(lambda th: p_gap(g2 * mp.sin(th) ** 2) * gamma * mp.sin(th),
-                       [0, theta_max], method=method)
+                       pts, method=method)
 
     if r < a:
         def along_ray(phi):
