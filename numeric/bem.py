@@ -24,7 +24,7 @@ import numpy as np
 from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
 __all__ = ["influence_kernel", "HalfSpace", "BEMResult", "solve", "punch_stiffness",
-           "polygon_punch", "grid", "polygon_area"]
+           "polygon_punch", "grid", "polygon_area", "read_height_map"]
 
 
 def _love_primitive(X, Y):
@@ -373,3 +373,31 @@ def polygon_punch(vertices, n: int, *, margin: float = 0.0):
     y = centre[1] + (np.arange(ny) - (ny - 1) / 2) * dx
     inside = _inside_polygon(x[:, None], y[None, :], v)
     return np.where(inside, 0.0, np.inf), dx
+
+
+def read_height_map(path):
+    """Heights [m] on a regular grid from a file: ``.npy`` (a 2-D array), or text (``.csv``
+    comma-separated, anything else whitespace-separated; one row of the grid per line, axis 0
+    is x). ``inf`` (or ``nan``, read as +inf) marks pixels that never touch. Pass the result
+    to :func:`solve` with the grid's pixel size.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file.
+
+    Returns
+    -------
+    ndarray, shape (nx, ny)
+    """
+    from pathlib import Path
+
+    path = Path(path)
+    if path.suffix == ".npy":
+        h = np.load(path, allow_pickle=False)
+    else:
+        h = np.loadtxt(path, delimiter="," if path.suffix == ".csv" else None, ndmin=2)
+    h = np.asarray(h, dtype=float)
+    if h.ndim != 2 or min(h.shape) < 2:
+        raise ValueError(f"{path}: heights of shape {h.shape}; valid: a 2-D grid, at least 2 x 2")
+    return np.where(np.isnan(h), np.inf, h)

@@ -1,0 +1,188 @@
+"""Write docs/non_axisymmetric.md and its figure from the exact elliptical solution and the
+committed benchmark results (benchmarks/results/beta.json, bem.json).
+
+Run: ``python benchmarks/make_nonaxi_doc.py`` (after benchmarks/beta.py and bench_bem.py).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from hertzmdr.numeric import ellipse
+
+ROOT = Path(__file__).resolve().parents[1]
+RESULTS = Path(__file__).parent / "results"
+DOC = ROOT / "docs" / "non_axisymmetric.md"
+FIG = ROOT / "docs" / "non_axisymmetric_errors.png"
+E, R2, D, F = 1e9, 1.0, 1e-6, 1.0
+
+
+def approximation_errors(q):
+    """Relative errors of the chapter's estimates against the exact solution at R1/R2 = q."""
+    q = np.asarray(q, dtype=float)
+    ex = ellipse.solve(q * R2, R2, E, depth=D)
+    ga = ellipse.solve(q * R2, R2, E, depth=D, model="gaussian")
+    exF = ellipse.solve(q * R2, R2, E, force=F)
+    gaF = ellipse.solve(q * R2, R2, E, force=F, model="gaussian")
+    return {
+        "a (5.28)": ga.a / ex.a - 1,
+        "b (5.28)": ga.b / ex.b - 1,
+        "area (5.29)": ga.area / ex.area - 1,
+        "force at given depth, (5.23) with R~": ga.force / ex.force - 1,
+        "depth at given force, (5.23) with R~": gaF.depth / exF.depth - 1,
+        "max pressure at given force, (5.24) with R~": gaF.max_pressure / exF.max_pressure - 1,
+    }
+
+
+def ratio_where(key, level):
+    """The R1/R2 at which |error of key| first reaches level (bisection in log q)."""
+    lo, hi = 0.0, np.log(1e4)
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if abs(approximation_errors(np.exp(mid))[key]) < level:
+            lo = mid
+        else:
+            hi = mid
+    return float(np.exp(0.5 * (lo + hi)))
+
+
+def figure(qs, errs):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for key, val in errs.items():
+        ax.semilogx(qs, 100 * val, label=key)
+    ax.axvline(10, color="0.6", lw=0.8, ls=":")
+    ax.axhline(-2.5, color="0.6", lw=0.8, ls=":")
+    ax.axhline(2.5, color="0.6", lw=0.8, ls=":")
+    ax.set_xlabel("R1/R2")
+    ax.set_ylabel("Gaussian-radius estimate / exact - 1  [%]")
+    ax.set_title("The chapter's elliptical-contact estimates against the exact solution")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(FIG, dpi=110)
+    plt.close(fig)
+
+
+def chapter(value):
+    return "-- (\"rectangular\": 1.021, no aspect ratio)" if value is None else f"{value:.3f}"
+
+
+def pct(x):
+    return f"{100 * x:+.2f} %"
+
+
+def main():
+    qs = np.geomspace(1, 1e4, 200)
+    errs = approximation_errors(qs)
+    figure(qs, errs)
+    out = ["# Non-axisymmetric contacts: the exact ellipse, beta of (5.13)-(5.14), the BEM\n\n",
+           "<!-- Written by `python benchmarks/make_nonaxi_doc.py` from the exact solution "
+           "(`hertzmdr.numeric.ellipse`) and benchmarks/results/*.json; do not edit. -->\n\n",
+           "## The Gaussian-radius approximation (5.28)-(5.30) against the exact solution\n\n",
+           "Exact: `hertzmdr.numeric.ellipse.solve` (derivation `hertzmdr.derive.ellipse`, "
+           "verified by the Boussinesq integral at 30 digits, tests/test_ellipse.py). "
+           "Estimate: a = sqrt(R1 d), b = sqrt(R2 d) (5.28), A = pi R~ d (5.29), and the Hertz "
+           "relations with R~ = sqrt(R1 R2) (5.30), (5.23), (5.24). Relative error of the "
+           "estimate; R1 >= R2, so a is the major semi-axis.\n\n",
+           f"![approximation errors]({FIG.name})\n\n"]
+    table_q = [1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000, 10000]
+    errs_t = approximation_errors(table_q)
+    tb = ellipse.axis_ratio(np.array(table_q), 1.0)
+    out.append("| R1/R2 | exact b/a | " + " | ".join(errs_t) + " |\n")
+    out.append("|---" * (len(errs_t) + 2) + "|\n")
+    for i, q in enumerate(table_q):
+        out.append(f"| {q:g} | {tb[i]:.4f} | "
+                   + " | ".join(pct(v[i]) for v in errs_t.values()) + " |\n")
+    q25 = ratio_where("force at given depth, (5.23) with R~", 0.025)
+    q25F = ratio_where("depth at given force, (5.23) with R~", 0.025)
+    q1A = ratio_where("area (5.29)", 0.01)
+    e10 = approximation_errors(10.0)
+    out.append(
+        "\n### Footnotes 4 and 5\n\n"
+        "- Footnote 4, (5.28) \"only a rough estimation\": confirmed. At R1/R2 = 10 the "
+        f"estimate of a is off by {pct(e10['a (5.28)'])}, that of b by {pct(e10['b (5.28)'])}.\n"
+        "- Footnote 4, (5.29)-(5.30) \"valid with high accuracy as long as a/b is close to 1\": "
+        "confirmed, and quantified: the area error is second order in the eccentricity, "
+        f"1 % at R1/R2 = {q1A:.2f} (b/a = {float(ellipse.axis_ratio(q1A, 1.0)):.3f}), "
+        f"{pct(e10['area (5.29)'])} at R1/R2 = 10.\n"
+        "- Footnote 5, \"even with R1/R2 = 10, (5.23) can be applied to elliptical contacts "
+        "with a precision of 2.5 %\": **not confirmed**. At R1/R2 = 10 the force of (5.23) "
+        f"with R~ is off by {pct(e10['force at given depth, (5.23) with R~'])} at a given "
+        "depth, and the depth by "
+        f"{pct(e10['depth at given force, (5.23) with R~'])} at a given force. The 2.5 % "
+        f"bound holds up to R1/R2 = {q25:.2f} (force at given depth) and {q25F:.2f} (depth "
+        "at given force). See docs/errata_approximations.md.\n\n")
+    beta = json.loads((RESULTS / "beta.json").read_text())
+    out.append("## beta of (5.13)-(5.14) for flat punches\n\n"
+               "k = 2 E* beta sqrt(A/pi). Flat-punch stiffness by the BEM "
+               "(`bem.punch_stiffness`) on grids of n pixels along the longer side, "
+               "normalised by the pixelated area; Richardson extrapolation with the observed "
+               "order on the last three grids; the uncertainty is the change of the "
+               "extrapolation from the previous triple of grids (benchmarks/beta.py).\n\n"
+               "| shape | " + " | ".join(f"n = {n}" for n in next(iter(beta.values()))["n"])
+               + " | extrapolated beta | observed order | chapter (5.14) |\n")
+    out.append("|---" * (len(next(iter(beta.values()))["n"]) + 4) + "|\n")
+    for name, r in beta.items():
+        out.append(f"| {name} | " + " | ".join(f"{b:.5f}" for b in r["beta_n"])
+                   + f" | **{r['extrapolated']:.4f} +- {r['uncertainty']:.4f}** | "
+                   f"{r['order']:.2f} | {chapter(r['chapter'])} |\n")
+    out.append("\nThe chapter's \"rectangular cross-section: beta = 1.021\" is the square; "
+               "elongated rectangles are stiffer (larger beta) -- beta grows with the aspect "
+               "ratio. The n of the 10:1 rectangle is five times, that of the 3:1 rectangle 3/4 "
+               "of the header's (whole pixels across the short side).\n\n")
+    bemr = json.loads((RESULTS / "bem.json").read_text())
+    n = bemr["grid"]
+    out.append(f"## The boundary-element solver\n\n### Hertz on a {n} x {n} grid, side by "
+               "side (one run)\n\n"
+               "Sphere R = 1 m, E* = 1 Pa, grid on [-1, 1]^2 m, force of the depth 0.25 m "
+               "(a = 0.5 m, 64 pixels per contact radius at n = 256), force-controlled, relative "
+               "residual 1e-8. Errors against Hertz (5.21)-(5.24). Machine: "
+               f"{bemr['machine']} (2 cores shared with other jobs); best of 3.\n\n"
+               "| solver | time [s] | force | depth | area | max pressure |\n"
+               "|---|---|---|---|---|---|\n")
+    for label, r in (("hertzmdr.numeric.bem", bemr["hertzmdr"]),
+                     (f"Tamaas {bemr['tamaas'].get('version', '')}", bemr["tamaas"])):
+        if "error" in r:
+            out.append(f"| {label} | {r['error']} | | | | |\n")
+            continue
+        out.append(f"| {label} | {r['seconds']:.2f} | {r['force']:.2e} | {r['depth']:.2e} | "
+                   f"{r['area']:.2e} | {r['max_pressure']:.2e} |\n")
+    if "max_pressure_difference_to_ours" in bemr["tamaas"]:
+        out.append("\nLargest pressure difference between the two solutions, over the "
+                   f"maximum pressure: {bemr['tamaas']['max_pressure_difference_to_ours']:.1e}"
+                   " (the same discrete problem: Tamaas's dcfft operator also integrates "
+                   "the kernel over uniformly loaded pixels).\n")
+    out.append(f"\nhertzmdr: {bemr['hertzmdr']['iterations']} iterations, residual "
+               f"{bemr['hertzmdr']['residual']:.1e}.\n\n"
+               "### Error against grid size\n\nSphere (depth-controlled, d = 0.25, a = 0.5), "
+               "flat circular punch of radius 1 (k = 2 a E* (5.12), with a exact and with a "
+               "from the pixelated area), cone theta = 0.2 rad with a = 0.7 (Sneddon); domain "
+               "[-1, 1]^2, n x n pixels. Relative errors.\n\n"
+               "| n | sphere F | sphere area | sphere p0 | sphere dF/dd | punch k (a) | "
+               "punch k (a_pix) | cone F | cone dF/dd | sphere time [s] |\n"
+               + "|---" * 10 + "|\n")
+    for r in bemr["convergence"]:
+        out.append(f"| {r['n']} | {r['sphere_force']:.2e} | {r['sphere_area']:.2e} | "
+                   f"{r['sphere_max_pressure']:.2e} | {r['sphere_stiffness']:.2e} | "
+                   f"{r['punch_k_vs_2aE']:.2e} | {r['punch_k_vs_2a_pixE']:.2e} | "
+                   f"{r['cone_force']:.2e} | {r['cone_stiffness']:.2e} | "
+                   f"{r['seconds_sphere']:.2f} |\n")
+    out.append("\nThe sphere's force and central pressure converge at second order in the pixel "
+               "size (a smooth pressure on pixels); areas and stiffnesses at first order, "
+               "irregularly (the staircase boundary of the contact, the edge singularity (5.9) "
+               "of a punch's pressure). The sphere's time includes its dF/dd (a punch solve on "
+               "the contact area).\n")
+    DOC.write_text("".join(out))
+    print(f"wrote {DOC.relative_to(ROOT)} and {FIG.relative_to(ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
