@@ -35,6 +35,12 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "rho": ("kg/m^3", "density"),
     "v0": ("m/s", "impact velocity"),
     "alpha": ("rad", "angle between the axes of two crossed cylinders"),
+    # family mdr, powerlaw, worn (Method of Dimensionality Reduction, Problems 7-8)
+    "n": ("1", "exponent of the power-law profile f = c_n r^n, n > 0"),
+    "c_n": ("m^(1-n)", "coefficient of the power-law profile f = c_n r^n"),
+    "kappa_n": ("1", "MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d))"),
+    "r_tilde": ("1", "normalized radius r/a"),
+    "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8)"),
 }
 
 
