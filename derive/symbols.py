@@ -43,6 +43,12 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "omega": ("rad", "angle between the first principal directions of the two bodies"),
     # ellipse (exact elliptical Hertz contact)
     "t_ba": ("1", "axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2)"),
+    # family mdr, powerlaw, worn (Method of Dimensionality Reduction, Problems 7-8)
+    "n": ("1", "exponent of the power-law profile f = c_n r^n, n > 0"),
+    "c_n": ("m^(1-n)", "coefficient of the power-law profile f = c_n r^n"),
+    "kappa_n": ("1", "MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d))"),
+    "r_tilde": ("1", "normalized radius r/a"),
+    "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8)"),
 }
 
 

@@ -1,0 +1,212 @@
+"""The Method of Dimensionality Reduction (5.51)-(5.61) for a symbolic profile f(r).
+
+Every step is the chapter's integral, handed to SymPy as it stands; nothing else is typed in.
+The endpoint singularities are taken out by substitution before SymPy sees them:
+
+- (5.52) with r = x t:             g(x) = x * integral_0^1 f'(x t) / sqrt(1 - t^2) dt
+- (5.53) with x = r t:             f(r) = (2/pi) * integral_0^1 g(r t) / sqrt(1 - t^2) dt
+- (5.57):                          F = 2 E* (d a - integral_0^a g(x) dx)
+- (5.59) with q' = -E* g' inside:  p(r) = (E*/pi) * integral_r^a g'(x) / sqrt(x^2 - r^2) dx
+- (5.60) outside (r > a):          u(r) = (2/pi) * integral_0^a (d - g(x)) / sqrt(r^2 - x^2) dx
+- (5.61):                          q(x) = 2 * integral_x^a r p(r) / sqrt(r^2 - x^2) dr
+
+A user's profile goes through :func:`solve`, which returns an :class:`MDRSolution` holding the
+closed forms SymPy found and, for each step it could not do, the unevaluated integral and why:
+
+>>> import sympy as sp
+>>> from hertzmdr.derive import mdr
+>>> r = sp.Symbol("r", positive=True)
+>>> sol = mdr.solve(r**2 / 2, r)           # a sphere of radius 1
+>>> sol.g, sol.depth, sol.force
+(x**2, a**2, 4*E_star*a**3/3)
+
+The module has no ``relations()``: the generated functions of the MDR live in the families
+that use it (:mod:`~hertzmdr.derive.powerlaw`, :mod:`~hertzmdr.derive.worn`).
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from hertzmdr.derive.symbols import E_star, a, d, symbol
+from hertzmdr.derive.symbols import r as r_out
+
+_rp = sp.Symbol("r", positive=True)  # r > 0 while integrating; results are in r_out
+
+x = symbol("x")
+t = sp.Symbol("t", positive=True)
+
+__all__ = ["MDRSolution", "solve", "transform", "inverse_transform", "force",
+           "pressure", "displacement_outside", "line_load_from_pressure", "x", "t"]
+
+
+class StepTimeout(Exception):
+    pass
+
+
+@contextmanager
+def _time_limit(seconds: float | None):
+    """Interrupt a SymPy step after ``seconds`` (only in the main thread, where SIGALRM works)."""
+    if not seconds or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum, frame):
+        raise StepTimeout(f"no closed form within {seconds} s")
+
+    old = signal.signal(signal.SIGALRM, handler)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def _clean(expr: sp.Expr) -> sp.Expr:
+    """Drop SymPy's polar bookkeeping (exp_polar(2 i pi) z is z on the principal branch)."""
+    expr = sp.unpolarify(expr.replace(sp.exp_polar, lambda arg: sp.S.One))
+    if isinstance(expr, sp.Piecewise):  # the first branch holds under our positivity
+        expr = expr.args[0][0]
+    return expr
+
+
+def _integrate(integrand, *limits, seconds=None) -> sp.Expr:
+    with _time_limit(seconds):
+        res = sp.integrate(integrand, *limits, conds="none")
+    return _clean(res)
+
+
+def transform(f: sp.Expr, r: sp.Symbol, *, seconds=None) -> sp.Expr:
+    """g(x) of (5.52) for x > 0, with r = x t taking out the endpoint singularity."""
+    fp = sp.diff(f, r).subs(r, x * t)
+    return sp.simplify(x * _integrate(fp / sp.sqrt(1 - t**2), (t, 0, 1), seconds=seconds))
+
+
+def inverse_transform(g: sp.Expr, xs: sp.Symbol = x, *, seconds=None) -> sp.Expr:
+    """f(r) of (5.53), with x = r t, as an expression in :data:`r_out`."""
+    integrand = g.subs(xs, _rp * t) / sp.sqrt(1 - t**2)
+    res = sp.simplify(2 / sp.pi * _integrate(integrand, (t, 0, 1), seconds=seconds))
+    return res.subs(_rp, r_out)
+
+
+def force(g: sp.Expr, *, seconds=None) -> sp.Expr:
+    """F_N of (5.57) with d = g(a) (5.55), as a function of the contact radius a."""
+    xi = sp.Symbol("xi", positive=True)
+    G = _integrate(g.subs(x, xi), (xi, 0, a), seconds=seconds)
+    return sp.simplify(2 * E_star * (g.subs(x, a) * a - G))
+
+
+def pressure(g: sp.Expr, *, seconds=None) -> sp.Expr:
+    """p(r) of (5.59) inside the contact (r < a), with q'(x) = -E* g'(x) for x < a."""
+    xx = sp.Symbol("xx", positive=True)
+    integrand = sp.diff(g, x).subs(x, xx) / sp.sqrt(xx**2 - _rp**2)
+    res = sp.simplify(E_star / sp.pi * _integrate(integrand, (xx, _rp, a), seconds=seconds))
+    return res.subs(_rp, r_out)
+
+
+def displacement_outside(g: sp.Expr, *, seconds=None) -> sp.Expr:
+    """u_3D(r) of (5.60) for r > a, with d = g(a)."""
+    xx = sp.Symbol("xx", positive=True)
+    integrand = (g.subs(x, a) - g.subs(x, xx)) / sp.sqrt(_rp**2 - xx**2)
+    res = 2 / sp.pi * _integrate(integrand, (xx, 0, a), seconds=seconds)
+    return sp.simplify(res).subs(_rp, r_out)
+
+
+def line_load_from_pressure(p: sp.Expr, *, seconds=None) -> sp.Expr:
+    """q(x) of (5.61) for 0 < x < a from a pressure p(r) that vanishes for r > a."""
+    integrand = 2 * _rp * p.subs(r_out, _rp) / sp.sqrt(_rp**2 - x**2)
+    return sp.simplify(_integrate(integrand, (_rp, x, a), seconds=seconds))
+
+
+@dataclass
+class MDRSolution:
+    """What SymPy could do for the profile f(r); ``missing`` names what it could not.
+
+    Expressions are in x (1-D coordinate), a (contact radius), d (depth), r (radius, inside the
+    contact for ``pressure``, outside for ``displacement_outside``) and E_star. A step that
+    failed holds the unevaluated integral; ``missing[step]`` says why.
+    """
+
+    profile: sp.Expr
+    g: sp.Expr | None = None
+    depth: sp.Expr | None = None  # d(a) = g(a), (5.55)
+    contact_radius: sp.Expr | None = None  # a(d), (5.55) solved for a
+    force: sp.Expr | None = None  # F(a), (5.57)
+    force_depth: sp.Expr | None = None  # F(d)
+    pressure: sp.Expr | None = None  # p(r), r < a, (5.59)
+    displacement_outside: sp.Expr | None = None  # u(r), r > a, (5.60)
+    missing: dict[str, str] = field(default_factory=dict)
+
+    def closed(self, step: str) -> bool:
+        """True if ``step`` (a field name) was done in closed form."""
+        return step not in self.missing and getattr(self, step) is not None
+
+
+def _attempt(sol: MDRSolution, step: str, fn, *args, seconds=None):
+    try:
+        res = fn(*args, seconds=seconds)
+    except StepTimeout as exc:
+        sol.missing[step] = str(exc)
+        return None
+    except (NotImplementedError, ValueError, TypeError) as exc:  # SymPy's ways of giving up
+        sol.missing[step] = f"SymPy failed: {type(exc).__name__}: {exc}"
+        return None
+    if res.has(sp.Integral):
+        sol.missing[step] = "SymPy returned the integral unevaluated"
+    setattr(sol, step, res)
+    return res
+
+
+def solve(f: sp.Expr, r: sp.Symbol, *, seconds: float | None = 20) -> MDRSolution:
+    """Run the MDR on the profile ``f(r)`` (r > 0) as far as SymPy gets in closed form.
+
+    Parameters
+    ----------
+    f
+        The gap profile f(r) [m] (5.52), a SymPy expression, f(0) = 0, increasing.
+    r
+        Its radial symbol (declare it positive).
+    seconds
+        Time limit for each SymPy integral (main thread only); None for no limit.
+
+    Returns
+    -------
+    MDRSolution
+        ``g``, ``depth``, ``contact_radius``, ``force``, ``force_depth``, ``pressure``,
+        ``displacement_outside``; ``missing`` maps each step SymPy could not do to the reason.
+    """
+    f = f.subs(r, _rp)
+    sol = MDRSolution(profile=f.subs(_rp, r_out))
+    g = _attempt(sol, "g", lambda ff, seconds: transform(ff, _rp, seconds=seconds), f,
+                 seconds=seconds)
+    if g is None or "g" in sol.missing:
+        for step in ("depth", "contact_radius", "force", "force_depth", "pressure",
+                     "displacement_outside"):
+            sol.missing.setdefault(step, "needs g(x) in closed form")
+        return sol
+    sol.depth = sp.simplify(g.subs(x, a))  # (5.55)
+    try:
+        with _time_limit(seconds):
+            roots = [s for s in sp.solve(sp.Eq(sol.depth, d), a) if s.is_positive is not False]
+    except (StepTimeout, NotImplementedError) as exc:
+        roots = []
+        sol.missing["contact_radius"] = f"SymPy could not solve g(a) = d: {exc}"
+    if len(roots) == 1:
+        sol.contact_radius = sp.simplify(roots[0])
+    else:
+        sol.missing.setdefault("contact_radius",
+                               f"g(a) = d has {len(roots)} positive closed-form roots")
+    F = _attempt(sol, "force", force, g, seconds=seconds)
+    if F is not None and sol.contact_radius is not None and "force" not in sol.missing:
+        sol.force_depth = sp.simplify(F.subs(a, sol.contact_radius))
+    else:
+        sol.missing.setdefault("force_depth", "needs F(a) and a(d) in closed form")
+    _attempt(sol, "pressure", pressure, g, seconds=seconds)
+    _attempt(sol, "displacement_outside", displacement_outside, g, seconds=seconds)
+    return sol

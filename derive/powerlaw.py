@@ -1,0 +1,266 @@
+"""Power-law indenters f = c_n r^n by the MDR (Problem 7), the flat punch as n -> infinity.
+
+Starting point: the MDR steps of :mod:`hertzmdr.derive.mdr` applied to f = c_n r^n with a
+symbolic n > 0. SymPy evaluates (5.52) to g = kappa_n c_n x^n with kappa_n in Gamma functions,
+solves (5.55), integrates (5.57), and evaluates the outside displacement (5.60) as a 2F1.
+
+The pressure (5.59), p = (E*/pi) kappa_n c_n n * integral_r^a x^(n-1)/sqrt(x^2 - r^2) dx, is
+beyond SymPy's integrator for symbolic n, so the derivation substitutes
+x = r/sqrt(1 - z t), z = 1 - r^2/a^2 (t from 0 at x = r to 1 at x = a), which removes the
+endpoint singularity and leaves the Euler integral integral_0^1 t^(-1/2) (1 - z t)^(-(n+1)/2) dt
+that SymPy does evaluate: p = (E*/pi) kappa_n c_n n r^(n-1) sqrt(z) 2F1(1/2, (n+1)/2; 3/2; z).
+Euler's transformation 2F1(a, b; c; z) = (1 - z)^(c-a-b) 2F1(c-a, c-b; c; z) (DLMF 15.8.1)
+then gives the form a^(n-1) sqrt(z) 2F1(1, 1 - n/2; 3/2; z), finite at the centre for n > 1.
+For integer n = 1..4, :func:`hertzmdr.derive.mdr.pressure` gives elementary functions directly.
+
+kappa_n for large n: the Gamma ratio overflows for n > 340 and its logarithm (gammaln
+differences) loses eps*ln Gamma(n/2) in relative accuracy; the Stirling series of
+ln Gamma(m + 1) - ln Gamma(m + 1/2) (m = n/2), derived by SymPy, is printed for large n.
+
+The flat punch (Problem 7(a)): g = 0 inside, so q' = -E* d delta(x - a) and (5.59) gives the
+pressure with a Dirac delta; its force is the n -> infinity limit of the power-law force.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from hertzmdr.derive import mdr
+from hertzmdr.derive.relation import Relation
+from hertzmdr.derive.symbols import E_star, F, a, d, r, symbol, unit_interval
+
+n = symbol("n")
+c_n = symbol("c_n")
+kappa_n = symbol("kappa_n")
+r_tilde = symbol("r_tilde")
+x = mdr.x
+t = mdr.t
+z = sp.Symbol("z", positive=True)
+rp = sp.Symbol("r", positive=True)
+
+TEST = "tests/test_powerlaw.py"
+#: number of terms of the Stirling series printed for kappa_n (error ~ 2e-3 m^-11, m = n/2)
+STIRLING_ORDER = 10
+
+
+@cache
+def _g() -> sp.Expr:
+    return mdr.transform(c_n * rp**n, rp)  # (5.52)
+
+
+@cache
+def kappa() -> sp.Expr:
+    """kappa_n from (5.52): g(x)/(c_n x^n) for f = c_n r^n."""
+    return sp.simplify(_g() / (c_n * x**n))
+
+
+@cache
+def kappa_asymptotic() -> sp.Expr:
+    """sqrt(pi m) exp(S(1/m)), m = n/2, S the Stirling series of ln(kappa_n/sqrt(pi m))."""
+    m = sp.Symbol("m", positive=True)
+    k = kappa().subs(n, 2 * m)
+    # kappa = sqrt(pi) Gamma(m + 1)/Gamma(m + 1/2): take logs, expand at m = oo
+    num, den = (k / sp.sqrt(sp.pi)).as_numer_denom()
+    assert isinstance(num, sp.gamma) and isinstance(den, sp.gamma), k
+    log_ratio = sp.loggamma(num.args[0]) - sp.loggamma(den.args[0]) - sp.log(m) / 2
+    series = sp.series(log_ratio, m, sp.oo, STIRLING_ORDER).removeO()
+    series = sp.expand(sp.expand_log(series, force=True))  # the log(2 pi) terms cancel
+    assert not series.has(sp.log), series
+    return (sp.sqrt(sp.pi * m) * sp.exp(sp.horner(series.subs(m, 1 / z)).subs(z, 1 / m))
+            ).subs(m, n / 2)
+
+
+@cache
+def solution() -> dict[str, sp.Expr]:
+    """g, d(a), a(d), F(a), F(d) of the power law, with kappa_n as the symbol ``kappa_n``."""
+    k = kappa()
+    g = _g().subs(k, kappa_n)  # kappa_n c_n x^n
+    assert sp.simplify(g - kappa_n * c_n * x**n) == 0
+    depth = g.subs(x, a)  # (5.55)
+    (a_d,) = sp.solve(sp.Eq(depth, d), a)
+    F_a = sp.simplify(mdr.force(g))  # (5.57) as a function of a
+    F_ad = sp.factor(sp.simplify(F_a.subs(c_n, d / (kappa_n * a**n))))  # F(a, d)
+    F_d = sp.powsimp(sp.simplify(F_a.subs(a, a_d)), force=True)
+    (d_F,) = sp.solve(sp.Eq(F, F_d), d)
+    return {"g": g, "a": a_d, "F_a": F_a, "F_ad": F_ad, "F": F_d, "d_F": d_F,
+            "pm": sp.simplify(F_ad / (sp.pi * a**2))}
+
+
+def _euler_transformation(h: sp.hyper) -> sp.Expr:
+    """2F1(a, b; c; z) = (1 - z)^(c - a - b) 2F1(c - a, c - b; c; z), DLMF 15.8.1."""
+    (pa, pb), (pc,) = h.ap, h.bq
+    zz = h.argument
+    return (1 - zz) ** (pc - pa - pb) * sp.hyper([pc - pa, pc - pb], [pc], zz)
+
+
+@cache
+def pressure_hyper() -> tuple[sp.Expr, sp.Expr]:
+    """p(r) inside for general n: (form with 2F1(1/2, (n+1)/2; 3/2; z), Euler-transformed form).
+
+    Both in terms of (E*, a, d, n, r), with kappa_n c_n = d/a^n from (5.55).
+    """
+    g = solution()["g"]
+    gp = sp.diff(g, x)
+    # x = r (1 - z t)^(-1/2): x from r (t = 0) to a (t = 1) when z = 1 - r^2/a^2; with
+    # w = 1 - z t > 0 as a symbol, x^2 - r^2 = r^2 z t / w and dx/dt = r z w^(-3/2) / 2
+    w = sp.Symbol("w", positive=True)
+    xt = rp / sp.sqrt(w)
+    dxdt = sp.diff(rp / sp.sqrt(1 - z * t), t).subs(1 - z * t, w)
+    assert sp.simplify((xt**2 - rp**2).subs(w, 1 - z * t) - rp**2 * z * t / (1 - z * t)) == 0
+    integrand = gp.subs(x, xt) * dxdt / sp.sqrt(rp**2 * z * t / w)
+    integrand = sp.powsimp(sp.expand_power_base(integrand, force=True), force=True,
+                           combine="exp")
+    integrand = integrand.subs(w, 1 - z * t)
+    const, tpart = integrand.as_independent(t, as_Add=False)
+    J = const * mdr._integrate(tpart, (t, 0, 1))  # the Euler integral of 2F1
+    assert not J.has(sp.Integral), J
+    # no simplify() from here on: it would hyperexpand the 2F1 into branch-cut forms
+    at = {c_n: d / (kappa_n * a**n)}
+    p_b = (E_star / sp.pi * J).subs(at)
+    hypers = p_b.atoms(sp.hyper)
+    assert len(hypers) == 1, p_b
+    (h,) = hypers
+    p_a = p_b.subs(h, _euler_transformation(h))
+    # z = 1 - r^2/a^2, 1 - z = r^2/a^2
+    p_a = sp.powsimp(sp.expand_power_base(p_a.subs(1 - z, rp**2 / a**2), force=True),
+                     force=True)
+    p_b = sp.powsimp(sp.expand_power_base(p_b, force=True), force=True, combine="exp")
+    return p_b.subs(z, 1 - rp**2 / a**2).subs(rp, r), p_a.subs(z, 1 - rp**2 / a**2).subs(rp, r)
+
+
+def _hyper_arg_clipped(expr: sp.Expr) -> sp.Expr:
+    """Write z = 1 - r^2/a^2 as Max(0, (a - r)(a + r))/a^2: exact near the rim, 0 outside."""
+    zc = sp.Max(0, (a - r) * (a + r)) / a**2
+    return expr.subs(1 - r**2 / a**2, zc).subs(-r**2 / a**2 + 1, zc)
+
+
+def _normalized(p_a: sp.Expr, pm: sp.Expr) -> sp.Expr:
+    """p/p_mean as a function of r_tilde = r/a, written with Max(0, (1 - r~)(1 + r~))."""
+    ratio = sp.cancel(p_a.subs(r, a * r_tilde) / pm)
+    zc = sp.Max(0, (1 - r_tilde) * (1 + r_tilde))
+    return sp.factor_terms(ratio.subs(1 - r_tilde**2, zc))
+
+
+@cache
+def pressure_integer(k: int) -> sp.Expr:
+    """p(r) inside for integer n = k from mdr.pressure, in terms of (E*, a, d, r)."""
+    kk = sp.Integer(k)
+    g = kappa().subs(n, kk) * c_n * x**kk
+    p = mdr.pressure(g).subs(c_n, d / (kappa().subs(n, kk) * a**kk))
+    return sp.simplify(p)
+
+
+@cache
+def displacement_outside() -> sp.Expr:
+    """u(r > a) from (5.60), in terms of (a, d, n, r)."""
+    u = mdr.displacement_outside(kappa_n * c_n * x**n)
+    u = sp.simplify(u.subs(c_n, d / (kappa_n * a**n)))
+    half = sp.Rational(1, 2)  # Gamma(z + 1) = z Gamma(z): the Gammas cancel (no overflow)
+    u = u.subs(sp.gamma(n / 2 + 3 * half), (n / 2 + half) * sp.gamma(n / 2 + half))
+    return sp.collect(sp.factor_terms(sp.expand(sp.cancel(u))), sp.asin(a / r))
+
+
+def punch() -> dict[str, sp.Expr]:
+    """Flat punch (Problem 7(a)): pressure from (5.59) with q' = -E* d delta(x - a)."""
+    xx = sp.Symbol("xx", positive=True)
+    qp = -E_star * d * sp.DiracDelta(xx - a)
+    p = -1 / sp.pi * sp.integrate(qp / sp.sqrt(xx**2 - rp**2), (xx, rp, sp.oo))
+    p = sp.simplify(p.subs(sp.Heaviside(rp - a), 0))  # inside, r < a
+    F_limit = sp.limit(solution()["F_ad"], n, sp.oo)
+    xx_ = sp.Symbol("xx", positive=True)  # (5.60) with g = 0 inside: u_z = d for |x| < a
+    u_out = 2 / sp.pi * sp.integrate(d / sp.sqrt(rp**2 - xx_**2), (xx_, 0, a))
+    u_out = sp.simplify(u_out.subs(rp, a / unit_interval())).subs(unit_interval(), a / r)
+    return {"p": p.subs(rp, r), "F": F_limit, "u_out": u_out}
+
+
+def relations() -> list[Relation]:
+    s = solution()
+    k = kappa()
+    half = sp.Rational(1, 2)
+    printed_kappa = sp.sqrt(sp.pi) / 2 * n * sp.gamma(n / 2) / sp.gamma(n / 2 + half)
+    p_b, p_a = pressure_hyper()
+    outside = {r: a / unit_interval()}
+    pun = punch()
+    rels = [
+        Relation("powerlaw_kappa", "Problem 7(d)", k, (n,),
+                 "MDR factor kappa_n [1] of the power-law profile, g = kappa_n c_n |x|^n "
+                 "(overflows for n > 340: use powerlaw_kappa_asymptotic there)",
+                 "(5.52) for f = c_n r^n", f"{TEST}::test_kappa_by_quadrature",
+                 printed=printed_kappa),
+        Relation("powerlaw_kappa_asymptotic", "Problem 7(d), large n", kappa_asymptotic(),
+                 (n,), f"kappa_n [1] from the Stirling series to O(n^-{STIRLING_ORDER}); "
+                 "relative error < 1e-16 for n >= 40",
+                 "the Stirling series of ln Gamma(n/2 + 1) - ln Gamma(n/2 + 1/2)",
+                 f"{TEST}::test_kappa_by_quadrature"),
+        Relation("powerlaw_g", "Problem 7(d)", s["g"], (c_n, kappa_n, n, x),
+                 "MDR profile g(x) [m] of the power-law profile f = c_n r^n, x >= 0",
+                 "(5.52) for f = c_n r^n", f"{TEST}::test_g_by_quadrature",
+                 printed=kappa_n * c_n * x**n),
+        Relation("powerlaw_contact_radius", "Problem 7(d)", s["a"], (c_n, d, kappa_n, n),
+                 "contact radius a [m] of a power-law indenter at depth d",
+                 "(5.55) with g of (5.52)", f"{TEST}::test_against_3d_elasticity",
+                 printed=(d / (kappa_n * c_n)) ** (1 / n)),
+        Relation("powerlaw_force", "Problem 7(d)", s["F"], (E_star, c_n, d, kappa_n, n),
+                 "normal force F [N] of a power-law indenter at depth d",
+                 "(5.57) at the contact radius of (5.55)", f"{TEST}::test_force_by_pressure",
+                 printed=2 * n * E_star / (n + 1) * (kappa_n * c_n) ** (1 / n)
+                 * d ** ((n + 1) / n),
+                 erratum="the factor (kappa_n c_n)^(1/n) must be (kappa_n c_n)^(-1/n): with "
+                 "a = (d/(kappa_n c_n))^(1/n), (5.57) gives F = 2n/(n+1) E* a d; for n = 2 "
+                 "(kappa_2 c_2 = 1/R) only the corrected form reproduces (5.23)"),
+        Relation("powerlaw_force_from_radius", "Problem 7(d), (5.57)", s["F_ad"],
+                 (E_star, a, d, n),
+                 "normal force F [N] of a power-law indenter with contact radius a at depth d",
+                 "(5.57) with d = g(a) (5.55)", f"{TEST}::test_force_by_pressure"),
+        Relation("powerlaw_depth_from_force", "Problem 7(d), inverted", s["d_F"],
+                 (E_star, F, c_n, kappa_n, n),
+                 "indentation depth d [m] of a power-law indenter under the force F",
+                 "the force of Problem 7(d) solved for d", f"{TEST}::test_force_roundtrip"),
+        Relation("powerlaw_mean_pressure", "Fig. 5.17", s["pm"], (E_star, a, d, n),
+                 "mean pressure F/(pi a^2) [Pa] of a power-law indenter",
+                 "(5.57) over the contact area", f"{TEST}::test_force_by_pressure"),
+        Relation("powerlaw_pressure", "Problem 7(d), (5.59)", _hyper_arg_clipped(p_a),
+                 (E_star, a, d, n, r),
+                 "contact pressure p(r) [Pa] of a power-law indenter, 0 for r > a; accurate "
+                 "for n >= 1.5 (use powerlaw_pressure_small_n below)",
+                 "(5.59) with x = r/sqrt(1 - z t), then Euler's transformation",
+                 f"{TEST}::test_against_3d_elasticity"),
+        Relation("powerlaw_pressure_small_n", "Problem 7(d), (5.59)", _hyper_arg_clipped(p_b),
+                 (E_star, a, d, n, r),
+                 "contact pressure p(r) [Pa] of a power-law indenter, 0 for r > a; the form "
+                 "accurate for n < 1.5 (singular like r^(n-1) at the centre for n < 1)",
+                 "(5.59) with x = r/sqrt(1 - z t)", f"{TEST}::test_against_3d_elasticity"),
+        Relation("powerlaw_pressure_normalized", "Fig. 5.17",
+                 _normalized(p_a, s["pm"]), (n, r_tilde),
+                 "normalized pressure p/p_mean [1] at r_tilde = r/a < 1 of a power-law "
+                 "indenter (n >= 1.5)", "(5.59) divided by (5.57)/(pi a^2)",
+                 f"{TEST}::test_normalized_pressure_by_quadrature"),
+        Relation("powerlaw_displacement_outside", "Problem 7(d), (5.60)", displacement_outside(),
+                 (a, d, n, r),
+                 "surface displacement u_z(r) [m] outside the contact (r > a) of a power-law "
+                 "indenter", "(5.60) for r > a", f"{TEST}::test_against_3d_elasticity",
+                 domain=outside),
+        Relation("powerlaw_punch_pressure", "Problem 7(a)", pun["p"], (E_star, a, d, r),
+                 "contact pressure p(r) [Pa] under a flat rigid punch of radius a at depth d, "
+                 "r < a", "(5.59) with q' = -E* d delta(x - a)", f"{TEST}::test_punch",
+                 printed=E_star * d / (sp.pi * sp.sqrt(a**2 - r**2)),
+                 domain={r: a * unit_interval()}),
+        Relation("powerlaw_punch_force", "Problem 7(a)", pun["F"], (E_star, a, d),
+                 "normal force F [N] of a flat rigid punch of radius a at depth d",
+                 "the n -> infinity limit of (5.57) for the power law", f"{TEST}::test_punch",
+                 printed=2 * E_star * a * d),
+        Relation("powerlaw_punch_displacement_outside", "Problem 7(a)", pun["u_out"],
+                 (a, d, r), "surface displacement u_z(r) [m] outside a flat punch (r > a)",
+                 "the n -> infinity limit of (5.60) for the power law", f"{TEST}::test_punch",
+                 printed=2 * d / sp.pi * sp.asin(a / r), domain=outside),
+    ]
+    for kk in (1, 2, 3, 4):
+        rels.append(Relation(
+            f"powerlaw_pressure_n{kk}", f"Problem 7(d), n = {kk}",
+            pressure_integer(kk), (E_star, a, d, r),
+            f"contact pressure p(r) [Pa] of the power-law indenter n = {kk} for 0 < r < a, "
+            "in elementary functions", f"(5.59) for f = c_{kk} r^{kk}",
+            f"{TEST}::test_against_3d_elasticity", domain={r: a * unit_interval()}))
+    return rels

@@ -1,0 +1,236 @@
+"""Power-law indenters f = c_n r^n by the MDR (Problem 7), with the flat punch as n -> inf.
+
+Floats or NumPy arrays in SI units; bad input raises ValueError. The formulas are generated
+from :mod:`hertzmdr.derive.powerlaw`; this module validates, broadcasts and picks the form that
+is accurate for the given n:
+
+- kappa_n: the Gamma ratio for n < 40, the Stirling series above (no overflow up to n = 1e300).
+- pressure: elementary forms for n = 1, 2, 3, 4; the 2F1 form for n >= 1.5; the Euler-
+  transformed 2F1 for n < 1.5.
+
+``c_n`` has the unit m^(1-n) (f = c_n r^n in metres for r in metres).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric._validate import nonnegative, positive, result
+
+__all__ = ["kappa", "g_profile", "contact_radius", "force", "force_from_radius",
+           "depth_from_force", "mean_pressure", "pressure", "pressure_normalized",
+           "surface_displacement", "N_ASYMPTOTIC"]
+
+#: kappa_n switches from the Gamma ratio to the Stirling series at this n (both < 1e-15 there)
+N_ASYMPTOTIC = 40.0
+
+
+def kappa(n):
+    """MDR factor kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2) [1], Problem 7(d).
+
+    g(x) = kappa_n c_n |x|^n is the MDR profile (5.52) of f = c_n r^n. kappa_n ~ sqrt(pi n/2)
+    for large n; kappa_1 = pi/2, kappa_2 = 2.
+
+    Parameters
+    ----------
+    n : float or array_like
+        Exponent, n > 0 (finite).
+    """
+    n = positive("n", n)
+    with np.errstate(over="ignore", invalid="ignore"):
+        small = g.powerlaw_kappa(np.minimum(n, N_ASYMPTOTIC))
+    large = g.powerlaw_kappa_asymptotic(np.maximum(n, N_ASYMPTOTIC))
+    return result(np.where(n < N_ASYMPTOTIC, small, large))
+
+
+def g_profile(x, c_n, n):
+    """MDR profile g(x) = kappa_n c_n |x|^n [m] (5.52), Problem 7(d).
+
+    Parameters
+    ----------
+    x : float or array_like
+        1-D coordinate [m].
+    c_n : float or array_like
+        Profile coefficient [m^(1-n)], > 0.
+    n : float or array_like
+        Exponent, > 0.
+    """
+    x = np.abs(np.asarray(x, dtype=float))
+    c_n, n = positive("c_n", c_n), positive("n", n)
+    return result(g.powerlaw_g(c_n, kappa(n), n, nonnegative("x", x)))
+
+
+def contact_radius(d, c_n, n):
+    """Contact radius a = (d/(kappa_n c_n))^(1/n) [m], (5.55).
+
+    Parameters
+    ----------
+    d : float or array_like
+        Indentation depth [m], >= 0.
+    c_n, n
+        As in :func:`g_profile`.
+    """
+    c_n, n = positive("c_n", c_n), positive("n", n)
+    return result(g.powerlaw_contact_radius(c_n, nonnegative("d", d), kappa(n), n))
+
+
+def force(d, c_n, n, E_star):
+    """Normal force F = 2n/(n+1) E* a d [N], (5.57) (the print of Problem 7(d) has an erratum).
+
+    Parameters
+    ----------
+    d, c_n, n
+        As in :func:`contact_radius`.
+    E_star : float or array_like
+        Effective modulus [Pa], > 0.
+    """
+    c_n, n = positive("c_n", c_n), positive("n", n)
+    return result(g.powerlaw_force(positive("E_star", E_star), c_n, nonnegative("d", d),
+                                   kappa(n), n))
+
+
+def force_from_radius(a, d, n, E_star):
+    """F = 2n/(n+1) E* a d [N] for a contact of radius a at depth d, (5.57).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Contact radius [m], >= 0.
+    d : float or array_like
+        Depth [m], >= 0.
+    n, E_star
+        As above.
+    """
+    return result(g.powerlaw_force_from_radius(positive("E_star", E_star),
+                                               nonnegative("a", a), nonnegative("d", d),
+                                               positive("n", n)))
+
+
+def depth_from_force(F, c_n, n, E_star):
+    """Indentation depth d [m] under the normal force F, Problem 7(d) inverted.
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], >= 0.
+    c_n, n, E_star
+        As above.
+    """
+    c_n, n = positive("c_n", c_n), positive("n", n)
+    return result(g.powerlaw_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+                                              c_n, kappa(n), n))
+
+
+def mean_pressure(d, c_n, n, E_star):
+    """Mean pressure F/(pi a^2) [Pa] (Fig. 5.17). Parameters as :func:`force`."""
+    a = contact_radius(d, c_n, n)
+    return result(g.powerlaw_mean_pressure(positive("E_star", E_star), a, positive("d", d),
+                                           positive("n", n)))
+
+
+def _pressure_at(r, a, d, n, E_star):
+    """Pressure for broadcast arrays with r < a, n finite; picks the accurate form."""
+    out = np.empty(r.shape)
+    forms = {1.0: g.powerlaw_pressure_n1, 2.0: g.powerlaw_pressure_n2,
+             3.0: g.powerlaw_pressure_n3, 4.0: g.powerlaw_pressure_n4}
+    done = np.zeros(r.shape, dtype=bool)
+    for k, fn in forms.items():
+        sel = n == k
+        if k in (1.0, 3.0):
+            sel &= r > 0  # log(a/r): the cone's centre is singular; n = 3 uses the 2F1 at 0
+        out[sel] = fn(E_star[sel], a[sel], d[sel], r[sel])
+        done |= sel
+    big = ~done & (n >= 1.5)
+    out[big] = g.powerlaw_pressure(E_star[big], a[big], d[big], n[big], r[big])
+    small = ~done & (n < 1.5)
+    with np.errstate(divide="ignore"):  # r^(n-1) at r = 0 for n < 1: the true singularity
+        out[small] = g.powerlaw_pressure_small_n(E_star[small], a[small], d[small],
+                                                 n[small], r[small])
+    return out
+
+
+def pressure(r, d, c_n, n, E_star):
+    """Contact pressure p(r) [Pa] of a power-law indenter, 0 outside the contact, (5.59).
+
+    n = inf is the flat punch of radius a = ``c_n`` (pass the punch radius as c_n then):
+    p = E* d/(pi sqrt(a^2 - r^2)). At the centre p is +inf for n <= 1 (the cone's logarithmic
+    and the r^(n-1) singularities); at the rim of the punch p is +inf.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the centre [m], >= 0.
+    d : float or array_like
+        Depth [m], > 0.
+    c_n : float or array_like
+        Profile coefficient [m^(1-n)], > 0 (the punch radius [m] for n = inf).
+    n : float or array_like
+        Exponent, > 0, may be inf.
+    E_star : float or array_like
+        Effective modulus [Pa], > 0.
+    """
+    r, d, c_n, n, E_star = np.broadcast_arrays(
+        nonnegative("r", r), positive("d", d), positive("c_n", c_n),
+        positive("n", n, allow_inf=True), positive("E_star", E_star))
+    out = np.zeros(r.shape)
+    punch = np.isinf(n)
+    a = np.where(punch, c_n, 0.0)
+    fin = ~punch
+    a[fin] = contact_radius(d[fin], c_n[fin], n[fin])
+    inside = r < a
+    sel = inside & punch
+    with np.errstate(divide="ignore"):
+        out[sel] = g.powerlaw_punch_pressure(E_star[sel], a[sel], d[sel], r[sel])
+    sel = inside & fin
+    out[sel] = _pressure_at(r[sel], a[sel], d[sel], n[sel], E_star[sel])
+    return result(out)
+
+
+def pressure_normalized(r_tilde, n):
+    """p/p_mean [1] at r_tilde = r/a (Fig. 5.17), 0 for r_tilde >= 1.
+
+    Parameters
+    ----------
+    r_tilde : float or array_like
+        Normalized radius r/a, >= 0.
+    n : float or array_like
+        Exponent, > 0, may be inf (flat punch: 1/(2 sqrt(1 - r_tilde^2))).
+    """
+    rt, n = np.broadcast_arrays(nonnegative("r_tilde", r_tilde), positive("n", n, allow_inf=True))
+    # p/p_mean = p(r) pi a^2/F for a = 1, d = 1, E* = 1: F = 2n/(n+1) (2 for the punch)
+    nn = np.where(np.isinf(n), 1.0, n)
+    F = np.where(np.isinf(n), 2.0, 2 * nn / (nn + 1))
+    c = np.where(np.isinf(n), 1.0, 1.0 / kappa(nn))  # a = 1 at d = 1
+    p = pressure(rt, 1.0, c, n, 1.0)
+    return result(p * np.pi / F)
+
+
+def surface_displacement(r, d, c_n, n):
+    """Surface displacement u_z(r) [m]: d - c_n r^n inside, (5.60) outside the contact.
+
+    n = inf is the flat punch of radius ``c_n`` (inside: u_z = d).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the centre [m], >= 0.
+    d, c_n, n
+        As in :func:`pressure`.
+    """
+    r, d, c_n, n = np.broadcast_arrays(nonnegative("r", r), positive("d", d),
+                                       positive("c_n", c_n), positive("n", n, allow_inf=True))
+    punch = np.isinf(n)
+    a = np.where(punch, c_n, 0.0)
+    fin = ~punch
+    a[fin] = contact_radius(d[fin], c_n[fin], n[fin])
+    out = np.empty(r.shape)
+    inside = r <= a
+    sel = inside & fin
+    out[sel] = d[sel] - c_n[sel] * r[sel] ** n[sel]
+    out[inside & punch] = d[inside & punch]
+    sel = ~inside & fin
+    out[sel] = g.powerlaw_displacement_outside(a[sel], d[sel], n[sel], r[sel])
+    sel = ~inside & punch
+    out[sel] = g.powerlaw_punch_displacement_outside(a[sel], d[sel], r[sel])
+    return result(out)
