@@ -20,6 +20,28 @@ FIG = ROOT / "docs" / "non_axisymmetric_errors.png"
 E, R2, D, F = 1e9, 1.0, 1e-6, 1.0
 
 
+API = """## API (SI units; arrays broadcast)
+
+```python
+from hertzmdr.numeric import ellipse, bem
+c = ellipse.solve(R1, R2, E_star, depth=d)   # or force=F; model="gaussian": (5.28)-(5.30)
+c.a, c.b            # semi-axes along x (R1) and y (R2) [m]
+c.depth, c.force, c.max_pressure, c.mean_pressure, c.stiffness, c.area
+c.pressure(x, y)    # (5.31) [Pa], 0 outside
+ellipse.axis_ratio(R1, R2), ellipse.eccentricity(R1, R2), ellipse.gaussian_radius(R1, R2)
+
+x, y, dx, dy = bem.grid(n, length)                   # pixel centres of an n x n grid
+r = bem.solve(height, dx, E_star, depth=d)           # or force=F; dy=, tol=1e-8, stiffness=True
+r.pressure, r.displacement, r.gap, r.contact         # grids
+r.area, r.force, r.depth, r.stiffness, r.iterations, r.residual
+height, dx = bem.polygon_punch(vertices, n)          # flat punch: 0 on the footprint, +inf off it
+k = bem.punch_stiffness(mask, dx, E_star)            # F/d of a flat punch of footprint mask
+height = bem.read_height_map("heights.csv")          # .npy, .csv, whitespace text
+```
+
+"""
+
+
 def approximation_errors(q):
     """Relative errors of the chapter's estimates against the exact solution at R1/R2 = q."""
     q = np.asarray(q, dtype=float)
@@ -93,6 +115,7 @@ def main():
            "relations with R~ = sqrt(R1 R2) (5.30), (5.23), (5.24). Relative error of the "
            "estimate; R1 >= R2, so a is the major semi-axis.\n\n",
            f"![approximation errors]({FIG.name})\n\n"]
+    out.insert(2, API)
     table_q = [1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000, 10000]
     errs_t = approximation_errors(table_q)
     tb = ellipse.axis_ratio(np.array(table_q), 1.0)

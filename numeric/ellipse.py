@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hertzmdr.numeric import _generated as g
-from hertzmdr.numeric._validate import nonnegative, positive, result
+from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["EllipticContact", "solve", "axis_ratio", "eccentricity", "gaussian_radius",
            "MAX_RADIUS_RATIO"]
@@ -144,8 +144,6 @@ class EllipticContact:
             Surface coordinates [m] from the centre, x along R1, y along R2; they broadcast
             against the contact's arrays.
         """
-        from hertzmdr.numeric._validate import as_float
-
         x, y = as_float("x", x), as_float("y", y)
         s = 1 - (x / self.a) ** 2 - (y / self.b) ** 2
         return result(self.max_pressure * np.sqrt(np.maximum(s, 0.0)))  # (5.31)
@@ -177,7 +175,7 @@ def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> El
         raise ValueError("give exactly one of depth= and force=")
     if model not in ("exact", "gaussian"):
         raise ValueError(f"model = {model!r} is out of range; valid: 'exact', 'gaussian'")
-    q = _ratio(R1, R2)
+    _ratio(R1, R2)  # validates R1, R2 and their ratio
     R1, R2, E = positive("R1", R1), positive("R2", R2), positive("E_star", E_star)
     if model == "gaussian":
         Rt = g.ellipse_gaussian_radius(R1, R2)  # (5.30)
@@ -190,7 +188,6 @@ def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> El
         area = g.ellipse_gaussian_area(R1, R2, d)  # (5.29)
     else:
         t = np.asarray(axis_ratio(R1, R2))
-        del q
         Rmaj = np.maximum(R1, R2)  # a_major lies along the larger radius
         d = (nonnegative("depth", depth) if force is None
              else g.ellipse_depth_from_force(E, nonnegative("force", force), Rmaj, t))
