@@ -125,6 +125,11 @@ CHAPTER = {
         "force": (2 ** 1.25 / 3 * 210e9 / (1 - 0.3**2) * 0.02**0.5 * 5e-6**1.5, 1e-13 * 289.3),
         "effective_radius": (2**0.5 * 0.02, 1e-15)},
     # Problem 4 prints p0 = 3.2e9 Pa (two digits) for E* = 1e11 Pa, rho = 7.8e3, v0 = 1 m/s
+    # Problem 6: u(0) = 2 p0 a/E*, u(a) = 4 p0 a/(pi E*); E* = E/(1 - nu^2) with a rigid plate
+    "problem6_uniform_pressure.toml": {
+        "depth": (2 * 10e6 * 2e-3 / (70e9 / (1 - 0.33**2)), 1e-14 * 5.1e-7),
+        "edge_displacement": (4 * 10e6 * 2e-3 / (3.141592653589793 * 70e9 / (1 - 0.33**2)),
+                              1e-14 * 3.3e-7)},
     "problem4_impact_pressure.toml": {"max_impact_pressure": (3.2e9, 0.05e9),
                                       "effective_modulus": (1e11, 1e-4)},
 }

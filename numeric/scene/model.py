@@ -53,6 +53,14 @@ def build(spec: SceneSpec):
     E_star = effective_modulus(spec)
     if spec.load.kind == "impact":
         return _impact(spec, E_star)
+    if spec.load.kind == "pressure":
+        if shapes != {"flat"}:
+            raise SceneError(spec.source, "load.pressure", "a prescribed pressure acts between "
+                             "two flat bodies (section 5.1); give both bodies shape = \"flat\"")
+        from hertzmdr.numeric.scene.kinds.pressure import PressureLoad
+
+        ld = spec.load
+        return PressureLoad(E_star, spec.rtol, ld.distribution, ld.p0, ld.radius)
     if shapes <= QUADRATIC:
         return _quadratic(spec, E_star)
     names = ", ".join(sorted(shapes))

@@ -54,12 +54,20 @@ class Body:
 
 @dataclass
 class Load:
-    kind: str  # "depth", "force" or "impact"
+    kind: str  # "depth", "force", "impact" or "pressure"
     values: list[float] = field(default_factory=list)  # one value, or the points of a sweep
     sweep: bool = False
     velocity: float | None = None
     mass: float | None = None
     density: float | None = None
+    distribution: str | None = None  # a prescribed pressure: "uniform", "hertzian", "punch"
+    p0: float | None = None
+    radius: float | None = None
+
+
+#: prescribed pressures p0 (1 - r^2/a^2)^n of section 5.1 and Problem 6
+DISTRIBUTIONS = {"uniform": "n = 0 (Problem 6)", "hertzian": "n = 1/2 (5.15)",
+                 "punch": "n = -1/2 (5.9)"}
 
 
 @dataclass
@@ -154,7 +162,8 @@ class _Reader:
         if parsed[0].rigid and parsed[1].rigid:
             self.fail("body", "both bodies are rigid: at least one must have E and nu")
         if "load" not in data:
-            self.fail("load", "missing: give exactly one of depth, force or [load.impact]")
+            self.fail("load", "missing: give exactly one of depth, force, [load.impact] or "
+                      "[load.pressure]")
         load = self.load(self.table(data["load"], "load"))
         rtol = None
         if "accuracy" in data:
@@ -298,12 +307,27 @@ class _Reader:
         return r, f
 
     def load(self, ld: dict) -> Load:
-        self.extra_keys(ld, {"depth", "force", "impact"}, "load")
-        given = [k for k in ("depth", "force", "impact") if k in ld]
+        kinds = ("depth", "force", "impact", "pressure")
+        self.extra_keys(ld, set(kinds), "load")
+        given = [k for k in kinds if k in ld]
         if len(given) != 1:
-            self.fail("load", "give exactly one of depth, force or [load.impact]"
-                      + (f", not {' and '.join(given)}" if given else ""))
+            self.fail("load", "give exactly one of depth, force, [load.impact] or "
+                      "[load.pressure]" + (f", not {' and '.join(given)}" if given else ""))
         kind = given[0]
+        if kind == "pressure":
+            pr = self.table(ld["pressure"], "load.pressure")
+            self.extra_keys(pr, {"distribution", "p0", "radius"}, "load.pressure")
+            for k in ("distribution", "p0", "radius"):
+                if k not in pr:
+                    self.fail(f"load.pressure.{k}", "missing")
+            if pr["distribution"] not in DISTRIBUTIONS:
+                self.fail("load.pressure.distribution",
+                          f"unknown distribution {pr['distribution']!r}"
+                          f"{suggest(str(pr['distribution']), DISTRIBUTIONS)} (one of: "
+                          + ", ".join(f"{k} ({v})" for k, v in DISTRIBUTIONS.items()) + ")")
+            return Load("pressure", distribution=pr["distribution"],
+                        p0=self.positive(pr["p0"], "pressure", "load.pressure.p0"),
+                        radius=self.positive(pr["radius"], "length", "load.pressure.radius"))
         if kind == "impact":
             imp = self.table(ld["impact"], "load.impact")
             self.extra_keys(imp, {"velocity", "mass", "density"}, "load.impact")
