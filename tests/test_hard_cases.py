@@ -15,7 +15,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from hertzmdr.numeric import hertz
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import bodies, ellipse, hertz, impact
 
 from kernels import hertz_reference, uz_axisymmetric
 
@@ -101,6 +102,78 @@ CASES = [
          _far_displacement(1.0, 2e-7, np.sqrt(2e-7) * (1 + 1e-12)), WELL),
     _edge_pressure(1e-6),
     _edge_pressure(1e-10),
+]
+
+
+def _crossed_radius(omega, which):
+    """Principal radii of two cylinders (R = 0.1 m) crossed at omega, by mpmath eigenvalues."""
+    def ref():
+        R = mp.mpf("0.1")
+        c, s = mp.cos(mp.mpf(omega)), mp.sin(mp.mpf(omega))
+        H = mp.matrix([[1 / R + c * c / R, c * s / R], [c * s / R, s * s / R]])
+        ev = sorted((abs(x) for x in mp.eig(H)[0]), reverse=True)
+        return 1 / ev[which]
+    return ref
+
+
+def _ellipse_force(q, d=1e-6, E=1e11, R1=1.0):
+    """F of the exact elliptical contact with R1/R2 = q by Johnson's elliptic integrals."""
+    from test_ellipse import ref_force, ref_t
+
+    def ref():
+        return ref_force(mp.mpf(E), mp.mpf(R1), mp.mpf(d), ref_t(q))
+    return (lambda: ellipse.solve(R1, R1 / q, E, depth=d).force), ref
+
+
+def _impact(v0, key):
+    from test_impact import reference
+
+    E, R, m = 2e11, 0.01, 0.03
+    fn = {"tau": impact.contact_time, "x0": impact.max_depth}[key]
+    return (lambda: fn(v0, R, E, m=m)), (lambda: reference(mp.mpf(E), mp.mpf(R), mp.mpf(m),
+                                                           mp.mpf(v0))[key])
+
+
+def _worn_force(s, b=1e-3, R=0.1, E=1e9):
+    """F(d) of the worn parabola at 2 R d/b^2 = s: a from d = (a/R) sqrt(a^2 - b^2) by findroot
+    at 50 digits, then F(a) = (2 E*/(3R)) (2a^2 + b^2) sqrt(a^2 - b^2) (Problem 8)."""
+    d = s * b**2 / (2 * R)
+
+    def ref():
+        with mp.workdps(60):
+            bb, RR, dd = mp.mpf(b), mp.mpf(R), mp.mpf(d)
+            # a^2 = (b^2 + sqrt(b^4 + 4 R^2 d^2))/2 solves the depth relation exactly; findroot
+            # polishes it on the defining equation
+            a2 = (bb**2 + mp.sqrt(bb**4 + 4 * RR**2 * dd**2)) / 2
+            a = mp.findroot(lambda x: x / RR * mp.sqrt(x**2 - bb**2) - dd, mp.sqrt(a2))
+            return 2 * E / (3 * RR) * (2 * a**2 + bb**2) * mp.sqrt((a - bb) * (a + bb))
+    return (lambda: g.worn_force(E, R, b, d)), ref
+
+
+CASES += [
+    Case("principal radii of cylinders crossed at 1e-8 rad",
+         "the small curvature ~ omega^2/(2R) is 1e-16 of the trace: (trace - sqrt(disc))/2 "
+         "would cancel completely",
+         lambda: bodies.principal_radii(0.1, np.inf, 0.1, np.inf, 1e-8)[1],
+         _crossed_radius(1e-8, 1), WELL),
+    Case("principal radii of cylinders crossed at 1e-12 rad", "as above, omega^2 = 1e-24",
+         lambda: bodies.principal_radii(0.1, np.inf, 0.1, np.inf, 1e-12)[1],
+         _crossed_radius(1e-12, 1), WELL),
+    Case("elliptical contact with R1/R2 = 1 + 1e-9", "nearly circular: the K, E forms of the "
+         "elliptical solution are 0/0 at the circle", *_ellipse_force(1 + 1e-9), WELL),
+    Case("elliptical contact with R1/R2 = 1e4", "very elongated: b/a ~ 2e-3, the eccentricity "
+         "equation is solved where K(m) has its log singularity",
+         *_ellipse_force(1e4), 1e4 * np.log(1e4) * 10 * EPS,
+         "the axis-ratio equation's condition number ~ q log q (q = R1/R2), times 10 eps"),
+    Case("impact at 1e-6 m/s", "very low velocity: x0 ~ 1e-12 m", *_impact(1e-6, "tau"), WELL),
+    Case("impact at 1e3 m/s", "very high velocity (elastically): x0 ~ 1e-3 m",
+         *_impact(1e3, "x0"), WELL),
+    *[Case(f"worn parabola F(d) at 2Rd/b^2 = {s:g}",
+           "the printed F(d) subtracts sqrt(1 + s^2) - 1 and cancels all digits for small s; "
+           "the printed stable form does not", *_worn_force(s), WELL)
+      for s in (1e-12, 1e-6, 1.0, 1e6, 1e12)],
+    Case("worn parabola with b -> 0 (b = 1e-9 R)", "tends to Hertz; the flat is 1e-9 of R",
+         *_worn_force(1e3, b=1e-10), WELL),
 ]
 
 
