@@ -126,7 +126,7 @@ def render_function(rel: Relation, flavor: str = "numpy") -> str:
     return f'def {rel.name}({argstr}):\n    """{doc.lstrip()}"""\n{imports}    return {code}\n'
 
 
-def render_module(relations: list[Relation], flavor: str = "numpy") -> str:
+def render_module(relations, flavor: str = "numpy") -> str:
     """The generated module: ``flavor`` "numpy" (float64, arrays) or "mpmath" (any precision)."""
     parts = [MODULE_HEADER if flavor == "numpy" else MP_MODULE_HEADER]
     names = [rel.name for rel in relations]
@@ -140,7 +140,7 @@ def _latex(expr: sp.Expr) -> str:
     return sp.latex(expr, symbol_names={sp.Symbol("E_star", positive=True): "E^*"})
 
 
-def render_derivations(relations: list[Relation]) -> str:
+def render_derivations(relations) -> str:
     out = ["# Derived relations\n\n",
            f"<!-- GENERATED FILE -- DO NOT EDIT. Written by `{COMMAND}`; "
            "`--check` fails when stale. -->\n\n",
@@ -166,7 +166,7 @@ def render_derivations(relations: list[Relation]) -> str:
     return "".join(out)
 
 
-def render_errata(relations: list[Relation]) -> str:
+def render_errata(relations) -> str:
     out = ["# Errata: where the derivation disagrees with the chapter's print\n\n",
            f"<!-- GENERATED FILE -- DO NOT EDIT. Written by `{COMMAND}` from the relations "
            "whose derived form differs from the printed one; `--check` fails when stale. -->\n\n",

@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import importlib
+import os
 import pkgutil
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from functools import cache
 
 import sympy as sp
 
@@ -93,16 +96,32 @@ def family_modules() -> list[str]:
     return names
 
 
-def all_relations() -> list[Relation]:
-    """Every relation of every family, sorted by name; names must be unique."""
+def _family_relations(fam: str) -> list[Relation]:
+    module = importlib.import_module(f"hertzmdr.derive.{fam}")
+    return list(module.relations())
+
+
+@cache
+def all_relations() -> tuple[Relation, ...]:
+    """Every relation of every family, sorted by name; names must be unique.
+
+    The families are derived in parallel processes (one per core; HERTZMDR_DERIVE_JOBS=1 for a
+    single process), and the result is cached for the life of the process.
+    """
+    families = family_modules()
+    jobs = int(os.environ.get("HERTZMDR_DERIVE_JOBS", os.cpu_count() or 1))
+    if jobs > 1 and len(families) > 1:
+        with ProcessPoolExecutor(max_workers=min(jobs, len(families))) as pool:
+            derived = list(pool.map(_family_relations, families))
+    else:
+        derived = [_family_relations(fam) for fam in families]
     out: dict[str, Relation] = {}
-    for fam in family_modules():
-        module = importlib.import_module(f"hertzmdr.derive.{fam}")
-        for rel in module.relations():
+    for fam, rels in zip(families, derived, strict=True):
+        for rel in rels:
             rel = Relation(**{**rel.__dict__, "family": fam})
             rel.check()
             if rel.name in out:
                 first = out[rel.name].family
                 raise ValueError(f"relation name {rel.name} defined twice ({first}, {fam})")
             out[rel.name] = rel
-    return [out[k] for k in sorted(out)]
+    return tuple(out[k] for k in sorted(out))
