@@ -29,6 +29,14 @@ __all__ = [
     'bodies_problem2_gaussian_radius',
     'bodies_problem2_principal_radius_1',
     'bodies_problem2_principal_radius_2',
+    'cone_contact_radius',
+    'cone_contact_radius_from_force',
+    'cone_depth',
+    'cone_depth_from_force',
+    'cone_force',
+    'cone_mean_pressure',
+    'cone_pressure',
+    'cone_stiffness',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -481,6 +489,166 @@ def bodies_problem2_principal_radius_2(R):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
     return numpy.sqrt(2)*R + 2*R
+
+
+def cone_contact_radius(d, theta):
+    """Contact radius a [m] of a rigid cone at depth d.
+
+    Chapter: (5.38), Problem 7(c). Derived from: (5.38) solved for a.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*d/(numpy.pi*numpy.tan(theta))
+
+
+def cone_contact_radius_from_force(E_star, F, theta):
+    """Contact radius a [m] of a rigid cone under the force F.
+
+    Chapter: (5.38), (5.40). Derived from: (5.38) at the depth of (5.40) inverted.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return numpy.sqrt(2)*numpy.sqrt(F)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(numpy.tan(theta)))
+
+
+def cone_depth(a, theta):
+    """Indentation depth d [m] of a rigid cone at the contact radius a.
+
+    Chapter: (5.38). Derived from: flat punches superposed to match the cone's surface.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*numpy.pi*a*numpy.tan(theta)
+
+
+def cone_depth_from_force(E_star, F, theta):
+    """Indentation depth d [m] of a rigid cone under the force F.
+
+    Chapter: (5.40), inverted. Derived from: (5.40) solved for d.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(F)*numpy.sqrt(numpy.tan(theta))/numpy.sqrt(E_star)
+
+
+def cone_force(E_star, d, theta):
+    """Normal force F [N] of a rigid cone at depth d.
+
+    Chapter: (5.40). Derived from: the forces 2 a' E* dd of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*E_star*d**2/(numpy.pi*numpy.tan(theta))
+
+
+def cone_mean_pressure(E_star, theta):
+    """Mean pressure F/(pi a^2) [Pa] of a rigid cone (independent of the depth).
+
+    Chapter: (5.40)/(pi a^2). Derived from: (5.40) divided by the contact area.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*E_star*numpy.tan(theta)
+
+
+def cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0).
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
+
+
+def cone_stiffness(E_star, d, theta):
+    """Differential stiffness dF/dd [N/m] of a rigid cone at depth d.
+
+    Chapter: Problem 5. Derived from: the derivative of (5.40).
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 4*E_star*d/(numpy.pi*numpy.tan(theta))
 
 
 def hertz_contact_radius(R, d):
