@@ -62,6 +62,16 @@ __all__ = [
     'impact_max_force_density',
     'impact_max_pressure',
     'impact_max_pressure_density',
+    'line_depth_from_force',
+    'line_force',
+    'line_force_per_length_from_half_width',
+    'line_half_width',
+    'line_half_width_from_force',
+    'line_max_pressure',
+    'line_max_pressure_depth_width',
+    'line_max_pressure_from_force',
+    'line_max_pressure_from_half_width',
+    'line_pressure',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
@@ -1184,6 +1194,217 @@ def impact_max_pressure_density(E_star, rho, v0):
         impact velocity [m/s]
     """
     return 2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/numpy.pi**(4/5)
+
+
+def line_depth_from_force(E_star, F, L):
+    """Depth d [m] (in the sense of (5.35)) of a line contact under the force F.
+
+    Chapter: (5.34), inverted. Derived from: (5.34) solved for d.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    """
+    return 4*F/(numpy.pi*E_star*L)
+
+
+def line_force(E_star, L, d):
+    """Normal force F [N] of a line contact of length L at the depth d of (5.35).
+
+    Chapter: (5.34). Derived from: F/L of the matched pressure with a = sqrt(R d).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    L : float or ndarray
+        length of a line contact [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/4)*numpy.pi*E_star*L*d
+
+
+def line_force_per_length_from_half_width(E_star, R, a):
+    """Normal force per unit length F/L [N/m] of a line contact of half-width a.
+
+    Chapter: (5.34), from the matching. Derived from: the integral of (5.36) over the strip.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/4)*numpy.pi*E_star*a**2/R
+
+
+def line_half_width(R, d):
+    """Half-width a [m] of a line contact at the (conventional) depth d.
+
+    Chapter: (5.35). Derived from: the chapter's definition of the depth of a line contact.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt(R)*numpy.sqrt(d)
+
+
+def line_half_width_from_force(E_star, F, L, R):
+    """Half-width a [m] of a line contact of length L under the force F.
+
+    Chapter: (5.34), (5.35). Derived from: F = L F/L(a) solved for a.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return 2*numpy.sqrt(F)*numpy.sqrt(R)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(L))
+
+
+def line_max_pressure(E_star, R, d):
+    """Maximum pressure p0 [Pa] of a line contact at the depth d of (5.35).
+
+    Chapter: (5.37), second form. Derived from: the matching, with a = sqrt(R d) (5.35).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/2)*E_star*numpy.sqrt(d)/numpy.sqrt(R)
+
+
+def line_max_pressure_depth_width(E_star, a, d):
+    """Maximum pressure p0 [Pa] of a line contact from its depth and half-width.
+
+    Chapter: (5.37), first form. Derived from: the matching, with R = a^2/d (5.35).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/2)*E_star*d/a
+
+
+def line_max_pressure_from_force(E_star, F, L, R):
+    """Maximum pressure p0 [Pa] of a line contact of length L under the force F.
+
+    Chapter: (5.37), third form. Derived from: the matching, with a from F = L F/L(a).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Differs from the print (see docs/errata.md): a factor pi is missing under the root: p0 =
+    (E* F/(pi L R))^(1/2) (from p0 = E* a/(2R) and F/L = pi a p0/2; the print is sqrt(pi) =
+    1.77 times too large)
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return numpy.sqrt(E_star)*numpy.sqrt(F)/(numpy.sqrt(numpy.pi)*numpy.sqrt(L)*numpy.sqrt(R))
+
+
+def line_max_pressure_from_half_width(E_star, R, a):
+    """Maximum pressure p0 [Pa] of a line contact of half-width a.
+
+    Chapter: (5.37), from the matching. Derived from: the gradient of the 2-D surface
+    displacement matched to -x/R.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/2)*E_star*a/R
+
+
+def line_pressure(E_star, R, d, x):
+    """Pressure p(x) [Pa] of a line contact at the depth d of (5.35) (0 outside).
+
+    Chapter: (5.36). Derived from: (5.36) with the matched p0.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    import functools
+
+    return (1/2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - x**2/(R*d)]))/numpy.sqrt(R)
 
 
 def punch_pressure_displacement(E_star, a, p0):
