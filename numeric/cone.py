@@ -1,0 +1,133 @@
+"""Rigid cone on an elastic half-space, (5.38)-(5.40).
+
+theta is the angle between the cone's surface and the plane (profile f(r) = r tan(theta));
+the half-space approximation needs theta small. The formulas are generated from
+:mod:`hertzmdr.derive.cone` (flat punches superposed, Problem 5's argument); this module
+validates and broadcasts. The pressure is log-singular at the tip: there is no finite maximum
+pressure; :func:`mean_pressure` is the useful scale, and it does not depend on the depth.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric._validate import between, nonnegative, positive, result
+
+__all__ = ["contact_radius", "depth", "force", "pressure", "mean_pressure", "stiffness",
+           "depth_from_force", "contact_radius_from_force"]
+
+
+def _theta(theta):
+    return between("theta", theta, 0.0, np.pi / 2)
+
+
+def contact_radius(d, theta):
+    """Contact radius a = 2 d/(pi tan(theta)) [m], (5.38).
+
+    Parameters
+    ----------
+    d : float or array_like
+        Indentation depth [m], d >= 0.
+    theta : float or array_like
+        Angle between the cone's surface and the plane [rad], 0 < theta < pi/2.
+    """
+    return result(g.cone_contact_radius(nonnegative("d", d), _theta(theta)))
+
+
+def depth(a, theta):
+    """Indentation depth d = (pi/2) a tan(theta) [m] at the contact radius a, (5.38).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Contact radius [m], a >= 0.
+    theta : float or array_like
+        Angle between the cone's surface and the plane [rad], 0 < theta < pi/2.
+    """
+    return result(g.cone_depth(nonnegative("a", a), _theta(theta)))
+
+
+def force(d, theta, E_star):
+    """Normal force F = (2/pi) E* d^2/tan(theta) [N], (5.40).
+
+    Parameters
+    ----------
+    d : float or array_like
+        Indentation depth [m], d >= 0.
+    theta : float or array_like
+        Angle between the cone's surface and the plane [rad], 0 < theta < pi/2.
+    E_star : float or array_like
+        Effective modulus (5.8)/(5.26) [Pa], E_star > 0.
+    """
+    return result(g.cone_force(positive("E_star", E_star), nonnegative("d", d),
+                               _theta(theta)))
+
+
+def pressure(r, d, theta, E_star):
+    """Contact pressure p(r) = (E*/2) tan(theta) arccosh(a/r) [Pa], (5.39) with its sign
+    corrected (positive in compression; see docs/errata.md).
+
+    The pressure has a logarithmic singularity at the tip: at r = 0 exactly this returns
+    ``inf`` (no warning); it is 0 for r >= a.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the axis [m], r >= 0.
+    d : float or array_like
+        Indentation depth [m], d >= 0.
+    theta, E_star
+        As in :func:`force`.
+    """
+    r, d, theta, E_star = np.broadcast_arrays(nonnegative("r", r), nonnegative("d", d),
+                                              _theta(theta), positive("E_star", E_star))
+    a = g.cone_contact_radius(d, theta)
+    out = np.zeros(r.shape)
+    tip = (r == 0) & (a > 0)
+    out[tip] = np.inf
+    inside = (r > 0) & (r < a)
+    out[inside] = g.cone_pressure(E_star[inside], d[inside], theta[inside], r[inside])  # (5.39)
+    return result(out)
+
+
+def mean_pressure(theta, E_star):
+    """Mean pressure F/(pi a^2) = (E*/2) tan(theta) [Pa], the same at every depth.
+
+    Parameters
+    ----------
+    theta : float or array_like
+        Angle between the cone's surface and the plane [rad], 0 < theta < pi/2.
+    E_star : float or array_like
+        Effective modulus [Pa], E_star > 0.
+    """
+    return result(g.cone_mean_pressure(positive("E_star", E_star), _theta(theta)))
+
+
+def stiffness(d, theta, E_star):
+    """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`."""
+    return result(g.cone_stiffness(positive("E_star", E_star), nonnegative("d", d),
+                                   _theta(theta)))
+
+
+def depth_from_force(F, theta, E_star):
+    """Indentation depth d = (pi F tan(theta)/(2 E*))^(1/2) [m], (5.40) inverted.
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], F >= 0.
+    theta, E_star
+        As in :func:`force`.
+    """
+    return result(g.cone_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+                                          _theta(theta)))
+
+
+def contact_radius_from_force(F, theta, E_star):
+    """Contact radius a = (2 F/(pi E* tan(theta)))^(1/2) [m], (5.38) with (5.40) inverted.
+
+    Parameters as :func:`depth_from_force`.
+    """
+    return result(g.cone_contact_radius_from_force(positive("E_star", E_star),
+                                                   nonnegative("F", F), _theta(theta)))
