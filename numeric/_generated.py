@@ -10,6 +10,18 @@ hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
 import numpy
 
 __all__ = [
+    'boussinesq_sigma_xx',
+    'boussinesq_sigma_xy',
+    'boussinesq_sigma_xz',
+    'boussinesq_sigma_yy',
+    'boussinesq_sigma_yz',
+    'boussinesq_sigma_zz',
+    'boussinesq_surface_ux',
+    'boussinesq_surface_uy',
+    'boussinesq_surface_uz',
+    'boussinesq_ux',
+    'boussinesq_uy',
+    'boussinesq_uz',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -32,6 +44,310 @@ __all__ = [
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
 ]
+
+
+def boussinesq_sigma_xx(F, nu, x, y, z):
+    """Stress sigma_xx [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.41). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -1/2*F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) + 2*nu*z**3*(x**2 + y**2 + z**2) + 4*nu*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*numpy.sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) - z**3*(x**2 + y**2 + z**2) - 2*z**2*(x**2 + y**2 + z**2)**(3/2) + (x**2 + y**2 + z**2)**(5/2))/(numpy.pi*(z + numpy.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_sigma_xy(F, nu, x, y, z):
+    """Stress sigma_xy [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.44). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -1/2*F*x*y*(2*nu*z*(x**2 + y**2 + z**2) + 4*nu*(x**2 + y**2 + z**2)**(3/2) + 3*z**3 + 6*z**2*numpy.sqrt(x**2 + y**2 + z**2) + 2*z*(x**2 + y**2 + z**2) - 2*(x**2 + y**2 + z**2)**(3/2))/(numpy.pi*(z + numpy.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_sigma_xz(F, nu, x, y, z):
+    """Stress sigma_xz [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.46). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Differs from the print (see docs/errata.md): the sign: with the force F acting in +z
+    (into the body, z > 0 in the body) the derivation gives tau_xz = -3 F x z^2/(2 pi R^5);
+    the print has +3 F x z^2/(2 pi R^5), which together with the printed (5.43) violates the
+    equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -3/2*F*x*z**2/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_sigma_yy(F, nu, x, y, z):
+    """Stress sigma_yy [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.42). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*z*(x**2 + y**2 + z**2)**2 - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*numpy.sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) + 3*z**5 + 6*z**4*numpy.sqrt(x**2 + y**2 + z**2) - 6*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*z*(x**2 + y**2 + z**2)**2 + (x**2 + y**2 + z**2)**(5/2))/(numpy.pi*(z + numpy.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_sigma_yz(F, nu, x, y, z):
+    """Stress sigma_yz [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.45). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Differs from the print (see docs/errata.md): the sign: with the force F acting in +z
+    (into the body, z > 0 in the body) the derivation gives tau_yz = -3 F y z^2/(2 pi R^5);
+    the print has +3 F y z^2/(2 pi R^5), which together with the printed (5.43) violates the
+    equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -3/2*F*y*z**2/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_sigma_zz(F, nu, x, y, z):
+    """Stress sigma_zz [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.43). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -3/2*F*z**3/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_surface_ux(E, F, nu, x, y):
+    """Surface displacement u_x [m] at (x, y, 0) of a point force F in +z at the origin.
+
+    Chapter: (5.4). Derived from: (5.1)-(5.3) at z -> 0.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_displacement_is_the_limit``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*F*x*(nu + 1)*(2*nu - 1)/(numpy.pi*E*(x**2 + y**2))
+
+
+def boussinesq_surface_uy(E, F, nu, x, y):
+    """Surface displacement u_y [m] at (x, y, 0) of a point force F in +z at the origin.
+
+    Chapter: (5.5). Derived from: (5.1)-(5.3) at z -> 0.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_displacement_is_the_limit``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*F*y*(nu + 1)*(2*nu - 1)/(numpy.pi*E*(x**2 + y**2))
+
+
+def boussinesq_surface_uz(E, F, nu, x, y):
+    """Surface displacement u_z [m] at (x, y, 0) of a point force F in +z at the origin.
+
+    Chapter: (5.6). Derived from: (5.1)-(5.3) at z -> 0.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_displacement_is_the_limit``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return -F*(nu - 1)*(nu + 1)/(numpy.pi*E*numpy.sqrt(x**2 + y**2))
+
+
+def boussinesq_ux(E, F, nu, x, y, z):
+    """Displacement u_x [m] at (x, y, z) of a point force F in +z at the origin.
+
+    Chapter: (5.1). Derived from: the given solution (Landau & Lifshitz, section 8).
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*F*(nu + 1)*(x*z/(x**2 + y**2 + z**2)**(3/2) - x*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))*numpy.sqrt(x**2 + y**2 + z**2)))/(numpy.pi*E)
+
+
+def boussinesq_uy(E, F, nu, x, y, z):
+    """Displacement u_y [m] at (x, y, z) of a point force F in +z at the origin.
+
+    Chapter: (5.2). Derived from: the given solution (Landau & Lifshitz, section 8).
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*F*(nu + 1)*(y*z/(x**2 + y**2 + z**2)**(3/2) - y*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))*numpy.sqrt(x**2 + y**2 + z**2)))/(numpy.pi*E)
+
+
+def boussinesq_uz(E, F, nu, x, y, z):
+    """Displacement u_z [m] at (x, y, z) of a point force F in +z at the origin.
+
+    Chapter: (5.3). Derived from: the given solution (Landau & Lifshitz, section 8).
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    F : float or ndarray
+        normal force [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(3/2) + (2 - 2*nu)/numpy.sqrt(x**2 + y**2 + z**2))/(numpy.pi*E)
 
 
 def hertz_contact_radius(R, d):
