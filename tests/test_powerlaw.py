@@ -24,11 +24,17 @@ from hertzmdr.numeric import _generated as g
 from hertzmdr.numeric import powerlaw
 
 from kernels import force_axisymmetric, uz_axisymmetric
-from oracle import FULL, Arg, assert_close, assert_mpmath_equal, n_points
+from oracle import FULL, WORST, Arg, assert_close, assert_mpmath_equal, n_points
 
 DPS = 30
 TOL_3D = 1e-20  # the issue's 20 digits; kernel quadrature at 30 digits reaches ~1e-25
 TOL_FLOAT = 1e-14  # a handful of correctly rounded float64 operations
+
+
+def _record(what, err):
+    """Keep the 3-D error for the end-of-run summary (conftest), then check it."""
+    WORST[what] = max(WORST.get(what, 0.0), float(err))
+    assert err < TOL_3D, f"{what}: {err} >= {TOL_3D}"
 
 
 def kappa_reference(n):
@@ -100,10 +106,10 @@ def test_against_3d_elasticity(n):
         for s in radii:
             rr = mp.mpf(s) * aa
             u = uz_axisymmetric(p_gap, rr, aa, E, method=method)
-            assert abs(u / (dd - c * rr**n) - 1) < TOL_3D, (n, s)
+            _record(f"power law n={n} 3-D inside", abs(u / (dd - c * rr**n) - 1))
         rr = 2 * aa
         u = uz_axisymmetric(p_gap, rr, aa, E, method=method)
-        assert abs(u / u_fn(aa, dd, n, rr) - 1) < TOL_3D, (n, "outside")
+        _record(f"power law n={n} 3-D outside", abs(u / u_fn(aa, dd, n, rr) - 1))
         # the float64 functions at the same point
         a_f = float(aa)
         assert_close(powerlaw.contact_radius(float(dd), float(c), n), aa, TOL_FLOAT, "a(d)")
@@ -170,7 +176,7 @@ def test_punch():
         def p_gap(gap):
             return E * dd / (mp.pi * mp.sqrt(gap))  # powerlaw_punch_pressure in gap form
 
-        assert abs(uz_axisymmetric(p_gap, 0.3, aa, E) / dd - 1) < TOL_3D
+        _record("punch 3-D inside", abs(uz_axisymmetric(p_gap, 0.3, aa, E) / dd - 1))
         u_out = uz_axisymmetric(p_gap, 1.0, aa, E)
         assert_close(g.powerlaw_punch_displacement_outside(aa, dd, 1.0), u_out, TOL_FLOAT, "u")
         F = force_axisymmetric(lambda rr: E * dd / (mp.pi * mp.sqrt(aa**2 - rr**2)), aa)
