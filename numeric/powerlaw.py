@@ -4,7 +4,7 @@ Floats or NumPy arrays in SI units; bad input raises ValueError. The formulas ar
 from :mod:`hertzmdr.derive.powerlaw`; this module validates, broadcasts and picks the form that
 is accurate for the given n:
 
-- kappa_n: the Gamma ratio for n < 40, the Stirling series above (no overflow up to n = 1e300).
+- kappa_n: the Gamma ratio for n < 40, the Stirling series above (no overflow up to n = 1e150).
 - pressure: elementary forms for n = 1, 2, 3, 4; the 2F1 form for n >= 1.5; the Euler-
   transformed 2F1 for n < 1.5.
 
@@ -20,8 +20,10 @@ from hertzmdr.numeric._validate import nonnegative, positive, result
 
 __all__ = ["kappa", "g_profile", "contact_radius", "force", "force_from_radius",
            "depth_from_force", "mean_pressure", "pressure", "pressure_normalized",
-           "surface_displacement", "N_ASYMPTOTIC"]
+           "surface_displacement", "N_ASYMPTOTIC", "N_PRESSURE_MAX"]
 
+#: largest finite n for :func:`pressure` (SciPy's 2F1 fails beyond ~1e4; tested to here)
+N_PRESSURE_MAX = 1e3
 #: kappa_n switches from the Gamma ratio to the Stirling series at this n (both < 1e-15 there)
 N_ASYMPTOTIC = 40.0
 
@@ -166,7 +168,7 @@ def pressure(r, d, c_n, n, E_star):
     c_n : float or array_like
         Profile coefficient [m^(1-n)], > 0 (the punch radius [m] for n = inf).
     n : float or array_like
-        Exponent, > 0, may be inf.
+        Exponent, 0 < n <= N_PRESSURE_MAX (1e3), or inf.
     E_star : float or array_like
         Effective modulus [Pa], > 0.
     """
@@ -175,6 +177,10 @@ def pressure(r, d, c_n, n, E_star):
         positive("n", n, allow_inf=True), positive("E_star", E_star))
     out = np.zeros(r.shape)
     punch = np.isinf(n)
+    big = ~punch & (n > N_PRESSURE_MAX)
+    if big.any():
+        raise ValueError(f"n = {n[big].flat[0]} is out of range; valid: 0 < n <= "
+                         f"{N_PRESSURE_MAX:g} or n = inf (the flat punch)")
     a = np.where(punch, c_n, 0.0)
     fin = ~punch
     a[fin] = contact_radius(d[fin], c_n[fin], n[fin])
