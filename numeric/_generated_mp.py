@@ -29,6 +29,26 @@ __all__ = [
     'bodies_problem2_gaussian_radius',
     'bodies_problem2_principal_radius_1',
     'bodies_problem2_principal_radius_2',
+    'boussinesq_sigma_xx',
+    'boussinesq_sigma_xy',
+    'boussinesq_sigma_xz',
+    'boussinesq_sigma_yy',
+    'boussinesq_sigma_yz',
+    'boussinesq_sigma_zz',
+    'boussinesq_surface_ux',
+    'boussinesq_surface_uy',
+    'boussinesq_surface_uz',
+    'boussinesq_ux',
+    'boussinesq_uy',
+    'boussinesq_uz',
+    'cone_contact_radius',
+    'cone_contact_radius_from_force',
+    'cone_depth',
+    'cone_depth_from_force',
+    'cone_force',
+    'cone_mean_pressure',
+    'cone_pressure',
+    'cone_stiffness',
     'ellipse_area',
     'ellipse_depth_from_force',
     'ellipse_equivalent_radius',
@@ -72,6 +92,16 @@ __all__ = [
     'impact_max_pressure',
     'impact_max_pressure_density',
     'impact_sphere_mass',
+    'line_depth_from_force',
+    'line_force',
+    'line_force_per_length_from_half_width',
+    'line_half_width',
+    'line_half_width_from_force',
+    'line_max_pressure',
+    'line_max_pressure_depth_width',
+    'line_max_pressure_from_force',
+    'line_max_pressure_from_half_width',
+    'line_pressure',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -525,6 +555,470 @@ def bodies_problem2_principal_radius_2(R):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
     return mpmath.sqrt(2)*R + 2*R
+
+
+def boussinesq_sigma_xx(F, nu, x, y, z):
+    """Stress sigma_xx [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.41). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + 2*nu*z**3*(x**2 + y**2 + z**2) + 4*nu*z**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) - 2*nu*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)) + 3*x**2*z**3 + 6*x**2*z**2*mpmath.sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) - z**3*(x**2 + y**2 + z**2) - 2*z**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + (x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))/(mpmath.pi*(z + mpmath.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_sigma_xy(F, nu, x, y, z):
+    """Stress sigma_xy [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.44). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*F*x*y*(2*nu*z*(x**2 + y**2 + z**2) + 4*nu*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + 3*z**3 + 6*z**2*mpmath.sqrt(x**2 + y**2 + z**2) + 2*z*(x**2 + y**2 + z**2) - 2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)))/(mpmath.pi*(z + mpmath.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_sigma_xz(F, nu, x, y, z):
+    """Stress sigma_xz [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.46). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Differs from the print (see docs/errata.md): the sign: with the force F acting in +z
+    (into the body, z > 0 in the body) the derivation gives tau_xz = -3 F x z^2/(2 pi R^5);
+    the print has +3 F x z^2/(2 pi R^5), which together with the printed (5.43) violates the
+    equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(3)/mpmath.mpf(2)*F*x*z**2/(mpmath.pi*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_sigma_yy(F, nu, x, y, z):
+    """Stress sigma_yy [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.42). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) - 2*nu*z*(x**2 + y**2 + z**2)**2 - 2*nu*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)) + 3*x**2*z**3 + 6*x**2*z**2*mpmath.sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + 3*z**5 + 6*z**4*mpmath.sqrt(x**2 + y**2 + z**2) - 6*z**2*(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) - 2*z*(x**2 + y**2 + z**2)**2 + (x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))/(mpmath.pi*(z + mpmath.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_sigma_yz(F, nu, x, y, z):
+    """Stress sigma_yz [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.45). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Differs from the print (see docs/errata.md): the sign: with the force F acting in +z
+    (into the body, z > 0 in the body) the derivation gives tau_yz = -3 F y z^2/(2 pi R^5);
+    the print has +3 F y z^2/(2 pi R^5), which together with the printed (5.43) violates the
+    equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(3)/mpmath.mpf(2)*F*y*z**2/(mpmath.pi*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_sigma_zz(F, nu, x, y, z):
+    """Stress sigma_zz [Pa] at (x, y, z) of a point force F in +z at the origin (tension positive).
+
+    Chapter: (5.43). Derived from: (5.1)-(5.3) by the small-strain tensor and Hooke's law.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(3)/mpmath.mpf(2)*F*z**3/(mpmath.pi*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_surface_ux(E, F, nu, x, y):
+    """Surface displacement u_x [m] at (x, y, 0) of a point force F in +z at the origin.
+
+    Chapter: (5.4). Derived from: (5.1)-(5.3) at z -> 0.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_displacement_is_the_limit``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*x*(nu + 1)*(2*nu - 1)/(mpmath.pi*E*(x**2 + y**2))
+
+
+def boussinesq_surface_uy(E, F, nu, x, y):
+    """Surface displacement u_y [m] at (x, y, 0) of a point force F in +z at the origin.
+
+    Chapter: (5.5). Derived from: (5.1)-(5.3) at z -> 0.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_displacement_is_the_limit``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*y*(nu + 1)*(2*nu - 1)/(mpmath.pi*E*(x**2 + y**2))
+
+
+def boussinesq_surface_uz(E, F, nu, x, y):
+    """Surface displacement u_z [m] at (x, y, 0) of a point force F in +z at the origin.
+
+    Chapter: (5.6). Derived from: (5.1)-(5.3) at z -> 0.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_displacement_is_the_limit``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return -F*(nu - 1)*(nu + 1)/(mpmath.pi*E*mpmath.sqrt(x**2 + y**2))
+
+
+def boussinesq_ux(E, F, nu, x, y, z):
+    """Displacement u_x [m] at (x, y, z) of a point force F in +z at the origin.
+
+    Chapter: (5.1). Derived from: the given solution (Landau & Lifshitz, section 8).
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*(nu + 1)*(x*z/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) - x*(1 - 2*nu)/((z + mpmath.sqrt(x**2 + y**2 + z**2))*mpmath.sqrt(x**2 + y**2 + z**2)))/(mpmath.pi*E)
+
+
+def boussinesq_uy(E, F, nu, x, y, z):
+    """Displacement u_y [m] at (x, y, z) of a point force F in +z at the origin.
+
+    Chapter: (5.2). Derived from: the given solution (Landau & Lifshitz, section 8).
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*(nu + 1)*(y*z/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) - y*(1 - 2*nu)/((z + mpmath.sqrt(x**2 + y**2 + z**2))*mpmath.sqrt(x**2 + y**2 + z**2)))/(mpmath.pi*E)
+
+
+def boussinesq_uz(E, F, nu, x, y, z):
+    """Displacement u_z [m] at (x, y, z) of a point force F in +z at the origin.
+
+    Chapter: (5.3). Derived from: the given solution (Landau & Lifshitz, section 8).
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_stress_from_displacement_in_equilibrium``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + (2 - 2*nu)/mpmath.sqrt(x**2 + y**2 + z**2))/(mpmath.pi*E)
+
+
+def cone_contact_radius(d, theta):
+    """Contact radius a [m] of a rigid cone at depth d.
+
+    Chapter: (5.38), Problem 7(c). Derived from: (5.38) solved for a.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*d/(mpmath.pi*mpmath.tan(theta))
+
+
+def cone_contact_radius_from_force(E_star, F, theta):
+    """Contact radius a [m] of a rigid cone under the force F.
+
+    Chapter: (5.38), (5.40). Derived from: (5.38) at the depth of (5.40) inverted.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return mpmath.sqrt(2)*mpmath.sqrt(F)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*mpmath.sqrt(mpmath.tan(theta)))
+
+
+def cone_depth(a, theta):
+    """Indentation depth d [m] of a rigid cone at the contact radius a.
+
+    Chapter: (5.38). Derived from: flat punches superposed to match the cone's surface.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*a*mpmath.tan(theta)
+
+
+def cone_depth_from_force(E_star, F, theta):
+    """Indentation depth d [m] of a rigid cone under the force F.
+
+    Chapter: (5.40), inverted. Derived from: (5.40) solved for d.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(F)*mpmath.sqrt(mpmath.tan(theta))/mpmath.sqrt(E_star)
+
+
+def cone_force(E_star, d, theta):
+    """Normal force F [N] of a rigid cone at depth d.
+
+    Chapter: (5.40). Derived from: the forces 2 a' E* dd of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*E_star*d**2/(mpmath.pi*mpmath.tan(theta))
+
+
+def cone_mean_pressure(E_star, theta):
+    """Mean pressure F/(pi a^2) [Pa] of a rigid cone (independent of the depth).
+
+    Chapter: (5.40)/(pi a^2). Derived from: (5.40) divided by the contact area.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)
+
+
+def cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0).
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
+
+
+def cone_stiffness(E_star, d, theta):
+    """Differential stiffness dF/dd [N/m] of a rigid cone at depth d.
+
+    Chapter: Problem 5. Derived from: the derivative of (5.40).
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 4*E_star*d/(mpmath.pi*mpmath.tan(theta))
 
 
 def ellipse_area(R1, d, t_ba):
@@ -1466,6 +1960,215 @@ def impact_sphere_mass(R, rho):
         density [kg/m^3]
     """
     return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.pi*R**3*rho
+
+
+def line_depth_from_force(E_star, F, L):
+    """Depth d [m] (in the sense of (5.35)) of a line contact under the force F.
+
+    Chapter: (5.34), inverted. Derived from: (5.34) solved for d.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    L : mpmath.mpf
+        length of a line contact [m]
+    """
+    return 4*F/(mpmath.pi*E_star*L)
+
+
+def line_force(E_star, L, d):
+    """Normal force F [N] of a line contact of length L at the depth d of (5.35).
+
+    Chapter: (5.34). Derived from: F/L of the matched pressure with a = sqrt(R d).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    L : mpmath.mpf
+        length of a line contact [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L*d
+
+
+def line_force_per_length_from_half_width(E_star, R, a):
+    """Normal force per unit length F/L [N/m] of a line contact of half-width a.
+
+    Chapter: (5.34), from the matching. Derived from: the integral of (5.36) over the strip.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*a**2/R
+
+
+def line_half_width(R, d):
+    """Half-width a [m] of a line contact at the (conventional) depth d.
+
+    Chapter: (5.35). Derived from: the chapter's definition of the depth of a line contact.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return mpmath.sqrt(R)*mpmath.sqrt(d)
+
+
+def line_half_width_from_force(E_star, F, L, R):
+    """Half-width a [m] of a line contact of length L under the force F.
+
+    Chapter: (5.34), (5.35). Derived from: F = L F/L(a) solved for a.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    L : mpmath.mpf
+        length of a line contact [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return 2*mpmath.sqrt(F)*mpmath.sqrt(R)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*mpmath.sqrt(L))
+
+
+def line_max_pressure(E_star, R, d):
+    """Maximum pressure p0 [Pa] of a line contact at the depth d of (5.35).
+
+    Chapter: (5.37), second form. Derived from: the matching, with a = sqrt(R d) (5.35).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.sqrt(d)/mpmath.sqrt(R)
+
+
+def line_max_pressure_depth_width(E_star, a, d):
+    """Maximum pressure p0 [Pa] of a line contact from its depth and half-width.
+
+    Chapter: (5.37), first form. Derived from: the matching, with R = a^2/d (5.35).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*d/a
+
+
+def line_max_pressure_from_force(E_star, F, L, R):
+    """Maximum pressure p0 [Pa] of a line contact of length L under the force F.
+
+    Chapter: (5.37), third form. Derived from: the matching, with a from F = L F/L(a).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Differs from the print (see docs/errata.md): a factor pi is missing under the root: p0 =
+    (E* F/(pi L R))^(1/2) (from p0 = E* a/(2R) and F/L = pi a p0/2; the print is sqrt(pi) =
+    1.77 times too large)
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    L : mpmath.mpf
+        length of a line contact [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return mpmath.sqrt(E_star)*mpmath.sqrt(F)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(L)*mpmath.sqrt(R))
+
+
+def line_max_pressure_from_half_width(E_star, R, a):
+    """Maximum pressure p0 [Pa] of a line contact of half-width a.
+
+    Chapter: (5.37), from the matching. Derived from: the gradient of the 2-D surface
+    displacement matched to -x/R.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*a/R
+
+
+def line_pressure(E_star, R, d, x):
+    """Pressure p(x) [Pa] of a line contact at the depth d of (5.35) (0 outside).
+
+    Chapter: (5.36). Derived from: (5.36) with the matched p0.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.sqrt(d)*mpmath.sqrt(max(0, 1 - x**2/(R*d)))/mpmath.sqrt(R)
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
