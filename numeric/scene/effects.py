@@ -40,6 +40,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
            "surface displacement u_z(r), inside and outside the contact (Fig. 5.2)", field=True),
     Effect("force_depth_curve", "{depth: m, force: N}", "force against depth from 0 to the load",
            field=True),
+    Effect("mdr_profile", "{x: m, g: m}", "the MDR's one-dimensional profile g(x) (5.52), "
+           "Figs. 5.11 and 5.19", field=True),
     Effect("edge_displacement", "m", "surface displacement at the edge of a loaded disc "
            "(Problem 6; needs [load.pressure])"),
     Effect("contact_time", "s", "duration of an elastic impact (Problem 3); the equation of "

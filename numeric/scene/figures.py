@@ -20,10 +20,29 @@ def _plt():
     return plt
 
 
-def _line(x, y, xlabel, ylabel, title, path, *, xscale=1.0, yscale=1.0):
+_PREFIX = [(1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"),
+           (1e-9, "n"), (1e-12, "p")]
+
+
+def _scaled(values, name: str, unit: str):
+    """Values divided by the SI prefix that suits their largest magnitude, and the axis label."""
+    import numpy as np
+
+    v = np.asarray(values, dtype=float)
+    finite = np.abs(v[np.isfinite(v)])
+    top = float(finite.max()) if finite.size else 1.0
+    for scale, prefix in _PREFIX:
+        if top >= scale:
+            return v / scale, f"{name} [{prefix}{unit}]"
+    return v / 1e-12, f"{name} [p{unit}]"
+
+
+def _line(x, y, xname, xunit, yname, yunit, title, path):
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6.0, 4.0), dpi=120)
-    ax.plot([v / xscale for v in x], [v / yscale for v in y], lw=1.8)
+    xs, xlabel = _scaled(x, xname, xunit)
+    ys, ylabel = _scaled(y, yname, yunit)
+    ax.plot(xs, ys, lw=1.8)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
@@ -35,32 +54,31 @@ def _line(x, y, xlabel, ylabel, title, path, *, xscale=1.0, yscale=1.0):
 
 def pressure_profile(value, title, path):
     """Pressure against radius (Figs. 5.7 b and 5.17)."""
-    _line(value["r"], value["p"], "r [mm]", "p [MPa]", f"{title}\npressure distribution",
-          path, xscale=1e-3, yscale=1e6)
+    _line(value["r"], value["p"], "r", "m", "p", "Pa", f"{title}\npressure distribution", path)
 
 
 def surface_displacement(value, title, path):
     """Surface displacement inside and outside the contact (Fig. 5.2)."""
-    plt = _plt()
-    fig, ax = plt.subplots(figsize=(6.0, 4.0), dpi=120)
-    r = [v * 1e3 for v in value["r"]]
-    ax.plot(r, [-v * 1e6 for v in value["u"]], lw=1.8)
-    ax.set_xlabel("r [mm]")
-    ax.set_ylabel("surface position -u_z [µm]")
-    ax.set_title(f"{title}\nsurface displacement (Fig. 5.2)", fontsize=10)
-    ax.grid(True, alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    import numpy as np
+
+    _line(value["r"], -np.asarray(value["u"]), "r", "m", "surface position -u_z", "m",
+          f"{title}\nsurface displacement (Fig. 5.2)", path)
 
 
 def force_depth_curve(value, title, path):
     """Force against indentation depth."""
-    _line(value["depth"], value["force"], "depth [µm]", "force [N]",
-          f"{title}\nforce-depth curve", path, xscale=1e-6)
+    _line(value["depth"], value["force"], "depth", "m", "force", "N",
+          f"{title}\nforce-depth curve", path)
+
+
+def mdr_profile(value, title, path):
+    """The MDR's equivalent profile g(x) (Figs. 5.11, 5.19)."""
+    _line(value["x"], value["g"], "x", "m", "g(x)", "m", f"{title}\nMDR profile g(x) (5.52)",
+          path)
 
 
 FIGURES = {
+    "mdr_profile": mdr_profile,
     "pressure_profile": pressure_profile,
     "surface_displacement": surface_displacement,
     "force_depth_curve": force_depth_curve,

@@ -18,6 +18,8 @@ from hertzmdr.numeric.scene.kinds.hertz import HertzContact
 from hertzmdr.numeric.scene.schema import SceneError, SceneSpec
 
 QUADRATIC = {"flat", "sphere", "cylinder", "ellipsoid"}
+AXISYMMETRIC = {"flat", "sphere", "cone", "flat_punch", "power_law", "flattened_parabola",
+                "profile"}
 #: relative difference of the principal radii below which a gap is treated as circular: the
 #: elliptical solution tends continuously to the circular one, and at this difference the
 #: two agree to about 1e-12 (documented in docs/scenes.md)
@@ -63,6 +65,8 @@ def build(spec: SceneSpec):
         return PressureLoad(E_star, spec.rtol, ld.distribution, ld.p0, ld.radius)
     if shapes <= QUADRATIC:
         return _quadratic(spec, E_star)
+    if shapes <= AXISYMMETRIC:
+        return _axisymmetric(spec, E_star)
     names = ", ".join(sorted(shapes))
     raise SceneError(spec.source, "body", f"this combination of shapes ({names}) "
                      "is not supported yet")
@@ -100,3 +104,33 @@ def _impact(spec: SceneSpec, E_star: float):
     if R <= 0:
         raise SceneError(spec.source, "body", "the striking sphere must be convex (radius > 0)")
     return HertzContact(E_star, spec.rtol, R=R, striker_radius=R)
+
+
+def _axisymmetric(spec: SceneSpec, E_star: float):
+    """An axisymmetric profile on a flat: its MDR closed form, or the numerical MDR."""
+    from hertzmdr.numeric.scene.kinds import axisym
+
+    shaped = [b for b in spec.bodies if b.shape != "flat"]
+    if len(shaped) != 1:
+        names = " and ".join(b.shape for b in shaped)
+        raise SceneError(spec.source, "body", f"two profiled bodies ({names}) are not "
+                         "supported: give one of them shape = \"flat\" (the MDR sums the two "
+                         "profiles; sample their sum as a profile)")
+    b = shaped[0]
+    p = b.params
+    if b.shape == "cone":
+        return axisym.Cone(E_star, spec.rtol, p["angle"])
+    if b.shape == "flat_punch":
+        return axisym.FlatPunch(E_star, spec.rtol, p["radius"])
+    if b.shape == "power_law":
+        return axisym.PowerLaw(E_star, spec.rtol, p["coefficient"], p["exponent"])
+    if b.shape == "flattened_parabola":
+        return axisym.Worn(E_star, spec.rtol, p["radius"], p["flat_radius"])
+    from hertzmdr.numeric import mdr
+
+    try:
+        prof = mdr.Profile.from_samples(p["r"], p["f"], k=3 if len(p["r"]) < 20 else 5)
+    except ValueError as exc:
+        raise SceneError(spec.source, f"body ({b.name})", f"profile samples: {exc}") from None
+    return axisym.NumericalMDR(E_star, spec.rtol, prof,
+                               f"sampled profile ({len(p['r'])} samples), numerical MDR")
