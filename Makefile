@@ -13,8 +13,10 @@ $(STAMP): pyproject.toml constraints.txt
 	$(PY) -m pip install --quiet -c constraints.txt -e ".[$(EXTRAS)]"
 	touch $(STAMP)
 
+# the derived relations, then the main job: the built-in tour of scenes (Problems 1-8, figures)
 demo: $(STAMP)
 	$(PY) -m hertzmdr.numeric.demo
+	$(VENV)/bin/hertzmdr run --out out/tour --force
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check derive numeric tests benchmarks examples
