@@ -126,13 +126,30 @@ def render_function(rel: Relation, flavor: str = "numpy") -> str:
     return f'def {rel.name}({argstr}):\n    """{doc.lstrip()}"""\n{imports}    return {code}\n'
 
 
+def textbook(rel: Relation) -> Relation:
+    """The derived form of a relation printed in a stable form, as a relation of its own
+    (``textbook_<name>``), so that the accuracy report can measure what the rewrite buys."""
+    import dataclasses
+
+    return dataclasses.replace(
+        rel, name=f"textbook_{rel.name}", stable=None, stable_why=None,
+        summary=f"{rel.summary}, in the derived (textbook) form; use {rel.name}: "
+        f"{rel.stable_why}")
+
+
 def render_module(relations, flavor: str = "numpy") -> str:
-    """The generated module: ``flavor`` "numpy" (float64, arrays) or "mpmath" (any precision)."""
+    """The generated module: ``flavor`` "numpy" (float64, arrays) or "mpmath" (any precision).
+
+    Relations printed in a stable form also get their derived form as ``textbook_<name>``,
+    outside ``__all__``: it exists to be measured, not used."""
     parts = [MODULE_HEADER if flavor == "numpy" else MP_MODULE_HEADER]
     names = [rel.name for rel in relations]
     parts.append("__all__ = [\n" + "".join(f"    {n!r},\n" for n in names) + "]\n")
     for rel in relations:
         parts.append("\n\n" + render_function(rel, flavor))
+    for rel in relations:
+        if rel.stable is not None:
+            parts.append("\n\n" + render_function(textbook(rel), flavor))
     return "".join(parts)
 
 

@@ -2957,3 +2957,455 @@ def worn_g(R, b, x):
     import functools
 
     return x*numpy.sqrt(functools.reduce(numpy.maximum, [0, (-b + x)*(b + x)]))/R
+
+
+def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
+    """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
+
+    Chapter: (5.32), (5.33), any angle. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : float or ndarray
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return -1/2*numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + (1/2)/R2 + (1/2)/R1
+
+
+def textbook_bodies_effective_modulus(E1, nu1, E2, nu2):
+    """Effective modulus E* [Pa] of two elastic bodies, in the derived (textbook) form; use bodies_effective_modulus: 1/E* as the sum of the compliances, which accepts E2 = inf (rigid), with 1 - nu^2 = (1 - nu)(1 + nu) exact in floating point for nu near -1.
+
+    Chapter: (5.26). Derived from: the sum of the two surface displacements (5.6), (5.7)
+    under one pressure.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Parameters
+    ----------
+    E1 : float or ndarray
+        Young's modulus of body 1 [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    E2 : float or ndarray
+        Young's modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return -E1*E2/(E1*nu2**2 - E1 + E2*nu1**2 - E2)
+
+
+def textbook_bodies_effective_modulus_rigid(E, nu):
+    """Effective modulus E* [Pa] of an elastic body against a rigid one, in the derived (textbook) form; use bodies_effective_modulus_rigid: 1 - nu^2 = (1 - nu)(1 + nu) is exact in floating point for nu near -1, where 1 - nu^2 cancels.
+
+    Chapter: (5.8), (5.26) with E2 -> inf. Derived from: the limit E2 -> inf of (5.26).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return -E/(nu**2 - 1)
+
+
+def textbook_bodies_effective_radius(R1, R2):
+    """Effective radius R [m] of two spheres (negative radius: concave), in the derived (textbook) form; use bodies_effective_radius: the sum of the curvatures accepts R = inf (flat).
+
+    Chapter: (5.27). Derived from: the sum of the two gaps r^2/(2 R_i).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_radius_by_gap``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return R1*R2/(R1 + R2)
+
+
+def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
+    """Smaller principal curvature kappa_2 [1/m] of the gap between two bodies, in the derived (textbook) form; use bodies_principal_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
+
+    Chapter: (5.32), Problem 2, general. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1a : float or ndarray
+        first principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R1b : float or ndarray
+        second principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R2a : float or ndarray
+        first principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    R2b : float or ndarray
+        second principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    omega : float or ndarray
+        angle between the first principal directions of the two bodies [rad]
+    """
+    return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def textbook_ellipse_area(R1, d, t_ba):
+    """Contact area pi a b [m^2] of an elliptical contact, in the derived (textbook) form; use ellipse_area: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.29), exact. Derived from: pi a b with a, b matched.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return 2*numpy.pi*R1*d*t_ba*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_depth_from_force(E_star, F, R1, t_ba):
+    """Indentation depth d [m] of an elliptical contact under the force F, in the derived (textbook) form; use ellipse_depth_from_force: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.23), exact, inverted. Derived from: the exact force solved for d.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_controlled_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return 3**(2/3)*F**(2/3)*((1/2)*(-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (1/2)*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/(numpy.pi**(2/3)*E_star**(2/3)*R1**(1/3)*((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(1/3))
+
+
+def textbook_ellipse_equivalent_radius(R1, t_ba):
+    """Radius R_e [m] of the sphere whose Hertz force (5.23) equals the elliptical contact's at every depth (compare with the Gaussian radius (5.30)), in the derived (textbook) form; use ellipse_equivalent_radius: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.23), exact. Derived from: the exact force equated to (5.23).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.pi**2*R1*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**3)
+
+
+def textbook_ellipse_force(E_star, R1, d, t_ba):
+    """Normal force F [N] of an elliptical Hertz contact at depth d, in the derived (textbook) form; use ellipse_force: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.23), exact. Derived from: (5.31) integrated over the ellipse, with a and p0
+    from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (2/3)*numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*d**(3/2)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(3/2)
+
+
+def textbook_ellipse_max_pressure(E_star, R1, d, t_ba):
+    """Maximum pressure p0 [Pa] of an elliptical contact at depth d, in the derived (textbook) form; use ellipse_max_pressure: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.31), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(R1)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))*numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_mean_pressure(E_star, R1, d, t_ba):
+    """Mean pressure F/(pi a b) [Pa] of an elliptical contact, in the derived (textbook) form; use ellipse_mean_pressure: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.17), exact. Derived from: the force divided by the area pi a b.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/3)*numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(R1)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))*numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_pressure(E_star, R1, d, t_ba, x, y):
+    """Contact pressure p(x, y) [Pa] of an elliptical contact (0 outside), in the derived (textbook) form; use ellipse_pressure: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.31). Derived from: (5.31) with a, b, p0 from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_pressure_field``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    import functools
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - 1/2*x**2*(1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/(R1*d*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))) - 1/2*y**2*(1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/(R1*d*t_ba**2*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2)))]))/(numpy.sqrt(R1)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))*numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_radius_ratio(t_ba):
+    """Ratio R1/R2 >= 1 of the principal radii that gives the axis ratio t = b/a, in the derived (textbook) form; use ellipse_radius_ratio: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.31)-(5.32), exact. Derived from: (5.7) over (5.31) matched to the gap
+    (5.32): the y^2 and x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(t_ba**2*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2)))
+
+
+def textbook_ellipse_semi_major(R1, d, t_ba):
+    """Semi-axis a [m] (along x, the direction of R1 >= R2) of an elliptical contact, in the derived (textbook) form; use ellipse_semi_major: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32): the x^0 and
+    x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))
+
+
+def textbook_ellipse_semi_minor(R1, d, t_ba):
+    """Semi-axis b = t a [m] (along y, the direction of R2) of an elliptical contact, in the derived (textbook) form; use ellipse_semi_minor: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.sqrt(R1)*numpy.sqrt(d)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))
+
+
+def textbook_ellipse_stiffness(E_star, R1, d, t_ba):
+    """Differential stiffness dF/dd [N/m] of an elliptical contact, in the derived (textbook) form; use ellipse_stiffness: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.13), exact. Derived from: the derivative of the force at fixed R1, R2.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_stiffness_by_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(3/2)
+
+
+def textbook_hertz_displacement_outside(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact (r > a), in the derived (textbook) form; use hertz_displacement_outside: the textbook form cancels terms of size r/a to leave one of size a/r; asin t - t sqrt(1 - t^2) is written as (2 t^3/3) 2F1(1/2, 3/2; 5/2; t^2) with t = a/r.
+
+    Chapter: Fig. 5.2, Problem 7(b). Derived from: (5.7) over the Hertz pressure, outside
+    the disc.
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_pressures.py::test_outside_displacement_by_kernel``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
+
+
+def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):
+    """Surface displacement u_z [m] outside a disc (r > a) under a uniform pressure p0, in the derived (textbook) form; use uniform_pressure_displacement_outside: E(m) - (1 - m) K(m) cancels like m = a^2/r^2 for r >> a; it equals (pi m/4) 2F1(1/2, 1/2; 2; m).
+
+    Chapter: Problem 6 (outside the disc). Derived from: (5.7) with p = p0 (n = 0) outside
+    the disc.
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_uniform_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import scipy.special
+
+    return 4*p0*r*((a**2/r**2 - 1)*scipy.special.ellipk(a**2/r**2) + scipy.special.ellipe(a**2/r**2))/(numpy.pi*E_star)
+
+
+def textbook_worn_displacement_outside(R, a, b, r):
+    """Surface displacement u_z(r) [m] outside the contact (r > a) of the worn paraboloid, in the derived (textbook) form; use worn_displacement_outside: S sqrt(1 - S^2) - asin S, S^2 = (a^2 - b^2)/(r^2 - b^2), cancels for r >> a; it is written -(2 S^3/3) 2F1(1/2, 3/2; 5/2; S^2).
+
+    Chapter: Problem 8, (5.60). Derived from: (5.60) with x^2 = b^2 + (r^2 - b^2)
+    sin^2(phi).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (2*a*numpy.sqrt(a**2 - b**2)*numpy.arcsin(a/r) - (b - r)*(b + r)*(numpy.sqrt((-a**2 + b**2)/(b**2 - r**2))*numpy.sqrt((-a**2 + r**2)/(-b**2 + r**2)) - numpy.arcsin(numpy.sqrt((-a**2 + b**2)/(b**2 - r**2)))))/(numpy.pi*R)
+
+
+def textbook_worn_force(E_star, R, b, d):
+    """Normal force F [N] of the worn paraboloid at depth d, in the derived (textbook) form; use worn_force: sqrt(-1 + sqrt(1 + s^2)), s = 2 R d/b^2, cancels for s << 1; it is written s/sqrt(sqrt(1 + s^2) + 1).
+
+    Chapter: Problem 8. Derived from: (5.57) at the contact radius of (5.55).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/3)*E_star*numpy.sqrt(-2*b**2 + 2*numpy.sqrt(4*R**2*d**2 + b**4))*(2*b**2 + numpy.sqrt(4*R**2*d**2 + b**4))/R
