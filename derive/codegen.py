@@ -197,8 +197,12 @@ def render_errata(relations) -> str:
         diff = sp.simplify(rel.derived - rel.printed)
         point = counterexample(rel)
         subs = ", ".join(f"{k} = {v}" for k, v in point.items())
-        dv = sp.N(rel.derived.subs(point), 15)
-        pv = sp.N(rel.printed.subs(point), 15)
+        # evaluated inside the relation's domain (e.g. r = a t, 0 < t < 1, for the cone)
+        dom = rel.domain or {}
+        if dom:
+            subs += " with " + ", ".join(f"{k} = {sp.sstr(v)}" for k, v in dom.items())
+        dv = sp.N(rel.derived.subs(dom).subs(point), 15)
+        pv = sp.N(rel.printed.subs(dom).subs(point), 15)
         out.append(f"## {rel.equation}: `{rel.name}`\n\n{rel.erratum}\n\n"
                    f"- derived: $ {_latex(rel.derived)} $\n"
                    f"- printed: $ {_latex(rel.printed)} $\n"
@@ -209,6 +213,8 @@ def render_errata(relations) -> str:
 
 def counterexample(rel: Relation) -> dict[sp.Symbol, sp.Rational]:
     """A fixed, simple point of the domain where a printed form is evaluated (1/2, 2/3, ...)."""
-    symbols = sorted(rel.derived.free_symbols | rel.printed.free_symbols, key=lambda s: s.name)
+    dom = rel.domain or {}
+    symbols = sorted(rel.derived.subs(dom).free_symbols | rel.printed.subs(dom).free_symbols,
+                     key=lambda s: s.name)
     return {s: sp.Rational(1, k + 2) if s.name.startswith("nu") else sp.Rational(k + 2, k + 3)
             for k, s in enumerate(symbols)}

@@ -287,3 +287,37 @@ def test_arrays_and_bad_input():
         bodies.effective_radius(0.0, 1.0)
     with pytest.raises(ValueError, match="alpha"):
         bodies.crossed_cylinders_gaussian_radius(1.0, 1.0, 0.0)
+
+
+@pytest.mark.sweep
+def test_gaussian_approximation_sweep():
+    """(5.28)-(5.31) over the decades: the force by radial quadrature of (5.31) over the
+    ellipse (x = a rho cos phi, y = b rho sin phi), p0 of (5.22) at R~ = sqrt(R1 R2)."""
+    doms = {"E_star": E_DOM, "R1": R_DOM, "ratio": Arg(1.0, 10.0), "strain": Arg(1e-12, 1e-1)}
+
+    def parts(E_star, R1, ratio, strain):
+        R2 = R1 * ratio
+        d = strain * R1
+        a, b = mp.sqrt(R1 * d), mp.sqrt(R2 * d)
+        p0 = 2 / mp.pi * E_star * mp.sqrt(d / mp.sqrt(R1 * R2))
+        F = 2 * mp.pi * a * b * mp.quad(lambda rho: p0 * mp.sqrt(1 - rho**2) * rho, [0, 1])
+        return {"F": F, "p0": p0, "A": mp.pi * a * b, "R~": mp.sqrt(R1 * R2)}
+
+    cases = {
+        "bodies_gaussian_approx_force": (
+            lambda E_star, R1, ratio, strain: g.bodies_gaussian_approx_force(
+                E_star, R1, R1 * ratio, strain * R1), "F"),
+        "bodies_gaussian_approx_max_pressure": (
+            lambda E_star, R1, ratio, strain: g.bodies_gaussian_approx_max_pressure(
+                E_star, R1, R1 * ratio, strain * R1), "p0"),
+        "bodies_gaussian_approx_area": (
+            lambda E_star, R1, ratio, strain: g.bodies_gaussian_approx_area(
+                R1, R1 * ratio, strain * R1), "A"),
+        "bodies_gaussian_radius": (
+            lambda E_star, R1, ratio, strain: g.bodies_gaussian_radius(R1, R1 * ratio), "R~"),
+    }
+    # the products R1*ratio and strain*R1 are rounded in float64 before the call and exact in
+    # the reference: one more ulp each, inside TOL
+    for name, (func, key) in cases.items():
+        assert_mpmath_equal(func, lambda key=key, **kw: parts(**kw)[key], doms, rtol=TOL,
+                            n=n_points(200, 20), dps=30, name=name)

@@ -157,3 +157,13 @@ def test_pressure_arrays_and_bad_input():
         cone.force(d, np.pi / 2, E)
     with pytest.raises(ValueError, match=r"r = -1\.0"):
         cone.pressure(-1.0, d, theta, E)
+
+
+@pytest.mark.sweep
+def test_cone_mean_pressure_sweep():
+    def ref(E_star, theta):
+        a, F = reference(E_star, mp.mpf("1e-3"), theta)  # any depth: the same mean pressure
+        return F / (mp.pi * a**2)
+
+    assert_mpmath_equal(g.cone_mean_pressure, ref, {"E_star": E_DOM, "theta": THETA},
+                        rtol=TOL, n=n_points(100, 15), dps=35, name="cone_mean_pressure")

@@ -142,3 +142,45 @@ def test_bad_input():
         line.force(1e-6, 0.0, 1e9)
     with pytest.raises(ValueError, match="x"):
         line.pressure(float("nan"), 1e-6, 0.01, 1e9)
+
+
+@pytest.mark.sweep
+def test_line_half_width_forms_sweep():
+    """p0(a), F/L(a), the first form of (5.37) and the pressure (5.36), over the decades."""
+    doms = {"E_star": E_DOM, "R": R_DOM, "strain": STRAIN}
+    n = n_points(200, 20)
+
+    def at(E_star, R, strain):
+        a = mp.sqrt(R * strain * R)
+        return a, reference(E_star, R, a)
+
+    # a = sqrt(R d) is rounded in float64 before the call (1 ulp), exact in the reference
+    assert_mpmath_equal(
+        lambda E_star, R, strain: g.line_max_pressure_from_half_width(
+            E_star, R, g.line_half_width(R, strain * R)),
+        lambda **kw: at(**kw)[1][0], doms, rtol=TOL, n=n, dps=35,
+        name="line_max_pressure_from_half_width")
+    assert_mpmath_equal(
+        lambda E_star, R, strain: g.line_force_per_length_from_half_width(
+            E_star, R, g.line_half_width(R, strain * R)),
+        lambda **kw: at(**kw)[1][1], doms, rtol=TOL, n=n, dps=35,
+        name="line_force_per_length_from_half_width")
+    assert_mpmath_equal(
+        lambda E_star, R, strain: g.line_max_pressure_depth_width(
+            E_star, g.line_half_width(R, strain * R), strain * R),
+        lambda **kw: at(**kw)[1][0], doms, rtol=TOL, n=n, dps=35,
+        name="line_max_pressure_depth_width")
+    assert_mpmath_equal(
+        lambda E_star, R, strain: g.line_half_width(R, strain * R),
+        lambda **kw: at(**kw)[0], doms, rtol=TOL, n=n, dps=35, name="line_half_width")
+
+    # the pressure at x = frac * a, frac in [0, 0.9]: sqrt(1 - frac^2) is well conditioned
+    def p_float(E_star, R, strain, frac):
+        d = strain * R
+        return g.line_pressure(E_star, R, d, frac * g.line_half_width(R, d))
+
+    def p_ref(E_star, R, strain, frac):
+        return at(E_star, R, strain)[1][0] * mp.sqrt(1 - frac**2)
+
+    assert_mpmath_equal(p_float, p_ref, {**doms, "frac": Arg(0.0, 0.9, log=False)}, rtol=TOL,
+                        n=n, dps=35, name="line_pressure")
