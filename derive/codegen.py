@@ -145,6 +145,12 @@ def render_module(relations, flavor: str = "numpy") -> str:
     parts = [MODULE_HEADER if flavor == "numpy" else MP_MODULE_HEADER]
     names = [rel.name for rel in relations]
     parts.append("__all__ = [\n" + "".join(f"    {n!r},\n" for n in names) + "]\n")
+    if flavor == "numpy":  # a listing that needs no SymPy (hertzmdr.numeric.demo prints it)
+        rows = "".join(f"    ({rel.name!r}, {rel.equation!r}, {rel.family!r}, "
+                       f"{sp.sstr(rel.derived)!r}, {rel.erratum or ''!r}),\n"
+                       for rel in relations)
+        parts.append("\n#: every relation: (name, equation, family, derived formula, erratum or "
+                     "\"\")\nRELATIONS = (\n" + rows + ")\n")
     for rel in relations:
         parts.append("\n\n" + render_function(rel, flavor))
     for rel in relations:

@@ -31,22 +31,27 @@ parser.add_argument("--no-relations", action="store_true",
 
 
 def print_relations(families: list[str] | None, out=sys.stdout) -> int:
-    """Print the relations of ``families`` (all if None); return how many were printed."""
-    import sympy as sp  # the runtime never imports SymPy; only this listing does
+    """Print the relations of ``families`` (all if None); return how many were printed.
 
-    from hertzmdr.derive import all_relations
+    They come from the table the generator writes into ``_generated.py`` (``RELATIONS``), so
+    this listing needs no SymPy and no derivation at run time."""
+    import inspect
 
-    relations = [r for r in all_relations() if families is None or r.family in families]
+    from hertzmdr.numeric import _generated as g
+
+    relations = [r for r in g.RELATIONS if families is None or r[2] in families]
     count = 0
-    for fam in sorted({r.family for r in relations}):
+    for fam in sorted({r[2] for r in relations}):
         print(f"\n== hertzmdr.derive.{fam} ==", file=out)
-        for rel in (r for r in relations if r.family == fam):
-            flag = "!" if rel.erratum else " "
-            args = ", ".join(s.name for s in rel.args)
-            text = f"{rel.name}({args}) = {sp.sstr(rel.derived)}"
+        for name, equation, family, formula, erratum in relations:
+            if family != fam:
+                continue
+            flag = "!" if erratum else " "
+            args = ", ".join(inspect.signature(getattr(g, name)).parameters)
+            text = f"{name}({args}) = {formula}"
             if len(text) > WIDTH:
                 text = text[: WIDTH - 1] + "…"
-            eq = rel.equation.split(",")[0][:EQ]  # the leading equation number
+            eq = equation.split(",")[0][:EQ]  # the leading equation number
             print(f"{flag}{eq:<{EQ}} {text}", file=out)
             count += 1
     print("\n! the derivation differs from the chapter's print (docs/errata.md); long "

@@ -60,8 +60,12 @@ def test_mpmath_print_agrees_with_numpy_print():
         for _ in range(3):
             args = {}
             for s in rel.args:
-                args[s.name] = rng.uniform(0.05, 0.45) if s.name.startswith("nu") \
-                    else rng.uniform(0.5, 3.0)
+                if s.name.startswith("nu"):
+                    args[s.name] = rng.uniform(0.05, 0.45)
+                elif s.name == "theta":  # the cone's angle with the plane, (5.38)
+                    args[s.name] = rng.uniform(0.05, 1.5)
+                else:
+                    args[s.name] = rng.uniform(0.5, 3.0)
             if rel.domain:  # e.g. r = a/t: evaluate where the relation is stated
                 continue_outer = False
                 for sym, expr in rel.domain.items():

@@ -13,7 +13,7 @@ import pytest
 from hertzmdr.numeric import _generated as g
 
 from kernels import force_axisymmetric, uz_axisymmetric
-from oracle import assert_close
+from oracle import FULL, assert_close
 
 DPS = 35
 TOL_DERIVED = 1e-30  # kernel quadrature error ~1e-33 at 35 digits
@@ -28,7 +28,10 @@ def hertzian(p0, a):
     return lambda gap: p0 * mp.sqrt(gap) / a  # (5.15): p0 (1 - rho^2/a^2)^(1/2)
 
 
-@pytest.mark.parametrize("r_over_a", ["0", "0.25", "0.7", "0.999"])
+# r/a = 0.99 is the closest the default run goes: at 0.999 the outer integrand varies on a
+# scale of 0.05 near phi = pi/2 and the check costs a minute (HERTZMDR_SWEEP=full runs it)
+@pytest.mark.parametrize("r_over_a", ["0", "0.25", "0.7", "0.99"]
+                         + (["0.999"] if FULL else []))
 def test_punch_displacement_by_kernel(r_over_a):
     E, a, p0 = 2.1e11, 3e-3, 4.5e8
     with mp.workdps(DPS):
