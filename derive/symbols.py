@@ -35,6 +35,16 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "rho": ("kg/m^3", "density"),
     "v0": ("m/s", "impact velocity"),
     "alpha": ("rad", "angle between the axes of two crossed cylinders"),
+    # stress family (derive/stress.py)
+    "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
+    "beta": ("rad", "oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), "
+             "z = a xi cos(beta)"),
+    "sigma_xx": ("Pa", "normal stress component sigma_xx"),
+    "sigma_yy": ("Pa", "normal stress component sigma_yy"),
+    "sigma_zz": ("Pa", "normal stress component sigma_zz"),
+    "tau_xy": ("Pa", "shear stress component tau_xy"),
+    "tau_yz": ("Pa", "shear stress component tau_yz"),
+    "tau_xz": ("Pa", "shear stress component tau_xz"),
 }
 
 
