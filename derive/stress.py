@@ -240,12 +240,10 @@ def relations() -> list[Relation]:
                  stable_why="(q + D)/2 cancels for q = r^2 + z^2 - a^2 < 0; "
                  "written as 2 a^2 z^2/(D - q)", domain=inside),
         Relation("stress_spheroidal_cos_beta_inside", "Johnson (1985), (3.44)",
-                 z / sp.sqrt(2 * a**2 * z**2 / (disc_st - q_st)), (a, r, z),
+                 sp.sqrt((disc_st - q_st) / 2) / a, (a, r, z),
                  "cos(beta) = z/u^(1/2) [1] for r^2 + z^2 < a^2 (finite at z = 0)",
-                 "z/u^(1/2) with u as in stress_spheroidal_u_inside",
-                 f"{TEST}::test_spheroidal_coordinates", stable=sp.sqrt((disc_st - q_st) / 2) / a,
-                 stable_why="z/u^(1/2) is 0/0 at z = 0; u = 2 a^2 z^2/(D - q) cancels z",
-                 domain=inside),
+                 "z/u^(1/2) with u = 2 a^2 z^2/(D - q) (stress_spheroidal_u_inside): z cancels",
+                 f"{TEST}::test_spheroidal_coordinates"),
     ]
     for comp, what in (("rr", "radial stress sigma_rr"), ("tt", "hoop stress sigma_theta"),
                        ("zz", "normal stress sigma_zz"), ("rz", "shear stress tau_rz")):

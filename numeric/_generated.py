@@ -1017,13 +1017,11 @@ def stress_hertz_tau_rz(p0, xi, beta):
 def stress_spheroidal_cos_beta_inside(a, r, z):
     """Cos(beta) = z/u^(1/2) [1] for r^2 + z^2 < a^2 (finite at z = 0).
 
-    Chapter: Johnson (1985), (3.44). Derived from: z/u^(1/2) with u as in
-    stress_spheroidal_u_inside.
+    Chapter: Johnson (1985), (3.44). Derived from: z/u^(1/2) with u = 2 a^2 z^2/(D - q)
+    (stress_spheroidal_u_inside): z cancels.
 
     Derivation: ``hertzmdr.derive.stress``. Verified by
     ``tests/test_stress.py::test_spheroidal_coordinates``.
-
-    Printed in a stable form: z/u^(1/2) is 0/0 at z = 0; u = 2 a^2 z^2/(D - q) cancels z.
 
     Parameters
     ----------
