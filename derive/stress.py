@@ -134,23 +134,26 @@ def von_mises() -> tuple[sp.Expr, sp.Expr]:
     return derived, printed
 
 
-def hertz_field(far: bool = False) -> dict[str, sp.Expr]:
+def hertz_field(far: bool | str = False) -> dict[str, sp.Expr]:
     """Huber's stresses (Johnson 1985, (3.44)) in the spheroidal variables (xi, beta).
 
     eta = cos(beta), chi = sin(beta), w = 1/(1 + xi^2): Johnson's (a^2/r^2)(1 - eta^3) is
     (1 + eta + eta^2) w/(1 + eta), u(1 - nu)/(a^2 + u) = (1 - nu)(1 - w); regrouped, the terms
     of sigma_rr and sigma_theta that cancel on the axis and far away are combined into
-    K = 1 - xi atan(1/xi) - w/3, which is (2/15) w^2 2F1(1, 2; 7/2; w). With ``far`` K is
-    printed as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2 (Pfaff), exact for the
-    cancellation at xi >= 1; else as written (accurate for xi < 1).
+    K = 1 - xi atan(1/xi) - w/3, which is (2/15) w^2 2F1(1, 2; 7/2; w). With ``far="hyper"``
+    K is (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2 (Pfaff), free of the cancellation at
+    xi >= 1; with ``far=True`` as written; else with atan(1/xi) = pi/2 - atan(xi), finite at
+    xi = 0 (accurate for xi < 1).
     """
     eta, chi = sp.cos(beta), sp.sin(beta)
     w = 1 / (1 + xi**2)
-    if far:
+    if far == "hyper":
         k = (sp.Rational(2, 15) * w / xi**2
              * sp.hyper([1, sp.Rational(3, 2)], [sp.Rational(7, 2)], -1 / xi**2))
-    else:
+    elif far:
         k = 1 - xi * sp.atan(1 / xi) - w / 3
+    else:
+        k = 1 - xi * (sp.pi / 2 - sp.atan(xi)) - w / 3  # atan(1/xi), finite at xi = 0
     return {
         "rr": p0 * ((1 - 2 * nu) * w / (3 * (1 + eta))
                     - eta * xi**2 * chi**2 * w / (xi**2 + eta**2) - (1 + nu) * eta * k),
@@ -191,7 +194,8 @@ def relations() -> list[Relation]:
     inside = {r: a * unit_interval("t_r"),
               z: a * unit_interval("t_z") * sp.sqrt(1 - unit_interval("t_r") ** 2)}
     field = hertz_field()
-    far_field = hertz_field(far=True)
+    far_field = hertz_field(far="hyper")
+    far_derived = hertz_field(far=True)
     q_st = (r - a) * (r + a) + z**2
     disc_st = sp.sqrt(q_st**2 + 4 * a**2 * z**2)
     outside = {r: a / unit_interval("t_r"), z: a * unit_interval("t_z")}
@@ -256,7 +260,7 @@ def relations() -> list[Relation]:
             lit, fld))
         if comp in ("rr", "tt"):
             rels.append(Relation(
-                f"stress_hertz_{name}_far", "Fig. 5.9", field[comp], args,
+                f"stress_hertz_{name}_far", "Fig. 5.9", far_derived[comp], args,
                 f"{what} [Pa] under the Hertz pressure at (xi, beta), for xi >= 1",
                 lit, fld, stable=far_field[comp], domain={xi: 1 / unit_interval()},
                 stable_why="1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written "

@@ -890,7 +890,7 @@ def stress_hertz_sigma_rr(nu, p0, xi, beta):
     beta : float or ndarray
         oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
     """
-    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
 
 
 def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
@@ -941,7 +941,7 @@ def stress_hertz_sigma_tt(nu, p0, xi, beta):
     beta : float or ndarray
         oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
     """
-    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
 
 
 def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
