@@ -49,6 +49,16 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "kappa_n": ("1", "MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d))"),
     "r_tilde": ("1", "normalized radius r/a"),
     "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8)"),
+    # stress family (derive/stress.py)
+    "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
+    "beta": ("rad", "oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), "
+             "z = a xi cos(beta)"),
+    "sigma_xx": ("Pa", "normal stress component sigma_xx"),
+    "sigma_yy": ("Pa", "normal stress component sigma_yy"),
+    "sigma_zz": ("Pa", "normal stress component sigma_zz"),
+    "tau_xy": ("Pa", "shear stress component tau_xy"),
+    "tau_yz": ("Pa", "shear stress component tau_yz"),
+    "tau_xz": ("Pa", "shear stress component tau_xz"),
 }
 
 

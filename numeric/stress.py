@@ -1,0 +1,366 @@
+"""Stresses in the half-space under a contact pressure: Hertz in closed form, any axisymmetric
+pressure by superposition of the point-force field; von Mises, Tresca and maximum shear.
+
+Coordinates: x, y on the surface, z > 0 into the body, the contact centred at the origin.
+Stresses in Pa, tension positive; tensors are returned as arrays of shape ``(..., 3, 3)``.
+The formulas are generated from :mod:`hertzmdr.derive.stress` (Hertz field, axis stresses
+(5.48), (5.49), von Mises (5.50)) and :mod:`hertzmdr.derive.boussinesq` (point force
+(5.41)-(5.46)); this module validates, picks the stable branch, rotates and integrates.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
+
+__all__ = [
+    "spheroidal", "hertz_stress_cylindrical", "hertz_stress", "axis_stresses",
+    "axis_max_shear", "von_mises", "tresca", "max_shear", "hertz_maximum",
+    "superposed_stress",
+]
+
+
+def spheroidal(r, z, a):
+    """Oblate spheroidal coordinates (xi, beta) of the contact disc at (r, z).
+
+    r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta); xi^2 = u/a^2 with Johnson's u, the
+    positive root of r^2/(a^2 + u) + z^2/u = 1. Inside the sphere r^2 + z^2 < a^2 the
+    cancellation-free forms are used; at the contact edge (r = a, z = 0) the limit xi = 0,
+    beta = pi/2 is returned.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the axis [m], r >= 0.
+    z : float or array_like
+        Depth [m], z >= 0.
+    a : float or array_like
+        Contact radius [m], a > 0.
+
+    Returns
+    -------
+    xi : ndarray
+        [1], xi >= 0.
+    beta : ndarray
+        [rad], 0 <= beta <= pi/2.
+    """
+    r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
+    r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
+    q = (r - 1) * (r + 1) + z * z
+    edge = (q == 0) & (z * z == 0)  # the edge circle (to within z^2 underflow, z < 1e-154 a)
+    i = (q <= 0) & ~edge
+    o = q > 0
+    u = np.zeros(r.shape)
+    cos_b = np.zeros(r.shape)  # at the edge: the limit beta = pi/2
+    one = np.ones(r.shape)
+    u[i] = g.stress_spheroidal_u_inside(one[i], r[i], z[i])
+    cos_b[i] = g.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
+    u[o] = g.stress_spheroidal_u(one[o], r[o], z[o])
+    cos_b[o] = z[o] / np.sqrt(u[o])  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
+    sin_b = r / np.sqrt(1 + u)
+    return result(np.sqrt(u)), result(np.arctan2(sin_b, cos_b))
+
+
+def hertz_stress_cylindrical(r, z, a, p0, nu):
+    """Stresses (sigma_rr, sigma_theta, sigma_zz, tau_rz) [Pa] under the Hertz pressure.
+
+    Huber's closed form (Huber 1904; Johnson 1985, eqs. (3.44)) in spheroidal coordinates,
+    printed without the cancellations of the textbook form on the axis, at depth and at the
+    contact edge (see :mod:`hertzmdr.derive.stress`). Finite everywhere in the closed body.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distance from the axis [m], r >= 0.
+    z : float or array_like
+        Depth [m], z >= 0.
+    a : float or array_like
+        Contact radius [m], a > 0.
+    p0 : float or array_like
+        Maximum pressure [Pa], p0 >= 0.
+    nu : float or array_like
+        Poisson's ratio, -1 < nu <= 0.5.
+
+    Returns
+    -------
+    tuple of four ndarrays
+        sigma_rr, sigma_theta, sigma_zz, tau_rz [Pa].
+    """
+    r, z, a, p0, nu = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z),
+                                          positive("a", a), nonnegative("p0", p0),
+                                          poisson("nu", nu))
+    xi, beta = spheroidal(r, z, a)
+    xi, beta = np.asarray(xi), np.asarray(beta)
+    near = xi < 1.0
+    srr, stt = np.empty(r.shape), np.empty(r.shape)
+    n, f = near, ~near
+    srr[n] = g.stress_hertz_sigma_rr(nu[n], p0[n], xi[n], beta[n])
+    stt[n] = g.stress_hertz_sigma_tt(nu[n], p0[n], xi[n], beta[n])
+    srr[f] = g.stress_hertz_sigma_rr_far(nu[f], p0[f], xi[f], beta[f])
+    stt[f] = g.stress_hertz_sigma_tt_far(nu[f], p0[f], xi[f], beta[f])
+    szz = g.stress_hertz_sigma_zz(p0, xi, beta)
+    trz = g.stress_hertz_tau_rz(p0, xi, beta)
+    return tuple(result(v) for v in (srr, stt, szz, trz))
+
+
+def _rotate(x, y, srr, stt, szz, trz):
+    """Cartesian tensor (..., 3, 3) from cylindrical components at azimuth atan2(y, x)."""
+    rr = np.hypot(x, y)
+    safe = np.where(rr > 0, rr, 1.0)
+    c = np.where(rr > 0, x / safe, 1.0)  # on the axis sigma_rr = sigma_theta: any angle
+    s = np.where(rr > 0, y / safe, 0.0)
+    out = np.empty(np.shape(srr) + (3, 3))
+    out[..., 0, 0] = srr * c * c + stt * s * s
+    out[..., 1, 1] = srr * s * s + stt * c * c
+    out[..., 2, 2] = szz
+    out[..., 0, 1] = out[..., 1, 0] = (srr - stt) * s * c
+    out[..., 0, 2] = out[..., 2, 0] = trz * c
+    out[..., 1, 2] = out[..., 2, 1] = trz * s
+    return out
+
+
+def hertz_stress(x, y, z, a, p0, nu):
+    """Stress tensor [Pa] at (x, y, z) under the Hertz pressure p0 (1 - r^2/a^2)^(1/2) (5.15).
+
+    Parameters
+    ----------
+    x, y : float or array_like
+        Surface coordinates [m] from the contact centre.
+    z : float or array_like
+        Depth [m], z >= 0.
+    a, p0, nu
+        Contact radius [m], maximum pressure [Pa], Poisson's ratio, as in
+        :func:`hertz_stress_cylindrical`.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        sigma_ij [Pa], tension positive.
+    """
+    x, y = as_float("x", x), as_float("y", y)
+    x, y, z, a, p0, nu = np.broadcast_arrays(x, y, z, a, p0, nu)
+    srr, stt, szz, trz = hertz_stress_cylindrical(np.hypot(x, y), z, a, p0, nu)
+    return _rotate(x, y, srr, stt, szz, trz)
+
+
+def axis_stresses(z, a, p0, nu):
+    """sigma_zz (5.48) and sigma_xx = sigma_yy (5.49) [Pa] on the axis under the Hertz pressure.
+
+    (5.49) is used for z < a; for z >= a a form without its cancellation (exact at nu = 1/2).
+
+    Parameters
+    ----------
+    z : float or array_like
+        Depth [m], z >= 0.
+    a, p0, nu
+        As in :func:`hertz_stress_cylindrical`.
+    """
+    z, a, p0, nu = np.broadcast_arrays(nonnegative("z", z), positive("a", a),
+                                       nonnegative("p0", p0), poisson("nu", nu))
+    szz = g.stress_axis_sigma_zz(a, p0, z)  # (5.48)
+    sxx = np.empty(z.shape)
+    shallow = z < a
+    s, d = shallow & (z > 0), ~shallow
+    sxx[s] = g.stress_axis_sigma_xx(a[s], nu[s], p0[s], z[s])  # (5.49)
+    sxx[d] = g.stress_axis_sigma_xx_deep(a[d], nu[d], p0[d], z[d])
+    top = z == 0  # (5.49) at z -> 0: -(1 + 2 nu) p0/2; the spheroidal form is exact there
+    sxx[top] = g.stress_hertz_sigma_rr(nu[top], p0[top], 0.0, 0.0)
+    return result(szz), result(sxx)
+
+
+def axis_max_shear(nu):
+    """Depth z/a and value tau_1/p0 of the maximum of tau_1 = (sigma_xx - sigma_zz)/2 on the
+    axis under the Hertz pressure (Fig. 5.8); the von Mises stress there is 2 tau_1.
+
+    The root of d(tau_1)/dz (generated from the derivation) by Brent's method on
+    0.05 a <= z <= 2 a, to full double precision.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+
+    Returns
+    -------
+    (float, float)
+        z/a and tau_1/p0 at the maximum.
+    """
+    from scipy.optimize import brentq
+
+    nu = float(poisson("nu", nu))
+    s = brentq(lambda t: g.stress_axis_max_shear_slope(1.0, nu, 1.0, t), 0.05, 2.0,
+               xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+    return s, float(g.stress_axis_max_shear(1.0, nu, 1.0, s))
+
+
+def von_mises(sigma):
+    """von Mises equivalent stress (5.50) [Pa] of stress tensors of shape (..., 3, 3)."""
+    s = as_float("sigma", sigma)
+    return result(g.stress_von_mises(s[..., 0, 0], s[..., 1, 1], s[..., 2, 2], s[..., 0, 1],
+                                     s[..., 1, 2], s[..., 0, 2]))
+
+
+def tresca(sigma):
+    """Tresca equivalent stress sigma_1 - sigma_3 [Pa] (largest minus smallest principal)."""
+    ev = np.linalg.eigvalsh(as_float("sigma", sigma))
+    return result(ev[..., -1] - ev[..., 0])
+
+
+def max_shear(sigma):
+    """Maximum shear stress (sigma_1 - sigma_3)/2 [Pa]; on the axis it is tau_1 of Fig. 5.8."""
+    return result(0.5 * np.asarray(tresca(sigma)))
+
+
+def hertz_maximum(nu, criterion: str = "von_mises"):
+    """Maximum of an equivalent stress in the body under the Hertz pressure, over p0.
+
+    A 60 x 60 grid over 0 <= r <= 2a, 0 <= z <= 2a locates the peak; Nelder-Mead refines it
+    (for the Hertz pressure the peak lies on the axis; it is searched for, not assumed).
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    criterion : {"von_mises", "tresca", "max_shear"}
+
+    Returns
+    -------
+    (float, float, float)
+        value/p0, r/a, z/a at the maximum.
+    """
+    from scipy.optimize import minimize
+
+    funcs = {"von_mises": von_mises, "tresca": tresca, "max_shear": max_shear}
+    if criterion not in funcs:
+        raise ValueError(f"criterion = {criterion!r}; valid: {sorted(funcs)}")
+    nu = float(poisson("nu", nu))
+    f = funcs[criterion]
+
+    def field(r, z):
+        return np.asarray(f(hertz_stress(r, 0.0, z, 1.0, 1.0, nu)))
+
+    rr, zz = np.meshgrid(np.linspace(0, 2, 61), np.linspace(0, 2, 61))
+    vals = field(rr, zz)
+    k = np.unravel_index(np.argmax(vals), vals.shape)
+    start = np.array([rr[k], zz[k]])
+    res = minimize(lambda p: -float(field(abs(p[0]), abs(p[1]))), start, method="Nelder-Mead",
+                   options={"xatol": 1e-10, "fatol": 1e-15, "maxiter": 2000})
+    r_best, z_best = abs(res.x[0]), abs(res.x[1])
+    return float(field(r_best, z_best)), r_best, z_best
+
+
+# -- superposition of the point-force field (5.41)-(5.46) over an axisymmetric pressure --------
+
+def _tanh_sinh(level: int):
+    """Tanh-sinh nodes on (0, 1) with 1 - x kept exact, and weights; step 2^-level."""
+    h = 2.0 ** -level
+    t = np.arange(-int(4.5 / h), int(4.5 / h) + 1) * h
+    u = 0.5 * np.pi * np.sinh(t)
+    lo = 1.0 / (1.0 + np.exp(2 * u))  # (1 - tanh u)/2 = distance from 1 in (0, 1) units
+    x = 1.0 / (1.0 + np.exp(-2 * u))  # (1 + tanh u)/2
+    w = h * 0.25 * np.pi * np.cosh(t) / np.cosh(u) ** 2
+    keep = (w > 1e-300) & (lo > 0) & (x > 0)
+    return x[keep], lo[keep], w[keep]
+
+
+def _kernels(nu, dx, dy, z):
+    """Point-force stresses of a unit force, field minus source = (dx, dy, z)."""
+    return (g.boussinesq_sigma_xx(1.0, nu, dx, dy, z), g.boussinesq_sigma_yy(1.0, nu, dx, dy, z),
+            g.boussinesq_sigma_zz(1.0, nu, dx, dy, z), g.boussinesq_sigma_xz(1.0, nu, dx, dy, z))
+
+
+def _superpose_point(r, z, a, nu, pressure, n_psi, level):
+    """(sigma_rr, sigma_theta, sigma_zz, tau_rz) at (r, 0, z), z > 0, by rays from the field
+    point's projection: source = (r + s cos psi, s sin psi), dA = s ds dpsi."""
+    x01, _, w01 = _tanh_sinh(level)
+    if r < a:
+        # psi in [0, pi] by the symmetry y -> -y; the integrand is smooth and periodic in psi,
+        # so the trapezoidal rule converges geometrically
+        psi = np.linspace(0.0, np.pi, n_psi + 1)
+        wpsi = np.full(psi.shape, np.pi / n_psi)
+        wpsi[[0, -1]] *= 0.5
+        wpsi *= 2.0
+        c, sn = np.cos(psi), np.sin(psi)
+        smax = -r * c + np.sqrt((a - r * sn) * (a + r * sn))
+        # s = z sinh(v), v in [0, V]: clusters nodes at the scale z of the kernel near s = 0;
+        # tanh-sinh in v copes with the pressure's singularity at the disc's rim (s = smax)
+        vmax = np.arcsinh(smax / z)[:, None]
+        v = vmax * x01[None, :]
+        s = z * np.sinh(v)
+        ds = z * np.cosh(v) * vmax * w01[None, :]
+    else:
+        psim = np.arcsin(a / r)
+        # psi = pi + psim sin(theta), Gauss-Legendre in theta: the chord vanishes like a square
+        # root at the tangent rays, which the sine map makes smooth
+        th, wth = np.polynomial.legendre.leggauss(n_psi)
+        th, wth = th * np.pi / 2, wth * np.pi / 2
+        psi = np.pi + psim * np.sin(th)
+        wpsi = wth * psim * np.cos(th)
+        c, sn = np.cos(psi), np.sin(psi)
+        half = np.sqrt(np.maximum((a - r * np.abs(sn)) * (a + r * np.abs(sn)), 0.0))
+        s1, s2 = -r * c - half, -r * c + half
+        s = s1[:, None] + (s2 - s1)[:, None] * x01[None, :]
+        ds = (s2 - s1)[:, None] * w01[None, :]
+    cc, ss = c[:, None], sn[:, None]
+    sx, sy = r + s * cc, s * ss
+    rho = np.hypot(sx, sy)
+    rho = np.minimum(rho, np.nextafter(a, 0.0))  # the pressure is evaluated inside the disc
+    p = np.asarray(pressure(rho), dtype=float)
+    k = _kernels(nu, -s * cc, -s * ss, z)
+    wts = p * s * ds * wpsi[:, None]
+    return tuple(float(np.sum(kk * wts)) for kk in k)
+
+
+def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int = 5):
+    """Stress tensor [Pa] under an axisymmetric pressure p(r) on r < a, by superposing the
+    point-force field (5.41)-(5.46) over the pressure (5.47), with an error estimate.
+
+    Quadrature on rays from the field point's projection (so the kernel's scale z is resolved
+    however close to the surface): in the distance s, tanh-sinh on s = z sinh(v), which copes
+    with the end-point singularities of MDR pressures at the rim (flat punch (a^2 - r^2)^(-1/2),
+    Hertz (a^2 - r^2)^(1/2)) and with the peak of the kernel near s = 0; in the ray angle, the
+    trapezoidal rule inside the contact (periodic, smooth integrand: geometric convergence) and
+    Gauss-Legendre on a sine map outside it. The error estimate is the difference between this
+    result and one with half the step in both rules (the finer one is returned).
+
+    Parameters
+    ----------
+    x, y : float or array_like
+        Surface coordinates [m].
+    z : float or array_like
+        Depth [m], z > 0 (on the surface, sigma_zz = -p and the tangential stresses need the
+        principal value of the kernel, which this route does not compute).
+    pressure : callable
+        p(r) [Pa] for arrays 0 <= r < a; may be singular at r = a (integrably) and at r = 0.
+    a : float
+        Radius of the loaded disc [m], a > 0.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    n_psi, level : int
+        Angle nodes and tanh-sinh level (step 2^-level) of the coarse rule.
+
+    Returns
+    -------
+    sigma : ndarray, shape (..., 3, 3)
+        Stress tensor [Pa].
+    error : ndarray, shape (..., 3, 3)
+        Estimated absolute error [Pa] of each component.
+    """
+    if not callable(pressure):
+        raise ValueError(f"pressure = {pressure!r} is not callable; valid: a function p(r)")
+    a = float(positive("a", a))
+    nu = float(poisson("nu", nu))
+    x, y, z = np.broadcast_arrays(as_float("x", x), as_float("y", y), positive("z", z))
+    flat = [np.ravel(v) for v in (x, y, z)]
+    out = np.empty((flat[0].size, 2, 4))
+    for i, (xi_, yi_, zi_) in enumerate(zip(*flat, strict=True)):
+        r = float(np.hypot(xi_, yi_))
+        out[i, 0] = _superpose_point(r, zi_, a, nu, pressure, n_psi, level)
+        out[i, 1] = _superpose_point(r, zi_, a, nu, pressure, 2 * n_psi, level + 1)
+    fine = out[:, 1].reshape(x.shape + (4,))
+    err = np.abs(out[:, 1] - out[:, 0]).reshape(x.shape + (4,))
+    sig = _rotate(x, y, *np.moveaxis(fine, -1, 0))
+    e = _rotate(x, y, *np.moveaxis(err, -1, 0))
+    return sig, np.abs(e)
