@@ -60,8 +60,10 @@ def test_mpmath_print_agrees_with_numpy_print():
         for _ in range(3):
             args = {}
             for s in rel.args:
-                args[s.name] = rng.uniform(0.05, 0.45) if s.name.startswith("nu") \
-                    else rng.uniform(0.5, 3.0)
+                # nu in its physical range; the cone angle theta in (0, pi/2), where tan > 0
+                lo, hi = ((0.05, 0.45) if s.name.startswith("nu") else
+                          (0.05, 1.5) if s.name == "theta" else (0.5, 3.0))
+                args[s.name] = rng.uniform(lo, hi)
             if rel.domain:  # e.g. r = a/t: evaluate where the relation is stated
                 continue_outer = False
                 for sym, expr in rel.domain.items():
