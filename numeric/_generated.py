@@ -17,6 +17,7 @@ __all__ = [
     'bodies_effective_modulus_rigid',
     'bodies_effective_radius',
     'bodies_gaussian_approx_area',
+    'bodies_gaussian_approx_depth_from_force',
     'bodies_gaussian_approx_force',
     'bodies_gaussian_approx_max_pressure',
     'bodies_gaussian_approx_pressure',
@@ -53,12 +54,6 @@ __all__ = [
     'ellipse_depth_from_force',
     'ellipse_equivalent_radius',
     'ellipse_force',
-    'ellipse_gaussian_area',
-    'ellipse_gaussian_depth_from_force',
-    'ellipse_gaussian_force',
-    'ellipse_gaussian_radius',
-    'ellipse_gaussian_semi_major',
-    'ellipse_gaussian_semi_minor',
     'ellipse_max_pressure',
     'ellipse_mean_pressure',
     'ellipse_pressure',
@@ -290,6 +285,29 @@ def bodies_gaussian_approx_area(R1, R2, d):
         indentation depth [m]
     """
     return numpy.pi*numpy.sqrt(R1)*numpy.sqrt(R2)*d
+
+
+def bodies_gaussian_approx_depth_from_force(E_star, F, R1, R2):
+    """Indentation depth d [m] of the elliptic contact under the force F (Gaussian-radius approximation).
+
+    Chapter: (5.24) with (5.30), approximation. Derived from: the force of (5.31) over
+    (5.28) solved for d.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return (1/4)*6**(2/3)*F**(2/3)/(E_star**(2/3)*R1**(1/6)*R2**(1/6))
 
 
 def bodies_gaussian_approx_force(E_star, R1, R2, d):
@@ -1128,124 +1146,6 @@ def ellipse_force(E_star, R1, d, t_ba):
     import scipy.special
 
     return (1/3)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*d**(3/2)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
-
-
-def ellipse_gaussian_area(R1, R2, d):
-    """Contact area A = pi R~ d [m^2] of the chapter's estimate (5.29).
-
-    Chapter: (5.29). Derived from: pi a b with the semi-axes (5.28).
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R1 : float or ndarray
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : float or ndarray
-        radius of curvature of body 2, or second principal radius [m]
-    d : float or ndarray
-        indentation depth [m]
-    """
-    return numpy.pi*numpy.sqrt(R1)*numpy.sqrt(R2)*d
-
-
-def ellipse_gaussian_depth_from_force(E_star, F, R1, R2):
-    """Depth d [m] under the force F in the Gaussian-radius approximation.
-
-    Chapter: (5.24) with (5.30). Derived from: (5.23) with R -> R~, inverted.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    E_star : float or ndarray
-        effective modulus E* (5.8), (5.26) [Pa]
-    F : float or ndarray
-        normal force [N]
-    R1 : float or ndarray
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : float or ndarray
-        radius of curvature of body 2, or second principal radius [m]
-    """
-    return (1/4)*6**(2/3)*F**(2/3)/(E_star**(2/3)*R1**(1/6)*R2**(1/6))
-
-
-def ellipse_gaussian_force(E_star, R1, R2, d):
-    """Normal force F [N] of the Gaussian-radius approximation (footnote 5).
-
-    Chapter: (5.23) with (5.30). Derived from: the Hertz force (5.23) with R -> R~.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    E_star : float or ndarray
-        effective modulus E* (5.8), (5.26) [Pa]
-    R1 : float or ndarray
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : float or ndarray
-        radius of curvature of body 2, or second principal radius [m]
-    d : float or ndarray
-        indentation depth [m]
-    """
-    return (4/3)*E_star*R1**(1/4)*R2**(1/4)*d**(3/2)
-
-
-def ellipse_gaussian_radius(R1, R2):
-    """Gaussian radius of curvature R~ [m] of the gap (5.32) (the approximation).
-
-    Chapter: (5.30), (5.33). Derived from: the Gaussian curvature of (5.32) at its minimum.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R1 : float or ndarray
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : float or ndarray
-        radius of curvature of body 2, or second principal radius [m]
-    """
-    return numpy.sqrt(R1)*numpy.sqrt(R2)
-
-
-def ellipse_gaussian_semi_major(R1, d):
-    """Semi-axis a = sqrt(R1 d) [m] of the chapter's estimate (5.28).
-
-    Chapter: (5.28). Derived from: the Hertz radius (5.21) with R -> R1.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R1 : float or ndarray
-        radius of curvature of body 1, or first principal radius [m]
-    d : float or ndarray
-        indentation depth [m]
-    """
-    return numpy.sqrt(R1)*numpy.sqrt(d)
-
-
-def ellipse_gaussian_semi_minor(R2, d):
-    """Semi-axis b = sqrt(R2 d) [m] of the chapter's estimate (5.28).
-
-    Chapter: (5.28). Derived from: the Hertz radius (5.21) with R -> R2.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R2 : float or ndarray
-        radius of curvature of body 2, or second principal radius [m]
-    d : float or ndarray
-        indentation depth [m]
-    """
-    return numpy.sqrt(R2)*numpy.sqrt(d)
 
 
 def ellipse_max_pressure(E_star, R1, d, t_ba):
