@@ -112,7 +112,9 @@ def main():
            "Exact: `hertzmdr.numeric.ellipse.solve` (derivation `hertzmdr.derive.ellipse`, "
            "verified by the Boussinesq integral at 30 digits, tests/test_ellipse.py). "
            "Estimate: a = sqrt(R1 d), b = sqrt(R2 d) (5.28), A = pi R~ d (5.29), and the Hertz "
-           "relations with R~ = sqrt(R1 R2) (5.30), (5.23), (5.24). Relative error of the "
+           "relations with R~ = sqrt(R1 R2) (5.30), (5.23), (5.24) (derivation "
+           "`hertzmdr.derive.bodies`, relations `bodies_gaussian_*`, tests/test_bodies.py; "
+           "`ellipse.solve(..., model=\"gaussian\")` calls them). Relative error of the "
            "estimate; R1 >= R2, so a is the major semi-axis.\n\n",
            f"![approximation errors]({FIG.name})\n\n"]
     out.insert(2, API)

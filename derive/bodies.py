@@ -27,7 +27,7 @@ import sympy as sp
 
 from hertzmdr.derive import hertz
 from hertzmdr.derive.relation import Relation
-from hertzmdr.derive.symbols import E, E_star, R, d, nu, symbol
+from hertzmdr.derive.symbols import E, E_star, F, R, d, nu, symbol
 
 TEST = "tests/test_bodies.py"
 
@@ -164,10 +164,12 @@ def gaussian_approximation() -> dict[str, sp.Expr]:
     # (5.31) over the ellipse, x = a rho cos(phi), y = b rho sin(phi), Jacobian a b rho
     integrand = p0_ * sp.sqrt(1 - rho**2) * a_ * b_ * rho
     force = sp.integrate(sp.integrate(integrand, (rho, 0, 1)), (phi, 0, 2 * sp.pi))
+    force = sp.simplify(force)
+    (d_F,) = sp.solve(sp.Eq(F, force), d)  # force-controlled: the force solved for d
     xs, ys = symbol("x", real=True), symbol("y", real=True)
     pressure = p0_ * sp.sqrt(sp.Max(0, 1 - xs**2 / a_**2 - ys**2 / b_**2))
     return {"gauss": gauss, "a": a_, "b": b_, "area": sp.simplify(sp.pi * a_ * b_),
-            "p0": sp.simplify(p0_), "F": sp.simplify(force), "p": pressure,
+            "p0": sp.simplify(p0_), "F": force, "d_F": d_F, "p": pressure,
             "R1": Rp1, "R2": Rp2}
 
 
@@ -296,6 +298,11 @@ def relations() -> list[Relation]:
                  f"{TEST}::test_gaussian_approximation",
                  printed=sp.Rational(4, 3) * E_star * sp.sqrt(sp.sqrt(Rp1 * Rp2))
                  * d ** sp.Rational(3, 2)),
+        Relation("bodies_gaussian_approx_depth_from_force", "(5.24) with (5.30), approximation",
+                 ga["d_F"], (E_star, F, Rp1, Rp2),
+                 "indentation depth d [m] of the elliptic contact under the force F "
+                 "(Gaussian-radius approximation)", "the force of (5.31) over (5.28) solved "
+                 "for d", f"{TEST}::test_gaussian_approximation"),
         Relation("bodies_gaussian_approx_pressure", "(5.31), approximation", ga["p"],
                  (E_star, Rp1, Rp2, d, x, y),
                  "pressure p(x, y) [Pa] of the elliptic contact (Gaussian-radius "

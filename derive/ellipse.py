@@ -1,5 +1,4 @@
-"""Elliptical Hertz contact: the exact solution for a quadratic gap, and the chapter's
-Gaussian-radius approximation (5.28)-(5.30), (5.33).
+"""Elliptical Hertz contact: the exact solution for a quadratic gap (5.28)-(5.33).
 
 Starting point: the ellipsoidal pressure (5.31), p = p0 (1 - x^2/a^2 - y^2/b^2)^(1/2) with
 b = t a (0 < t <= 1), put through the Boussinesq integral (5.7) in polar coordinates (s, phi)
@@ -24,10 +23,9 @@ circle), where the eccentricity equation is 0/0. The printed forms use K = D + B
 E = B + (1 - m) D with D = (pi/4) 2F1(1/2, 3/2; 2; m), B = (pi/4) 2F1(1/2, 1/2; 2; m), free of
 cancellation (tests/test_printed.py proves them equal to the derived forms).
 
-The Gaussian-radius approximation: R~ = sqrt(R1 R2) (5.30) is the inverse square root of the
-Gaussian curvature (the Hessian determinant) of the gap (5.32) at its minimum; the chapter then
-uses the Hertz relations of :mod:`hertzmdr.derive.hertz` with R -> R~ (footnote 5), R -> R1, R2
-for the semi-axes (5.28), and A = pi a b (5.29).
+The chapter's Gaussian-radius approximation (5.28)-(5.31) is derived in one place,
+:mod:`hertzmdr.derive.bodies` (relations ``bodies_gaussian_*``), with the other two-body
+relations (5.26)-(5.33); :mod:`hertzmdr.numeric.ellipse` measures it against this solution.
 """
 
 from __future__ import annotations
@@ -166,18 +164,8 @@ def _stable(expr: sp.Expr) -> sp.Expr:
     return _in_d_b(expr).subs({_Ds: _d_hyp().subs(m, mm), _Bs: _b_hyp().subs(m, mm)})
 
 
-@cache
-def gaussian_radius() -> sp.Expr:
-    """R~ = (Gaussian curvature of the gap (5.32) at its minimum)^(-1/2)."""
-    gap = x**2 / (2 * R1) + y**2 / (2 * R2)  # (5.32)
-    curvature = sp.hessian(gap, (x, y)).det()
-    return sp.sqrt(1 / curvature)
-
-
 def relations() -> list[Relation]:
     sol = solution()
-    rt = gaussian_radius()
-    hz = hertz.solution()
     why = ("K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as "
            "(pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0")
     dom = "tests/test_ellipse.py"
@@ -229,31 +217,4 @@ def relations() -> list[Relation]:
                  "contact pressure p(x, y) [Pa] of an elliptical contact (0 outside)",
                  "(5.31) with a, b, p0 from the matching", f"{dom}::test_pressure_field",
                  stable=pressure_stable, stable_why=why),
-        Relation("ellipse_gaussian_radius", "(5.30), (5.33)", rt, (R1, R2),
-                 "Gaussian radius of curvature R~ [m] of the gap (5.32) (the approximation)",
-                 "the Gaussian curvature of (5.32) at its minimum",
-                 f"{dom}::test_gaussian_approximation", printed=sp.sqrt(R1 * R2)),
-        Relation("ellipse_gaussian_force", "(5.23) with (5.30)", hz["F"].subs(R, rt),
-                 (E_star, R1, R2, d),
-                 "normal force F [N] of the Gaussian-radius approximation (footnote 5)",
-                 "the Hertz force (5.23) with R -> R~", f"{dom}::test_gaussian_approximation",
-                 printed=sp.Rational(4, 3) * E_star * (R1 * R2) ** sp.Rational(1, 4)
-                 * d ** sp.Rational(3, 2)),
-        Relation("ellipse_gaussian_depth_from_force", "(5.24) with (5.30)",
-                 hz["d_F"].subs(R, rt), (E_star, F, R1, R2),
-                 "depth d [m] under the force F in the Gaussian-radius approximation",
-                 "(5.23) with R -> R~, inverted", f"{dom}::test_gaussian_approximation"),
-        Relation("ellipse_gaussian_semi_major", "(5.28)", hz["a"].subs(R, R1), (R1, d),
-                 "semi-axis a = sqrt(R1 d) [m] of the chapter's estimate (5.28)",
-                 "the Hertz radius (5.21) with R -> R1", f"{dom}::test_gaussian_approximation",
-                 printed=sp.sqrt(R1 * d)),
-        Relation("ellipse_gaussian_semi_minor", "(5.28)", hz["a"].subs(R, R2), (R2, d),
-                 "semi-axis b = sqrt(R2 d) [m] of the chapter's estimate (5.28)",
-                 "the Hertz radius (5.21) with R -> R2", f"{dom}::test_gaussian_approximation",
-                 printed=sp.sqrt(R2 * d)),
-        Relation("ellipse_gaussian_area", "(5.29)",
-                 sp.pi * hz["a"].subs(R, R1) * hz["a"].subs(R, R2), (R1, R2, d),
-                 "contact area A = pi R~ d [m^2] of the chapter's estimate (5.29)",
-                 "pi a b with the semi-axes (5.28)", f"{dom}::test_gaussian_approximation",
-                 printed=sp.pi * sp.sqrt(R1 * R2) * d),
     ]

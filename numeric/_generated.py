@@ -10,6 +10,26 @@ hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
 import numpy
 
 __all__ = [
+    'bodies_crossed_cylinders_curvature_1',
+    'bodies_crossed_cylinders_curvature_2',
+    'bodies_crossed_cylinders_gaussian_radius',
+    'bodies_effective_modulus',
+    'bodies_effective_modulus_rigid',
+    'bodies_effective_radius',
+    'bodies_gaussian_approx_area',
+    'bodies_gaussian_approx_depth_from_force',
+    'bodies_gaussian_approx_force',
+    'bodies_gaussian_approx_max_pressure',
+    'bodies_gaussian_approx_pressure',
+    'bodies_gaussian_approx_semi_axis_1',
+    'bodies_gaussian_approx_semi_axis_2',
+    'bodies_gaussian_radius',
+    'bodies_principal_curvature_1',
+    'bodies_principal_curvature_2',
+    'bodies_problem2_force',
+    'bodies_problem2_gaussian_radius',
+    'bodies_problem2_principal_radius_1',
+    'bodies_problem2_principal_radius_2',
     'boussinesq_sigma_xx',
     'boussinesq_sigma_xy',
     'boussinesq_sigma_xz',
@@ -22,6 +42,25 @@ __all__ = [
     'boussinesq_ux',
     'boussinesq_uy',
     'boussinesq_uz',
+    'cone_contact_radius',
+    'cone_contact_radius_from_force',
+    'cone_depth',
+    'cone_depth_from_force',
+    'cone_force',
+    'cone_mean_pressure',
+    'cone_pressure',
+    'cone_stiffness',
+    'ellipse_area',
+    'ellipse_depth_from_force',
+    'ellipse_equivalent_radius',
+    'ellipse_force',
+    'ellipse_max_pressure',
+    'ellipse_mean_pressure',
+    'ellipse_pressure',
+    'ellipse_radius_ratio',
+    'ellipse_semi_major',
+    'ellipse_semi_minor',
+    'ellipse_stiffness',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -37,28 +76,505 @@ __all__ = [
     'hertz_pressure_displacement_outside',
     'hertz_pressure_force',
     'hertz_stiffness',
+    'impact_contact_time',
+    'impact_contact_time_density',
+    'impact_max_contact_radius',
+    'impact_max_contact_radius_density',
+    'impact_max_depth',
+    'impact_max_depth_density',
+    'impact_max_force',
+    'impact_max_force_density',
+    'impact_max_pressure',
+    'impact_max_pressure_density',
+    'impact_sphere_mass',
+    'line_depth_from_force',
+    'line_force',
+    'line_force_per_length_from_half_width',
+    'line_half_width',
+    'line_half_width_from_force',
+    'line_max_pressure',
+    'line_max_pressure_depth_width',
+    'line_max_pressure_from_force',
+    'line_max_pressure_from_half_width',
+    'line_pressure',
+    'powerlaw_contact_radius',
+    'powerlaw_depth_from_force',
+    'powerlaw_displacement_outside',
+    'powerlaw_force',
+    'powerlaw_force_from_radius',
+    'powerlaw_g',
+    'powerlaw_kappa',
+    'powerlaw_kappa_asymptotic',
+    'powerlaw_mean_pressure',
+    'powerlaw_pressure',
+    'powerlaw_pressure_n1',
+    'powerlaw_pressure_n2',
+    'powerlaw_pressure_n3',
+    'powerlaw_pressure_n4',
+    'powerlaw_pressure_normalized',
+    'powerlaw_pressure_small_n',
+    'powerlaw_punch_displacement_outside',
+    'powerlaw_punch_force',
+    'powerlaw_punch_pressure',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
-    'stress_axis_max_shear',
-    'stress_axis_max_shear_slope',
-    'stress_axis_sigma_xx',
-    'stress_axis_sigma_xx_deep',
-    'stress_axis_sigma_zz',
-    'stress_hertz_sigma_rr',
-    'stress_hertz_sigma_rr_far',
-    'stress_hertz_sigma_tt',
-    'stress_hertz_sigma_tt_far',
-    'stress_hertz_sigma_zz',
-    'stress_hertz_tau_rz',
-    'stress_spheroidal_cos_beta_inside',
-    'stress_spheroidal_u',
-    'stress_spheroidal_u_inside',
-    'stress_von_mises',
+    'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
+    'uniform_pressure_displacement_outside',
+    'uniform_pressure_force',
+    'worn_contact_radius',
+    'worn_depth',
+    'worn_displacement_outside',
+    'worn_force',
+    'worn_force_from_radius',
+    'worn_g',
 ]
+
+
+def bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
+    """Larger principal curvature [1/m] of the gap of two cylinders crossed at alpha.
+
+    Chapter: (5.32), (5.33), any angle. Derived from: the larger eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : float or ndarray
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return (1/2)*numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + (1/2)/R2 + (1/2)/R1
+
+
+def bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
+    """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha.
+
+    Chapter: (5.32), (5.33), any angle. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Printed in a stable form: written with the curvatures 1/R so that R = inf (flat) works;
+    the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det
+    a sum of products, positive for convex bodies: no cancellation.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : float or ndarray
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return 2*numpy.sin(alpha)**2/(R1*R2*(numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + R2**(-1.0) + R1**(-1.0)))
+
+
+def bodies_crossed_cylinders_gaussian_radius(R1, R2, alpha):
+    """Gaussian radius R~ [m] of two cylinders crossed at alpha (sqrt(R1 R2) at alpha = pi/2).
+
+    Chapter: (5.33), any angle. Derived from: 1/sqrt(kappa_1 kappa_2) of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : float or ndarray
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return numpy.sqrt(R1)*numpy.sqrt(R2)/abs(numpy.sin(alpha))
+
+
+def bodies_effective_modulus(E1, nu1, E2, nu2):
+    """Effective modulus E* [Pa] of two elastic bodies.
+
+    Chapter: (5.26). Derived from: the sum of the two surface displacements (5.6), (5.7)
+    under one pressure.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Printed in a stable form: 1/E* as the sum of the compliances, which accepts E2 = inf
+    (rigid), with 1 - nu^2 = (1 - nu)(1 + nu) exact in floating point for nu near -1.
+
+    Parameters
+    ----------
+    E1 : float or ndarray
+        Young's modulus of body 1 [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    E2 : float or ndarray
+        Young's modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return ((1 - nu2)*(nu2 + 1)/E2 + (1 - nu1)*(nu1 + 1)/E1)**(-1.0)
+
+
+def bodies_effective_modulus_rigid(E, nu):
+    """Effective modulus E* [Pa] of an elastic body against a rigid one.
+
+    Chapter: (5.8), (5.26) with E2 -> inf. Derived from: the limit E2 -> inf of (5.26).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Printed in a stable form: 1 - nu^2 = (1 - nu)(1 + nu) is exact in floating point for nu
+    near -1, where 1 - nu^2 cancels.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return E/((1 - nu)*(nu + 1))
+
+
+def bodies_effective_radius(R1, R2):
+    """Effective radius R [m] of two spheres (negative radius: concave).
+
+    Chapter: (5.27). Derived from: the sum of the two gaps r^2/(2 R_i).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_radius_by_gap``.
+
+    Printed in a stable form: the sum of the curvatures accepts R = inf (flat).
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return (R2**(-1.0) + R1**(-1.0))**(-1.0)
+
+
+def bodies_gaussian_approx_area(R1, R2, d):
+    """Contact area A = pi a b [m^2] of the elliptic contact (Gaussian-radius approximation).
+
+    Chapter: (5.29), approximation. Derived from: (5.28) in pi a b.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.pi*numpy.sqrt(R1)*numpy.sqrt(R2)*d
+
+
+def bodies_gaussian_approx_depth_from_force(E_star, F, R1, R2):
+    """Indentation depth d [m] of the elliptic contact under the force F (Gaussian-radius approximation).
+
+    Chapter: (5.24) with (5.30), approximation. Derived from: the force of (5.31) over
+    (5.28) solved for d.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return (1/4)*6**(2/3)*F**(2/3)/(E_star**(2/3)*R1**(1/6)*R2**(1/6))
+
+
+def bodies_gaussian_approx_force(E_star, R1, R2, d):
+    """Normal force F [N] of the elliptic contact (Gaussian-radius approximation).
+
+    Chapter: (5.23) with (5.30), approximation. Derived from: the ellipsoidal pressure
+    (5.31) integrated over the ellipse (5.28).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (4/3)*E_star*R1**(1/4)*R2**(1/4)*d**(3/2)
+
+
+def bodies_gaussian_approx_max_pressure(E_star, R1, R2, d):
+    """Maximum pressure p0 [Pa] of the elliptic contact (Gaussian-radius approximation).
+
+    Chapter: (5.22) with (5.30), approximation. Derived from: (5.22) with R = R~.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return 2*E_star*numpy.sqrt(d)/(numpy.pi*R1**(1/4)*R2**(1/4))
+
+
+def bodies_gaussian_approx_pressure(E_star, R1, R2, d, x, y):
+    """Pressure p(x, y) [Pa] of the elliptic contact (Gaussian-radius approximation; x along R1, 0 outside the ellipse).
+
+    Chapter: (5.31), approximation. Derived from: (5.31) with (5.28) and the p0 of (5.22) at
+    R = R~.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    import functools
+
+    return 2*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - y**2/(R2*d) - x**2/(R1*d)]))/(numpy.pi*R1**(1/4)*R2**(1/4))
+
+
+def bodies_gaussian_approx_semi_axis_1(R1, d):
+    """Semi-axis a [m] along the principal radius R1 of the elliptic contact in the chapter's rough estimate.
+
+    Chapter: (5.28), approximation. Derived from: (5.21) with R = R1.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt(R1)*numpy.sqrt(d)
+
+
+def bodies_gaussian_approx_semi_axis_2(R2, d):
+    """Semi-axis b [m] along the principal radius R2 of the elliptic contact in the chapter's rough estimate.
+
+    Chapter: (5.28), approximation. Derived from: (5.21) with R = R2.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt(R2)*numpy.sqrt(d)
+
+
+def bodies_gaussian_radius(R1, R2):
+    """Gaussian radius R~ [m] of a gap with the principal radii R1, R2.
+
+    Chapter: (5.30). Derived from: the sphere with the same Gaussian curvature kappa_1
+    kappa_2.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return numpy.sqrt(R1)*numpy.sqrt(R2)
+
+
+def bodies_principal_curvature_1(R1a, R1b, R2a, R2b, omega):
+    """Larger principal curvature kappa_1 [1/m] of the gap between two bodies.
+
+    Chapter: (5.32), Problem 2, general. Derived from: the larger eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1a : float or ndarray
+        first principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R1b : float or ndarray
+        second principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R2a : float or ndarray
+        first principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    R2b : float or ndarray
+        second principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    omega : float or ndarray
+        angle between the first principal directions of the two bodies [rad]
+    """
+    return (1/2)*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
+    """Smaller principal curvature kappa_2 [1/m] of the gap between two bodies.
+
+    Chapter: (5.32), Problem 2, general. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Printed in a stable form: written with the curvatures 1/R so that R = inf (flat) works;
+    the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det
+    a sum of products, positive for convex bodies: no cancellation.
+
+    Parameters
+    ----------
+    R1a : float or ndarray
+        first principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R1b : float or ndarray
+        second principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R2a : float or ndarray
+        first principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    R2b : float or ndarray
+        second principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    omega : float or ndarray
+        angle between the first principal directions of the two bodies [rad]
+    """
+    return (2*(1/(R1b*R2a) + 1/(R1a*R2b))*numpy.cos(omega)**2 + 2*(1/(R1b*R2b) + 1/(R1a*R2a))*numpy.sin(omega)**2 + 2/(R2a*R2b) + 2/(R1a*R1b))/(numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + R2b**(-1.0) + R2a**(-1.0) + R1b**(-1.0) + R1a**(-1.0))
+
+
+def bodies_problem2_force(E, nu, R, d):
+    """Normal force F [N] of two equal cylinders of one material crossed at pi/4 (Gaussian-radius approximation).
+
+    Chapter: Problem 2. Derived from: (5.23) with (5.26) and R~.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): with R~ = sqrt(2) R the factor is
+    2^(5/4)/3, not 2^(7/4)/3 (the printed force is sqrt(2) times too large)
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return -2*2**(1/4)*E*numpy.sqrt(R)*d**(3/2)/(3*nu**2 - 3)
+
+
+def bodies_problem2_gaussian_radius(R):
+    """Gaussian radius R~ [m] of two equal cylinders crossed at pi/4.
+
+    Chapter: Problem 2. Derived from: 1/sqrt(det) of the gap's Hessian.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): with the principal radii halved, R~ =
+    sqrt(2) R, not 2 sqrt(2) R (check: R/sin(alpha) is R at alpha = pi/2, the sphere of
+    (5.33))
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return numpy.sqrt(2)*R
+
+
+def bodies_problem2_principal_radius_1(R):
+    """Smaller principal radius [m] of two equal cylinders crossed at pi/4.
+
+    Chapter: Problem 2. Derived from: 1/kappa_1 of the gap's Hessian.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): the chapter takes the eigenvalues of the
+    coefficient matrix M of h = x^T M x, which are half the principal curvatures (the
+    Hessian is 2M): R_1,2 = R/(1 +- 1/sqrt(2)), not 2R/(1 +- 1/sqrt(2))
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -numpy.sqrt(2)*R + 2*R
+
+
+def bodies_problem2_principal_radius_2(R):
+    """Larger principal radius [m] of two equal cylinders crossed at pi/4.
+
+    Chapter: Problem 2. Derived from: 1/kappa_2 of the gap's Hessian.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_problem2``.
+
+    Differs from the print (see docs/errata.md): eigenvalues of M instead of the Hessian 2M:
+    the radius is R/(1 - 1/sqrt(2)), half the printed one
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return numpy.sqrt(2)*R + 2*R
 
 
 def boussinesq_sigma_xx(F, nu, x, y, z):
@@ -363,6 +879,466 @@ def boussinesq_uz(E, F, nu, x, y, z):
         depth below the surface [m]
     """
     return (1/2)*F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(3/2) + (2 - 2*nu)/numpy.sqrt(x**2 + y**2 + z**2))/(numpy.pi*E)
+
+
+def cone_contact_radius(d, theta):
+    """Contact radius a [m] of a rigid cone at depth d.
+
+    Chapter: (5.38), Problem 7(c). Derived from: (5.38) solved for a.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*d/(numpy.pi*numpy.tan(theta))
+
+
+def cone_contact_radius_from_force(E_star, F, theta):
+    """Contact radius a [m] of a rigid cone under the force F.
+
+    Chapter: (5.38), (5.40). Derived from: (5.38) at the depth of (5.40) inverted.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return numpy.sqrt(2)*numpy.sqrt(F)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(numpy.tan(theta)))
+
+
+def cone_depth(a, theta):
+    """Indentation depth d [m] of a rigid cone at the contact radius a.
+
+    Chapter: (5.38). Derived from: flat punches superposed to match the cone's surface.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*numpy.pi*a*numpy.tan(theta)
+
+
+def cone_depth_from_force(E_star, F, theta):
+    """Indentation depth d [m] of a rigid cone under the force F.
+
+    Chapter: (5.40), inverted. Derived from: (5.40) solved for d.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(F)*numpy.sqrt(numpy.tan(theta))/numpy.sqrt(E_star)
+
+
+def cone_force(E_star, d, theta):
+    """Normal force F [N] of a rigid cone at depth d.
+
+    Chapter: (5.40). Derived from: the forces 2 a' E* dd of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*E_star*d**2/(numpy.pi*numpy.tan(theta))
+
+
+def cone_mean_pressure(E_star, theta):
+    """Mean pressure F/(pi a^2) [Pa] of a rigid cone (independent of the depth).
+
+    Chapter: (5.40)/(pi a^2). Derived from: (5.40) divided by the contact area.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*E_star*numpy.tan(theta)
+
+
+def cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0).
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
+
+
+def cone_stiffness(E_star, d, theta):
+    """Differential stiffness dF/dd [N/m] of a rigid cone at depth d.
+
+    Chapter: Problem 5. Derived from: the derivative of (5.40).
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 4*E_star*d/(numpy.pi*numpy.tan(theta))
+
+
+def ellipse_area(R1, d, t_ba):
+    """Contact area pi a b [m^2] of an elliptical contact.
+
+    Chapter: (5.29), exact. Derived from: pi a b with a, b matched.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.pi**2*R1*d*t_ba*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_depth_from_force(E_star, F, R1, t_ba):
+    """Indentation depth d [m] of an elliptical contact under the force F.
+
+    Chapter: (5.23), exact, inverted. Derived from: the exact force solved for d.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_controlled_roundtrip``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return 6**(2/3)*F**(2/3)*((1/8)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/8)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/(numpy.pi*E_star**(2/3)*R1**(1/3)*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)**(1/3))
+
+
+def ellipse_equivalent_radius(R1, t_ba):
+    """Radius R_e [m] of the sphere whose Hertz force (5.23) equals the elliptical contact's at every depth (compare with the Gaussian radius (5.30)).
+
+    Chapter: (5.23), exact. Derived from: the exact force equated to (5.23).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/8)*numpy.pi**3*R1*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**3
+
+
+def ellipse_force(E_star, R1, d, t_ba):
+    """Normal force F [N] of an elliptical Hertz contact at depth d.
+
+    Chapter: (5.23), exact. Derived from: (5.31) integrated over the ellipse, with a and p0
+    from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/3)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*d**(3/2)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
+
+
+def ellipse_max_pressure(E_star, R1, d, t_ba):
+    """Maximum pressure p0 [Pa] of an elliptical contact at depth d.
+
+    Chapter: (5.31), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*t_ba*numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)))
+
+
+def ellipse_mean_pressure(E_star, R1, d, t_ba):
+    """Mean pressure F/(pi a b) [Pa] of an elliptical contact.
+
+    Chapter: (5.17), exact. Derived from: the force divided by the area pi a b.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (2/3)*numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*t_ba*numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)))
+
+
+def ellipse_pressure(E_star, R1, d, t_ba, x, y):
+    """Contact pressure p(x, y) [Pa] of an elliptical contact (0 outside).
+
+    Chapter: (5.31). Derived from: (5.31) with a, b, p0 from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_pressure_field``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    import functools
+    import scipy.special
+
+    return numpy.sqrt(2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - 2*x**2*((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/(numpy.pi*R1*d*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)) - 2*y**2*((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/(numpy.pi*R1*d*t_ba**2*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))]))/(numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*t_ba*numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2)))
+
+
+def ellipse_radius_ratio(t_ba):
+    """Ratio R1/R2 >= 1 of the principal radii that gives the axis ratio t = b/a.
+
+    Chapter: (5.31)-(5.32), exact. Derived from: (5.7) over (5.31) matched to the gap
+    (5.32): the y^2 and x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2)/(t_ba**2*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_semi_major(R1, d, t_ba):
+    """Semi-axis a [m] (along x, the direction of R1 >= R2) of an elliptical contact.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32): the x^0 and
+    x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_semi_minor(R1, d, t_ba):
+    """Semi-axis b = t a [m] (along y, the direction of R2) of an elliptical contact.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(R1)*numpy.sqrt(d)*t_ba*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/numpy.sqrt((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))
+
+
+def ellipse_stiffness(E_star, R1, d, t_ba):
+    """Differential stiffness dF/dd [N/m] of an elliptical contact.
+
+    Chapter: (5.13), exact. Derived from: the derivative of the force at fixed R1, R2.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_stiffness_by_derivative``.
+
+    Printed in a stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E -
+    (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is
+    0/0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
 
 
 def hertz_contact_radius(R, d):
@@ -676,6 +1652,887 @@ def hertz_stiffness(E_star, R, d):
     return 2*E_star*numpy.sqrt(R)*numpy.sqrt(d)
 
 
+def impact_contact_time(E_star, R, m, v0):
+    """Contact time tau [s] of a sphere of mass m hitting a wall at v0 (the chapter's 2.94 x0/v0, with 2.94 = (4/5) sqrt(pi) Gamma(2/5)/Gamma(9/10)).
+
+    Chapter: Problem 3. Derived from: twice the time integral of dx/v from 0 to x0, v from
+    the energy balance.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    import scipy.special
+
+    return (1/5)*30**(2/5)*numpy.sqrt(numpy.pi)*m**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*R**(1/5)*v0**(1/5)*scipy.special.gamma(9/10))
+
+
+def impact_contact_time_density(E_star, R, rho, v0):
+    """Contact time tau [s] of a sphere of density rho hitting a wall at v0.
+
+    Chapter: Problem 3, m = 4/3 pi R^3 rho. Derived from: twice the time integral of dx/v
+    from 0 to x0.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : float or ndarray
+        density [kg/m^3]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    import scipy.special
+
+    return (2/5)*2**(1/5)*5**(2/5)*numpy.pi**(9/10)*R*rho**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*v0**(1/5)*scipy.special.gamma(9/10))
+
+
+def impact_max_contact_radius(E_star, R, m, v0):
+    """Maximum contact radius [m] during the impact.
+
+    Chapter: Problem 4. Derived from: (5.21) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return (1/2)*30**(1/5)*R**(2/5)*m**(1/5)*v0**(2/5)/E_star**(1/5)
+
+
+def impact_max_contact_radius_density(E_star, R, rho, v0):
+    """Maximum contact radius [m] of a sphere of density rho hitting a wall at v0.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: (5.21) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : float or ndarray
+        density [kg/m^3]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return (1/2)*2**(3/5)*5**(1/5)*numpy.pi**(1/5)*R*rho**(1/5)*v0**(2/5)/E_star**(1/5)
+
+
+def impact_max_depth(E_star, R, m, v0):
+    """Maximum indentation depth x0 [m] of a sphere of mass m hitting a wall at v0.
+
+    Chapter: Problem 3. Derived from: energy conservation with (5.25).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return (1/4)*30**(2/5)*m**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))
+
+
+def impact_max_depth_density(E_star, R, rho, v0):
+    """Maximum indentation depth x0 [m] of a sphere of density rho hitting a wall.
+
+    Chapter: Problem 3, m = 4/3 pi R^3 rho. Derived from: energy conservation with (5.25).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : float or ndarray
+        density [kg/m^3]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return (1/2)*2**(1/5)*5**(2/5)*numpy.pi**(2/5)*R*rho**(2/5)*v0**(4/5)/E_star**(2/5)
+
+
+def impact_max_force(E_star, R, m, v0):
+    """Maximum contact force [N] during the impact.
+
+    Chapter: Problem 4. Derived from: (5.23) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return (1/6)*30**(3/5)*E_star**(2/5)*R**(1/5)*m**(3/5)*v0**(6/5)
+
+
+def impact_max_force_density(E_star, R, rho, v0):
+    """Maximum contact force [N] of a sphere of density rho hitting a wall at v0.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: (5.23) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : float or ndarray
+        density [kg/m^3]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return (1/3)*2**(4/5)*5**(3/5)*numpy.pi**(3/5)*E_star**(2/5)*R**2*rho**(3/5)*v0**(6/5)
+
+
+def impact_max_pressure(E_star, R, m, v0):
+    """Maximum contact pressure p0 [Pa] during the impact.
+
+    Chapter: Problem 4. Derived from: (5.22) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return 30**(1/5)*E_star**(4/5)*m**(1/5)*v0**(2/5)/(numpy.pi*R**(3/5))
+
+
+def impact_max_pressure_density(E_star, rho, v0):
+    """Maximum contact pressure p0 [Pa] of a sphere of density rho hitting a wall at v0 (independent of its radius).
+
+    Chapter: Problem 4. Derived from: (5.22) at the maximum depth.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_impact_by_equation_of_motion``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    rho : float or ndarray
+        density [kg/m^3]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    return 2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/numpy.pi**(4/5)
+
+
+def impact_sphere_mass(R, rho):
+    """Mass m [kg] of a solid sphere of radius R and density rho.
+
+    Chapter: Problem 4, m = 4/3 pi R^3 rho. Derived from: the volume of the sphere times its
+    density.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_sphere_mass_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    rho : float or ndarray
+        density [kg/m^3]
+    """
+    return (4/3)*numpy.pi*R**3*rho
+
+
+def line_depth_from_force(E_star, F, L):
+    """Depth d [m] (in the sense of (5.35)) of a line contact under the force F.
+
+    Chapter: (5.34), inverted. Derived from: (5.34) solved for d.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    """
+    return 4*F/(numpy.pi*E_star*L)
+
+
+def line_force(E_star, L, d):
+    """Normal force F [N] of a line contact of length L at the depth d of (5.35).
+
+    Chapter: (5.34). Derived from: F/L of the matched pressure with a = sqrt(R d).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    L : float or ndarray
+        length of a line contact [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/4)*numpy.pi*E_star*L*d
+
+
+def line_force_per_length_from_half_width(E_star, R, a):
+    """Normal force per unit length F/L [N/m] of a line contact of half-width a.
+
+    Chapter: (5.34), from the matching. Derived from: the integral of (5.36) over the strip.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/4)*numpy.pi*E_star*a**2/R
+
+
+def line_half_width(R, d):
+    """Half-width a [m] of a line contact at the (conventional) depth d.
+
+    Chapter: (5.35). Derived from: the chapter's definition of the depth of a line contact.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt(R)*numpy.sqrt(d)
+
+
+def line_half_width_from_force(E_star, F, L, R):
+    """Half-width a [m] of a line contact of length L under the force F.
+
+    Chapter: (5.34), (5.35). Derived from: F = L F/L(a) solved for a.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return 2*numpy.sqrt(F)*numpy.sqrt(R)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(L))
+
+
+def line_max_pressure(E_star, R, d):
+    """Maximum pressure p0 [Pa] of a line contact at the depth d of (5.35).
+
+    Chapter: (5.37), second form. Derived from: the matching, with a = sqrt(R d) (5.35).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/2)*E_star*numpy.sqrt(d)/numpy.sqrt(R)
+
+
+def line_max_pressure_depth_width(E_star, a, d):
+    """Maximum pressure p0 [Pa] of a line contact from its depth and half-width.
+
+    Chapter: (5.37), first form. Derived from: the matching, with R = a^2/d (5.35).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/2)*E_star*d/a
+
+
+def line_max_pressure_from_force(E_star, F, L, R):
+    """Maximum pressure p0 [Pa] of a line contact of length L under the force F.
+
+    Chapter: (5.37), third form. Derived from: the matching, with a from F = L F/L(a).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Differs from the print (see docs/errata.md): a factor pi is missing under the root: p0 =
+    (E* F/(pi L R))^(1/2) (from p0 = E* a/(2R) and F/L = pi a p0/2; the print is sqrt(pi) =
+    1.77 times too large)
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return numpy.sqrt(E_star)*numpy.sqrt(F)/(numpy.sqrt(numpy.pi)*numpy.sqrt(L)*numpy.sqrt(R))
+
+
+def line_max_pressure_from_half_width(E_star, R, a):
+    """Maximum pressure p0 [Pa] of a line contact of half-width a.
+
+    Chapter: (5.37), from the matching. Derived from: the gradient of the 2-D surface
+    displacement matched to -x/R.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/2)*E_star*a/R
+
+
+def line_pressure(E_star, R, d, x):
+    """Pressure p(x) [Pa] of a line contact at the depth d of (5.35) (0 outside).
+
+    Chapter: (5.36). Derived from: (5.36) with the matched p0.
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_by_displacement_gradient``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    import functools
+
+    return (1/2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - x**2/(R*d)]))/numpy.sqrt(R)
+
+
+def powerlaw_contact_radius(c_n, d, kappa_n, n):
+    """Contact radius a [m] of a power-law indenter at depth d.
+
+    Chapter: Problem 7(d). Derived from: (5.55) with g of (5.52).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : float or ndarray
+        indentation depth [m]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return (d/(c_n*kappa_n))**(n**(-1.0))
+
+
+def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law indenter under the force F.
+
+    Chapter: Problem 7(d), inverted. Derived from: the force of Problem 7(d) solved for d.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((1/2)*F*(c_n*kappa_n)**(n**(-1.0))*(n + 1)/(E_star*n))**(n/(n + 1))
+
+
+def powerlaw_displacement_outside(a, d, n, r):
+    """Surface displacement u_z(r) [m] outside the contact (r > a) of a power-law indenter.
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) for r > a.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import scipy.special
+
+    return 2*d*(-a*scipy.special.hyp2f1(1/2, (1/2)*n + 1/2, (1/2)*n + 3/2, a**2/r**2)/r + (n + 1)*numpy.arcsin(a/r))/(numpy.pi*(n + 1))
+
+
+def powerlaw_force(E_star, c_n, d, kappa_n, n):
+    """Normal force F [N] of a power-law indenter at depth d.
+
+    Chapter: Problem 7(d). Derived from: (5.57) at the contact radius of (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Differs from the print (see docs/errata.md): the factor (kappa_n c_n)^(1/n) must be
+    (kappa_n c_n)^(-1/n): with a = (d/(kappa_n c_n))^(1/n), (5.57) gives F = 2n/(n+1) E* a
+    d; for n = 2 (kappa_2 c_2 = 1/R) only the corrected form reproduces (5.23)
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : float or ndarray
+        indentation depth [m]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(d/(c_n*kappa_n))**(n**(-1.0))/(n + 1)
+
+
+def powerlaw_force_from_radius(E_star, a, d, n):
+    """Normal force F [N] of a power-law indenter with contact radius a at depth d.
+
+    Chapter: Problem 7(d), (5.57). Derived from: (5.57) with d = g(a) (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*a*d*n/(n + 1)
+
+
+def powerlaw_g(c_n, kappa_n, n, x):
+    """MDR profile g(x) [m] of the power-law profile f = c_n r^n, x >= 0.
+
+    Chapter: Problem 7(d). Derived from: (5.52) for f = c_n r^n.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_g_by_quadrature``.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return c_n*kappa_n*x**n
+
+
+def powerlaw_kappa(n):
+    """MDR factor kappa_n [1] of the power-law profile, g = kappa_n c_n |x|^n (overflows for n > 340: use powerlaw_kappa_asymptotic there).
+
+    Chapter: Problem 7(d). Derived from: (5.52) for f = c_n r^n.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_kappa_by_quadrature``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(numpy.pi)*scipy.special.gamma((1/2)*n + 1)/scipy.special.gamma((1/2)*n + 1/2)
+
+
+def powerlaw_kappa_asymptotic(n):
+    """Kappa_n [1] from the Stirling series to O(n^-10); relative error < 1e-16 for n >= 40.
+
+    Chapter: Problem 7(d), large n. Derived from: the Stirling series of ln Gamma(n/2 + 1) -
+    ln Gamma(n/2 + 1/2).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_kappa_by_quadrature``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(n)*numpy.exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + (31/4608)/n**2)/n**2)/n**2)/n**2)/n)
+
+
+def powerlaw_mean_pressure(E_star, a, d, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n/(numpy.pi*a*(n + 1))
+
+
+def powerlaw_pressure(E_star, a, d, n, r):
+    """Contact pressure p(r) [Pa] of a power-law indenter, 0 for r > a; accurate for n >= 1.5 (use powerlaw_pressure_small_n below).
+
+    Chapter: Problem 7(d), (5.59). Derived from: (5.59) with x = r/sqrt(1 - z t), then
+    Euler's transformation.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import functools
+    import scipy.special
+
+    return E_star*d*n*scipy.special.hyp2f1(1, 1 - 1/2*n, 3/2, functools.reduce(numpy.maximum, [0, (a - r)*(a + r)])/a**2)*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - r)*(a + r)]))/(numpy.pi*a**2)
+
+
+def powerlaw_pressure_n1(E_star, a, d, r):
+    """Contact pressure p(r) [Pa] of the power-law indenter n = 1 for 0 < r < a, in elementary functions.
+
+    Chapter: Problem 7(d), n = 1. Derived from: (5.59) for f = c_1 r^1.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return E_star*d*numpy.log((a + numpy.sqrt(a**2 - r**2))/r)/(numpy.pi*a)
+
+
+def powerlaw_pressure_n2(E_star, a, d, r):
+    """Contact pressure p(r) [Pa] of the power-law indenter n = 2 for 0 < r < a, in elementary functions.
+
+    Chapter: Problem 7(d), n = 2. Derived from: (5.59) for f = c_2 r^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return 2*E_star*d*numpy.sqrt(a**2 - r**2)/(numpy.pi*a**2)
+
+
+def powerlaw_pressure_n3(E_star, a, d, r):
+    """Contact pressure p(r) [Pa] of the power-law indenter n = 3 for 0 < r < a, in elementary functions.
+
+    Chapter: Problem 7(d), n = 3. Derived from: (5.59) for f = c_3 r^3.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (3/2)*E_star*d*(a*numpy.sqrt(a**2 - r**2) - r**2*numpy.log(r) + r**2*numpy.log(a + numpy.sqrt(a**2 - r**2)))/(numpy.pi*a**3)
+
+
+def powerlaw_pressure_n4(E_star, a, d, r):
+    """Contact pressure p(r) [Pa] of the power-law indenter n = 4 for 0 < r < a, in elementary functions.
+
+    Chapter: Problem 7(d), n = 4. Derived from: (5.59) for f = c_4 r^4.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (4/3)*E_star*d*numpy.sqrt(a**2 - r**2)*(a**2 + 2*r**2)/(numpy.pi*a**4)
+
+
+def powerlaw_pressure_normalized(n, r_tilde):
+    """Normalized pressure p/p_mean [1] at r_tilde = r/a < 1 of a power-law indenter (n >= 1.5).
+
+    Chapter: Fig. 5.17. Derived from: (5.59) divided by (5.57)/(pi a^2).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_normalized_pressure_by_quadrature``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r_tilde : float or ndarray
+        normalized radius r/a [1]
+    """
+    import functools
+    import scipy.special
+
+    return (1/2)*(n + 1)*scipy.special.hyp2f1(1, 1 - 1/2*n, 3/2, functools.reduce(numpy.maximum, [0, (1 - r_tilde)*(r_tilde + 1)]))*numpy.sqrt(functools.reduce(numpy.maximum, [0, (1 - r_tilde)*(r_tilde + 1)]))
+
+
+def powerlaw_pressure_small_n(E_star, a, d, n, r):
+    """Contact pressure p(r) [Pa] of a power-law indenter, 0 for r > a; the form accurate for n < 1.5 (singular like r^(n-1) at the centre for n < 1).
+
+    Chapter: Problem 7(d), (5.59). Derived from: (5.59) with x = r/sqrt(1 - z t).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import functools
+    import scipy.special
+
+    return E_star*a**(-n)*d*n*r**(n - 1)*scipy.special.hyp2f1(1/2, (1/2)*n + 1/2, 3/2, functools.reduce(numpy.maximum, [0, (a - r)*(a + r)])/a**2)*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - r)*(a + r)]))/(numpy.pi*a)
+
+
+def powerlaw_punch_displacement_outside(a, d, r):
+    """Surface displacement u_z(r) [m] outside a flat punch (r > a).
+
+    Chapter: Problem 7(a). Derived from: the n -> infinity limit of (5.60) for the power
+    law.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return 2*d*numpy.arcsin(a/r)/numpy.pi
+
+
+def powerlaw_punch_force(E_star, a, d):
+    """Normal force F [N] of a flat rigid punch of radius a at depth d.
+
+    Chapter: Problem 7(a). Derived from: the n -> infinity limit of (5.57) for the power
+    law.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return 2*E_star*a*d
+
+
+def powerlaw_punch_pressure(E_star, a, d, r):
+    """Contact pressure p(r) [Pa] under a flat rigid punch of radius a at depth d, r < a.
+
+    Chapter: Problem 7(a). Derived from: (5.59) with q' = -E* d delta(x - a).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return E_star*d/(numpy.pi*numpy.sqrt(a**2 - r**2))
+
+
 def punch_pressure_displacement(E_star, a, p0):
     """Surface displacement u_z [m] inside a disc loaded by p0*(1 - r^2/a^2)^(-1/2).
 
@@ -754,358 +2611,29 @@ def punch_stiffness(E_star, a):
     return 2*E_star*a
 
 
-def stress_axis_max_shear(a, nu, p0, z):
-    """Maximum shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis under the Hertz pressure.
+def uniform_pressure_displacement(E_star, a, p0, r):
+    """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
-    Chapter: Fig. 5.8. Derived from: (5.48), (5.49).
+    Chapter: Problem 6. Derived from: (5.7) with p = p0 (n = 0); the phi-integral is 4 a
+    E(r^2/a^2).
 
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_axis_maximum_shear``.
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return (1/4)*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
-
-
-def stress_axis_max_shear_slope(a, nu, p0, z):
-    """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
-
-    Chapter: Fig. 5.8. Derived from: the derivative of tau_1.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_axis_maximum_shear``.
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_uniform_by_kernel``.
 
     Parameters
     ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
     a : float or ndarray
         contact radius [m]
-    nu : float or ndarray
-        Poisson's ratio [1]
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return -1/2*p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2)**2) + (1/4)*p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*numpy.arctan(a/z) + 2*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
-
-
-def stress_axis_sigma_xx(a, nu, p0, z):
-    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure, the form of (5.49) (for z < a).
-
-    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return (1/2)*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
-
-
-def stress_axis_sigma_xx_deep(a, nu, p0, z):
-    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure (for z >= a).
-
-    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
-
-    Printed in a stable form: (5.49) subtracts terms of size 1 to leave one of size (a/z)^2
-    (of size (a/z)^4 at nu = 1/2); 1 - atan(t)/t - t^2/(3(1 + t^2)) is written as (2/15) t^4
-    2F1(2, 5/2; 7/2; -t^2), t = a/z, used for z >= a.
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    z : float or ndarray
-        depth below the surface [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
     """
     import scipy.special
 
-    return p0*(-a**4*((2/15)*nu + 2/15)*scipy.special.hyp2f1(2, 5/2, 7/2, -a**2/z**2)/z**4 + a**2*(1 - 2*nu)/(z**2*(6*a**2/z**2 + 6)))
-
-
-def stress_axis_sigma_zz(a, p0, z):
-    """Normal stress sigma_zz [Pa] on the axis under the Hertz pressure.
-
-    Chapter: (5.48). Derived from: (5.43) superposed over (5.15) along the axis, (5.47).
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
-
-    Printed in a stable form: one division, no cancellation.
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return -a**2*p0/(a**2 + z**2)
-
-
-def stress_hertz_sigma_rr(nu, p0, xi, beta):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Parameters
-    ----------
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
-
-
-def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
-
-    Parameters
-    ----------
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    import scipy.special
-
-    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - 2/15*(nu + 1)*numpy.cos(beta)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)))
-
-
-def stress_hertz_sigma_tt(nu, p0, xi, beta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Parameters
-    ----------
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
-
-
-def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
-
-    Parameters
-    ----------
-    nu : float or ndarray
-        Poisson's ratio [1]
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    import scipy.special
-
-    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - 2/15*(nu + 1)*numpy.cos(beta)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)))
-
-
-def stress_hertz_sigma_zz(p0, xi, beta):
-    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Parameters
-    ----------
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    return -p0*numpy.cos(beta)**3/(xi**2 + numpy.cos(beta)**2)
-
-
-def stress_hertz_tau_rz(p0, xi, beta):
-    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Parameters
-    ----------
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    return -p0*xi*numpy.sin(beta)*numpy.cos(beta)**2/(numpy.sqrt(xi**2 + 1)*(xi**2 + numpy.cos(beta)**2))
-
-
-def stress_spheroidal_cos_beta_inside(a, r, z):
-    """Cos(beta) = z/u^(1/2) [1] for r^2 + z^2 < a^2 (finite at z = 0).
-
-    Chapter: Johnson (1985), (3.44). Derived from: z/u^(1/2) with u = 2 a^2 z^2/(D - q)
-    (stress_spheroidal_u_inside): z cancels.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_spheroidal_coordinates``.
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    r : float or ndarray
-        radial coordinate on the surface [m]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return numpy.sqrt(-1/2*z**2 - 1/2*(-a + r)*(a + r) + (1/2)*numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))/a
-
-
-def stress_spheroidal_u(a, r, z):
-    """Johnson's u [m^2], the root of r^2/(a^2 + u) + z^2/u = 1 (for r^2 + z^2 >= a^2).
-
-    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_spheroidal_coordinates``.
-
-    Printed in a stable form: the expanded discriminant cancels near the contact edge; q =
-    (r - a)(r + a) + z^2 keeps it exact.
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    r : float or ndarray
-        radial coordinate on the surface [m]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return (1/2)*z**2 + (1/2)*(-a + r)*(a + r) + (1/2)*numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2)
-
-
-def stress_spheroidal_u_inside(a, r, z):
-    """Johnson's u [m^2] for r^2 + z^2 < a^2.
-
-    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_spheroidal_coordinates``.
-
-    Printed in a stable form: (q + D)/2 cancels for q = r^2 + z^2 - a^2 < 0; written as 2
-    a^2 z^2/(D - q).
-
-    Parameters
-    ----------
-    a : float or ndarray
-        contact radius [m]
-    r : float or ndarray
-        radial coordinate on the surface [m]
-    z : float or ndarray
-        depth below the surface [m]
-    """
-    return 2*a**2*z**2/(-z**2 - (-a + r)*(a + r) + numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))
-
-
-def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
-    """Von Mises equivalent stress [Pa] of the stress tensor.
-
-    Chapter: (5.50). Derived from: sqrt(3 J2), J2 the second invariant of the stress
-    deviator.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_von_mises_invariant``.
-
-    Parameters
-    ----------
-    sigma_xx : float or ndarray
-        normal stress component sigma_xx [Pa]
-    sigma_yy : float or ndarray
-        normal stress component sigma_yy [Pa]
-    sigma_zz : float or ndarray
-        normal stress component sigma_zz [Pa]
-    tau_xy : float or ndarray
-        shear stress component tau_xy [Pa]
-    tau_yz : float or ndarray
-        shear stress component tau_yz [Pa]
-    tau_xz : float or ndarray
-        shear stress component tau_xz [Pa]
-    """
-    return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+    return 4*a*p0*scipy.special.ellipe(r**2/a**2)/(numpy.pi*E_star)
 
 
 def uniform_pressure_displacement_centre(E_star, a, p0):
@@ -1146,3 +2674,186 @@ def uniform_pressure_displacement_edge(E_star, a, p0):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
     return 4*a*p0/(numpy.pi*E_star)
+
+
+def uniform_pressure_displacement_outside(E_star, a, p0, r):
+    """Surface displacement u_z [m] outside a disc (r > a) under a uniform pressure p0.
+
+    Chapter: Problem 6 (outside the disc). Derived from: (5.7) with p = p0 (n = 0) outside
+    the disc.
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_uniform_by_kernel``.
+
+    Printed in a stable form: E(m) - (1 - m) K(m) cancels like m = a^2/r^2 for r >> a; it
+    equals (pi m/4) 2F1(1/2, 1/2; 2; m).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import scipy.special
+
+    return a**2*p0*scipy.special.hyp2f1(1/2, 1/2, 2, a**2/r**2)/(E_star*r)
+
+
+def uniform_pressure_force(a, p0):
+    """Total force F [N] of a uniform pressure p0 on a disc of radius a.
+
+    Chapter: Problem 6. Derived from: the integral of p0 times 2 pi r over the disc.
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_force_by_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return numpy.pi*a**2*p0
+
+
+def worn_contact_radius(R, b, d):
+    """Contact radius a [m] of the worn paraboloid at depth d > 0.
+
+    Chapter: Problem 8. Derived from: (5.55) solved for a^2.
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return numpy.sqrt((1/2)*b**2 + (1/2)*numpy.sqrt(4*R**2*d**2 + b**4))
+
+
+def worn_depth(R, a, b):
+    """Indentation depth d [m] of the worn paraboloid at contact radius a > b.
+
+    Chapter: Problem 8. Derived from: (5.55).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    """
+    return a*numpy.sqrt(a**2 - b**2)/R
+
+
+def worn_displacement_outside(R, a, b, r):
+    """Surface displacement u_z(r) [m] outside the contact (r > a) of the worn paraboloid.
+
+    Chapter: Problem 8, (5.60). Derived from: (5.60) with x^2 = b^2 + (r^2 - b^2)
+    sin^2(phi).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_against_3d_elasticity``.
+
+    Printed in a stable form: S sqrt(1 - S^2) - asin S, S^2 = (a^2 - b^2)/(r^2 - b^2),
+    cancels for r >> a; it is written -(2 S^3/3) 2F1(1/2, 3/2; 5/2; S^2).
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import scipy.special
+
+    return (2*a*numpy.sqrt(a**2 - b**2)*numpy.arcsin(a/r) - 1/3*numpy.sqrt((a**2 - b**2)/(-b**2 + r**2))*(2*a**2 - 2*b**2)*scipy.special.hyp2f1(1/2, 3/2, 5/2, (a**2 - b**2)/(-b**2 + r**2)))/(numpy.pi*R)
+
+
+def worn_force(E_star, R, b, d):
+    """Normal force F [N] of the worn paraboloid at depth d.
+
+    Chapter: Problem 8. Derived from: (5.57) at the contact radius of (5.55).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_force_by_pressure``.
+
+    Printed in a stable form: sqrt(-1 + sqrt(1 + s^2)), s = 2 R d/b^2, cancels for s << 1;
+    it is written s/sqrt(sqrt(1 + s^2) + 1).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (2/3)*numpy.sqrt(2)*E_star*b*d*(numpy.sqrt(4*R**2*d**2/b**4 + 1) + 2)/numpy.sqrt(numpy.sqrt(4*R**2*d**2/b**4 + 1) + 1)
+
+
+def worn_force_from_radius(E_star, R, a, b):
+    """Normal force F [N] of the worn paraboloid at contact radius a > b.
+
+    Chapter: Problem 8. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    """
+    return (2/3)*E_star*numpy.sqrt(a - b)*numpy.sqrt(a + b)*(2*a**2 + b**2)/R
+
+
+def worn_g(R, b, x):
+    """MDR profile g(x) [m] of the worn paraboloid (0 for x < b).
+
+    Chapter: Problem 8. Derived from: (5.52) for f = (r^2 - b^2)/(2R), r > b.
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_g_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    import functools
+
+    return x*numpy.sqrt(functools.reduce(numpy.maximum, [0, (-b + x)*(b + x)]))/R

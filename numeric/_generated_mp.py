@@ -17,6 +17,7 @@ __all__ = [
     'bodies_effective_modulus_rigid',
     'bodies_effective_radius',
     'bodies_gaussian_approx_area',
+    'bodies_gaussian_approx_depth_from_force',
     'bodies_gaussian_approx_force',
     'bodies_gaussian_approx_max_pressure',
     'bodies_gaussian_approx_pressure',
@@ -53,12 +54,6 @@ __all__ = [
     'ellipse_depth_from_force',
     'ellipse_equivalent_radius',
     'ellipse_force',
-    'ellipse_gaussian_area',
-    'ellipse_gaussian_depth_from_force',
-    'ellipse_gaussian_force',
-    'ellipse_gaussian_radius',
-    'ellipse_gaussian_semi_major',
-    'ellipse_gaussian_semi_minor',
     'ellipse_max_pressure',
     'ellipse_mean_pressure',
     'ellipse_pressure',
@@ -290,6 +285,29 @@ def bodies_gaussian_approx_area(R1, R2, d):
         indentation depth [m]
     """
     return mpmath.pi*mpmath.sqrt(R1)*mpmath.sqrt(R2)*d
+
+
+def bodies_gaussian_approx_depth_from_force(E_star, F, R1, R2):
+    """Indentation depth d [m] of the elliptic contact under the force F (Gaussian-radius approximation).
+
+    Chapter: (5.24) with (5.30), approximation. Derived from: the force of (5.31) over
+    (5.28) solved for d.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_gaussian_approximation``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : mpmath.mpf
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*6**(mpmath.mpf(2)/mpmath.mpf(3))*F**(mpmath.mpf(2)/mpmath.mpf(3))/(E_star**(mpmath.mpf(2)/mpmath.mpf(3))*R1**(mpmath.mpf(1)/mpmath.mpf(6))*R2**(mpmath.mpf(1)/mpmath.mpf(6)))
 
 
 def bodies_gaussian_approx_force(E_star, R1, R2, d):
@@ -1118,124 +1136,6 @@ def ellipse_force(E_star, R1, d, t_ba):
         axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
     """
     return (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.sqrt(2)*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*E_star*mpmath.sqrt(R1)*d**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))/((mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(1)/mpmath.mpf(2)), (2,), 1 - t_ba**2) + (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
-
-
-def ellipse_gaussian_area(R1, R2, d):
-    """Contact area A = pi R~ d [m^2] of the chapter's estimate (5.29).
-
-    Chapter: (5.29). Derived from: pi a b with the semi-axes (5.28).
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R1 : mpmath.mpf
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : mpmath.mpf
-        radius of curvature of body 2, or second principal radius [m]
-    d : mpmath.mpf
-        indentation depth [m]
-    """
-    return mpmath.pi*mpmath.sqrt(R1)*mpmath.sqrt(R2)*d
-
-
-def ellipse_gaussian_depth_from_force(E_star, F, R1, R2):
-    """Depth d [m] under the force F in the Gaussian-radius approximation.
-
-    Chapter: (5.24) with (5.30). Derived from: (5.23) with R -> R~, inverted.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    E_star : mpmath.mpf
-        effective modulus E* (5.8), (5.26) [Pa]
-    F : mpmath.mpf
-        normal force [N]
-    R1 : mpmath.mpf
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : mpmath.mpf
-        radius of curvature of body 2, or second principal radius [m]
-    """
-    return (mpmath.mpf(1)/mpmath.mpf(4))*6**(mpmath.mpf(2)/mpmath.mpf(3))*F**(mpmath.mpf(2)/mpmath.mpf(3))/(E_star**(mpmath.mpf(2)/mpmath.mpf(3))*R1**(mpmath.mpf(1)/mpmath.mpf(6))*R2**(mpmath.mpf(1)/mpmath.mpf(6)))
-
-
-def ellipse_gaussian_force(E_star, R1, R2, d):
-    """Normal force F [N] of the Gaussian-radius approximation (footnote 5).
-
-    Chapter: (5.23) with (5.30). Derived from: the Hertz force (5.23) with R -> R~.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    E_star : mpmath.mpf
-        effective modulus E* (5.8), (5.26) [Pa]
-    R1 : mpmath.mpf
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : mpmath.mpf
-        radius of curvature of body 2, or second principal radius [m]
-    d : mpmath.mpf
-        indentation depth [m]
-    """
-    return (mpmath.mpf(4)/mpmath.mpf(3))*E_star*R1**(mpmath.mpf(1)/mpmath.mpf(4))*R2**(mpmath.mpf(1)/mpmath.mpf(4))*d**(mpmath.mpf(3)/mpmath.mpf(2))
-
-
-def ellipse_gaussian_radius(R1, R2):
-    """Gaussian radius of curvature R~ [m] of the gap (5.32) (the approximation).
-
-    Chapter: (5.30), (5.33). Derived from: the Gaussian curvature of (5.32) at its minimum.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R1 : mpmath.mpf
-        radius of curvature of body 1, or first principal radius [m]
-    R2 : mpmath.mpf
-        radius of curvature of body 2, or second principal radius [m]
-    """
-    return mpmath.sqrt(R1)*mpmath.sqrt(R2)
-
-
-def ellipse_gaussian_semi_major(R1, d):
-    """Semi-axis a = sqrt(R1 d) [m] of the chapter's estimate (5.28).
-
-    Chapter: (5.28). Derived from: the Hertz radius (5.21) with R -> R1.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R1 : mpmath.mpf
-        radius of curvature of body 1, or first principal radius [m]
-    d : mpmath.mpf
-        indentation depth [m]
-    """
-    return mpmath.sqrt(R1)*mpmath.sqrt(d)
-
-
-def ellipse_gaussian_semi_minor(R2, d):
-    """Semi-axis b = sqrt(R2 d) [m] of the chapter's estimate (5.28).
-
-    Chapter: (5.28). Derived from: the Hertz radius (5.21) with R -> R2.
-
-    Derivation: ``hertzmdr.derive.ellipse``. Verified by
-    ``tests/test_ellipse.py::test_gaussian_approximation``.
-
-    Parameters
-    ----------
-    R2 : mpmath.mpf
-        radius of curvature of body 2, or second principal radius [m]
-    d : mpmath.mpf
-        indentation depth [m]
-    """
-    return mpmath.sqrt(R2)*mpmath.sqrt(d)
 
 
 def ellipse_max_pressure(E_star, R1, d, t_ba):

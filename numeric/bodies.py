@@ -30,7 +30,7 @@ __all__ = [
     "effective_modulus", "effective_radius", "principal_radii", "crossed_cylinder_radii",
     "crossed_cylinders_gaussian_radius", "gaussian_radius", "gaussian_approx_semi_axes",
     "gaussian_approx_area", "gaussian_approx_max_pressure", "gaussian_approx_force",
-    "gaussian_approx_pressure",
+    "gaussian_approx_depth_from_force", "gaussian_approx_pressure",
 ]
 
 
@@ -248,6 +248,24 @@ def gaussian_approx_force(d, R1, R2, E_star):
     return result(g.bodies_gaussian_approx_force(
         positive("E_star", E_star), positive("R1", R1), positive("R2", R2),
         nonnegative("d", d)))
+
+
+def gaussian_approx_depth_from_force(F, R1, R2, E_star):
+    """Indentation depth d [m] of the elliptic contact under the force F [N]: (5.24) with
+    R = R~ (approximation), the inverse of :func:`gaussian_approx_force`.
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], F >= 0.
+    R1, R2 : float or array_like
+        Principal radii of the gap [m], R > 0 and finite.
+    E_star : float or array_like
+        Effective modulus [Pa], E_star > 0.
+    """
+    return result(g.bodies_gaussian_approx_depth_from_force(
+        positive("E_star", E_star), nonnegative("F", F), positive("R1", R1),
+        positive("R2", R2)))
 
 
 def gaussian_approx_pressure(x, y, d, R1, R2, E_star):

@@ -10,8 +10,10 @@ K, E form is 0/0: the generated code uses a hypergeometric form without cancella
 R1/R2 = 1e8. The generated code takes m = 1 - t^2 (t = b/a) in float64, which costs about
 1e-16 (R1/R2) log(R1/R2) in relative accuracy: 1e-12 at R1/R2 = 1e4, 1e-8 at 1e8.
 
-The chapter's Gaussian-radius approximation (5.28)-(5.30) stays available beside it
-(``model="gaussian"`` of :func:`solve`, :func:`gaussian_radius`).
+The chapter's Gaussian-radius approximation (5.28)-(5.31) stays available beside it
+(``model="gaussian"`` of :func:`solve`; :func:`gaussian_radius` is
+:func:`hertzmdr.numeric.bodies.gaussian_radius`): it is derived once, with the other two-body
+relations, in :mod:`hertzmdr.derive.bodies` (``bodies_gaussian_*``).
 
 Two elastic bodies: pass ``E_star`` (5.26) and the principal radii R1, R2 of the gap (the
 relative curvatures of the two surfaces; crossed cylinders (5.32): their radii).
@@ -25,6 +27,7 @@ import numpy as np
 
 from hertzmdr.numeric import _generated as g
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
+from hertzmdr.numeric.bodies import gaussian_radius  # (5.30): re-exported, owned by bodies
 
 __all__ = ["EllipticContact", "solve", "axis_ratio", "eccentricity", "gaussian_radius",
            "MAX_RADIUS_RATIO"]
@@ -92,17 +95,6 @@ def eccentricity(R1, R2):
     parameter of ellipk/ellipe. Parameters as :func:`axis_ratio`."""
     t = np.asarray(axis_ratio(R1, R2))
     return result(np.sqrt((1 - t) * (1 + t)))
-
-
-def gaussian_radius(R1, R2):
-    """Gaussian radius of curvature R~ = sqrt(R1 R2) [m], (5.30), (5.33).
-
-    Parameters
-    ----------
-    R1, R2 : float or array_like
-        Principal radii of curvature of the gap [m], > 0.
-    """
-    return result(g.ellipse_gaussian_radius(positive("R1", R1), positive("R2", R2)))
 
 
 @dataclass(frozen=True)
@@ -177,15 +169,17 @@ def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> El
         raise ValueError(f"model = {model!r} is out of range; valid: 'exact', 'gaussian'")
     _ratio(R1, R2)  # validates R1, R2 and their ratio
     R1, R2, E = positive("R1", R1), positive("R2", R2), positive("E_star", E_star)
-    if model == "gaussian":
-        Rt = g.ellipse_gaussian_radius(R1, R2)  # (5.30)
+    if model == "gaussian":  # the chapter's estimate, owned by derive/bodies.py
+        Rt = g.bodies_gaussian_radius(R1, R2)  # (5.30)
         d = (nonnegative("depth", depth) if force is None
-             else g.ellipse_gaussian_depth_from_force(E, nonnegative("force", force), R1, R2))
-        a, b = g.ellipse_gaussian_semi_major(R1, d), g.ellipse_gaussian_semi_minor(R2, d)
-        F = g.ellipse_gaussian_force(E, R1, R2, d)  # (5.23) with R~
-        p0 = g.hertz_max_pressure(E, Rt, d)  # (5.22) with R~
-        pm, k = g.hertz_mean_pressure(E, Rt, d), g.hertz_stiffness(E, Rt, d)
-        area = g.ellipse_gaussian_area(R1, R2, d)  # (5.29)
+             else g.bodies_gaussian_approx_depth_from_force(
+                 E, nonnegative("force", force), R1, R2))  # (5.24) with R~
+        a = g.bodies_gaussian_approx_semi_axis_1(R1, d)  # (5.28)
+        b = g.bodies_gaussian_approx_semi_axis_2(R2, d)
+        F = g.bodies_gaussian_approx_force(E, R1, R2, d)  # (5.23) with R~
+        p0 = g.bodies_gaussian_approx_max_pressure(E, R1, R2, d)  # (5.22) with R~
+        pm, k = g.hertz_mean_pressure(E, Rt, d), g.hertz_stiffness(E, Rt, d)  # R -> R~
+        area = g.bodies_gaussian_approx_area(R1, R2, d)  # (5.29)
     else:
         t = np.asarray(axis_ratio(R1, R2))
         Rmaj = np.maximum(R1, R2)  # a_major lies along the larger radius

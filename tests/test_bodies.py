@@ -204,7 +204,8 @@ def test_problem1_rail_wheel():
 
 
 def test_gaussian_approximation():
-    """(5.28)-(5.31): the force is the integral of (5.31) over the ellipse (2-D quadrature)."""
+    """(5.28)-(5.31): the force is the integral of (5.31) over the ellipse (2-D quadrature);
+    the depth under that force inverts it."""
     E, R1, R2, d = 1e11, 0.01, 0.05, 1e-6
     with mp.workdps(30):
         a, b = mp.sqrt(mp.mpf(R1) * d), mp.sqrt(mp.mpf(R2) * d)
@@ -228,6 +229,9 @@ def test_gaussian_approximation():
         assert_close(sa, a, TOL, "a")
         assert_close(sb, b, TOL, "b")
         assert_close(bodies.gaussian_radius(R1, R2), Rg, TOL, "(5.30)")
+        # force-controlled: the depth at the quadrature force (rounded to float64: 2/3 ulp)
+        assert_close(bodies.gaussian_approx_depth_from_force(float(F), R1, R2, E), d, TOL,
+                     "(5.24) with R~")
     assert bodies.gaussian_approx_pressure(float(a), float(b), d, R1, R2, E) == 0.0
 
 

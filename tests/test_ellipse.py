@@ -267,6 +267,14 @@ def test_gaussian_approximation():
     assert abs(gauss.force / hertz.force(d, hess**-0.5, E) - 1) < 1e-14
     assert abs(gauss.area / (np.pi * np.sqrt(float(R1 * R2)) * d) - 1) < 1e-14  # (5.29)
     assert gauss.a == np.sqrt(float(R1) * d) and gauss.b == np.sqrt(float(R2) * d)  # (5.28)
+    # p0 (derived in bodies) is the Hertz p0 (5.22) with R -> R~; the mean pressure is F/A;
+    # F ~ d^(3/2), so dF/dd = 3F/(2d) (Euler). A few float64 operations each: 1e-14.
+    assert abs(gauss.max_pressure / hertz.max_pressure(d, hess**-0.5, E) - 1) < 1e-14
+    assert abs(gauss.mean_pressure / (gauss.force / gauss.area) - 1) < 1e-14
+    assert abs(gauss.stiffness / (1.5 * gauss.force / d) - 1) < 1e-14
+    # force-controlled estimate inverts the depth-controlled one (a few ulps of cube roots)
+    back = ellipse.solve(float(R1), float(R2), E, force=float(gauss.force), model="gaussian")
+    assert abs(back.depth / d - 1) < 1e-14
     err_F = float(gauss.force / F_exact - 1)
     err_A = float(gauss.area / (mp.pi * a * b) - 1)
     # the measured errors (docs/errata_approximations.md): -9.83 % in F, +6.28 % in A
