@@ -120,6 +120,21 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'stress_axis_max_shear',
+    'stress_axis_max_shear_slope',
+    'stress_axis_sigma_xx',
+    'stress_axis_sigma_xx_deep',
+    'stress_axis_sigma_zz',
+    'stress_hertz_sigma_rr',
+    'stress_hertz_sigma_rr_far',
+    'stress_hertz_sigma_tt',
+    'stress_hertz_sigma_tt_far',
+    'stress_hertz_sigma_zz',
+    'stress_hertz_tau_rz',
+    'stress_spheroidal_cos_beta_inside',
+    'stress_spheroidal_u',
+    'stress_spheroidal_u_inside',
+    'stress_von_mises',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -132,6 +147,146 @@ __all__ = [
     'worn_force_from_radius',
     'worn_g',
 ]
+
+#: every relation: (name, equation, family, derived formula, erratum or "")
+RELATIONS = (
+    ('bodies_crossed_cylinders_curvature_1', '(5.32), (5.33), any angle', 'bodies', 'sqrt((cos(2*alpha)/R2 + 1/R1)**2 + sin(2*alpha)**2/R2**2)/2 + 1/(2*R2) + 1/(2*R1)', ''),
+    ('bodies_crossed_cylinders_curvature_2', '(5.32), (5.33), any angle', 'bodies', '-sqrt((cos(2*alpha)/R2 + 1/R1)**2 + sin(2*alpha)**2/R2**2)/2 + 1/(2*R2) + 1/(2*R1)', ''),
+    ('bodies_crossed_cylinders_gaussian_radius', '(5.33), any angle', 'bodies', 'sqrt(R1)*sqrt(R2)/Abs(sin(alpha))', ''),
+    ('bodies_effective_modulus', '(5.26)', 'bodies', '-E1*E2/(E1*nu2**2 - E1 + E2*nu1**2 - E2)', ''),
+    ('bodies_effective_modulus_rigid', '(5.8), (5.26) with E2 -> inf', 'bodies', '-E/(nu**2 - 1)', ''),
+    ('bodies_effective_radius', '(5.27)', 'bodies', 'R1*R2/(R1 + R2)', ''),
+    ('bodies_gaussian_approx_area', '(5.29), approximation', 'bodies', 'pi*sqrt(R1)*sqrt(R2)*d', ''),
+    ('bodies_gaussian_approx_depth_from_force', '(5.24) with (5.30), approximation', 'bodies', '6**(2/3)*F**(2/3)/(4*E_star**(2/3)*R1**(1/6)*R2**(1/6))', ''),
+    ('bodies_gaussian_approx_force', '(5.23) with (5.30), approximation', 'bodies', '4*E_star*R1**(1/4)*R2**(1/4)*d**(3/2)/3', ''),
+    ('bodies_gaussian_approx_max_pressure', '(5.22) with (5.30), approximation', 'bodies', '2*E_star*sqrt(d)/(pi*R1**(1/4)*R2**(1/4))', ''),
+    ('bodies_gaussian_approx_pressure', '(5.31), approximation', 'bodies', '2*E_star*sqrt(d)*sqrt(Max(0, 1 - y**2/(R2*d) - x**2/(R1*d)))/(pi*R1**(1/4)*R2**(1/4))', ''),
+    ('bodies_gaussian_approx_semi_axis_1', '(5.28), approximation', 'bodies', 'sqrt(R1)*sqrt(d)', ''),
+    ('bodies_gaussian_approx_semi_axis_2', '(5.28), approximation', 'bodies', 'sqrt(R2)*sqrt(d)', ''),
+    ('bodies_gaussian_radius', '(5.30)', 'bodies', 'sqrt(R1)*sqrt(R2)', ''),
+    ('bodies_principal_curvature_1', '(5.32), Problem 2, general', 'bodies', 'sqrt((-1/R2b + 1/R2a)**2*sin(2*omega)**2 + ((-1/R2b + 1/R2a)*cos(2*omega) - 1/R1b + 1/R1a)**2)/2 + 1/(2*R2b) + 1/(2*R2a) + 1/(2*R1b) + 1/(2*R1a)', ''),
+    ('bodies_principal_curvature_2', '(5.32), Problem 2, general', 'bodies', '-sqrt((-1/R2b + 1/R2a)**2*sin(2*omega)**2 + ((-1/R2b + 1/R2a)*cos(2*omega) - 1/R1b + 1/R1a)**2)/2 + 1/(2*R2b) + 1/(2*R2a) + 1/(2*R1b) + 1/(2*R1a)', ''),
+    ('bodies_problem2_force', 'Problem 2', 'bodies', '-2*2**(1/4)*E*sqrt(R)*d**(3/2)/(3*nu**2 - 3)', 'with R~ = sqrt(2) R the factor is 2^(5/4)/3, not 2^(7/4)/3 (the printed force is sqrt(2) times too large)'),
+    ('bodies_problem2_gaussian_radius', 'Problem 2', 'bodies', 'sqrt(2)*R', 'with the principal radii halved, R~ = sqrt(2) R, not 2 sqrt(2) R (check: R/sin(alpha) is R at alpha = pi/2, the sphere of (5.33))'),
+    ('bodies_problem2_principal_radius_1', 'Problem 2', 'bodies', '-sqrt(2)*R + 2*R', 'the chapter takes the eigenvalues of the coefficient matrix M of h = x^T M x, which are half the principal curvatures (the Hessian is 2M): R_1,2 = R/(1 +- 1/sqrt(2)), not 2R/(1 +- 1/sqrt(2))'),
+    ('bodies_problem2_principal_radius_2', 'Problem 2', 'bodies', 'sqrt(2)*R + 2*R', 'eigenvalues of M instead of the Hessian 2M: the radius is R/(1 - 1/sqrt(2)), half the printed one'),
+    ('boussinesq_sigma_xx', '(5.41)', 'boussinesq', '-F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) + 2*nu*z**3*(x**2 + y**2 + z**2) + 4*nu*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) - z**3*(x**2 + y**2 + z**2) - 2*z**2*(x**2 + y**2 + z**2)**(3/2) + (x**2 + y**2 + z**2)**(5/2))/(2*pi*(z + sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))', ''),
+    ('boussinesq_sigma_xy', '(5.44)', 'boussinesq', '-F*x*y*(2*nu*z*(x**2 + y**2 + z**2) + 4*nu*(x**2 + y**2 + z**2)**(3/2) + 3*z**3 + 6*z**2*sqrt(x**2 + y**2 + z**2) + 2*z*(x**2 + y**2 + z**2) - 2*(x**2 + y**2 + z**2)**(3/2))/(2*pi*(z + sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))', ''),
+    ('boussinesq_sigma_xz', '(5.46)', 'boussinesq', '-3*F*x*z**2/(2*pi*(x**2 + y**2 + z**2)**(5/2))', 'the sign: with the force F acting in +z (into the body, z > 0 in the body) the derivation gives tau_xz = -3 F x z^2/(2 pi R^5); the print has +3 F x z^2/(2 pi R^5), which together with the printed (5.43) violates the equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0'),
+    ('boussinesq_sigma_yy', '(5.42)', 'boussinesq', 'F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*z*(x**2 + y**2 + z**2)**2 - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) + 3*z**5 + 6*z**4*sqrt(x**2 + y**2 + z**2) - 6*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*z*(x**2 + y**2 + z**2)**2 + (x**2 + y**2 + z**2)**(5/2))/(2*pi*(z + sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))', ''),
+    ('boussinesq_sigma_yz', '(5.45)', 'boussinesq', '-3*F*y*z**2/(2*pi*(x**2 + y**2 + z**2)**(5/2))', 'the sign: with the force F acting in +z (into the body, z > 0 in the body) the derivation gives tau_yz = -3 F y z^2/(2 pi R^5); the print has +3 F y z^2/(2 pi R^5), which together with the printed (5.43) violates the equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0'),
+    ('boussinesq_sigma_zz', '(5.43)', 'boussinesq', '-3*F*z**3/(2*pi*(x**2 + y**2 + z**2)**(5/2))', ''),
+    ('boussinesq_surface_ux', '(5.4)', 'boussinesq', 'F*x*(nu + 1)*(2*nu - 1)/(2*pi*E*(x**2 + y**2))', ''),
+    ('boussinesq_surface_uy', '(5.5)', 'boussinesq', 'F*y*(nu + 1)*(2*nu - 1)/(2*pi*E*(x**2 + y**2))', ''),
+    ('boussinesq_surface_uz', '(5.6)', 'boussinesq', '-F*(nu - 1)*(nu + 1)/(pi*E*sqrt(x**2 + y**2))', ''),
+    ('boussinesq_ux', '(5.1)', 'boussinesq', 'F*(nu + 1)*(x*z/(x**2 + y**2 + z**2)**(3/2) - x*(1 - 2*nu)/((z + sqrt(x**2 + y**2 + z**2))*sqrt(x**2 + y**2 + z**2)))/(2*pi*E)', ''),
+    ('boussinesq_uy', '(5.2)', 'boussinesq', 'F*(nu + 1)*(y*z/(x**2 + y**2 + z**2)**(3/2) - y*(1 - 2*nu)/((z + sqrt(x**2 + y**2 + z**2))*sqrt(x**2 + y**2 + z**2)))/(2*pi*E)', ''),
+    ('boussinesq_uz', '(5.3)', 'boussinesq', 'F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(3/2) + (2 - 2*nu)/sqrt(x**2 + y**2 + z**2))/(2*pi*E)', ''),
+    ('cone_contact_radius', '(5.38), Problem 7(c)', 'cone', '2*d/(pi*tan(theta))', ''),
+    ('cone_contact_radius_from_force', '(5.38), (5.40)', 'cone', 'sqrt(2)*sqrt(F)/(sqrt(pi)*sqrt(E_star)*sqrt(tan(theta)))', ''),
+    ('cone_depth', '(5.38)', 'cone', 'pi*a*tan(theta)/2', ''),
+    ('cone_depth_from_force', '(5.40), inverted', 'cone', 'sqrt(2)*sqrt(pi)*sqrt(F)*sqrt(tan(theta))/(2*sqrt(E_star))', ''),
+    ('cone_force', '(5.40)', 'cone', '2*E_star*d**2/(pi*tan(theta))', ''),
+    ('cone_mean_pressure', '(5.40)/(pi a^2)', 'cone', 'E_star*tan(theta)/2', ''),
+    ('cone_pressure', '(5.39)', 'cone', 'E_star*tan(theta)*acosh(2*d/(pi*r*tan(theta)))/2', "the print has a spurious minus sign: the pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it"),
+    ('cone_stiffness', 'Problem 5', 'cone', '4*E_star*d/(pi*tan(theta))', ''),
+    ('ellipse_area', '(5.29), exact', 'ellipse', '2*pi*R1*d*t_ba*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
+    ('ellipse_depth_from_force', '(5.23), exact, inverted', 'ellipse', '3**(2/3)*F**(2/3)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(2*(1 - t_ba**2)) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(2*(1 - t_ba**2)))/(pi**(2/3)*E_star**(2/3)*R1**(1/3)*((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(1/3))', ''),
+    ('ellipse_equivalent_radius', '(5.23), exact', 'ellipse', 'pi**2*R1*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(2*(1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**3)', ''),
+    ('ellipse_force', '(5.23), exact', 'ellipse', '2*sqrt(2)*pi*E_star*sqrt(R1)*d**(3/2)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/(3*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(3/2))', ''),
+    ('ellipse_max_pressure', '(5.31), exact', 'ellipse', 'sqrt(2)*E_star*sqrt(d)/(2*sqrt(R1)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))*sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
+    ('ellipse_mean_pressure', '(5.17), exact', 'ellipse', 'sqrt(2)*E_star*sqrt(d)/(3*sqrt(R1)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))*sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
+    ('ellipse_pressure', '(5.31)', 'ellipse', 'sqrt(2)*E_star*sqrt(d)*sqrt(Max(0, 1 - x**2*(1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/(2*R1*d*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))) - y**2*(1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/(2*R1*d*t_ba**2*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2)))))/(2*sqrt(R1)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))*sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
+    ('ellipse_radius_ratio', '(5.31)-(5.32), exact', 'ellipse', '(-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(t_ba**2*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2)))', ''),
+    ('ellipse_semi_major', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
+    ('ellipse_semi_minor', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
+    ('ellipse_stiffness', '(5.13), exact', 'ellipse', 'sqrt(2)*pi*E_star*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(3/2)', ''),
+    ('hertz_contact_radius', '(5.21)', 'hertz', 'sqrt(R)*sqrt(d)', ''),
+    ('hertz_contact_radius_from_force', '(5.24)', 'hertz', '6**(1/3)*F**(1/3)*R**(1/3)/(2*E_star**(1/3))', ''),
+    ('hertz_depth_from_force', '(5.23), inverted', 'hertz', '6**(2/3)*F**(2/3)/(4*E_star**(2/3)*R**(1/3))', ''),
+    ('hertz_displacement_inside', '(5.18)', 'hertz', 'd - r**2/(2*R)', ''),
+    ('hertz_displacement_outside', 'Fig. 5.2, Problem 7(b)', 'hertz', '(sqrt(R)*sqrt(d)*sqrt(-R*d + r**2) + 2*R*d*asin(sqrt(R)*sqrt(d)/r) - r**2*asin(sqrt(R)*sqrt(d)/r))/(pi*R)', ''),
+    ('hertz_energy', '(5.25)', 'hertz', '8*E_star*sqrt(R)*d**(5/2)/15', ''),
+    ('hertz_force', '(5.23)', 'hertz', '4*E_star*sqrt(R)*d**(3/2)/3', ''),
+    ('hertz_max_pressure', '(5.22)', 'hertz', '2*E_star*sqrt(d)/(pi*sqrt(R))', ''),
+    ('hertz_max_pressure_from_force', '(5.24)', 'hertz', '6**(1/3)*E_star**(2/3)*F**(1/3)/(pi*R**(2/3))', ''),
+    ('hertz_mean_pressure', '(5.17)', 'hertz', '4*E_star*sqrt(d)/(3*pi*sqrt(R))', ''),
+    ('hertz_pressure', '(5.15)', 'hertz', '2*E_star*sqrt(d)*sqrt(Max(0, 1 - r**2/(R*d)))/(pi*sqrt(R))', ''),
+    ('hertz_pressure_displacement', '(5.16)', 'pressures', 'pi*p0*(2*a**2 - r**2)/(4*E_star*a)', ''),
+    ('hertz_pressure_displacement_outside', 'Fig. 5.2', 'pressures', 'p0*(2*a**2*asin(a/r) + a*sqrt(-a**2 + r**2) - r**2*asin(a/r))/(2*E_star*a)', ''),
+    ('hertz_pressure_force', '(5.17)', 'pressures', '2*pi*a**2*p0/3', ''),
+    ('hertz_stiffness', 'Problem 5', 'hertz', '2*E_star*sqrt(R)*sqrt(d)', ''),
+    ('impact_contact_time', 'Problem 3', 'impact', '30**(2/5)*sqrt(pi)*m**(2/5)*gamma(2/5)/(5*E_star**(2/5)*R**(1/5)*v0**(1/5)*gamma(9/10))', ''),
+    ('impact_contact_time_density', 'Problem 3, m = 4/3 pi R^3 rho', 'impact', '2*2**(1/5)*5**(2/5)*pi**(9/10)*R*rho**(2/5)*gamma(2/5)/(5*E_star**(2/5)*v0**(1/5)*gamma(9/10))', ''),
+    ('impact_max_contact_radius', 'Problem 4', 'impact', '30**(1/5)*R**(2/5)*m**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
+    ('impact_max_contact_radius_density', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '2**(3/5)*5**(1/5)*pi**(1/5)*R*rho**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
+    ('impact_max_depth', 'Problem 3', 'impact', '30**(2/5)*m**(2/5)*v0**(4/5)/(4*E_star**(2/5)*R**(1/5))', ''),
+    ('impact_max_depth_density', 'Problem 3, m = 4/3 pi R^3 rho', 'impact', '2**(1/5)*5**(2/5)*pi**(2/5)*R*rho**(2/5)*v0**(4/5)/(2*E_star**(2/5))', ''),
+    ('impact_max_force', 'Problem 4', 'impact', '30**(3/5)*E_star**(2/5)*R**(1/5)*m**(3/5)*v0**(6/5)/6', ''),
+    ('impact_max_force_density', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '2**(4/5)*5**(3/5)*pi**(3/5)*E_star**(2/5)*R**2*rho**(3/5)*v0**(6/5)/3', ''),
+    ('impact_max_pressure', 'Problem 4', 'impact', '30**(1/5)*E_star**(4/5)*m**(1/5)*v0**(2/5)/(pi*R**(3/5))', ''),
+    ('impact_max_pressure_density', 'Problem 4', 'impact', '2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/pi**(4/5)', ''),
+    ('impact_sphere_mass', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '4*pi*R**3*rho/3', ''),
+    ('line_depth_from_force', '(5.34), inverted', 'line', '4*F/(pi*E_star*L)', ''),
+    ('line_force', '(5.34)', 'line', 'pi*E_star*L*d/4', ''),
+    ('line_force_per_length_from_half_width', '(5.34), from the matching', 'line', 'pi*E_star*a**2/(4*R)', ''),
+    ('line_half_width', '(5.35)', 'line', 'sqrt(R)*sqrt(d)', ''),
+    ('line_half_width_from_force', '(5.34), (5.35)', 'line', '2*sqrt(F)*sqrt(R)/(sqrt(pi)*sqrt(E_star)*sqrt(L))', ''),
+    ('line_max_pressure', '(5.37), second form', 'line', 'E_star*sqrt(d)/(2*sqrt(R))', ''),
+    ('line_max_pressure_depth_width', '(5.37), first form', 'line', 'E_star*d/(2*a)', ''),
+    ('line_max_pressure_from_force', '(5.37), third form', 'line', 'sqrt(E_star)*sqrt(F)/(sqrt(pi)*sqrt(L)*sqrt(R))', 'a factor pi is missing under the root: p0 = (E* F/(pi L R))^(1/2) (from p0 = E* a/(2R) and F/L = pi a p0/2; the print is sqrt(pi) = 1.77 times too large)'),
+    ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
+    ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
+    ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
+    ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
+    ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
+    ('powerlaw_force', 'Problem 7(d)', 'powerlaw', '2*E_star*d*n*(d/(c_n*kappa_n))**(1/n)/(n + 1)', 'the factor (kappa_n c_n)^(1/n) must be (kappa_n c_n)^(-1/n): with a = (d/(kappa_n c_n))^(1/n), (5.57) gives F = 2n/(n+1) E* a d; for n = 2 (kappa_2 c_2 = 1/R) only the corrected form reproduces (5.23)'),
+    ('powerlaw_force_from_radius', 'Problem 7(d), (5.57)', 'powerlaw', '2*E_star*a*d*n/(n + 1)', ''),
+    ('powerlaw_g', 'Problem 7(d)', 'powerlaw', 'c_n*kappa_n*x**n', ''),
+    ('powerlaw_kappa', 'Problem 7(d)', 'powerlaw', 'sqrt(pi)*gamma(n/2 + 1)/gamma(n/2 + 1/2)', ''),
+    ('powerlaw_kappa_asymptotic', 'Problem 7(d), large n', 'powerlaw', 'sqrt(2)*sqrt(pi)*sqrt(n)*exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + 31/(4608*n**2))/n**2)/n**2)/n**2)/n)/2', ''),
+    ('powerlaw_mean_pressure', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n/(pi*a*(n + 1))', ''),
+    ('powerlaw_pressure', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*hyper((1, 1 - n/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a**2)', ''),
+    ('powerlaw_pressure_n1', 'Problem 7(d), n = 1', 'powerlaw', 'E_star*d*log((a + sqrt(a**2 - r**2))/r)/(pi*a)', ''),
+    ('powerlaw_pressure_n2', 'Problem 7(d), n = 2', 'powerlaw', '2*E_star*d*sqrt(a**2 - r**2)/(pi*a**2)', ''),
+    ('powerlaw_pressure_n3', 'Problem 7(d), n = 3', 'powerlaw', '3*E_star*d*(a*sqrt(a**2 - r**2) - r**2*log(r) + r**2*log(a + sqrt(a**2 - r**2)))/(2*pi*a**3)', ''),
+    ('powerlaw_pressure_n4', 'Problem 7(d), n = 4', 'powerlaw', '4*E_star*d*sqrt(a**2 - r**2)*(a**2 + 2*r**2)/(3*pi*a**4)', ''),
+    ('powerlaw_pressure_normalized', 'Fig. 5.17', 'powerlaw', '(n + 1)*hyper((1, 1 - n/2), (3/2,), Max(0, (1 - r_tilde)*(r_tilde + 1)))*sqrt(Max(0, (1 - r_tilde)*(r_tilde + 1)))/2', ''),
+    ('powerlaw_pressure_small_n', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*r**(n - 1)*hyper((1/2, n/2 + 1/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a*a**n)', ''),
+    ('powerlaw_punch_displacement_outside', 'Problem 7(a)', 'powerlaw', '2*d*asin(a/r)/pi', ''),
+    ('powerlaw_punch_force', 'Problem 7(a)', 'powerlaw', '2*E_star*a*d', ''),
+    ('powerlaw_punch_pressure', 'Problem 7(a)', 'powerlaw', 'E_star*d/(pi*sqrt(a**2 - r**2))', ''),
+    ('punch_pressure_displacement', '(5.10)', 'pressures', 'pi*a*p0/E_star', ''),
+    ('punch_pressure_displacement_outside', 'Fig. 5.2 (n = -1/2), Problem 7(a)', 'pressures', '2*a*p0*asin(a/r)/E_star', ''),
+    ('punch_pressure_force', '(5.11)', 'pressures', '2*pi*a**2*p0', ''),
+    ('punch_stiffness', '(5.12)', 'pressures', '2*E_star*a', ''),
+    ('stress_axis_max_shear', 'Fig. 5.8', 'stress', 'p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
+    ('stress_axis_max_shear_slope', 'Fig. 5.8', 'stress', '-p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2)**2) + p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*atan(a/z) + 2*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
+    ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
+    ('stress_axis_sigma_xx_deep', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
+    ('stress_axis_sigma_zz', '(5.48)', 'stress', '-a**2*p0/(a**2 + z**2)', ''),
+    ('stress_hertz_sigma_rr', 'Fig. 5.9', 'stress', 'p0*(-xi**2*sin(beta)**2*cos(beta)/((xi**2 + 1)*(xi**2 + cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
+    ('stress_hertz_sigma_rr_far', 'Fig. 5.9', 'stress', 'p0*(-xi**2*sin(beta)**2*cos(beta)/((xi**2 + 1)*(xi**2 + cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
+    ('stress_hertz_sigma_tt', 'Fig. 5.9', 'stress', 'p0*((1 - 2*nu)*(cos(beta)**2 + cos(beta) - 1)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
+    ('stress_hertz_sigma_tt_far', 'Fig. 5.9', 'stress', 'p0*((1 - 2*nu)*(cos(beta)**2 + cos(beta) - 1)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
+    ('stress_hertz_sigma_zz', 'Fig. 5.9', 'stress', '-p0*cos(beta)**3/(xi**2 + cos(beta)**2)', ''),
+    ('stress_hertz_tau_rz', 'Fig. 5.9', 'stress', '-p0*xi*sin(beta)*cos(beta)**2/(sqrt(xi**2 + 1)*(xi**2 + cos(beta)**2))', ''),
+    ('stress_spheroidal_cos_beta_inside', 'Johnson (1985), (3.44)', 'stress', 'sqrt(-z**2/2 - (-a + r)*(a + r)/2 + sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2)/2)/a', ''),
+    ('stress_spheroidal_u', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
+    ('stress_spheroidal_u_inside', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
+    ('stress_von_mises', '(5.50)', 'stress', 'sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)', ''),
+    ('uniform_pressure_displacement', 'Problem 6', 'pressures', '4*a*p0*elliptic_e(r**2/a**2)/(pi*E_star)', ''),
+    ('uniform_pressure_displacement_centre', 'Problem 6', 'pressures', '2*a*p0/E_star', ''),
+    ('uniform_pressure_displacement_edge', 'Problem 6', 'pressures', '4*a*p0/(pi*E_star)', ''),
+    ('uniform_pressure_displacement_outside', 'Problem 6 (outside the disc)', 'pressures', '4*p0*r*((a**2/r**2 - 1)*elliptic_k(a**2/r**2) + elliptic_e(a**2/r**2))/(pi*E_star)', ''),
+    ('uniform_pressure_force', 'Problem 6', 'pressures', 'pi*a**2*p0', ''),
+    ('worn_contact_radius', 'Problem 8', 'worn', 'sqrt(b**2/2 + sqrt(4*R**2*d**2 + b**4)/2)', ''),
+    ('worn_depth', 'Problem 8', 'worn', 'a*sqrt(a**2 - b**2)/R', ''),
+    ('worn_displacement_outside', 'Problem 8, (5.60)', 'worn', '(2*a*sqrt(a**2 - b**2)*asin(a/r) - (b - r)*(b + r)*(sqrt((-a**2 + b**2)/(b**2 - r**2))*sqrt((-a**2 + r**2)/(-b**2 + r**2)) - asin(sqrt((-a**2 + b**2)/(b**2 - r**2)))))/(pi*R)', ''),
+    ('worn_force', 'Problem 8', 'worn', 'E_star*sqrt(-2*b**2 + 2*sqrt(4*R**2*d**2 + b**4))*(2*b**2 + sqrt(4*R**2*d**2 + b**4))/(3*R)', ''),
+    ('worn_force_from_radius', 'Problem 8', 'worn', '2*E_star*sqrt(a - b)*sqrt(a + b)*(2*a**2 + b**2)/(3*R)', ''),
+    ('worn_g', 'Problem 8', 'worn', 'x*sqrt(Max(0, (-b + x)*(b + x)))/R', ''),
+)
 
 
 def bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
@@ -2611,6 +2766,360 @@ def punch_stiffness(E_star, a):
     return 2*E_star*a
 
 
+def stress_axis_max_shear(a, nu, p0, z):
+    """Maximum shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis under the Hertz pressure.
+
+    Chapter: Fig. 5.8. Derived from: (5.48), (5.49).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/4)*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
+
+
+def stress_axis_max_shear_slope(a, nu, p0, z):
+    """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: the derivative of tau_1.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -1/2*p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2)**2) + (1/4)*p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*numpy.arctan(a/z) + 2*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
+
+
+def stress_axis_sigma_xx(a, nu, p0, z):
+    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure, the form of (5.49) (for z < a).
+
+    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
+
+
+def stress_axis_sigma_xx_deep(a, nu, p0, z):
+    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure (for z >= a).
+
+    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: (5.49) subtracts terms of size 1 to leave one of size (a/z)^2
+    (of size (a/z)^4 at nu = 1/2); 1 - atan(t)/t - t^2/(3(1 + t^2)) is written as (2/15) t^4
+    2F1(2, 5/2; 7/2; -t^2), t = a/z, used for z >= a.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return p0*(-a**4*((2/15)*nu + 2/15)*scipy.special.hyp2f1(2, 5/2, 7/2, -a**2/z**2)/z**4 + a**2*(1 - 2*nu)/(z**2*(6*a**2/z**2 + 6)))
+
+
+def stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis under the Hertz pressure.
+
+    Chapter: (5.48). Derived from: (5.43) superposed over (5.15) along the axis, (5.47).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: one division, no cancellation.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a**2*p0/(a**2 + z**2)
+
+
+def stress_hertz_sigma_rr(nu, p0, xi, beta):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+
+
+def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    import scipy.special
+
+    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - 2/15*(nu + 1)*numpy.cos(beta)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)))
+
+
+def stress_hertz_sigma_tt(nu, p0, xi, beta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+
+
+def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    import scipy.special
+
+    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - 2/15*(nu + 1)*numpy.cos(beta)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)))
+
+
+def stress_hertz_sigma_zz(p0, xi, beta):
+    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return -p0*numpy.cos(beta)**3/(xi**2 + numpy.cos(beta)**2)
+
+
+def stress_hertz_tau_rz(p0, xi, beta):
+    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return -p0*xi*numpy.sin(beta)*numpy.cos(beta)**2/(numpy.sqrt(xi**2 + 1)*(xi**2 + numpy.cos(beta)**2))
+
+
+def stress_spheroidal_cos_beta_inside(a, r, z):
+    """Cos(beta) = z/u^(1/2) [1] for r^2 + z^2 < a^2 (finite at z = 0).
+
+    Chapter: Johnson (1985), (3.44). Derived from: z/u^(1/2) with u = 2 a^2 z^2/(D - q)
+    (stress_spheroidal_u_inside): z cancels.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return numpy.sqrt(-1/2*z**2 - 1/2*(-a + r)*(a + r) + (1/2)*numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))/a
+
+
+def stress_spheroidal_u(a, r, z):
+    """Johnson's u [m^2], the root of r^2/(a^2 + u) + z^2/u = 1 (for r^2 + z^2 >= a^2).
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Printed in a stable form: the expanded discriminant cancels near the contact edge; q =
+    (r - a)(r + a) + z^2 keeps it exact.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*z**2 + (1/2)*(-a + r)*(a + r) + (1/2)*numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2)
+
+
+def stress_spheroidal_u_inside(a, r, z):
+    """Johnson's u [m^2] for r^2 + z^2 < a^2.
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Printed in a stable form: (q + D)/2 cancels for q = r^2 + z^2 - a^2 < 0; written as 2
+    a^2 z^2/(D - q).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return 2*a**2*z**2/(-z**2 - (-a + r)*(a + r) + numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))
+
+
+def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """Von Mises equivalent stress [Pa] of the stress tensor.
+
+    Chapter: (5.50). Derived from: sqrt(3 J2), J2 the second invariant of the stress
+    deviator.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_von_mises_invariant``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_yy : float or ndarray
+        normal stress component sigma_yy [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xy : float or ndarray
+        shear stress component tau_xy [Pa]
+    tau_yz : float or ndarray
+        shear stress component tau_yz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -2857,3 +3366,583 @@ def worn_g(R, b, x):
     import functools
 
     return x*numpy.sqrt(functools.reduce(numpy.maximum, [0, (-b + x)*(b + x)]))/R
+
+
+def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
+    """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
+
+    Chapter: (5.32), (5.33), any angle. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    alpha : float or ndarray
+        angle between the axes of two crossed cylinders [rad]
+    """
+    return -1/2*numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + (1/2)/R2 + (1/2)/R1
+
+
+def textbook_bodies_effective_modulus(E1, nu1, E2, nu2):
+    """Effective modulus E* [Pa] of two elastic bodies, in the derived (textbook) form; use bodies_effective_modulus: 1/E* as the sum of the compliances, which accepts E2 = inf (rigid), with 1 - nu^2 = (1 - nu)(1 + nu) exact in floating point for nu near -1.
+
+    Chapter: (5.26). Derived from: the sum of the two surface displacements (5.6), (5.7)
+    under one pressure.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Parameters
+    ----------
+    E1 : float or ndarray
+        Young's modulus of body 1 [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    E2 : float or ndarray
+        Young's modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return -E1*E2/(E1*nu2**2 - E1 + E2*nu1**2 - E2)
+
+
+def textbook_bodies_effective_modulus_rigid(E, nu):
+    """Effective modulus E* [Pa] of an elastic body against a rigid one, in the derived (textbook) form; use bodies_effective_modulus_rigid: 1 - nu^2 = (1 - nu)(1 + nu) is exact in floating point for nu near -1, where 1 - nu^2 cancels.
+
+    Chapter: (5.8), (5.26) with E2 -> inf. Derived from: the limit E2 -> inf of (5.26).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_modulus_by_two_displacements``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return -E/(nu**2 - 1)
+
+
+def textbook_bodies_effective_radius(R1, R2):
+    """Effective radius R [m] of two spheres (negative radius: concave), in the derived (textbook) form; use bodies_effective_radius: the sum of the curvatures accepts R = inf (flat).
+
+    Chapter: (5.27). Derived from: the sum of the two gaps r^2/(2 R_i).
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_effective_radius_by_gap``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    R2 : float or ndarray
+        radius of curvature of body 2, or second principal radius [m]
+    """
+    return R1*R2/(R1 + R2)
+
+
+def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
+    """Smaller principal curvature kappa_2 [1/m] of the gap between two bodies, in the derived (textbook) form; use bodies_principal_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
+
+    Chapter: (5.32), Problem 2, general. Derived from: the smaller eigenvalue of the Hessian
+    of the gap.
+
+    Derivation: ``hertzmdr.derive.bodies``. Verified by
+    ``tests/test_bodies.py::test_principal_curvatures_by_hessian``.
+
+    Parameters
+    ----------
+    R1a : float or ndarray
+        first principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R1b : float or ndarray
+        second principal radius of curvature of body 1 (negative: concave; inf: flat) [m]
+    R2a : float or ndarray
+        first principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    R2b : float or ndarray
+        second principal radius of curvature of body 2 (negative: concave; inf: flat) [m]
+    omega : float or ndarray
+        angle between the first principal directions of the two bodies [rad]
+    """
+    return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def textbook_ellipse_area(R1, d, t_ba):
+    """Contact area pi a b [m^2] of an elliptical contact, in the derived (textbook) form; use ellipse_area: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.29), exact. Derived from: pi a b with a, b matched.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return 2*numpy.pi*R1*d*t_ba*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_depth_from_force(E_star, F, R1, t_ba):
+    """Indentation depth d [m] of an elliptical contact under the force F, in the derived (textbook) form; use ellipse_depth_from_force: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.23), exact, inverted. Derived from: the exact force solved for d.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_controlled_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return 3**(2/3)*F**(2/3)*((1/2)*(-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (1/2)*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/(numpy.pi**(2/3)*E_star**(2/3)*R1**(1/3)*((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(1/3))
+
+
+def textbook_ellipse_equivalent_radius(R1, t_ba):
+    """Radius R_e [m] of the sphere whose Hertz force (5.23) equals the elliptical contact's at every depth (compare with the Gaussian radius (5.30)), in the derived (textbook) form; use ellipse_equivalent_radius: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.23), exact. Derived from: the exact force equated to (5.23).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.pi**2*R1*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**3)
+
+
+def textbook_ellipse_force(E_star, R1, d, t_ba):
+    """Normal force F [N] of an elliptical Hertz contact at depth d, in the derived (textbook) form; use ellipse_force: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.23), exact. Derived from: (5.31) integrated over the ellipse, with a and p0
+    from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (2/3)*numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*d**(3/2)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(3/2)
+
+
+def textbook_ellipse_max_pressure(E_star, R1, d, t_ba):
+    """Maximum pressure p0 [Pa] of an elliptical contact at depth d, in the derived (textbook) form; use ellipse_max_pressure: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.31), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(R1)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))*numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_mean_pressure(E_star, R1, d, t_ba):
+    """Mean pressure F/(pi a b) [Pa] of an elliptical contact, in the derived (textbook) form; use ellipse_mean_pressure: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.17), exact. Derived from: the force divided by the area pi a b.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_force_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (1/3)*numpy.sqrt(2)*E_star*numpy.sqrt(d)/(numpy.sqrt(R1)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))*numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_pressure(E_star, R1, d, t_ba, x, y):
+    """Contact pressure p(x, y) [Pa] of an elliptical contact (0 outside), in the derived (textbook) form; use ellipse_pressure: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.31). Derived from: (5.31) with a, b, p0 from the matching.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_pressure_field``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    import functools
+    import scipy.special
+
+    return (1/2)*numpy.sqrt(2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - 1/2*x**2*(1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/(R1*d*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))) - 1/2*y**2*(1 - t_ba**2)*((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/(R1*d*t_ba**2*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2)))]))/(numpy.sqrt(R1)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))*numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2)))
+
+
+def textbook_ellipse_radius_ratio(t_ba):
+    """Ratio R1/R2 >= 1 of the principal radii that gives the axis ratio t = b/a, in the derived (textbook) form; use ellipse_radius_ratio: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.31)-(5.32), exact. Derived from: (5.7) over (5.31) matched to the gap
+    (5.32): the y^2 and x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(t_ba**2*(-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2)))
+
+
+def textbook_ellipse_semi_major(R1, d, t_ba):
+    """Semi-axis a [m] (along x, the direction of R1 >= R2) of an elliptical contact, in the derived (textbook) form; use ellipse_semi_major: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32): the x^0 and
+    x^2 coefficients.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))
+
+
+def textbook_ellipse_semi_minor(R1, d, t_ba):
+    """Semi-axis b = t a [m] (along y, the direction of R2) of an elliptical contact, in the derived (textbook) form; use ellipse_semi_minor: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.28), exact. Derived from: (5.7) over (5.31) matched to (5.32).
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_displacement_by_boussinesq``.
+
+    Parameters
+    ----------
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.sqrt(R1)*numpy.sqrt(d)*t_ba*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/numpy.sqrt((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))
+
+
+def textbook_ellipse_stiffness(E_star, R1, d, t_ba):
+    """Differential stiffness dF/dd [N/m] of an elliptical contact, in the derived (textbook) form; use ellipse_stiffness: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
+
+    Chapter: (5.13), exact. Derived from: the derivative of the force at fixed R1, R2.
+
+    Derivation: ``hertzmdr.derive.ellipse``. Verified by
+    ``tests/test_ellipse.py::test_stiffness_by_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(3/2)
+
+
+def textbook_hertz_displacement_outside(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact (r > a), in the derived (textbook) form; use hertz_displacement_outside: the textbook form cancels terms of size r/a to leave one of size a/r; asin t - t sqrt(1 - t^2) is written as (2 t^3/3) 2F1(1/2, 3/2; 5/2; t^2) with t = a/r.
+
+    Chapter: Fig. 5.2, Problem 7(b). Derived from: (5.7) over the Hertz pressure, outside
+    the disc.
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_pressures.py::test_outside_displacement_by_kernel``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
+
+
+def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):
+    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure (for z >= a), in the derived (textbook) form; use stress_axis_sigma_xx_deep: (5.49) subtracts terms of size 1 to leave one of size (a/z)^2 (of size (a/z)^4 at nu = 1/2); 1 - atan(t)/t - t^2/(3(1 + t^2)) is written as (2/15) t^4 2F1(2, 5/2; 7/2; -t^2), t = a/z, used for z >= a.
+
+    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/2)*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
+
+
+def textbook_stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis under the Hertz pressure, in the derived (textbook) form; use stress_axis_sigma_zz: one division, no cancellation.
+
+    Chapter: (5.48). Derived from: (5.43) superposed over (5.15) along the axis, (5.47).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a**2*p0/(a**2 + z**2)
+
+
+def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+
+
+def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : float or ndarray
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+
+
+def textbook_stress_spheroidal_u(a, r, z):
+    """Johnson's u [m^2], the root of r^2/(a^2 + u) + z^2/u = 1 (for r^2 + z^2 >= a^2), in the derived (textbook) form; use stress_spheroidal_u: the expanded discriminant cancels near the contact edge; q = (r - a)(r + a) + z^2 keeps it exact.
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -1/2*a**2 + (1/2)*r**2 + (1/2)*z**2 + (1/2)*numpy.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
+
+
+def textbook_stress_spheroidal_u_inside(a, r, z):
+    """Johnson's u [m^2] for r^2 + z^2 < a^2, in the derived (textbook) form; use stress_spheroidal_u_inside: (q + D)/2 cancels for q = r^2 + z^2 - a^2 < 0; written as 2 a^2 z^2/(D - q).
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -1/2*a**2 + (1/2)*r**2 + (1/2)*z**2 + (1/2)*numpy.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
+
+
+def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):
+    """Surface displacement u_z [m] outside a disc (r > a) under a uniform pressure p0, in the derived (textbook) form; use uniform_pressure_displacement_outside: E(m) - (1 - m) K(m) cancels like m = a^2/r^2 for r >> a; it equals (pi m/4) 2F1(1/2, 1/2; 2; m).
+
+    Chapter: Problem 6 (outside the disc). Derived from: (5.7) with p = p0 (n = 0) outside
+    the disc.
+
+    Derivation: ``hertzmdr.derive.pressures``. Verified by
+    ``tests/test_pressures.py::test_uniform_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import scipy.special
+
+    return 4*p0*r*((a**2/r**2 - 1)*scipy.special.ellipk(a**2/r**2) + scipy.special.ellipe(a**2/r**2))/(numpy.pi*E_star)
+
+
+def textbook_worn_displacement_outside(R, a, b, r):
+    """Surface displacement u_z(r) [m] outside the contact (r > a) of the worn paraboloid, in the derived (textbook) form; use worn_displacement_outside: S sqrt(1 - S^2) - asin S, S^2 = (a^2 - b^2)/(r^2 - b^2), cancels for r >> a; it is written -(2 S^3/3) 2F1(1/2, 3/2; 5/2; S^2).
+
+    Chapter: Problem 8, (5.60). Derived from: (5.60) with x^2 = b^2 + (r^2 - b^2)
+    sin^2(phi).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_against_3d_elasticity``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (2*a*numpy.sqrt(a**2 - b**2)*numpy.arcsin(a/r) - (b - r)*(b + r)*(numpy.sqrt((-a**2 + b**2)/(b**2 - r**2))*numpy.sqrt((-a**2 + r**2)/(-b**2 + r**2)) - numpy.arcsin(numpy.sqrt((-a**2 + b**2)/(b**2 - r**2)))))/(numpy.pi*R)
+
+
+def textbook_worn_force(E_star, R, b, d):
+    """Normal force F [N] of the worn paraboloid at depth d, in the derived (textbook) form; use worn_force: sqrt(-1 + sqrt(1 + s^2)), s = 2 R d/b^2, cancels for s << 1; it is written s/sqrt(sqrt(1 + s^2) + 1).
+
+    Chapter: Problem 8. Derived from: (5.57) at the contact radius of (5.55).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    return (1/3)*E_star*numpy.sqrt(-2*b**2 + 2*numpy.sqrt(4*R**2*d**2 + b**4))*(2*b**2 + numpy.sqrt(4*R**2*d**2 + b**4))/R

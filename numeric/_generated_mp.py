@@ -120,6 +120,21 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'stress_axis_max_shear',
+    'stress_axis_max_shear_slope',
+    'stress_axis_sigma_xx',
+    'stress_axis_sigma_xx_deep',
+    'stress_axis_sigma_zz',
+    'stress_hertz_sigma_rr',
+    'stress_hertz_sigma_rr_far',
+    'stress_hertz_sigma_tt',
+    'stress_hertz_sigma_tt_far',
+    'stress_hertz_sigma_zz',
+    'stress_hertz_tau_rz',
+    'stress_spheroidal_cos_beta_inside',
+    'stress_spheroidal_u',
+    'stress_spheroidal_u_inside',
+    'stress_von_mises',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -2563,6 +2578,354 @@ def punch_stiffness(E_star, a):
     return 2*E_star*a
 
 
+def stress_axis_max_shear(a, nu, p0, z):
+    """Maximum shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis under the Hertz pressure.
+
+    Chapter: Fig. 5.8. Derived from: (5.48), (5.49).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
+
+
+def stress_axis_max_shear_slope(a, nu, p0, z):
+    """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: the derivative of tau_1.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2)**2) + (mpmath.mpf(1)/mpmath.mpf(4))*p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*mpmath.atan(a/z) + 2*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
+
+
+def stress_axis_sigma_xx(a, nu, p0, z):
+    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure, the form of (5.49) (for z < a).
+
+    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
+
+
+def stress_axis_sigma_xx_deep(a, nu, p0, z):
+    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure (for z >= a).
+
+    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: (5.49) subtracts terms of size 1 to leave one of size (a/z)^2
+    (of size (a/z)^4 at nu = 1/2); 1 - atan(t)/t - t^2/(3(1 + t^2)) is written as (2/15) t^4
+    2F1(2, 5/2; 7/2; -t^2), t = a/z, used for z >= a.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return p0*(-a**4*((mpmath.mpf(2)/mpmath.mpf(15))*nu + mpmath.mpf(2)/mpmath.mpf(15))*mpmath.hyper((2, mpmath.mpf(5)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -a**2/z**2)/z**4 + a**2*(1 - 2*nu)/(z**2*(6*a**2/z**2 + 6)))
+
+
+def stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis under the Hertz pressure.
+
+    Chapter: (5.48). Derived from: (5.43) superposed over (5.15) along the axis, (5.47).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: one division, no cancellation.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a**2*p0/(a**2 + z**2)
+
+
+def stress_hertz_sigma_rr(nu, p0, xi, beta):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*(-xi**2*mpmath.sin(beta)**2*mpmath.cos(beta)/((xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*(-mpmath.atan(xi) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+
+
+def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*(-xi**2*mpmath.sin(beta)**2*mpmath.cos(beta)/((xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - mpmath.mpf(2)/mpmath.mpf(15)*(nu + 1)*mpmath.cos(beta)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)))
+
+
+def stress_hertz_sigma_tt(nu, p0, xi, beta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*((1 - 2*nu)*(mpmath.cos(beta)**2 + mpmath.cos(beta) - 1)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*(-mpmath.atan(xi) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+
+
+def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*((1 - 2*nu)*(mpmath.cos(beta)**2 + mpmath.cos(beta) - 1)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - mpmath.mpf(2)/mpmath.mpf(15)*(nu + 1)*mpmath.cos(beta)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)))
+
+
+def stress_hertz_sigma_zz(p0, xi, beta):
+    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return -p0*mpmath.cos(beta)**3/(xi**2 + mpmath.cos(beta)**2)
+
+
+def stress_hertz_tau_rz(p0, xi, beta):
+    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return -p0*xi*mpmath.sin(beta)*mpmath.cos(beta)**2/(mpmath.sqrt(xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2))
+
+
+def stress_spheroidal_cos_beta_inside(a, r, z):
+    """Cos(beta) = z/u^(1/2) [1] for r^2 + z^2 < a^2 (finite at z = 0).
+
+    Chapter: Johnson (1985), (3.44). Derived from: z/u^(1/2) with u = 2 a^2 z^2/(D - q)
+    (stress_spheroidal_u_inside): z cancels.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(-a + r)*(a + r) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))/a
+
+
+def stress_spheroidal_u(a, r, z):
+    """Johnson's u [m^2], the root of r^2/(a^2 + u) + z^2/u = 1 (for r^2 + z^2 >= a^2).
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Printed in a stable form: the expanded discriminant cancels near the contact edge; q =
+    (r - a)(r + a) + z^2 keeps it exact.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(-a + r)*(a + r) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2)
+
+
+def stress_spheroidal_u_inside(a, r, z):
+    """Johnson's u [m^2] for r^2 + z^2 < a^2.
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Printed in a stable form: (q + D)/2 cancels for q = r^2 + z^2 - a^2 < 0; written as 2
+    a^2 z^2/(D - q).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return 2*a**2*z**2/(-z**2 - (-a + r)*(a + r) + mpmath.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))
+
+
+def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """Von Mises equivalent stress [Pa] of the stress tensor.
+
+    Chapter: (5.50). Derived from: sqrt(3 J2), J2 the second invariant of the stress
+    deviator.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_von_mises_invariant``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_yy : mpmath.mpf
+        normal stress component sigma_yy [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xy : mpmath.mpf
+        shear stress component tau_xy [Pa]
+    tau_yz : mpmath.mpf
+        shear stress component tau_yz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -3160,6 +3523,134 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
+
+
+def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):
+    """Radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure (for z >= a), in the derived (textbook) form; use stress_axis_sigma_xx_deep: (5.49) subtracts terms of size 1 to leave one of size (a/z)^2 (of size (a/z)^4 at nu = 1/2); 1 - atan(t)/t - t^2/(3(1 + t^2)) is written as (2/15) t^4 2F1(2, 5/2; 7/2; -t^2), t = a/z, used for z >= a.
+
+    Chapter: (5.49). Derived from: (5.41) superposed over (5.15) along the axis.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
+
+
+def textbook_stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis under the Hertz pressure, in the derived (textbook) form; use stress_axis_sigma_zz: one division, no cancellation.
+
+    Chapter: (5.48). Derived from: (5.43) superposed over (5.15) along the axis, (5.47).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a**2*p0/(a**2 + z**2)
+
+
+def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*(-xi**2*mpmath.sin(beta)**2*mpmath.cos(beta)/((xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*mpmath.atan(1/xi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+
+
+def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : mpmath.mpf
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    beta : mpmath.mpf
+        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    """
+    return p0*((1 - 2*nu)*(mpmath.cos(beta)**2 + mpmath.cos(beta) - 1)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*mpmath.atan(1/xi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+
+
+def textbook_stress_spheroidal_u(a, r, z):
+    """Johnson's u [m^2], the root of r^2/(a^2 + u) + z^2/u = 1 (for r^2 + z^2 >= a^2), in the derived (textbook) form; use stress_spheroidal_u: the expanded discriminant cancels near the contact edge; q = (r - a)(r + a) + z^2 keeps it exact.
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*a**2 + (mpmath.mpf(1)/mpmath.mpf(2))*r**2 + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
+
+
+def textbook_stress_spheroidal_u_inside(a, r, z):
+    """Johnson's u [m^2] for r^2 + z^2 < a^2, in the derived (textbook) form; use stress_spheroidal_u_inside: (q + D)/2 cancels for q = r^2 + z^2 - a^2 < 0; written as 2 a^2 z^2/(D - q).
+
+    Chapter: Johnson (1985), (3.44). Derived from: the oblate spheroid through (r, z).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_spheroidal_coordinates``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*a**2 + (mpmath.mpf(1)/mpmath.mpf(2))*r**2 + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
 
 
 def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):
