@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import ellipse
+from hertzmdr.numeric import bodies, ellipse
 from hertzmdr.numeric.scene.kinds import Contact, State, Value
 
 #: the tolerance to which tests/test_ellipse.py verifies the exact solution against mpmath
@@ -28,7 +28,7 @@ class EllipticContact(Contact):
 
     def info(self):
         return {**super().info(), "principal_radii": [self.R1, self.R2],
-                "gaussian_radius": float(ellipse.gaussian_radius(self.R1, self.R2)),
+                "gaussian_radius": float(bodies.gaussian_radius(self.R1, self.R2)),
                 "elliptic_model": self.model}
 
     def _solve(self, **load):
@@ -65,7 +65,7 @@ class EllipticContact(Contact):
                      1e-14)
 
     def effect_effective_radius(self):
-        return Value(float(ellipse.gaussian_radius(self.R1, self.R2)),
+        return Value(float(bodies.gaussian_radius(self.R1, self.R2)),
                      "Gaussian radius sqrt(R1 R2) (5.30)", 1e-14)
 
     def effect_semi_axes(self, st):
