@@ -191,3 +191,17 @@ def test_examples_give_the_chapters_numbers(name):
 def test_every_example_runs(path):
     doc = scene.load(path).run()
     assert doc["effects"]
+
+
+def test_stress_node_runs_once_and_only_when_asked():
+    spec = {"effects": ["max_shear", "max_von_mises", "force"], "load": {"force": "100 N"},
+            "body": [{"shape": "sphere", "radius": "10 mm", "rigid": True},
+                     {"shape": "flat", "E": "210 GPa", "nu": 0.3}]}
+    record, _, doc = scene.load(spec).run_full()
+    assert record.evaluated.count("stress") == 1
+    a = (3 * 100 * 0.01 / (4 * 210e9 / (1 - 0.09))) ** (1 / 3)  # (5.24)
+    # Johnson's classical maximum for nu = 0.3: tau_1 = 0.31 p0 at z = 0.48 a (two digits)
+    assert abs(doc["effects"]["max_shear"]["value"]["depth"] / a - 0.48) < 0.005
+    spec["effects"] = ["force"]
+    record, _, _ = scene.load(spec).run_full()
+    assert "stress" not in record.evaluated

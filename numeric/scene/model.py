@@ -51,6 +51,13 @@ def _principal(body) -> tuple[float, float, float]:
 
 
 def build(spec: SceneSpec):
+    contact = _build(spec)
+    elastic = next(b for b in spec.bodies if not b.rigid)
+    contact.nu_body = (elastic.name, elastic.nu)  # whose stresses the stress effects report
+    return contact
+
+
+def _build(spec: SceneSpec):
     shapes = {b.shape for b in spec.bodies}
     E_star = effective_modulus(spec)
     if spec.load.kind == "impact":

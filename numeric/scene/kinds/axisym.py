@@ -11,11 +11,12 @@ import numpy as np
 
 from hertzmdr.numeric import _generated as g
 from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import StressEffects, SuperposedStresses
 
 FIELD_POINTS = 201
 
 
-class Axisymmetric(Contact):
+class Axisymmetric(StressEffects, Contact):
     """Base: subclasses define a(d), F(d), d(F), p(r, d), u(r, d), g(x) and their methods."""
 
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
@@ -39,6 +40,12 @@ class Axisymmetric(Contact):
 
     def effect_contact_radius(self, st):
         return Value(np.asarray(self.radius(st.depth), float), "(5.55) d = g(a)", self.rel)
+
+    def stress_solver(self, st):
+        d = self.last(st)
+        a = float(np.atleast_1d(self.radius(d))[0])
+        return SuperposedStresses(lambda r, d=d: np.asarray(self.p(r, d), float), a,
+                                  self.nu_body[1])
 
     def effect_mean_pressure(self, st):
         a = np.asarray(self.radius(st.depth), float)

@@ -7,11 +7,12 @@ import numpy as np
 
 from hertzmdr.numeric import hertz
 from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import HertzStresses, StressEffects
 
 FIELD_POINTS = 201
 
 
-class HertzContact(Contact):
+class HertzContact(StressEffects, Contact):
     kind = "hertz"
     label = "circular Hertz contact (effective sphere on an elastic half-space)"
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
@@ -44,6 +45,11 @@ class HertzContact(Contact):
             return State(hertz.depth_from_force(v, self.R, self.E_star), v, CLOSED_FORM_RTOL,
                          "(5.23) inverted", {})
         raise ValueError(load.kind)
+
+    def stress_solver(self, st):
+        d = self.last(st)
+        return HertzStresses(float(hertz.contact_radius(d, self.R)),
+                             float(hertz.max_pressure(d, self.R, self.E_star)), self.nu_body[1])
 
     def effect_effective_radius(self):
         return Value(self.R, "(5.27)", CLOSED_FORM_RTOL)

@@ -1,0 +1,139 @@
+"""Stress effects for axisymmetric contacts (section 5.5, Figs. 5.8 and 5.9).
+
+The stresses are those in the first elastic body of the scene (its Poisson's ratio). Under the
+Hertz pressure they come from the closed forms of numeric/stress.py; under any other
+axisymmetric pressure (cone, flat punch, power law, worn parabola, sampled tips) from the
+superposition of the point-force field, with its error estimate, on coarser grids (a point
+costs about 0.1 s).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Value
+
+AXIS_POINTS_CLOSED, AXIS_POINTS_SUPERPOSED = 201, 31
+GRID_CLOSED, GRID_SUPERPOSED = 101, 13
+
+
+class HertzStresses:
+    """Closed forms: the Hertz pressure of contact radius a and maximum pressure p0."""
+
+    def __init__(self, a, p0, nu):
+        self.a, self.p0, self.nu = a, p0, nu
+        self.method = "closed form (Huber/Hamilton field, (5.48), (5.49))"
+
+    def axis(self):
+        from hertzmdr.numeric import stress
+
+        z = np.linspace(0.0, 3.0 * self.a, AXIS_POINTS_CLOSED)
+        szz, srr = stress.axis_stresses(z, self.a, self.p0, self.nu)
+        return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": 0.5 * np.abs(szz - srr)},
+                     self.method, 1e-12)
+
+    def max_shear(self):
+        from hertzmdr.numeric import stress
+
+        value, r, z = stress.hertz_maximum(self.nu, "max_shear")
+        return Value({"value": value * self.p0, "depth": z * self.a},
+                     "maximum of (sigma_1 - sigma_3)/2 in the body (grid, then Nelder-Mead)",
+                     1e-10)
+
+    def field(self):
+        from hertzmdr.numeric import stress
+
+        x = np.linspace(-2.0 * self.a, 2.0 * self.a, GRID_CLOSED)
+        z = np.linspace(0.0, 2.0 * self.a, GRID_CLOSED)
+        X, Z = np.meshgrid(x, z)
+        sv = stress.von_mises(stress.hertz_stress(X, 0.0 * X, Z, self.a, self.p0, self.nu))
+        return Value({"x": x, "z": z, "sigma_v": sv}, self.method + ", (5.50)", 1e-12)
+
+    def max_von_mises(self):
+        from hertzmdr.numeric import stress
+
+        value, r, z = stress.hertz_maximum(self.nu, "von_mises")
+        return Value({"value": value * self.p0, "x": r * self.a, "z": z * self.a},
+                     "maximum of (5.50) in the body (grid, then Nelder-Mead)", 1e-10)
+
+
+class SuperposedStresses:
+    """Any axisymmetric pressure p(r) on r < a by superposition of (5.41)-(5.46)."""
+
+    def __init__(self, pressure, a, nu):
+        self.p, self.a, self.nu = pressure, a, nu
+        self.method = "superposition of the point-force field (5.47), tanh-sinh"
+
+    def _stress(self, x, z):
+        from hertzmdr.numeric import stress
+
+        return stress.superposed_stress(x, 0.0 * x, z, self.p, self.a, self.nu)
+
+    def axis(self):
+        z = np.linspace(0.0, 3.0 * self.a, AXIS_POINTS_SUPERPOSED)[1:]  # z > 0 for this route
+        s, e = self._stress(0.0 * z, z)
+        szz, srr = s[..., 2, 2], s[..., 0, 0]
+        scale = float(np.max(np.abs(szz)))
+        err = float(np.max(e[..., 2, 2] + e[..., 0, 0])) / scale
+        return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": 0.5 * np.abs(szz - srr)},
+                     self.method, err)
+
+    def _grid(self):
+        from hertzmdr.numeric import stress
+
+        x = np.linspace(0.0, 2.0 * self.a, GRID_SUPERPOSED)
+        z = np.linspace(0.0, 2.0 * self.a, GRID_SUPERPOSED)[1:]
+        X, Z = np.meshgrid(x, z)
+        s, e = self._stress(X, Z)
+        sv = stress.von_mises(s)
+        tau = stress.max_shear(s)
+        err = float(np.max(np.abs(e))) / float(np.max(np.abs(s)))
+        return x, z, sv, tau, err
+
+    def max_shear(self):
+        x, z, _, tau, err = self._grid()
+        k = np.unravel_index(int(np.argmax(tau)), tau.shape)
+        step = float(z[1] - z[0])
+        return Value({"value": float(tau[k]), "depth": float(z[k[0]])},
+                     f"largest on a {GRID_SUPERPOSED}-point grid (spacing {step:.3g} m), "
+                     + self.method, max(err, 0.0))
+
+    def field(self):
+        x, z, sv, _, err = self._grid()
+        xs = np.concatenate([-x[:0:-1], x])  # mirror: the field is symmetric in x
+        full = np.concatenate([sv[:, :0:-1], sv], axis=1)
+        return Value({"x": xs, "z": z, "sigma_v": full}, self.method + ", (5.50)", err)
+
+    def max_von_mises(self):
+        x, z, sv, _, err = self._grid()
+        k = np.unravel_index(int(np.argmax(sv)), sv.shape)
+        return Value({"value": float(sv[k]), "x": float(x[k[1]]), "z": float(z[k[0]])},
+                     f"largest on a {GRID_SUPERPOSED}x{GRID_SUPERPOSED - 1} grid, "
+                     + self.method, err)
+
+
+class StressEffects:
+    """Mixin for contact kinds: the four stress effects, through ``node_stress``."""
+
+    nu_body = None  # (name, nu) of the body whose stresses are reported; set by the model
+
+    def stress_solver(self, st):
+        raise NotImplementedError
+
+    def node_stress(self, run):
+        return self.stress_solver(run._nodes.get("state") or run.node("state"))
+
+    def effect_axis_stresses(self, solver):
+        return solver.axis()
+
+    def effect_max_shear(self, solver):
+        return solver.max_shear()
+
+    def effect_von_mises_field(self, solver):
+        return solver.field()
+
+    def effect_max_von_mises(self, solver):
+        return solver.max_von_mises()
+
+
+__all__ = ["CLOSED_FORM_RTOL", "HertzStresses", "StressEffects", "SuperposedStresses"]
