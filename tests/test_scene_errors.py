@@ -92,6 +92,17 @@ def test_bad_scene(tmp_path, capsys, what, case, fragments):
     assert "Traceback" not in err
 
 
+def test_effect_that_does_not_apply(tmp_path, capsys):
+    """The issue's example: a contact_radius for a line contact says why and what applies."""
+    path = tmp_path / "line.toml"
+    path.write_text('effects = ["contact_radius"]\n[[body]]\nshape = "cylinder"\n'
+                    'radius = 0.01\nlength = 0.01\nE = 2e11\nnu = 0.3\n[[body]]\n'
+                    'shape = "flat"\nrigid = true\n[load]\nforce = 100\n')
+    assert main(["run", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "'contact_radius' does not apply" in err and "use 'half_width'" in err
+
+
 def test_missing_file(tmp_path, capsys):
     assert main(["run", str(tmp_path / "nope.toml")]) == 2
     assert "no such file" in capsys.readouterr().err

@@ -145,6 +145,10 @@ CHAPTER = {
                            / math.tan(math.radians(30)), 1e-13 * 2e-6)},
     "problem8_worn_parabola.toml": {  # F(a) of Problem 8 at the contact radius found
         "force": (None, 1e-12)},
+    # (5.37) with the pi the print lacks: p0 = (E* F/(pi L R))^(1/2), R from (5.27)
+    "line_contact_roller.toml": {"max_pressure": (
+        (210e9 / (2 * (1 - 0.09)) * 5e3 / (math.pi * 0.01 * (5e-3 * 25e-3 / 30e-3))) ** 0.5,
+        1e-14 * 2.1e9)},
     "problem4_impact_pressure.toml": {"max_impact_pressure": (3.2e9, 0.05e9),
                                       "effective_modulus": (1e11, 1e-4)},
 }

@@ -92,7 +92,7 @@ def _quadratic(spec: SceneSpec, E_star: float):
         raise SceneError(spec.source, "body", f"{exc}; a concave radius must be larger than "
                          "the convex one it holds") from None
     if math.isinf(R2) or math.isinf(R1):
-        raise SceneError(spec.source, "body", "line contacts are not supported yet")
+        return _line(spec, E_star, min(R1, R2))
     if abs(R1 - R2) <= CIRCULAR_RTOL * max(R1, R2):
         return HertzContact(E_star, spec.rtol, R=math.sqrt(R1 * R2), principal_radii=[R1, R2])
     from hertzmdr.numeric.scene.kinds.elliptic import EllipticContact
@@ -141,3 +141,18 @@ def _axisymmetric(spec: SceneSpec, E_star: float):
         raise SceneError(spec.source, f"body ({b.name})", f"profile samples: {exc}") from None
     return axisym.NumericalMDR(E_star, spec.rtol, prof,
                                f"sampled profile ({len(p['r'])} samples), numerical MDR")
+
+
+def _line(spec: SceneSpec, E_star: float, R: float):
+    """Parallel cylinders (or a cylinder on a flat): the line contact; needs a length."""
+    from hertzmdr.numeric.scene.kinds.line import LineContact
+
+    lengths = [b.params["length"] for b in spec.bodies if b.shape == "cylinder"
+               and "length" in b.params]
+    if not lengths:
+        raise SceneError(spec.source, "body", "parallel cylinders make a line contact, whose "
+                         "force depends on the contact length: give the cylinder(s) a length")
+    L = min(lengths)
+    if not L > 0:
+        raise SceneError(spec.source, "body", f"the cylinder length must be > 0, got {L}")
+    return LineContact(E_star, spec.rtol, R, L)

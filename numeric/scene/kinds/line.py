@@ -1,0 +1,72 @@
+"""Line contact of two parallel cylinders, (5.34)-(5.37): the 2-D Hertz problem. The depth of
+a line contact is defined by the chapter's convention a = sqrt(R d) (5.35); force-controlled
+scenes avoid it."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import line
+from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
+
+FIELD_POINTS = 201
+
+
+class LineContact(Contact):
+    kind = "line"
+    label = "line contact of parallel cylinders (5.34)-(5.37)"
+    instead = {"contact_radius": "half_width", "semi_axes": "half_width",
+               "surface_displacement": "pressure_profile"}
+    why_not = {"contact_radius": "a line contact is a strip, not a circle",
+               "semi_axes": "a line contact is a strip of half-width a",
+               "surface_displacement": "the displacement of a line load diverges "
+                                       "logarithmically: it depends on the size of the bodies"}
+
+    def __init__(self, E_star, rtol, R, L):
+        super().__init__(E_star, rtol)
+        self.R, self.L = R, L
+
+    def info(self):
+        return {**super().info(), "effective_radius": self.R, "length": self.L}
+
+    def state(self, load) -> State:
+        v = np.asarray(load.values, dtype=float)
+        if load.kind == "depth":
+            return State(v, line.force(v, self.L, self.E_star), CLOSED_FORM_RTOL,
+                         "(5.34) with d defined by (5.35)", {})
+        return State(line.depth_from_force(v, self.L, self.E_star), v, CLOSED_FORM_RTOL,
+                     "(5.34) inverted", {})
+
+    def effect_effective_radius(self):
+        return Value(self.R, "(5.27), (5.35)", CLOSED_FORM_RTOL)
+
+    def effect_half_width(self, st):
+        return Value(line.half_width_from_force(st.force, self.L, self.R, self.E_star),
+                     "2-D Hertz, (5.35)", CLOSED_FORM_RTOL)
+
+    def effect_max_pressure(self, st):
+        return Value(line.max_pressure_from_force(st.force, self.L, self.R, self.E_star),
+                     "(5.37) p0 = (E* F/(pi L R))^(1/2) (the print lacks the pi)",
+                     CLOSED_FORM_RTOL)
+
+    def effect_mean_pressure(self, st):
+        a = line.half_width_from_force(st.force, self.L, self.R, self.E_star)
+        return Value(st.force / (2 * a * self.L), "F/(2 a L)", CLOSED_FORM_RTOL)
+
+    def effect_stiffness(self, st):
+        return Value(np.full(np.shape(st.force), np.pi / 4 * self.E_star * self.L),
+                     "dF/dd of (5.34): (pi/4) E* L, under the convention (5.35)",
+                     CLOSED_FORM_RTOL)
+
+    def effect_pressure_profile(self, st):
+        d = self.last(st)
+        a = float(line.half_width(d, self.R))
+        x = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+        return Value({"r": x, "p": line.pressure(x, d, self.R, self.E_star)},
+                     "(5.36) across the strip (r is the distance x from its centre line)",
+                     CLOSED_FORM_RTOL)
+
+    def effect_force_depth_curve(self, st):
+        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
+        return Value({"depth": d, "force": line.force(d, self.L, self.E_star)},
+                     "(5.34), linear in d", CLOSED_FORM_RTOL)
