@@ -101,5 +101,176 @@ def hertz_far_displacement() -> Quantity:
                     "the textbook form, in float64 and in mpmath.", truth, ways)
 
 
+def kappa_large_n() -> Quantity:
+    from hertzmdr.numeric import _generated as g
+    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import powerlaw
+
+    n = 1e3
+
+    def truth():
+        import mpmath as mp
+
+        return gm.powerlaw_kappa(mp.mpf(n))
+
+    def ways():
+        import warnings
+
+        def ratio():
+            with warnings.catch_warnings(), __import__("numpy").errstate(all="ignore"):
+                warnings.simplefilter("ignore")
+                return g.powerlaw_kappa(n)
+        out = [Way("Gamma ratio (the derived form)", "float64", ratio),
+               Way("Stirling series (large-n expansion)", "float64",
+                   lambda: g.powerlaw_kappa_asymptotic(n)),
+               Way("numeric.powerlaw.kappa (picks the series above n = 40)", "float64",
+                   lambda: powerlaw.kappa(n))]
+        for dps in (15, 30, 50):
+            out.append(Way("Gamma ratio in mpmath", f"{dps} digits",
+                           _mp_digits(gm.powerlaw_kappa, (n,), dps)))
+        return out
+
+    return Quantity("kappa_n at n = 1000",
+                    "The MDR factor of f = c r^n (Problem 7 d). Its Gamma ratio overflows "
+                    "float64 beyond n ~ 340 (the ratio becomes inf/inf); the Stirling series "
+                    "printed beside it does not.", truth, ways)
+
+
+def worn_small_depth() -> Quantity:
+    from hertzmdr.numeric import _generated as g
+    from hertzmdr.numeric import _generated_mp as gm
+
+    E, R, b = 1e9, 0.1, 1e-3
+    d = 1e-6 * b**2 / (2 * R)  # 2 R d/b^2 = 1e-6
+
+    def truth():
+        import mpmath as mp
+
+        return gm.worn_force(*(mp.mpf(v) for v in (E, R, b, d)))
+
+    def ways():
+        out = [Way("stable form (hertzmdr)", "float64", lambda: g.worn_force(E, R, b, d)),
+               Way("the chapter's F(d) (Problem 8)", "float64",
+                   lambda: g.textbook_worn_force(E, R, b, d))]
+        for dps in (15, 30, 50):
+            out.append(Way("the chapter's F(d) in mpmath", f"{dps} digits",
+                           _mp_digits(gm.textbook_worn_force, (E, R, b, d), dps)))
+            out.append(Way("stable form in mpmath", f"{dps} digits",
+                           _mp_digits(gm.worn_force, (E, R, b, d), dps)))
+        return out
+
+    return Quantity("worn parabola F(d) at 2Rd/b^2 = 1e-6",
+                    "The force of the flattened parabola of Problem 8 just after the flat has "
+                    "touched: the chapter's F(d) subtracts 1 from sqrt(1 + s^2) and keeps "
+                    "nothing of s^2 = 1e-12 in float64.", truth, ways)
+
+
+def numerical_mdr_force() -> Quantity:
+    import numpy as np
+
+    from hertzmdr.numeric import _generated_mp as gm
+
+    E, c, n, d = 1e9, 1e2, 2.5, 1e-6  # n = 2.5: no spline represents r^2.5 exactly
+
+    def truth():
+        import mpmath as mp
+
+        return gm.powerlaw_force(mp.mpf(E), mp.mpf(c), mp.mpf(d),
+                                 gm.powerlaw_kappa(mp.mpf(n)), mp.mpf(n))
+
+    def ways():
+        from hertzmdr.numeric import mdr, powerlaw
+
+        a = float(powerlaw.contact_radius(d, c, n))
+        out = [Way("closed form (Problem 7 d)", "float64", lambda: powerlaw.force(d, c, n, E))]
+        for N in (16, 32, 64, 128, 256, 512):
+            r = np.linspace(0, 2 * a, N + 1)
+            prof = mdr.Profile.from_samples(r, c * r**n)  # (the solve's own rtol: none)
+            out.append(Way("numerical MDR of samples", f"{N} samples",
+                           lambda prof=prof: prof.solve(depth=d, E_star=E, rtol=1.0).force))
+        return out
+
+    return Quantity("power-law force by the numerical MDR",
+                    "F(d) of f = c r^2.5 sampled at N + 1 points on [0, 2a] (an AFM tip given as "
+                    "samples), by the numerical MDR of numeric/mdr.py, against the closed form.",
+                    truth, ways)
+
+
+def impact_time() -> Quantity:
+    import math
+
+    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import impact, motion
+
+    E, R, v0 = E_STEEL, 0.01, 1.0
+    m = 4 / 3 * math.pi * R**3 * 7800.0  # the steel ball of Problem 3, as a number here
+
+    def truth():
+        import mpmath as mp
+
+        return gm.impact_contact_time(mp.mpf(E), mp.mpf(R), mp.mpf(m), mp.mpf(v0))
+
+    def ways():
+        out = [Way("closed form (Problem 3)", "float64",
+                   lambda: impact.contact_time(v0, R, E, m=m))]
+        for rtol in (1e-4, 1e-7, 1e-10, 1e-13):
+            out.append(Way("equation of motion (SciPy DOP853)", f"rtol={rtol:g}",
+                           lambda rtol=rtol: motion.integrate(v0, R, E, m, rtol=rtol)
+                           .contact_time))
+        for dps in (15, 30):
+            def quad(dps=dps):
+                import mpmath as mp
+
+                with mp.workdps(dps):
+                    Em, Rm, mm, vm = (mp.mpf(v) for v in (E, R, m, v0))
+                    x0 = gm.impact_max_depth(Em, Rm, mm, vm)
+                    # tau = (2 x0/v0) * integral_0^1 dxi / sqrt(1 - xi^(5/2)) (Problem 3); with
+                    # t = xi^(5/2) it is (2/5) integral_0^1 t^(-3/5) (1 - t)^(-1/2) dt, split at
+                    # 1/2: t = u^5 on the left, 1 - t = v^2 on the right; both are then smooth
+                    h = mp.mpf(1) / 2
+                    left = mp.quad(lambda u: 2 * u / mp.sqrt(1 - u**5), [0, h ** (mp.mpf(1) / 5)])
+                    right = mp.quad(lambda v: 4 * (1 - v * v) ** (-mp.mpf(3) / 5) / 5,
+                                    [0, mp.sqrt(h)])
+                    return 2 * x0 / vm * (left + right)
+            out.append(Way("mpmath quad of the time integral", f"{dps} digits", quad))
+        return out
+
+    return Quantity("impact contact time (Problem 3)",
+                    "A steel ball (R = 1 cm) hitting a steel wall at 1 m/s: the closed form with "
+                    "the exact constant, the integrated equation of motion, and the defining "
+                    "time integral by mpmath quadrature.", truth, ways)
+
+
+def stress_superposition() -> Quantity:
+    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import stress
+
+    a, p0, nu, z = 1e-3, 1e9, 0.3, 0.02e-3  # near the surface, where the kernel is sharp
+
+    def truth():
+        import mpmath as mp
+
+        return gm.stress_axis_sigma_zz(mp.mpf(a), mp.mpf(p0), mp.mpf(z))
+
+    def ways():
+        import numpy as np
+
+        hertz_p = lambda r: p0 * np.sqrt(np.clip(1 - (np.asarray(r) / a) ** 2, 0, None))  # noqa
+        out = [Way("closed form (5.48)", "float64",
+                   lambda: stress.axis_stresses(z, a, p0, nu)[0])]
+        for n_psi, level in ((8, 2), (16, 3), (32, 4)):
+            out.append(Way("superposition of (5.43) over the pressure", f"{n_psi} angles, "
+                           f"tanh-sinh level {level}",
+                           lambda n_psi=n_psi, level=level: stress.superposed_stress(
+                               0.0, 0.0, z, hertz_p, a, nu, n_psi=n_psi, level=level)[0][2, 2]))
+        return out
+
+    return Quantity("Hertz sigma_zz on the axis at z = a/50",
+                    "sigma_zz (5.48) below a Hertz contact: the closed form against the "
+                    "superposition of the point-force field (5.47) at several resolutions (the "
+                    "route every non-Hertz pressure takes).", truth, ways)
+
+
 def all_quantities() -> list[Quantity]:
-    return [hertz_force(), hertz_far_displacement()]
+    return [hertz_force(), hertz_far_displacement(), kappa_large_n(), worn_small_depth(),
+            numerical_mdr_force(), impact_time(), stress_superposition()]

@@ -82,7 +82,8 @@ def measure(q: Quantity, progress=None) -> Measured:
     for way in q.ways():
         value = way.run()
         with mp.workdps(TRUTH_DPS):
-            err = float(abs((mp.mpf(value) - truth) / truth))
+            v = mp.mpf(value)
+            err = float(abs((v - truth) / truth)) if mp.isfinite(v) else float("inf")
         med, spread = time_call(way.run)
         out.rows.append(Row(way.method, way.setting, err, med, spread))
         if progress:
@@ -111,6 +112,8 @@ def machine() -> str:
 
 
 def _fmt_err(e: float) -> str:
+    if e != e or e == float("inf"):
+        return "fails (inf or nan)"
     return f"< {FLOOR:.0e}" if e < FLOOR else f"{e:.1e}"
 
 
@@ -124,6 +127,8 @@ def _fmt_time(s: float) -> str:
 def digits(e: float) -> float:
     import math
 
+    if not math.isfinite(e) or e >= 1:
+        return 0.0
     return 50.0 if e < FLOOR else -math.log10(max(e, 1e-300))
 
 
@@ -174,8 +179,10 @@ def plot(results: list[Measured], path: Path) -> None:
     for ax, m in zip(axes.flat, results, strict=False):
         methods = sorted({r.method for r in m.rows})
         for meth in methods:
-            pts = [(r.seconds, max(r.rel_error, FLOOR)) for r in m.rows if r.method == meth]
-            ax.loglog(*zip(*pts, strict=True), "o", label=meth, ms=5)
+            pts = [(r.seconds, max(r.rel_error, FLOOR)) for r in m.rows
+                   if r.method == meth and r.rel_error < float("inf")]
+            if pts:
+                ax.loglog(*zip(*pts, strict=True), "o", label=meth, ms=5)
         front, best = [], float("inf")
         for r in sorted(m.rows, key=lambda r: r.seconds):
             if r.rel_error < best:
