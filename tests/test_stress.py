@@ -322,3 +322,24 @@ def test_superposition_route():
         with mp.workdps(25):
             ref = _superposition_axis_reference(lambda th: 1 / mp.cos(th), mp.mpf(zz))
         assert_close(s[2, 2], ref, max(1e-12, 10 * float(e[2, 2] / abs(ref))), f"punch z={zz}")
+
+
+def test_stress_modules_import_no_sympy_scipy_matplotlib():
+    import subprocess
+    import sys
+
+    code = ("import sys, hertzmdr.numeric.stress, hertzmdr.numeric.plots;"
+            "print(','.join(m for m in ('sympy', 'scipy', 'matplotlib') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
+
+
+def test_bad_input_is_named():
+    with pytest.raises(ValueError, match="nu = 0.6"):
+        stress.hertz_stress(0.0, 0.0, 1.0, 1.0, 1.0, 0.6)
+    with pytest.raises(ValueError, match="z = -1.0"):
+        stress.hertz_stress(0.0, 0.0, -1.0, 1.0, 1.0, 0.3)
+    with pytest.raises(ValueError, match=r"z = 0.0 is out of range; valid: z > 0"):
+        stress.superposed_stress(0.0, 0.0, 0.0, lambda r: r, 1.0, 0.3)
+    with pytest.raises(ValueError, match="pressure"):
+        stress.superposed_stress(0.0, 0.0, 1.0, 3.0, 1.0, 0.3)
