@@ -40,7 +40,8 @@ TEST = "tests/test_stress.py"
 xi = symbol("xi", nonnegative=True)
 sxx, syy, szz, sxy, syz, sxz = (symbol(n, real=True) for n in (
     "sigma_xx", "sigma_yy", "sigma_zz", "tau_xy", "tau_yz", "tau_xz"))
-beta = symbol("beta", nonnegative=True)
+eta = symbol("eta", nonnegative=True)  # cos(beta), passed as such: accurate near beta = pi/2
+chi = symbol("chi", nonnegative=True)  # sin(beta)
 _z = sp.Symbol("z_pos", positive=True)  # z > 0 while integrating along the axis
 _R = sp.Symbol("R_pos", positive=True)
 _t = sp.Symbol("t_int", positive=True)
@@ -145,7 +146,6 @@ def hertz_field(far: bool | str = False) -> dict[str, sp.Expr]:
     xi >= 1; with ``far=True`` as written; else with atan(1/xi) = pi/2 - atan(xi), finite at
     xi = 0 (accurate for xi < 1).
     """
-    eta, chi = sp.cos(beta), sp.sin(beta)
     w = 1 / (1 + xi**2)
     if far == "hyper":
         k = (sp.Rational(2, 15) * w / xi**2
@@ -252,11 +252,13 @@ def relations() -> list[Relation]:
     for comp, what in (("rr", "radial stress sigma_rr"), ("tt", "hoop stress sigma_theta"),
                        ("zz", "normal stress sigma_zz"), ("rz", "shear stress tau_rz")):
         name = {"rr": "sigma_rr", "tt": "sigma_tt", "zz": "sigma_zz", "rz": "tau_rz"}[comp]
-        args = (nu, p0, xi, beta) if comp in ("rr", "tt") else (p0, xi, beta)
+        args = {"rr": (nu, p0, xi, eta, chi), "tt": (nu, p0, xi, eta), "zz": (p0, xi, eta),
+                "rz": (p0, xi, eta, chi)}[comp]
         rels.append(Relation(
             f"stress_hertz_{name}", "Fig. 5.9", field[comp], args,
             f"{what} [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) "
-            "of the contact disc" + (" (for xi < 1)" if comp in ("rr", "tt") else ""),
+            "of the contact disc, eta = cos(beta), chi = sin(beta)"
+            + (" (for xi < 1)" if comp in ("rr", "tt") else ""),
             lit, fld))
         if comp in ("rr", "tt"):
             rels.append(Relation(

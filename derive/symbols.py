@@ -51,8 +51,9 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
-    "beta": ("rad", "oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), "
-             "z = a xi cos(beta)"),
+    "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "
+            "sin(beta), z = a xi cos(beta)"),
+    "chi": ("1", "sin(beta) of the oblate spheroidal angle beta"),
     "sigma_xx": ("Pa", "normal stress component sigma_xx"),
     "sigma_yy": ("Pa", "normal stress component sigma_yy"),
     "sigma_zz": ("Pa", "normal stress component sigma_zz"),

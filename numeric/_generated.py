@@ -2882,8 +2882,8 @@ def stress_axis_sigma_zz(a, p0, z):
     return -a**2*p0/(a**2 + z**2)
 
 
-def stress_hertz_sigma_rr(nu, p0, xi, beta):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+def stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta) (for xi < 1).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -2899,13 +2899,15 @@ def stress_hertz_sigma_rr(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : float or ndarray
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -2925,16 +2927,18 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : float or ndarray
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
     import scipy.special
 
-    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - 2/15*(nu + 1)*numpy.cos(beta)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - 2/15*eta*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_tt(nu, p0, xi, beta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+def stress_hertz_sigma_tt(nu, p0, xi, eta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta) (for xi < 1).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -2950,13 +2954,13 @@ def stress_hertz_sigma_tt(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+    return p0*(-eta*(nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -2976,37 +2980,16 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
     import scipy.special
 
-    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - 2/15*(nu + 1)*numpy.cos(beta)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)))
+    return p0*(-2/15*eta*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_zz(p0, xi, beta):
-    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
-
-    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
-    in spheroidal variables.
-
-    Derivation: ``hertzmdr.derive.stress``. Verified by
-    ``tests/test_stress.py::test_hertz_field_by_superposition``.
-
-    Parameters
-    ----------
-    p0 : float or ndarray
-        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
-    xi : float or ndarray
-        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
-    """
-    return -p0*numpy.cos(beta)**3/(xi**2 + numpy.cos(beta)**2)
-
-
-def stress_hertz_tau_rz(p0, xi, beta):
-    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+def stress_hertz_sigma_zz(p0, xi, eta):
+    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -3020,10 +3003,33 @@ def stress_hertz_tau_rz(p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return -p0*xi*numpy.sin(beta)*numpy.cos(beta)**2/(numpy.sqrt(xi**2 + 1)*(xi**2 + numpy.cos(beta)**2))
+    return -eta**3*p0/(eta**2 + xi**2)
+
+
+def stress_hertz_tau_rz(p0, xi, eta, chi):
+    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta).
+
+    Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
+    in spheroidal variables.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_hertz_field_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    xi : float or ndarray
+        oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : float or ndarray
+        sin(beta) of the oblate spheroidal angle beta [1]
+    """
+    return -chi*eta**2*p0*xi/((eta**2 + xi**2)*numpy.sqrt(xi**2 + 1))
 
 
 def stress_spheroidal_cos_beta_inside(a, r, z):

@@ -23,12 +23,13 @@ __all__ = [
 
 
 def spheroidal(r, z, a):
-    """Oblate spheroidal coordinates (xi, beta) of the contact disc at (r, z).
+    """Oblate spheroidal coordinates (xi, cos(beta), sin(beta)) of the contact disc at (r, z).
 
     r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta); xi^2 = u/a^2 with Johnson's u, the
     positive root of r^2/(a^2 + u) + z^2/u = 1. Inside the sphere r^2 + z^2 < a^2 the
     cancellation-free forms are used; at the contact edge (r = a, z = 0) the limit xi = 0,
-    beta = pi/2 is returned.
+    beta = pi/2 is returned. cos(beta) and sin(beta) are returned rather than beta, which
+    would lose the relative accuracy of cos(beta) near the surface outside the contact.
 
     Parameters
     ----------
@@ -43,8 +44,8 @@ def spheroidal(r, z, a):
     -------
     xi : ndarray
         [1], xi >= 0.
-    beta : ndarray
-        [rad], 0 <= beta <= pi/2.
+    eta, chi : ndarray
+        cos(beta), sin(beta) [1], 0 <= beta <= pi/2.
     """
     r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
     r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
@@ -59,8 +60,11 @@ def spheroidal(r, z, a):
     cos_b[i] = g.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
     u[o] = g.stress_spheroidal_u(one[o], r[o], z[o])
     cos_b[o] = z[o] / np.sqrt(u[o])  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
+    # on the edge circle the field is the limit beta -> pi/2, xi = 0, which every generated
+    # form reaches continuously; 1e-100 keeps eta^3/(xi^2 + eta^2) from being 0/0
+    cos_b[edge] = 1e-100
     sin_b = r / np.sqrt(1 + u)
-    return result(np.sqrt(u)), result(np.arctan2(sin_b, cos_b))
+    return result(np.sqrt(u)), result(cos_b), result(sin_b)
 
 
 def hertz_stress_cylindrical(r, z, a, p0, nu):
@@ -91,17 +95,16 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     r, z, a, p0, nu = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z),
                                           positive("a", a), nonnegative("p0", p0),
                                           poisson("nu", nu))
-    xi, beta = spheroidal(r, z, a)
-    xi, beta = np.asarray(xi), np.asarray(beta)
-    near = xi < 1.0
+    xi, eta, chi = (np.asarray(v) for v in spheroidal(r, z, a))
     srr, stt = np.empty(r.shape), np.empty(r.shape)
-    n, f = near, ~near
-    srr[n] = g.stress_hertz_sigma_rr(nu[n], p0[n], xi[n], beta[n])
-    stt[n] = g.stress_hertz_sigma_tt(nu[n], p0[n], xi[n], beta[n])
-    srr[f] = g.stress_hertz_sigma_rr_far(nu[f], p0[f], xi[f], beta[f])
-    stt[f] = g.stress_hertz_sigma_tt_far(nu[f], p0[f], xi[f], beta[f])
-    szz = g.stress_hertz_sigma_zz(p0, xi, beta)
-    trz = g.stress_hertz_tau_rz(p0, xi, beta)
+    n = xi < 1.0  # the form with atan; beyond, the hypergeometric form without cancellation
+    f = ~n
+    srr[n] = g.stress_hertz_sigma_rr(nu[n], p0[n], xi[n], eta[n], chi[n])
+    stt[n] = g.stress_hertz_sigma_tt(nu[n], p0[n], xi[n], eta[n])
+    srr[f] = g.stress_hertz_sigma_rr_far(nu[f], p0[f], xi[f], eta[f], chi[f])
+    stt[f] = g.stress_hertz_sigma_tt_far(nu[f], p0[f], xi[f], eta[f])
+    szz = g.stress_hertz_sigma_zz(p0, xi, eta)
+    trz = g.stress_hertz_tau_rz(p0, xi, eta, chi)
     return tuple(result(v) for v in (srr, stt, szz, trz))
 
 
@@ -166,7 +169,7 @@ def axis_stresses(z, a, p0, nu):
     sxx[s] = g.stress_axis_sigma_xx(a[s], nu[s], p0[s], z[s])  # (5.49)
     sxx[d] = g.stress_axis_sigma_xx_deep(a[d], nu[d], p0[d], z[d])
     top = z == 0  # (5.49) at z -> 0: -(1 + 2 nu) p0/2; the spheroidal form is exact there
-    sxx[top] = g.stress_hertz_sigma_rr(nu[top], p0[top], 0.0, 0.0)
+    sxx[top] = g.stress_hertz_sigma_rr(nu[top], p0[top], 0.0, 1.0, 0.0)
     return result(szz), result(sxx)
 
 

@@ -1,0 +1,127 @@
+"""Figures of the chapter drawn from the generated formulas (matplotlib, the ``plot`` extra).
+
+Each function writes one PNG and returns its path; matplotlib is imported inside the functions
+with the non-interactive Agg backend, so importing this module needs neither.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from hertzmdr.numeric import stress
+from hertzmdr.numeric._validate import poisson
+
+__all__ = ["axis_stresses_figure", "von_mises_figure"]
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def axis_stresses_figure(path, nu: float = 0.33, z_max: float = 3.0) -> Path:
+    """Fig. 5.8: sigma_zz (5.48), sigma_xx = sigma_yy (5.49) and tau_1 on the axis, over p0,
+    against z/a under the Hertz pressure, with the maximum of tau_1 marked.
+
+    Parameters
+    ----------
+    path : str or Path
+        PNG file to write.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5 (the chapter's figure: 0.33).
+    z_max : float
+        Depth range 0 <= z/a <= z_max.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Examples
+    --------
+    >>> hertzmdr.numeric.plots.axis_stresses_figure("fig5_8.png", nu=0.33)  # doctest: +SKIP
+    """
+    nu = float(poisson("nu", nu))
+    plt = _pyplot()
+    s = np.linspace(0.0, z_max, 601)
+    szz, sxx = stress.axis_stresses(s, 1.0, 1.0, nu)
+    tau1 = 0.5 * np.abs(szz - sxx)
+    zm, tm = stress.axis_max_shear(nu)
+    fig, ax = plt.subplots(figsize=(6.0, 4.2), dpi=120)
+    ax.plot(s, szz, label=r"$\sigma_{zz}/p_0$ (5.48)")
+    ax.plot(s, sxx, label=r"$\sigma_{xx}/p_0=\sigma_{yy}/p_0$ (5.49)")
+    ax.plot(s, tau1, label=r"$\tau_1/p_0=|\sigma_{zz}-\sigma_{xx}|/(2p_0)$")
+    ax.plot([zm], [tm], "ko", ms=4)
+    ax.annotate(f"max {tm:.4f} p0 at z = {zm:.4f} a", (zm, tm), xytext=(1.0, 0.36),
+                arrowprops={"arrowstyle": "->"}, fontsize=8)
+    ax.set_ylim(-1.05, 0.45)
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set_xlabel("z / a")
+    ax.set_ylabel("stress / p0")
+    ax.set_title(f"Stresses on the axis under the Hertz pressure, nu = {nu:g} (Fig. 5.8)",
+                 fontsize=9)
+    ax.legend(loc="lower right", fontsize=8)
+    fig.tight_layout()
+    out = Path(path)
+    fig.savefig(out)
+    plt.close(fig)
+    return out
+
+
+def von_mises_figure(path, nu: float = 0.33, x_max: float = 2.0, z_max: float = 2.0,
+                     n: int = 241) -> Path:
+    """Fig. 5.9: the von Mises stress (5.50) over p0 in the x-z plane under the Hertz pressure.
+
+    Parameters
+    ----------
+    path : str or Path
+        PNG file to write.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    x_max, z_max : float
+        Plotted region -x_max <= x/a <= x_max, 0 <= z/a <= z_max (depth drawn downwards).
+    n : int
+        Grid points per axis.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Examples
+    --------
+    >>> hertzmdr.numeric.plots.von_mises_figure("fig5_9.png", nu=0.33)  # doctest: +SKIP
+    """
+    nu = float(poisson("nu", nu))
+    plt = _pyplot()
+    x = np.linspace(-x_max, x_max, n)
+    z = np.linspace(0.0, z_max, n)
+    X, Z = np.meshgrid(x, z)
+    vm = stress.von_mises(stress.hertz_stress(X, 0.0, Z, 1.0, 1.0, nu))
+    val, _, zb = stress.hertz_maximum(nu)
+    fig, ax = plt.subplots(figsize=(6.4, 3.8), dpi=120)
+    top = np.ceil(max(val, float(vm.max())) * 20) / 20
+    cs = ax.contourf(X, Z, vm, levels=np.linspace(0, top, int(round(top * 40)) + 1),
+                     cmap="viridis")
+    ax.contour(X, Z, vm, levels=np.linspace(0.1, 0.6, 6), colors="w", linewidths=0.5)
+    ax.plot([0.0], [zb], "r+", ms=10)
+    ax.annotate(f"max {val:.4f} p0 at z = {zb:.4f} a", (0.0, zb), xytext=(-1.9, 1.75),
+                color="w", arrowprops={"arrowstyle": "->", "color": "w"})
+    ax.set_ylim(z_max, 0.0)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("z / a")
+    ax.set_title(f"von Mises stress / p0 under the Hertz pressure, nu = {nu:g} (Fig. 5.9)",
+                 fontsize=9)
+    fig.colorbar(cs, ax=ax, label=r"$\sigma_V / p_0$ (5.50)")
+    fig.tight_layout()
+    out = Path(path)
+    fig.savefig(out)
+    plt.close(fig)
+    return out

@@ -1,0 +1,345 @@
+"""Stresses under the Hertz pressure and by superposition: (5.47)-(5.50), Figs. 5.8 and 5.9.
+
+Independent routes: mpmath quadrature of the derived point-force field (5.41)-(5.46) over the
+pressure (5.47); Johnson's printed form of Huber's field evaluated at 50 digits (where the
+float64 forms would cancel); finite-difference equilibrium; the surface tractions; the
+point-force far field.
+"""
+
+from functools import cache
+
+import mpmath as mp
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hertzmdr.derive import boussinesq as b
+from hertzmdr.derive import stress as ds
+from hertzmdr.derive.symbols import F, a, nu, p0, r, z
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import stress
+
+from oracle import WORST, Arg, assert_close, assert_mpmath_equal, n_points
+
+
+@cache
+def _kernel(comp):
+    """Derived point-force stress of a unit force, as an mpmath function of (nu, x, y, z)."""
+    return sp.lambdify((nu, b.x, b.y, b.z), b.stresses()[comp].subs(F, 1), "mpmath")
+
+
+def _axis_reference(comp, nu_, zz):
+    """(5.47) on the axis for the unit Hertz pressure: the phi-mean of K_xx is (K_xx + K_yy)/2
+    at phi = 0; rho = sin(theta) makes the pressure's rim smooth (Gauss-Legendre)."""
+    def f(th):
+        rho = mp.sin(th)
+        if comp == "zz":
+            k = _kernel("zz")(nu_, rho, 0, zz)
+        else:
+            k = (_kernel("xx")(nu_, rho, 0, zz) + _kernel("yy")(nu_, rho, 0, zz)) / 2
+        return k * mp.cos(th) * 2 * mp.pi * rho * mp.cos(th)
+    return mp.quad(f, _splits(zz), method="gauss-legendre")
+
+
+def _splits(zz):
+    """Break points in theta (rho = sin theta): the kernel's scale z is resolved near 0."""
+    pts = [mp.mpf(0)]
+    t = zz / 8
+    while t < 1:
+        pts.append(mp.asin(t))
+        t *= 4
+    return pts + [mp.pi / 2]
+
+
+def test_axis_stresses_by_superposition():
+    """(5.48), (5.49) against quadrature of (5.43), (5.41) over (5.15), z from 1e-4 a to 1e4 a
+    (both branches of (5.49)) and nu up to 1/2."""
+    dom = {"z": Arg(1e-4, 1e4), "nu": Arg(0.0, 0.5, log=False)}
+
+    def szz(z, nu):
+        return stress.axis_stresses(z, 1.0, 1.0, nu)[0]
+
+    def sxx(z, nu):
+        return stress.axis_stresses(z, 1.0, 1.0, nu)[1]
+
+    # (5.48): one division; (5.49) and its deep form: a few roundings, no cancellation left
+    # (the hypergeometric form removes it for z >= a); 30-digit Gauss-Legendre reference
+    assert_mpmath_equal(szz, lambda z, nu: _axis_reference("zz", nu, z), dom, rtol=1e-14,
+                        n=n_points(40, 8), dps=30, name="stress_axis_sigma_zz")
+    assert_mpmath_equal(sxx, lambda z, nu: _axis_reference("xx", nu, z), dom, rtol=1e-13,
+                        n=n_points(40, 8), dps=30, name="stress_axis_sigma_xx")
+    # nu = 1/2 deep below: the O((a/z)^2) terms cancel exactly; the form keeps full accuracy
+    for zz in (10.0, 1e3):
+        with mp.workdps(30):
+            ref = _axis_reference("xx", mp.mpf("0.5"), mp.mpf(zz))
+        assert_close(stress.axis_stresses(zz, 1.0, 1.0, 0.5)[1], ref, 1e-13, f"nu=1/2 z={zz}")
+    # the surface value -(1 + 2 nu) p0/2
+    assert abs(stress.axis_stresses(0.0, 1.0, 1.0, 0.3)[1] + 0.8) < 1e-15
+
+
+def test_axis_maximum_shear():
+    """tau_1 maximum on the axis: float64 root against the 30-digit root of the derivation;
+    the chapter's z ~ 0.49 a for nu = 0.33 and the classical 0.31 p0 at 0.48 a for nu = 0.3."""
+    for nu_, z_round, tau_round in (("0.3", 0.48, 0.31), ("0.33", 0.49, 0.30)):
+        z30, t30 = ds.axis_maxima(nu_)
+        zf, tf = stress.axis_max_shear(float(nu_))
+        # a simple root found by Brent to 4 ulp of the slope: ~1e-15 relative in z
+        assert_close(zf, z30, 1e-14, f"z/a at nu={nu_}")
+        assert_close(tf, t30, 1e-15, f"tau1/p0 at nu={nu_}")
+        assert round(float(z30), 2) == z_round and round(float(t30), 2) == tau_round
+        # the slope at the 30-digit root is zero (its generated form, evaluated at 30 digits)
+        slope = sp.lambdify(z, ds.max_shear_axis().diff(z).subs({a: 1, p0: 1,
+                                                                  nu: sp.Rational(nu_)}),
+                            "mpmath")
+        with mp.workdps(30):
+            assert abs(slope(z30)) < mp.mpf(10) ** -27
+        assert abs(g.stress_axis_max_shear_slope(1.0, float(nu_), 1.0, zf)) < 1e-15
+
+
+@pytest.mark.parametrize("criterion", ["von_mises", "tresca"])
+def test_maximum_in_the_body(criterion):
+    """The maximum over the body lies on the axis at the tau_1 depth; von Mises = Tresca =
+    2 tau_1 there (sigma_xx = sigma_yy on the axis)."""
+    for nu_ in ("0.3", "0.33"):
+        z30, t30 = ds.axis_maxima(nu_)
+        val, rb, zb = stress.hertz_maximum(float(nu_), criterion)
+        # the peak is flat: Nelder-Mead stops at 1e-10 in value, ~1e-7 a in position
+        assert_close(val, 2 * t30, 1e-13, f"{criterion} max at nu={nu_}")
+        assert rb < 1e-6 and abs(zb - float(z30)) < 1e-6
+
+
+@cache
+def _johnson():
+    return {k: sp.lambdify((nu, r, z), e.subs({a: 1, p0: 1}), "mpmath")
+            for k, e in ds.johnson_field().items()}
+
+
+def _field_reference_superposition(nu_, rr, zz):
+    """(sigma_rr, sigma_tt, sigma_zz, tau_rz) at (r, 0, z) by 2-D quadrature of the derived
+    point-force field over the unit Hertz pressure; rho = sin(theta), phi in [0, pi] doubled."""
+    out = []
+    for comp in ("xx", "yy", "zz", "xz"):
+        k = _kernel(comp)
+
+        def f(th, ph, k=k):
+            rho = mp.sin(th)
+            return k(nu_, rr - rho * mp.cos(ph), -rho * mp.sin(ph), zz) * mp.cos(th) ** 2 * rho
+        out.append(2 * mp.quad(f, [0, mp.pi / 2], [0, mp.pi], method="gauss-legendre"))
+    return out
+
+
+def _tensor_error(got, ref):
+    scale = max(abs(v) for v in ref)
+    return max(float(abs(mp.mpf(float(gv)) - rv) / scale) for gv, rv in zip(got, ref,
+                                                                           strict=True))
+
+
+@pytest.mark.sweep
+def test_hertz_field_by_superposition():
+    """The closed form against 2-D mpmath quadrature of (5.41)-(5.46) over (5.15): error of
+    every component relative to the largest component at the point (the tensor's scale)."""
+    pts = [(0.5, 0.5, 0.3), (1.5, 0.3, 0.25), (0.2, 1.2, 0.5), (2.0, 2.0, 0.33),
+           (0.9, 0.1, 0.0), (3.0, 0.05, 0.45)][:n_points(6, 2)]
+    worst = 0.0
+    for rr, zz, nu_ in pts:
+        got = stress.hertz_stress_cylindrical(rr, zz, 1.0, 1.0, nu_)
+        with mp.workdps(20):
+            ref = _field_reference_superposition(mp.mpf(nu_), mp.mpf(rr), mp.mpf(zz))
+            err = _tensor_error(got, ref)
+        # Gauss-Legendre at 20 digits resolves these smooth integrands to ~1e-18; the closed
+        # form is a few roundings and one hyp2f1 (<= 1e-15): 1e-13 leaves a margin
+        assert err < 1e-13, (rr, zz, nu_, err)
+        worst = max(worst, err)
+    WORST["hertz_stress (superposition)"] = max(WORST.get("hertz_stress (superposition)", 0),
+                                                worst)
+
+
+def test_hertz_field_against_johnson_at_50_digits():
+    """Across the body, including the axis (r = 1e-9 a), the surface (z = 1e-9 a), far away
+    (1e4 a) and nu = 1/2, against Johnson's printed form at 50 digits (which cancels in
+    float64 where ours does not); tensor-scaled relative error."""
+    rng = np.random.default_rng(3)
+    m = n_points(400, 80)
+    rr = np.exp(rng.uniform(np.log(1e-9), np.log(1e4), m))
+    zz = np.exp(rng.uniform(np.log(1e-9), np.log(1e4), m))
+    nus = rng.choice([0.0, 0.3, 0.33, 0.5, -0.5], m)
+    got = np.array(stress.hertz_stress_cylindrical(rr, zz, 1.0, 1.0, nus))
+    assert np.all(np.isfinite(got))
+    fj = _johnson()
+    worst = 0.0
+    with mp.workdps(50):
+        for k in range(m):
+            args = (mp.mpf(float(nus[k])), mp.mpf(float(rr[k])), mp.mpf(float(zz[k])))
+            ref = [fj[c](*args) for c in ("rr", "tt", "zz", "rz")]
+            worst = max(worst, _tensor_error(got[:, k], ref))
+    WORST["hertz_stress_cylindrical"] = max(WORST.get("hertz_stress_cylindrical", 0), worst)
+    # a few roundings, one hyp2f1 (<= 1e-14 relative) per component
+    assert worst < 1e-12, worst
+
+
+def test_spheroidal_coordinates():
+    """(xi, beta) map back to (r, z), and u solves r^2/(a^2 + u) + z^2/u = 1."""
+    r_ = np.array([0.0, 0.5, 1.0, 1.0, 1.0 + 1e-12, 2.0, 1e-8, 0.7, 1e4, 0.3])
+    z_ = np.array([0.5, 0.0, 0.0, 1e-12, 0.0, 3.0, 1e-8, 0.7, 1e-3, 1e-200])
+    xi, eta, chi = stress.spheroidal(r_ * 2.0, z_ * 2.0, 2.0)
+    assert np.allclose(eta**2 + chi**2, 1, rtol=1e-15)
+    back_r = np.sqrt(1 + xi**2) * chi
+    back_z = xi * eta
+    assert np.allclose(back_r, r_, rtol=1e-14, atol=1e-15)
+    assert np.allclose(back_z, z_, rtol=1e-14, atol=1e-15)
+    u = xi**2
+    ok = u > 0
+    lhs = r_[ok] ** 2 / (1 + u[ok]) + z_[ok] ** 2 / u[ok]
+    assert np.allclose(lhs, 1, rtol=1e-13)
+
+
+def test_field_on_the_axis_is_the_derived_axis_field():
+    """The literature form at eta = 1, chi = 0, xi = z/a is the derived (5.48), (5.49), exactly."""
+    s = sp.Symbol("s", positive=True)
+    axis = {ds.eta: 1, ds.chi: 0, ds.xi: s}
+    derived = ds.axis_stresses()
+    for far in (False, True):
+        f = ds.hertz_field(far)
+        for comp, ref in (("rr", derived["xx"]), ("tt", derived["xx"]), ("zz", derived["zz"])):
+            diff = f[comp].subs(axis) - ref.subs(z, a * s).subs(a, 1).subs(p0, 1) * p0
+            diff = diff.subs(sp.atan(1 / s), sp.pi / 2 - sp.atan(s))  # s > 0
+            assert sp.simplify(diff) == 0, (far, comp)
+        assert f["rz"].subs(axis) == 0
+
+
+def test_von_mises_invariant():
+    """(5.50) equals sqrt(((s1 - s2)^2 + (s2 - s3)^2 + (s3 - s1)^2)/2) of the principal
+    stresses, and is invariant under rotation."""
+    rng = np.random.default_rng(0)
+    m = rng.normal(size=(50, 3, 3))
+    sig = m + np.swapaxes(m, -1, -2)
+    ev = np.linalg.eigvalsh(sig)
+    ref = np.sqrt(((ev[:, 0] - ev[:, 1]) ** 2 + (ev[:, 1] - ev[:, 2]) ** 2
+                   + (ev[:, 2] - ev[:, 0]) ** 2) / 2)
+    assert np.allclose(stress.von_mises(sig), ref, rtol=1e-13)
+    q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+    rot = q @ sig @ q.T
+    assert np.allclose(stress.von_mises(rot), stress.von_mises(sig), rtol=1e-13)
+    assert np.allclose(stress.tresca(sig), ev[:, 2] - ev[:, 0], rtol=1e-13)
+
+
+def test_equilibrium_and_surface_traction():
+    """div sigma = 0 by 4th-order central differences on a grid; sigma_zz = -p, no shear on z = 0.
+
+    FD error model: truncation h^4 |d^5 sigma|/30 with |d^5 sigma| <= ~1e3 p0/a^5 away from
+    the edge (distance >= 0.1 a) and rounding ~ 1.5 eps |sigma|/h: at h = 1e-3 a about 1e-10 +
+    3e-13; tolerance 1e-8 p0/a."""
+    h = 1e-3
+    nu_ = 0.3
+    xs = np.linspace(-2.0, 2.0, 9)
+    X, Y, Z = np.meshgrid(xs, np.array([-0.7, 0.0, 0.4]), np.array([0.15, 0.5, 1.3]))
+    keep = np.abs(np.hypot(X, Y) - 1) > 0.1
+    X, Y, Z = X[keep], Y[keep], Z[keep]
+
+    def d(axis):
+        def at(k):
+            p = [X, Y, Z]
+            p[axis] = p[axis] + k * h
+            return stress.hertz_stress(p[0], p[1], p[2], 1.0, 1.0, nu_)
+        return (-at(2) + 8 * at(1) - 8 * at(-1) + at(-2)) / (12 * h)
+
+    dx, dy, dz = d(0), d(1), d(2)
+    div = dx[..., :, 0] + dy[..., :, 1] + dz[..., :, 2]
+    assert np.max(np.abs(div)) < 1e-8, np.max(np.abs(div))
+    # the surface: the traction is the pressure (5.15)
+    rs = np.linspace(0, 3, 301)
+    xs_, ys_ = rs / np.sqrt(2), rs / np.sqrt(2)
+    sig = stress.hertz_stress(xs_, ys_, 0.0, 1.0, 1.0, nu_)
+    rr = np.hypot(xs_, ys_)  # the radius actually evaluated (the edge is a sqrt singularity)
+    p = np.sqrt(np.maximum((1 - rr) * (1 + rr), 0))
+    assert np.max(np.abs(sig[..., 2, 2] + p)) < 1e-15
+    assert np.max(np.abs(sig[..., 0, 2])) < 1e-15 and np.max(np.abs(sig[..., 1, 2])) < 1e-15
+
+
+def test_point_load_limit():
+    """Far away the field is that of the point force F = (2/3) pi a^2 p0 (5.17) at the origin:
+    the relative difference is O((a/R)^2)."""
+    Fh = 2 / 3 * np.pi
+    for R in (1e2, 1e4):
+        for ang in (0.2, 0.8, 1.3):
+            x, zz = R * np.sin(ang), R * np.cos(ang)
+            sig = stress.hertz_stress(x, 0.0, zz, 1.0, 1.0, 0.3)
+            pt = [g.boussinesq_sigma_xx(Fh, 0.3, x, 0.0, zz), g.boussinesq_sigma_zz(Fh, 0.3, x,
+                                                                                   0.0, zz),
+                  g.boussinesq_sigma_xz(Fh, 0.3, x, 0.0, zz)]
+            got = [sig[0, 0], sig[2, 2], sig[0, 2]]
+            scale = max(abs(v) for v in pt)
+            assert max(abs(gv - pv) for gv, pv in zip(got, pt, strict=True)) / scale < 3 / R**2
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-1e6, 1e6), st.floats(-1e6, 1e6), st.floats(0.0, 1e6),
+       st.floats(-0.99, 0.5))
+def test_no_nan_anywhere(x, y, zz, nu_):
+    sig = stress.hertz_stress(x, y, zz, 1.0, 1.0, nu_)
+    assert np.all(np.isfinite(sig))
+    assert np.isfinite(stress.von_mises(sig)) and np.isfinite(stress.tresca(sig))
+
+
+def test_edge_of_contact():
+    """At r = a, z = 0: sigma_rr = (1 - 2 nu) p0/3 = -sigma_theta, sigma_zz = tau_rz = 0, and the
+    field is continuous there."""
+    for nu_ in (0.0, 0.3, 0.5):
+        srr, stt, szz, trz = stress.hertz_stress_cylindrical(1.0, 0.0, 1.0, 1.0, nu_)
+        assert abs(srr - (1 - 2 * nu_) / 3) < 1e-15 and abs(stt + (1 - 2 * nu_) / 3) < 1e-15
+        assert abs(szz) <= 1e-99 and abs(trz) <= 1e-99  # the limit 0, to within 1e-100
+        near = stress.hertz_stress_cylindrical(1.0 + 1e-9, 1e-9, 1.0, 1.0, nu_)
+        assert abs(near[0] - srr) < 1e-4  # continuous (sqrt-like approach to the edge)
+
+
+def _superposition_axis_reference(p, zz):
+    """sigma_zz on the axis (5.47) for a pressure p(theta) on the unit disc, rho = sin(theta)
+    (the pressure is given as a function of theta, so that the rim keeps full precision)."""
+    return mp.quad(lambda th: -3 * zz**3 / (2 * mp.pi) * p(th) * 2 * mp.pi
+                   * mp.sin(th) * mp.cos(th) / (mp.sin(th) ** 2 + zz**2) ** 2.5,
+                   _splits(zz), method="tanh-sinh")
+
+
+def test_superposition_route():
+    """Under the Hertz pressure the superposition route reproduces the closed form, and its error
+    estimate bounds the actual error; under the flat-punch pressure (singular at the rim) it
+    reproduces mpmath quadrature of (5.47) on the axis."""
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    pts = np.array([[0.3, 0.0, 0.2], [0.0, 0.9, 0.05], [1.4, 0.3, 0.4], [0.5, 0.5, 2.0],
+                    [0.99, 0.0, 0.01]])
+    sig, err = stress.superposed_stress(pts[:, 0], pts[:, 1], pts[:, 2], hp, 1.0, 0.3)
+    ref = stress.hertz_stress(pts[:, 0], pts[:, 1], pts[:, 2], 1.0, 1.0, 0.3)
+    actual = np.abs(sig - ref)
+    # the estimate is the change from the coarse rule; geometric convergence makes the finer
+    # result far better, so actual <= estimate + rounding (1e-14 p0 over ~1e4 terms)
+    assert np.all(actual <= err + 1e-14), (actual.max(), err.max())
+    assert actual.max() < 1e-12
+    punch = lambda rho: 1 / np.sqrt(1 - rho * rho)  # noqa: E731
+    for zz in (0.05, 0.5, 3.0):
+        s, e = stress.superposed_stress(0.0, 0.0, zz, punch, 1.0, 0.3)
+        with mp.workdps(25):
+            ref = _superposition_axis_reference(lambda th: 1 / mp.cos(th), mp.mpf(zz))
+        assert_close(s[2, 2], ref, max(1e-12, 10 * float(e[2, 2] / abs(ref))), f"punch z={zz}")
+
+
+def test_stress_modules_import_no_sympy_scipy_matplotlib():
+    import subprocess
+    import sys
+
+    code = ("import sys, hertzmdr.numeric.stress, hertzmdr.numeric.plots;"
+            "print(','.join(m for m in ('sympy', 'scipy', 'matplotlib') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
+
+
+def test_bad_input_is_named():
+    with pytest.raises(ValueError, match="nu = 0.6"):
+        stress.hertz_stress(0.0, 0.0, 1.0, 1.0, 1.0, 0.6)
+    with pytest.raises(ValueError, match="z = -1.0"):
+        stress.hertz_stress(0.0, 0.0, -1.0, 1.0, 1.0, 0.3)
+    with pytest.raises(ValueError, match=r"z = 0.0 is out of range; valid: z > 0"):
+        stress.superposed_stress(0.0, 0.0, 0.0, lambda r: r, 1.0, 0.3)
+    with pytest.raises(ValueError, match="pressure"):
+        stress.superposed_stress(0.0, 0.0, 1.0, 3.0, 1.0, 0.3)
