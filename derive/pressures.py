@@ -52,6 +52,7 @@ def complete_elliptic(integrand: sp.Expr, var: sp.Symbol, m: sp.Expr, scale=1) -
     raise ValueError(f"{integrand} is not the integrand of K or E of {m}")
 
 
+@cache
 def _check_symmetry() -> None:
     """phi -> pi - phi maps beta to -beta and keeps gamma^2: the odd part integrates to 0."""
     b = r * sp.cos(phi)
@@ -71,8 +72,23 @@ def displacement_inside(n: sp.Rational) -> sp.Expr:
     half_chord = chord_integral(n) / 2  # even part in beta of the integral from beta to gamma
     g = sp.sqrt(a**2 - r**2 * sp.sin(phi) ** 2)
     inner = half_chord.subs(gamma, g)
-    total = sp.integrate(sp.expand(sp.simplify(inner)), (phi, 0, 2 * sp.pi))
+    total = _full_turn(sp.expand(sp.simplify(inner)))
     return sp.simplify(p0 * a ** (-2 * n) * total / (sp.pi * E_star))
+
+
+def _full_turn(f: sp.Expr) -> sp.Expr:
+    """integral_0^(2 pi) of f d phi.
+
+    n = 0 gives f = sqrt(a^2 - r^2 sin^2 phi) = a sqrt(1 - m sin^2 phi) (a > 0, m = r^2/a^2):
+    pi-periodic and even about pi/2, so 4 times its quarter-period integral, a E(m) by the
+    definition of E (integrate takes ~0.6 s CPU to find it). Everything else by integrate.
+    """
+    m_ = r**2 / a**2
+    q = sp.sqrt(1 - m_ * sp.sin(phi) ** 2)
+    if (f.is_Pow and f.exp == sp.Rational(1, 2) and sp.expand(f.base - a**2 * q.base) == 0
+            and f.subs(phi, phi + sp.pi) == f and f.subs(phi, sp.pi - phi) == f):
+        return 4 * complete_elliptic(a * q, phi, m_, scale=a)
+    return sp.integrate(f, (phi, 0, 2 * sp.pi))
 
 
 @cache
