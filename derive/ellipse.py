@@ -57,6 +57,13 @@ def _b_hyp() -> sp.Expr:
     return sp.pi / 4 * sp.hyper([sp.Rational(1, 2), sp.Rational(1, 2)], [2], m)
 
 
+def _even_trig_is_zero(expr: sp.Expr) -> bool:
+    """True if the polynomial ``expr`` in cos(phi), sin(phi) vanishes: sin^2 -> 1 - cos^2,
+    then expand (exact, and far cheaper than a general trigsimp)."""
+    red = sp.expand(expr).subs(sp.sin(phi) ** 2, 1 - sp.cos(phi) ** 2)
+    return sp.expand(red) == 0
+
+
 @cache
 def displacement_inside() -> sp.Expr:
     """u_z(x, y) inside the ellipse under (5.31), with b = t a, in E*, a, p0, t, x, y."""
@@ -65,21 +72,21 @@ def displacement_inside() -> sp.Expr:
     alpha = g.coeff(s, 0)
     beta = -g.coeff(s, 1) / 2
     gamma = -g.coeff(s, 2)
-    assert sp.simplify(g - (alpha - 2 * beta * s - gamma * s**2)) == 0
+    assert sp.expand(g - (alpha - 2 * beta * s - gamma * s**2)) == 0  # polynomial in s
     # completing the square: g = gamma (h^2 - tau^2), tau = s + beta/gamma
     h2 = (beta**2 + alpha * gamma) / gamma**2
-    assert sp.simplify(g - gamma * (h2 - (s + beta / gamma) ** 2)) == 0
-    # the ray pair phi, phi + pi covers the whole chord: sqrt(gamma) * int (h^2 - tau^2)^(1/2)
+    assert sp.cancel(g - gamma * (h2 - (s + beta / gamma) ** 2)) == 0
+    # the ray pair phi, phi + pi covers the whole chord: sqrt(gamma) * int (h^2 - tau^2)^(1/2),
+    # with gamma > 0 and numer = gamma^2 h^2 > 0 (G, Nm below) on every ray through the inside
     chord = pressures.chord_integral(sp.Rational(1, 2))
-    hs = sp.Symbol("h", positive=True)
-    pair = sp.sqrt(gamma) * chord.subs(pressures.gamma, hs)
-    pair = sp.expand(sp.simplify(pair.subs(hs, sp.sqrt(h2))))  # = pi (beta^2+alpha gamma)/2/...
+    G, Nm = sp.symbols("G N_m", positive=True)
+    pair = sp.sqrt(G) * chord.subs(pressures.gamma, sp.sqrt(Nm / G**2))
+    # pair = pi/2 * numer / gamma^(3/2); gamma^(-3/2) = b^3 (1 - m C)^(-3/2)
+    assert sp.simplify(pair - sp.pi / 2 * Nm / G ** sp.Rational(3, 2)) == 0
     # gamma = (1 - m cos^2 phi)/b^2 with m = 1 - t^2
     gam_m = (1 - m * sp.cos(phi) ** 2) / b**2
-    assert sp.simplify(gamma - gam_m.subs(m, 1 - t**2)) == 0
+    assert _even_trig_is_zero(gamma - gam_m.subs(m, 1 - t**2))
     numer = sp.expand(beta**2 + alpha * gamma)
-    # pair = pi/2 * numer / gamma^(3/2); gamma^(-3/2) = b^3 (1 - m C)^(-3/2)
-    assert sp.simplify(pair - sp.pi / 2 * numer / gamma ** sp.Rational(3, 2)) == 0
     # the phi-integrals, by differentiation of I0 = 2 K(m) (the definition of K) under the
     # integral sign: J1 = int C (1 - m C)^(-3/2) = 2 dI0/dm, J0 = int (1 - m C)^(-3/2) = I0 + m J1
     I0 = 2 * sp.elliptic_k(m)
@@ -92,9 +99,9 @@ def displacement_inside() -> sp.Expr:
         # the odd part in cos(phi) sin(phi) (the xy term) vanishes over phi in (0, pi):
         # phi -> pi - phi flips it and keeps gamma
         odd = c.subs(sp.cos(phi), -sp.cos(phi))
-        if sp.simplify(c + odd) == 0 and c != 0:
+        if sp.expand(c + odd) == 0 and c != 0:
             continue
-        assert sp.simplify(c - odd) == 0, f"coefficient of x^{i} y^{j} not even in cos(phi)"
+        assert sp.expand(c - odd) == 0, f"coefficient of x^{i} y^{j} not even in cos(phi)"
         cC = sp.expand(c.subs(sp.sin(phi), sp.sqrt(1 - C)).subs(sp.cos(phi), sp.sqrt(C)))
         cC = sp.Poly(cC, C)
         assert cC.degree() <= 1
@@ -104,64 +111,72 @@ def displacement_inside() -> sp.Expr:
     return u.subs(m, 1 - t**2)
 
 
-@cache
-def solution() -> dict[str, sp.Expr]:
-    """a, p0, R1/R2, F, ... of the elliptical contact as functions of (E*, R1, d, t)."""
-    u = displacement_inside()
-    match = sp.Poly(sp.expand(u - (d - x**2 / (2 * R1) - y**2 / (2 * R2))), x, y)
-    L_eq = match.coeff_monomial(1)
-    M_eq = match.coeff_monomial(x**2)
-    N_eq = match.coeff_monomial(y**2)
-    (p0_a,) = sp.solve(L_eq, p0)  # the x^0 coefficient is linear in p0
-    a2 = sp.Symbol("a2", positive=True)
-    (a2_d,) = sp.solve(sp.expand(M_eq.subs(p0, p0_a)).subs(a, sp.sqrt(a2)), a2)
-    a_d = sp.simplify(sp.sqrt(a2_d))
-    p0_d = sp.simplify(p0_a.subs(a, a_d))
-    (r2,) = sp.solve(N_eq.subs({a: a_d, p0: p0_d}), R2)
-    ratio = sp.simplify(R1 / r2)
-    force = sp.simplify(sp.Rational(2, 3) * sp.pi * a_d * t * a_d * p0_d)  # int of (5.31)
-    # F = c d^(3/2) with c free of d (the force is homogeneous of degree 3/2 in d)
-    c = sp.simplify(force / d ** sp.Rational(3, 2))
-    assert not c.has(d)
-    d_F = (F / c) ** sp.Rational(2, 3)
-    # R_e with F = (4/3) E* R_e^(1/2) d^(3/2), the Hertz force (5.23) of a sphere of radius R_e
-    c_hertz = sp.simplify(hertz.solution()["F"] / d ** sp.Rational(3, 2))
-    assert sp.simplify(c_hertz.subs(R, 1) * sp.sqrt(R) - c_hertz) == 0  # c_hertz ~ R^(1/2)
-    r_e = (c / c_hertz.subs(R, 1)) ** 2
-    return {
-        "a": a_d, "b": t * a_d, "p0": p0_d, "ratio": ratio, "F": force,
-        "pm": sp.simplify(force / (sp.pi * a_d * t * a_d)),
-        "k": sp.simplify(sp.diff(force, d)), "area": sp.pi * t * a_d**2,
-        "d_F": sp.simplify(d_F), "R_e": sp.simplify(r_e),
-    }
-
-
 _Ds, _Bs = sp.symbols("D B", positive=True)
 
 
-def _in_d_b(expr: sp.Expr) -> sp.Expr:
-    """``expr`` as a simplified function of D = (K - E)/m and B = (E - (1 - m) K)/m.
+def _to_d_b(expr: sp.Expr) -> sp.Expr:
+    """K(m), E(m) (m = 1 - t^2) written through D = (K - E)/m and B = (E - (1 - m) K)/m.
 
-    K = D + B and E = B + (1 - m) D is an invertible linear change of variables, so the
-    simplification happens on a rational expression in D, B and t.
+    K = D + B and E = B + (1 - m) D is an invertible linear change of variables: in D, B the
+    expressions are rational (times powers of d, R1, E*), where cancel and factor are exact
+    and fast.
     """
     mm = 1 - t**2
     out = expr.subs({sp.elliptic_k(mm): _Ds + _Bs, sp.elliptic_e(mm): _Bs + (1 - mm) * _Ds})
     assert not out.has(sp.elliptic_k) and not out.has(sp.elliptic_e)
-    return sp.powsimp(sp.factor(sp.simplify(out)), force=True)
+    return out
+
+
+def _tidy_d_b(expr: sp.Expr) -> sp.Expr:
+    """A rational expression in D, B (times powers) in a canonical factored form."""
+    return sp.powsimp(sp.factor(sp.cancel(expr)), force=True)
+
+
+@cache
+def solution() -> dict[str, sp.Expr]:
+    """a, p0, R1/R2, F, ... of the elliptical contact as functions of (E*, R1, d, t), each
+    written with D(t), B(t) of :func:`_to_d_b` (the symbols ``_Ds``, ``_Bs``)."""
+    u = sp.expand(_to_d_b(displacement_inside()))
+    match = sp.Poly(sp.expand(u - (d - x**2 / (2 * R1) - y**2 / (2 * R2))), x, y)
+    L_eq = match.coeff_monomial(1)
+    M_eq = match.coeff_monomial(x**2)
+    N_eq = match.coeff_monomial(y**2)
+    # every coefficient is linear in its unknown: p0 from x^0, a^2 from x^2, R2 from y^2
+    (p0_a,) = sp.solve(L_eq, p0)
+    a2 = sp.Symbol("a2", positive=True)
+    (a2_d,) = sp.solve(sp.cancel(M_eq.subs(p0, p0_a).subs(a, sp.sqrt(a2))), a2)
+    a_d = sp.sqrt(_tidy_d_b(a2_d))
+    p0_d = _tidy_d_b(p0_a.subs(a, a_d))
+    (inv_r2,) = sp.solve(N_eq.subs({a: a_d, p0: p0_d}).subs(R2, 1 / R2), R2)
+    ratio = _tidy_d_b(R1 * inv_r2)
+    force = _tidy_d_b(sp.Rational(2, 3) * sp.pi * a_d * t * a_d * p0_d)  # int of (5.31)
+    # F = c d^(3/2) with c free of d (the force is homogeneous of degree 3/2 in d)
+    c = _tidy_d_b(force / d ** sp.Rational(3, 2))
+    assert not c.has(d)
+    d_F = (F / c) ** sp.Rational(2, 3)
+    # R_e with F = (4/3) E* R_e^(1/2) d^(3/2), the Hertz force (5.23) of a sphere of radius R_e
+    c_hertz = sp.powsimp(hertz.solution()["F"] / d ** sp.Rational(3, 2), force=True)
+    assert sp.cancel(c_hertz.subs(R, 1) * sp.sqrt(R) - c_hertz) == 0  # c_hertz ~ R^(1/2)
+    r_e = (c / c_hertz.subs(R, 1)) ** 2
+    return {
+        "a": a_d, "b": t * a_d, "p0": p0_d, "ratio": ratio, "F": force,
+        "pm": _tidy_d_b(force / (sp.pi * a_d * t * a_d)),
+        "k": _tidy_d_b(sp.diff(force, d)), "area": sp.pi * t * a_d**2,
+        "d_F": _tidy_d_b(d_F), "R_e": _tidy_d_b(r_e),
+    }
 
 
 def _tidy(expr: sp.Expr) -> sp.Expr:
-    """The derived ``expr`` in its simplest K, E form (through :func:`_in_d_b`)."""
+    """The derived ``expr`` (in D, B) in its K, E form."""
     mm = 1 - t**2
     K, E = sp.elliptic_k(mm), sp.elliptic_e(mm)
-    return _in_d_b(expr).subs({_Ds: (K - E) / mm, _Bs: (E - (1 - mm) * K) / mm})
+    return expr.subs({_Ds: (K - E) / mm, _Bs: (E - (1 - mm) * K) / mm})
 
 
 def _stable(expr: sp.Expr) -> sp.Expr:
-    """``expr`` with D and B as (pi/4) 2F1: no cancellation as m -> 0."""
+    """``expr`` (in D, B) with D and B as (pi/4) 2F1: no cancellation as m -> 0."""
     mm = 1 - t**2
-    return _in_d_b(expr).subs({_Ds: _d_hyp().subs(m, mm), _Bs: _b_hyp().subs(m, mm)})
+    return expr.subs({_Ds: _d_hyp().subs(m, mm), _Bs: _b_hyp().subs(m, mm)})
 
 
 def relations() -> list[Relation]:

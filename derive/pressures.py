@@ -35,6 +35,24 @@ def chord_integral(n: sp.Rational) -> sp.Expr:
     return sp.simplify(val).subs(_gamma_pos, gamma)
 
 
+def complete_elliptic(integrand: sp.Expr, var: sp.Symbol, m: sp.Expr, scale=1) -> sp.Expr:
+    """integral_0^(pi/2) of ``integrand`` d``var``, recognised as ``scale`` K(m) or E(m).
+
+    By their definitions (``f(m).rewrite(Integral)``): the integrand must be ``scale`` times
+    the definition's, term by term (a general ``integrate`` finds the same K, E in about a
+    second each).
+    """
+    for f in (sp.elliptic_e, sp.elliptic_k):
+        defn = f(m).rewrite(sp.Integral)
+        ((dummy, lo, hi),) = defn.limits
+        assert (lo, hi) == (0, sp.pi / 2)
+        ours = scale * defn.function.subs(dummy, var)
+        if sp.expand(ours - integrand) == 0:
+            return scale * f(m)
+    raise ValueError(f"{integrand} is not the integrand of K or E of {m}")
+
+
+@cache
 def _check_symmetry() -> None:
     """phi -> pi - phi maps beta to -beta and keeps gamma^2: the odd part integrates to 0."""
     b = r * sp.cos(phi)
@@ -54,8 +72,23 @@ def displacement_inside(n: sp.Rational) -> sp.Expr:
     half_chord = chord_integral(n) / 2  # even part in beta of the integral from beta to gamma
     g = sp.sqrt(a**2 - r**2 * sp.sin(phi) ** 2)
     inner = half_chord.subs(gamma, g)
-    total = sp.integrate(sp.expand(sp.simplify(inner)), (phi, 0, 2 * sp.pi))
+    total = _full_turn(sp.expand(sp.simplify(inner)))
     return sp.simplify(p0 * a ** (-2 * n) * total / (sp.pi * E_star))
+
+
+def _full_turn(f: sp.Expr) -> sp.Expr:
+    """integral_0^(2 pi) of f d phi.
+
+    n = 0 gives f = sqrt(a^2 - r^2 sin^2 phi) = a sqrt(1 - m sin^2 phi) (a > 0, m = r^2/a^2):
+    pi-periodic and even about pi/2, so 4 times its quarter-period integral, a E(m) by the
+    definition of E (integrate takes ~0.6 s CPU to find it). Everything else by integrate.
+    """
+    m_ = r**2 / a**2
+    q = sp.sqrt(1 - m_ * sp.sin(phi) ** 2)
+    if (f.is_Pow and f.exp == sp.Rational(1, 2) and sp.expand(f.base - a**2 * q.base) == 0
+            and f.subs(phi, phi + sp.pi) == f and f.subs(phi, sp.pi - phi) == f):
+        return 4 * complete_elliptic(a * q, phi, m_, scale=a)
+    return sp.integrate(f, (phi, 0, 2 * sp.pi))
 
 
 @cache
@@ -91,8 +124,8 @@ def uniform_displacement_outside() -> tuple[sp.Expr, sp.Expr]:
     root = sp.sqrt(1 - m * sp.sin(beta) ** 2)
     split = a * t * (root - (1 - m) / root) / m
     assert sp.simplify(split - integrand) == 0
-    integral = (a * t / m) * (sp.integrate(root, (beta, 0, sp.pi / 2))
-                              - (1 - m) * sp.integrate(1 / root, (beta, 0, sp.pi / 2)))
+    integral = (a * t / m) * (complete_elliptic(root, beta, m)
+                              - (1 - m) * complete_elliptic(1 / root, beta, m))
     u = sp.simplify(4 * p0 / (sp.pi * E_star) * integral).subs(t, a / r)
     # (E(m) - (1 - m) K(m))/m = (pi/4) 2F1(1/2, 1/2; 2; m): no cancellation for r >> a
     h = sp.hyper([sp.Rational(1, 2), sp.Rational(1, 2)], [2], a**2 / r**2)
