@@ -265,12 +265,12 @@ RELATIONS = (
     ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx_deep', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_zz', '(5.48)', 'stress', '-a**2*p0/(a**2 + z**2)', ''),
-    ('stress_hertz_sigma_rr', 'Fig. 5.9', 'stress', 'p0*(-xi**2*sin(beta)**2*cos(beta)/((xi**2 + 1)*(xi**2 + cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
-    ('stress_hertz_sigma_rr_far', 'Fig. 5.9', 'stress', 'p0*(-xi**2*sin(beta)**2*cos(beta)/((xi**2 + 1)*(xi**2 + cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
-    ('stress_hertz_sigma_tt', 'Fig. 5.9', 'stress', 'p0*((1 - 2*nu)*(cos(beta)**2 + cos(beta) - 1)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
-    ('stress_hertz_sigma_tt_far', 'Fig. 5.9', 'stress', 'p0*((1 - 2*nu)*(cos(beta)**2 + cos(beta) - 1)/((xi**2 + 1)*(3*cos(beta) + 3)) - (nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1)))*cos(beta))', ''),
-    ('stress_hertz_sigma_zz', 'Fig. 5.9', 'stress', '-p0*cos(beta)**3/(xi**2 + cos(beta)**2)', ''),
-    ('stress_hertz_tau_rz', 'Fig. 5.9', 'stress', '-p0*xi*sin(beta)*cos(beta)**2/(sqrt(xi**2 + 1)*(xi**2 + cos(beta)**2))', ''),
+    ('stress_hertz_sigma_rr', 'Fig. 5.9', 'stress', 'p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))', ''),
+    ('stress_hertz_sigma_rr_far', 'Fig. 5.9', 'stress', 'p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))', ''),
+    ('stress_hertz_sigma_tt', 'Fig. 5.9', 'stress', 'p0*(-eta*(nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))', ''),
+    ('stress_hertz_sigma_tt_far', 'Fig. 5.9', 'stress', 'p0*(-eta*(nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))', ''),
+    ('stress_hertz_sigma_zz', 'Fig. 5.9', 'stress', '-eta**3*p0/(eta**2 + xi**2)', ''),
+    ('stress_hertz_tau_rz', 'Fig. 5.9', 'stress', '-chi*eta**2*p0*xi/((eta**2 + xi**2)*sqrt(xi**2 + 1))', ''),
     ('stress_spheroidal_cos_beta_inside', 'Johnson (1985), (3.44)', 'stress', 'sqrt(-z**2/2 - (-a + r)*(a + r)/2 + sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2)/2)/a', ''),
     ('stress_spheroidal_u', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
     ('stress_spheroidal_u_inside', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
@@ -3798,7 +3798,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
     return -a**2*p0/(a**2 + z**2)
 
 
-def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -3815,13 +3815,15 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : float or ndarray
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-xi**2*numpy.sin(beta)**2*numpy.cos(beta)/((xi**2 + 1)*(xi**2 + numpy.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -3838,10 +3840,10 @@ def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : float or ndarray
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : float or ndarray
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : float or ndarray
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*((1 - 2*nu)*(numpy.cos(beta)**2 + numpy.cos(beta) - 1)/((xi**2 + 1)*(3*numpy.cos(beta) + 3)) - (nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1))*numpy.cos(beta))
+    return p0*(-eta*(nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
 def textbook_stress_spheroidal_u(a, r, z):

@@ -2692,8 +2692,8 @@ def stress_axis_sigma_zz(a, p0, z):
     return -a**2*p0/(a**2 + z**2)
 
 
-def stress_hertz_sigma_rr(nu, p0, xi, beta):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+def stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta) (for xi < 1).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -2709,13 +2709,15 @@ def stress_hertz_sigma_rr(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : mpmath.mpf
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-xi**2*mpmath.sin(beta)**2*mpmath.cos(beta)/((xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*(-mpmath.atan(xi) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*(-mpmath.atan(xi) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -2735,14 +2737,16 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : mpmath.mpf
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-xi**2*mpmath.sin(beta)**2*mpmath.cos(beta)/((xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - mpmath.mpf(2)/mpmath.mpf(15)*(nu + 1)*mpmath.cos(beta)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_tt(nu, p0, xi, beta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc (for xi < 1).
+def stress_hertz_sigma_tt(nu, p0, xi, eta):
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta) (for xi < 1).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -2758,13 +2762,13 @@ def stress_hertz_sigma_tt(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*((1 - 2*nu)*(mpmath.cos(beta)**2 + mpmath.cos(beta) - 1)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*(-mpmath.atan(xi) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+    return p0*(-eta*(nu + 1)*(-xi*(-mpmath.atan(xi) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -2784,14 +2788,14 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*((1 - 2*nu)*(mpmath.cos(beta)**2 + mpmath.cos(beta) - 1)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - mpmath.mpf(2)/mpmath.mpf(15)*(nu + 1)*mpmath.cos(beta)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)))
+    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def stress_hertz_sigma_zz(p0, xi, beta):
-    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+def stress_hertz_sigma_zz(p0, xi, eta):
+    """Normal stress sigma_zz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -2805,14 +2809,14 @@ def stress_hertz_sigma_zz(p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return -p0*mpmath.cos(beta)**3/(xi**2 + mpmath.cos(beta)**2)
+    return -eta**3*p0/(eta**2 + xi**2)
 
 
-def stress_hertz_tau_rz(p0, xi, beta):
-    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc.
+def stress_hertz_tau_rz(p0, xi, eta, chi):
+    """Shear stress tau_rz [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -2826,10 +2830,12 @@ def stress_hertz_tau_rz(p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : mpmath.mpf
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return -p0*xi*mpmath.sin(beta)*mpmath.cos(beta)**2/(mpmath.sqrt(xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2))
+    return -chi*eta**2*p0*xi/((eta**2 + xi**2)*mpmath.sqrt(xi**2 + 1))
 
 
 def stress_spheroidal_cos_beta_inside(a, r, z):
@@ -3567,7 +3573,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
     return -a**2*p0/(a**2 + z**2)
 
 
-def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, beta):
+def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -3584,13 +3590,15 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
+    chi : mpmath.mpf
+        sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-xi**2*mpmath.sin(beta)**2*mpmath.cos(beta)/((xi**2 + 1)*(xi**2 + mpmath.cos(beta)**2)) + (1 - 2*nu)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*mpmath.atan(1/xi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*mpmath.atan(1/xi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
-def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, beta):
+def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
@@ -3607,10 +3615,10 @@ def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, beta):
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     xi : mpmath.mpf
         oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2 [1]
-    beta : mpmath.mpf
-        oblate spheroidal angle: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [rad]
+    eta : mpmath.mpf
+        cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*((1 - 2*nu)*(mpmath.cos(beta)**2 + mpmath.cos(beta) - 1)/((xi**2 + 1)*(3*mpmath.cos(beta) + 3)) - (nu + 1)*(-xi*mpmath.atan(1/xi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1))*mpmath.cos(beta))
+    return p0*(-eta*(nu + 1)*(-xi*mpmath.atan(1/xi) + 1 - (mpmath.mpf(1)/mpmath.mpf(3))/(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
 def textbook_stress_spheroidal_u(a, r, z):
