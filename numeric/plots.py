@@ -48,24 +48,36 @@ def axis_stresses_figure(path, nu: float = 0.33, z_max: float = 3.0) -> Path:
     >>> hertzmdr.numeric.plots.axis_stresses_figure("fig5_8.png", nu=0.33)  # doctest: +SKIP
     """
     nu = float(poisson("nu", nu))
-    plt = _pyplot()
     s = np.linspace(0.0, z_max, 601)
     szz, sxx = stress.axis_stresses(s, 1.0, 1.0, nu)
     tau1 = 0.5 * np.abs(szz - sxx)
     zm, tm = stress.axis_max_shear(nu)
+    return draw_axis_stresses(
+        path, s, szz, sxx, tau1, xlabel="z / a", ylabel="stress / p0",
+        title=f"Stresses on the axis under the Hertz pressure, nu = {nu:g} (Fig. 5.8)",
+        mark=(zm, tm, f"max {tm:.4f} p0 at z = {zm:.4f} a"), ylim=(-1.05, 0.45))
+
+
+def draw_axis_stresses(path, z, szz, sxx, tau1, *, xlabel, ylabel, title, mark=None,
+                       ylim=None) -> Path:
+    """Draw sigma_zz, sigma_xx = sigma_yy and tau_1 against depth (the layout of Fig. 5.8),
+    from arrays in any units; ``mark`` = (z, tau, text) annotates the maximum."""
+    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6.0, 4.2), dpi=120)
-    ax.plot(s, szz, label=r"$\sigma_{zz}/p_0$ (5.48)")
-    ax.plot(s, sxx, label=r"$\sigma_{xx}/p_0=\sigma_{yy}/p_0$ (5.49)")
-    ax.plot(s, tau1, label=r"$\tau_1/p_0=|\sigma_{zz}-\sigma_{xx}|/(2p_0)$")
-    ax.plot([zm], [tm], "ko", ms=4)
-    ax.annotate(f"max {tm:.4f} p0 at z = {zm:.4f} a", (zm, tm), xytext=(1.0, 0.36),
-                arrowprops={"arrowstyle": "->"}, fontsize=8)
-    ax.set_ylim(-1.05, 0.45)
+    ax.plot(z, szz, label=r"$\sigma_{zz}$ (5.48)")
+    ax.plot(z, sxx, label=r"$\sigma_{xx}=\sigma_{yy}$ (5.49)")
+    ax.plot(z, tau1, label=r"$\tau_1=|\sigma_{zz}-\sigma_{xx}|/2$")
+    if mark is not None:
+        zm, tm, text = mark
+        ax.plot([zm], [tm], "ko", ms=4)
+        ax.annotate(text, (zm, tm), xytext=(0.35, 0.9), textcoords="axes fraction",
+                    arrowprops={"arrowstyle": "->"}, fontsize=8)
+    if ylim is not None:
+        ax.set_ylim(*ylim)
     ax.axhline(0.0, color="0.6", lw=0.6)
-    ax.set_xlabel("z / a")
-    ax.set_ylabel("stress / p0")
-    ax.set_title(f"Stresses on the axis under the Hertz pressure, nu = {nu:g} (Fig. 5.8)",
-                 fontsize=9)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
     ax.legend(loc="lower right", fontsize=8)
     fig.tight_layout()
     out = Path(path)
@@ -99,27 +111,36 @@ def von_mises_figure(path, nu: float = 0.33, x_max: float = 2.0, z_max: float = 
     >>> hertzmdr.numeric.plots.von_mises_figure("fig5_9.png", nu=0.33)  # doctest: +SKIP
     """
     nu = float(poisson("nu", nu))
-    plt = _pyplot()
     x = np.linspace(-x_max, x_max, n)
     z = np.linspace(0.0, z_max, n)
     X, Z = np.meshgrid(x, z)
     vm = stress.von_mises(stress.hertz_stress(X, 0.0, Z, 1.0, 1.0, nu))
     val, _, zb = stress.hertz_maximum(nu)
+    return draw_von_mises(
+        path, X, Z, vm, xlabel="x / a", ylabel="z / a", clabel=r"$\sigma_V / p_0$ (5.50)",
+        title=f"von Mises stress / p0 under the Hertz pressure, nu = {nu:g} (Fig. 5.9)",
+        mark=(0.0, zb, f"max {val:.4f} p0 at z = {zb:.4f} a"))
+
+
+def draw_von_mises(path, X, Z, vm, *, xlabel, ylabel, clabel, title, mark=None) -> Path:
+    """Draw a von Mises map in the x-z plane, depth downwards (the layout of Fig. 5.9), from
+    grids in any units; ``mark`` = (x, z, text) annotates the maximum."""
+    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 3.8), dpi=120)
-    top = np.ceil(max(val, float(vm.max())) * 20) / 20
-    cs = ax.contourf(X, Z, vm, levels=np.linspace(0, top, int(round(top * 40)) + 1),
-                     cmap="viridis")
-    ax.contour(X, Z, vm, levels=np.linspace(0.1, 0.6, 6), colors="w", linewidths=0.5)
-    ax.plot([0.0], [zb], "r+", ms=10)
-    ax.annotate(f"max {val:.4f} p0 at z = {zb:.4f} a", (0.0, zb), xytext=(-1.9, 1.75),
-                color="w", arrowprops={"arrowstyle": "->", "color": "w"})
-    ax.set_ylim(z_max, 0.0)
+    top = float(np.nanmax(vm))
+    cs = ax.contourf(X, Z, vm, levels=np.linspace(0, top, 41), cmap="viridis")
+    ax.contour(X, Z, vm, levels=np.linspace(0.1, 0.9, 5) * top, colors="w", linewidths=0.5)
+    if mark is not None:
+        xm, zm, text = mark
+        ax.plot([xm], [zm], "r+", ms=10)
+        ax.annotate(text, (xm, zm), xytext=(0.03, 0.08), textcoords="axes fraction",
+                    color="w", arrowprops={"arrowstyle": "->", "color": "w"})
+    ax.set_ylim(float(np.max(Z)), 0.0)
     ax.set_aspect("equal")
-    ax.set_xlabel("x / a")
-    ax.set_ylabel("z / a")
-    ax.set_title(f"von Mises stress / p0 under the Hertz pressure, nu = {nu:g} (Fig. 5.9)",
-                 fontsize=9)
-    fig.colorbar(cs, ax=ax, label=r"$\sigma_V / p_0$ (5.50)")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
+    fig.colorbar(cs, ax=ax, label=clabel)
     fig.tight_layout()
     out = Path(path)
     fig.savefig(out)

@@ -209,3 +209,10 @@ def test_stress_node_runs_once_and_only_when_asked():
     spec["effects"] = ["force"]
     record, _, _ = scene.load(spec).run_full()
     assert "stress" not in record.evaluated
+
+
+def test_fig5_8_maximum_shear_depth():
+    """Fig. 5.8: for nu = 0.33 the maximum shear lies at z ~ 0.49 a (two digits printed)."""
+    doc = scene.load(EXAMPLES / "fig5_8_fig5_9_stresses.toml").run()
+    a = doc["effects"]["contact_radius"]["value"]
+    assert abs(doc["effects"]["max_shear"]["value"]["depth"] / a - 0.49) < 0.005

@@ -77,7 +77,40 @@ def mdr_profile(value, title, path):
           path)
 
 
+def axis_stresses(value, title, path):
+    """Stresses on the axis (the layout of Fig. 5.8), in the scene's units."""
+    import numpy as np
+
+    from hertzmdr.numeric import plots
+
+    z, zlabel = _scaled(value["z"], "z", "m")
+    top = max(float(np.max(np.abs(value[k]))) for k in ("sigma_zz", "sigma_rr", "tau_1"))
+    scale, slabel = _scaled([top], "stress", "Pa")
+    f = float(scale[0]) / top
+    plots.draw_axis_stresses(path, z, np.asarray(value["sigma_zz"]) * f,
+                             np.asarray(value["sigma_rr"]) * f, np.asarray(value["tau_1"]) * f,
+                             xlabel=zlabel, ylabel=slabel,
+                             title=f"{title}\nstresses on the axis (Fig. 5.8)")
+
+
+def von_mises_field(value, title, path):
+    """The von Mises stress in the x-z plane (the layout of Fig. 5.9), in the scene's units."""
+    import numpy as np
+
+    from hertzmdr.numeric import plots
+
+    x, xlabel = _scaled(value["x"], "x", "m")
+    factor = float(x[-1]) / float(value["x"][-1]) if value["x"][-1] else 1.0
+    z = np.asarray(value["z"]) * factor
+    sv, clabel = _scaled(value["sigma_v"], "von Mises stress", "Pa")
+    X, Z = np.meshgrid(x, z)
+    plots.draw_von_mises(path, X, Z, sv, xlabel=xlabel, ylabel=xlabel.replace("x [", "z ["),
+                         clabel=clabel, title=f"{title}\nvon Mises stress (5.50), Fig. 5.9")
+
+
 FIGURES = {
+    "axis_stresses": axis_stresses,
+    "von_mises_field": von_mises_field,
     "mdr_profile": mdr_profile,
     "pressure_profile": pressure_profile,
     "surface_displacement": surface_displacement,
