@@ -6,6 +6,8 @@ derived expressions, evaluated at 35 digits, must agree to 1e-30; the float64 fu
 few ulps (a handful of correctly rounded operations: 1e-14).
 """
 
+from functools import cache
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -13,7 +15,7 @@ import pytest
 from hertzmdr.numeric import _generated as g
 
 from kernels import force_axisymmetric, uz_axisymmetric
-from oracle import FULL, assert_close
+from oracle import FULL, Arg, assert_close, assert_mpmath_equal, n_points
 
 DPS = 35
 TOL_DERIVED = 1e-30  # kernel quadrature error ~1e-33 at 35 digits
@@ -135,3 +137,57 @@ def test_derived_expressions_to_30_digits():
 def test_arrays_broadcast():
     a = np.array([1e-3, 2e-3, 4e-3])
     np.testing.assert_allclose(g.punch_stiffness(1e9, a), 2e9 * a, rtol=1e-15)
+
+
+# -- float64 sweeps over decades -------------------------------------------------------------
+# By linearity and scaling, u_z(r) = p0 a U(r/a)/E* with U the displacement of the unit load
+# on the unit disc: the kernel quadrature gives U once per ratio r/a (35 digits), and the sweep
+# varies E*, a and p0 over decades. The force is a 1-D quadrature of the pressure (50 digits).
+RATIOS = {"inside": (0.0, 0.3, 0.8), "outside": (1.5, 10.0)}
+SWEEP = {"E_star": Arg(1e3, 1e12), "a": Arg(1e-9, 1e3), "p0": Arg(1e3, 1e12)}
+
+
+@cache
+def _unit_displacement(kind, ratio):
+    load = {"punch": punch(mp.mpf(1), mp.mpf(1)), "hertz": hertzian(mp.mpf(1), mp.mpf(1)),
+            "uniform": lambda gap: mp.mpf(1)}[kind]
+    with mp.workdps(DPS):
+        return uz_axisymmetric(load, mp.mpf(ratio), 1, 1)
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("name, kind, where", [
+    ("punch_pressure_displacement", "punch", "inside"),
+    ("punch_pressure_displacement_outside", "punch", "outside"),
+    ("hertz_pressure_displacement", "hertz", "inside"),
+    ("hertz_pressure_displacement_outside", "hertz", "outside"),
+    ("uniform_pressure_displacement", "uniform", "inside"),
+    ("uniform_pressure_displacement_outside", "uniform", "outside"),
+])
+def test_displacement_sweep(name, kind, where):
+    fn = getattr(g, name)
+    for ratio in RATIOS[where]:
+        U = _unit_displacement(kind, ratio)
+
+        def func(E_star, a, p0, ratio=ratio):
+            if name == "punch_pressure_displacement":  # uniform inside: no r argument
+                return fn(E_star, a, p0)
+            return fn(E_star, a, p0, ratio * a)
+
+        def ref(E_star, a, p0, U=U):
+            return p0 * a * U / E_star
+
+        # the Hertz textbook form outside loses (r/a)^2 ulps (see test_outside_displacement)
+        tol = TOL_FLOAT * (ratio**2 if name == "hertz_pressure_displacement_outside" else 1)
+        assert_mpmath_equal(func, ref, SWEEP, rtol=tol, n=n_points(60, 8), dps=DPS, name=name)
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("name, n", [("punch_pressure_force", -0.5),
+                                     ("hertz_pressure_force", 0.5), ("uniform_pressure_force", 0)])
+def test_force_sweep(name, n):
+    def ref(a, p0):
+        return force_axisymmetric(lambda r: p0 * (1 - (r / a) ** 2) ** mp.mpf(n), a)
+
+    assert_mpmath_equal(getattr(g, name), ref, {"a": Arg(1e-9, 1e3), "p0": Arg(1e3, 1e12)},
+                        rtol=TOL_FLOAT, n=n_points(100, 12), dps=50, name=name)
