@@ -106,6 +106,24 @@ def main():
     ]
     for n_psi, level, dt, act, est in rows:
         lines.append(f"| {n_psi} | {level} | {dt * 1e3:.1f} ms | {act:.1e} | {est:.1e} |\n")
+    lines += [
+        "\nOther pressures (error estimates only, default resolution n_psi = 64, level 5, at "
+        "(r, z) = (0.5, 0.1), (0.99, 0.01), (2, 0.5) a): \n\n",
+        "| pressure | worst estimate, relative to the tensor |\n|---|---|\n",
+    ]
+    for name, p in (("flat punch (1 - r^2)^(-1/2)", lambda r: 1 / np.sqrt(1 - r * r)),
+                    ("cone arccosh(a/r) (log-singular at r = 0)",
+                     lambda r: np.arccosh(1 / np.maximum(r, 1e-300)))):
+        sig, err = stress.superposed_stress([0.5, 0.99, 2.0], 0.0, [0.1, 0.01, 0.5], p, 1.0,
+                                            0.3)
+        rel = np.max(err, axis=(-2, -1)) / np.max(np.abs(sig), axis=(-2, -1))
+        lines.append(f"| {name} | {rel.max():.1e} |\n")
+    lines.append(
+        "\nThe rim singularities of MDR pressures sit at the ends of every ray, where tanh-sinh "
+        "is at home; a singularity inside the disc (the cone's logarithm at r = 0) lies inside "
+        "the rays through the centre and converges more slowly, as the estimate shows. The route "
+        "takes z > 0: on the surface sigma_zz = -p(r) and the tangential stresses need the "
+        "principal value of the kernel.\n")
     (DOCS / "stress.md").write_text("".join(lines))
     print("".join(lines))
 

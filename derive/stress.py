@@ -11,17 +11,20 @@ Starting points:
 - tau_1 = (sigma_rr - sigma_zz)/2 on the axis; its maximum is the root of d(tau_1)/dz
   (:func:`axis_maxima`, 30 digits with mpmath). On the axis the von Mises stress (5.50) is
   |sigma_rr - sigma_zz| = 2 tau_1 (sigma_xx = sigma_yy, no shear), so it peaks at the same depth.
-- Off the axis, Huber's (1904) closed form, in the form of Johnson, Contact Mechanics (1985),
-  eqs. (3.44), rewritten in the oblate spheroidal coordinates of the contact disc,
-  r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta): xi^2 = u/a^2 where u is the positive
-  root of r^2/(a^2 + u) + z^2/u = 1 (Johnson's u), and cos(beta) = z/u^(1/2). In these
-  variables the a^2/r^2 (1 - (z/u^(1/2))^3) term of Johnson's sigma_r, sigma_theta (0/0 on the
-  axis) becomes (1 + eta + eta^2)/((1 + xi^2)(1 + eta)) with eta = cos(beta), and
-  1 - xi atan(1/xi) = (w/3) 2F1(1, 1; 5/2; w), w = 1/(1 + xi^2), whose cancellation far from
-  the contact is gone; regrouped, every term decays like the point-force field. The form is
-  verified in ``tests/test_stress.py`` against mpmath superposition of the derived (5.41)-(5.46)
-  over the pressure (12 digits and more), by equilibrium and the surface tractions on grids,
-  and here symbolically: on the axis (beta = 0) it reduces to the derived (5.48), (5.49).
+- Off the axis, Huber's (1904) closed form, as given by Johnson, Contact Mechanics (1985),
+  eqs. (3.44) (:func:`johnson_field`; typed in, the one literature input), rewritten in the
+  oblate spheroidal coordinates of the contact disc, r = a (1 + xi^2)^(1/2) sin(beta),
+  z = a xi cos(beta): xi^2 = u/a^2 where u is the positive root of r^2/(a^2 + u) + z^2/u = 1
+  (Johnson's u, derived here by ``sp.solve``), and cos(beta) = z/u^(1/2). With eta = cos(beta)
+  and chi = sin(beta) passed as arguments (beta itself would lose cos(beta) near the surface
+  outside the contact), the a^2/r^2 (1 - eta^3) term of sigma_r, sigma_theta (0/0 on the axis)
+  becomes (1 + eta + eta^2) w/(1 + eta), w = 1/(1 + xi^2), and the terms that cancel far away
+  and on the axis are grouped into K = 1 - xi atan(1/xi) - w/3 = (2/15) w^2 2F1(1, 2; 7/2; w),
+  printed for xi >= 1 as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2 (Pfaff). Every term then
+  decays like the point-force field. ``tests/test_stress.py`` checks the form against mpmath
+  superposition of the derived (5.41)-(5.46) over the pressure, against Johnson's form at
+  50 digits, by equilibrium and the surface tractions on grids, and symbolically: on the axis
+  (eta = 1, chi = 0) it is the derived (5.48), (5.49).
 """
 
 from __future__ import annotations
