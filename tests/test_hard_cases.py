@@ -177,6 +177,85 @@ CASES += [
 ]
 
 
+def _kappa(n):
+    from test_powerlaw import kappa_reference
+
+    from hertzmdr.numeric import powerlaw
+
+    return (lambda: powerlaw.kappa(n)), (lambda: kappa_reference(mp.mpf(n)))
+
+
+def _normalized_pressure(n, rt):
+    """p/p_mean (Fig. 5.17) at r/a = rt: (n + 1)/2 integral_rt^1 xi^(n-1)/sqrt(xi^2 - rt^2)."""
+    from hertzmdr.numeric import powerlaw
+
+    def ref():
+        n_, rt_ = mp.mpf(n), mp.mpf(rt)
+        # xi = rt cosh(t) removes the 1/sqrt at xi = rt
+        f = lambda t: (rt_ * mp.cosh(t)) ** (n_ - 1)  # noqa: E731
+        return (n_ + 1) / 2 * mp.quad(f, [0, mp.acosh(1 / rt_)])
+    return (lambda: powerlaw.pressure_normalized(rt, n)), ref
+
+
+def _axis_stress(comp, nu, z_over_a):
+    from test_stress import _axis_reference
+
+    from hertzmdr.numeric import stress
+
+    idx = 0 if comp == "zz" else 1
+    return (lambda: stress.axis_stresses(z_over_a, 1.0, 1.0, nu)[idx]), \
+        (lambda: _axis_reference(comp, mp.mpf(nu), mp.mpf(z_over_a)))
+
+
+def _cone_tip(r_over_a):
+    """The cone's pressure near the tip: (5.59) with g' = (pi/2) tan(theta) is
+    (E* tan(theta)/2) acosh(a/r), the quadrature of 1/sqrt(x^2 - r^2) over [r, a] done exactly."""
+    from hertzmdr.numeric import cone
+
+    theta, E, d = 0.3, 1e9, 1e-6
+    a = float(cone.contact_radius(d, theta))
+    r = r_over_a * a
+
+    def ref():
+        am = 2 * mp.mpf(d) / (mp.pi * mp.tan(mp.mpf(theta)))  # (5.38) from the MDR, g(a) = d
+        return mp.mpf(E) * mp.tan(mp.mpf(theta)) / 2 * mp.acosh(am / mp.mpf(r))
+    return (lambda: cone.pressure(r, d, theta, E)), ref
+
+
+def _edge_sigma_rr(nu):
+    """At the contact edge on the surface sigma_rr = (1 - 2 nu) p0/3 (Johnson 1985, 3.41)."""
+    from hertzmdr.numeric import stress
+
+    return (lambda: stress.hertz_stress_cylindrical(1.0, 0.0, 1.0, 1.0, nu)[0]), \
+        (lambda: (1 - 2 * mp.mpf(nu)) / 3)
+
+
+CASES += [
+    Case("kappa_n at n = 0.1", "n -> 0+: Gamma(n/2 + 1/2) and Gamma(n/2 + 1) of small "
+         "arguments", *_kappa(0.1), WELL),
+    Case("kappa_n at n = 1e6", "the Gamma ratio overflows float64 beyond n ~ 340; the Stirling "
+         "series must take over", *_kappa(1e6), WELL),
+    Case("p/p_mean of the power law n = 1e3 at r = a/2", "n -> inf tends to the flat punch "
+         "(Fig. 5.17): xi^(n-1) underflows over most of the range", *_normalized_pressure(1e3, 0.5),
+         1e3 * 10 * EPS, "the integrand's condition number ~ n, times 10 eps"),
+    Case("cone pressure at r = 1e-12 a", "the log singularity of (5.39) at the tip",
+         *_cone_tip(1e-12), WELL),
+    Case("cone pressure at r = a (1 - 1e-10)", "acosh(a/r) of an argument next to 1",
+         *_cone_tip(1 - 1e-10), 4 * EPS / (2 * 1e-10),
+         "acosh(1 + e) has the relative condition number 1/(2 e) = 5e9 in its argument, and "
+         "a/r carries a few roundings (a from d and theta, the quotient): 4 eps/(2 e)"),
+    Case("sigma_xx on the axis at z = 1e4 a", "z -> inf: 1 - (z/a) atan(a/z) cancels all digits "
+         "in (5.49); the printed deep form does not", *_axis_stress("xx", 0.3, 1e4), WELL),
+    Case("sigma_xx on the axis at z = 1e-6 a", "z -> 0", *_axis_stress("xx", 0.3, 1e-6), WELL),
+    Case("sigma_xx on the axis at z = 100 a with nu = 0.5", "nu = 1/2: the leading far-field "
+         "term of (5.49) vanishes and the rest cancels", *_axis_stress("xx", 0.5, 100.0), WELL),
+    Case("sigma_zz on the axis at z = 1e4 a", "z -> inf: (5.48) decays as (a/z)^2",
+         *_axis_stress("zz", 0.3, 1e4), WELL),
+    Case("sigma_rr at the contact edge, nu = 0.3", "the surface at r = a, where the pressure's "
+         "slope is infinite", *_edge_sigma_rr(0.3), WELL),
+]
+
+
 @pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
 def test_hard_case(case):
     got = case.compute()

@@ -216,3 +216,19 @@ def test_fig5_8_maximum_shear_depth():
     doc = scene.load(EXAMPLES / "fig5_8_fig5_9_stresses.toml").run()
     a = doc["effects"]["contact_radius"]["value"]
     assert abs(doc["effects"]["max_shear"]["value"]["depth"] / a - 0.49) < 0.005
+
+
+def test_accuracy_rtol_changes_the_numerical_effects():
+    """[accuracy] rtol reaches the numerical methods: the impact's integrated motion reports a
+    larger disagreement with the closed form at rtol 1e-4 than at 1e-12 (both within their
+    tolerance's reach: DOP853's global error is a small multiple of rtol)."""
+    base = {"effects": ["contact_time"],
+            "load": {"impact": {"velocity": 1.0, "density": "7.8 g/cm^3"}},
+            "body": [{"shape": "sphere", "radius": "10 mm", "E": "210 GPa", "nu": 0.3},
+                     {"shape": "flat", "rigid": True}]}
+    loose = scene.load({**base, "accuracy": {"rtol": 1e-4}}).run()["effects"]["contact_time"]
+    tight = scene.load({**base, "accuracy": {"rtol": 1e-12}}).run()["effects"]["contact_time"]
+    assert 1e-8 < loose["rel_error"] < 1e-3
+    assert tight["rel_error"] < 1e-10
+    assert "rtol 0.0001" in loose["method"] and "rtol 1e-12" in tight["method"]
+    assert loose["seconds"] > 0 and tight["seconds"] > 0

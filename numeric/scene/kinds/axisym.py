@@ -344,7 +344,7 @@ class Worn(Axisymmetric):
             b, R = self.b, self.R
             self._profile = mdr.Profile.from_callable(
                 lambda r: np.where(r < b, 0.0, (r * r - b * b) / (2 * R)), r_max=2 * a,
-                breakpoints=(b,) if 0 < b < 2 * a else ())
+                breakpoints=(b,) if 0 < b < 2 * a else (), rtol=self.rtol or 1e-10)
         return self._profile.solve(depth=float(d), E_star=self.E_star, rtol=self.rtol or 1e-8)
 
     def p(self, r, d):
