@@ -232,3 +232,12 @@ def test_accuracy_rtol_changes_the_numerical_effects():
     assert tight["rel_error"] < 1e-10
     assert "rtol 0.0001" in loose["method"] and "rtol 1e-12" in tight["method"]
     assert loose["seconds"] > 0 and tight["seconds"] > 0
+
+
+def test_height_map_meets_hertz():
+    """The sampled paraboloid (R = 1 mm) solved by the BEM agrees with (5.23) within the
+    error the scene reports (its difference from a half-resolution solve)."""
+    doc = scene.load(EXAMPLES / "height_map_tip.toml").run()
+    F = doc["effects"]["force"]
+    hertz_F = 4 / 3 * 2e9 / (1 - 0.16) * 1e-3**0.5 * 1e-7**1.5  # (5.23)
+    assert abs(F["value"] / hertz_F - 1) <= F["rel_error"]

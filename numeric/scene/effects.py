@@ -26,6 +26,7 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
     Effect("contact_radius", "m", "contact radius a of a circular contact (5.21), (5.55)"),
     Effect("semi_axes", "m", "semi-axes [a, b] of an elliptical contact (5.28), exact"),
     Effect("half_width", "m", "half-width a of the contact strip of a line contact (5.35)"),
+    Effect("contact_area", "m^2", "contact area (BEM contacts: polygon punches, height maps)"),
     Effect("max_pressure", "Pa", "maximum contact pressure (5.22), (5.37)"),
     Effect("mean_pressure", "Pa", "mean pressure: force over contact area"),
     Effect("stiffness", "N/m", "differential normal stiffness dF/dd (Problem 5)"),

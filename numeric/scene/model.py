@@ -74,6 +74,8 @@ def _build(spec: SceneSpec):
         return _quadratic(spec, E_star)
     if shapes <= AXISYMMETRIC:
         return _axisymmetric(spec, E_star)
+    if shapes & {"polygon_punch", "height_map"}:
+        return _grid(spec, E_star)
     names = ", ".join(sorted(shapes))
     raise SceneError(spec.source, "body", f"this combination of shapes ({names}) "
                      "is not supported yet")
@@ -156,3 +158,21 @@ def _line(spec: SceneSpec, E_star: float, R: float):
     if not L > 0:
         raise SceneError(spec.source, "body", f"the cylinder length must be > 0, got {L}")
     return LineContact(E_star, spec.rtol, R, L)
+
+
+def _grid(spec: SceneSpec, E_star: float):
+    """A polygonal punch or a height map on a flat: the half-space BEM."""
+    from hertzmdr.numeric.scene.kinds import grid
+
+    others = [b for b in spec.bodies if b.shape not in ("polygon_punch", "height_map")]
+    if len(others) != 1 or others[0].shape != "flat":
+        raise SceneError(spec.source, "body", "a polygon_punch or height_map presses on a "
+                         "flat body: give the other body shape = \"flat\"")
+    b = next(b for b in spec.bodies if b.shape in ("polygon_punch", "height_map"))
+    try:
+        if b.shape == "polygon_punch":
+            return grid.polygon_punch(E_star, spec.rtol, b.params["vertices"],
+                                      b.params.get("pixels", 128))
+        return grid.height_map(E_star, spec.rtol, b.params["file"], b.params["spacing"])
+    except ValueError as exc:
+        raise SceneError(spec.source, f"body ({b.name})", str(exc)) from None

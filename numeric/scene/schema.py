@@ -34,6 +34,8 @@ SHAPES: dict[str, dict[str, tuple[str, bool]]] = {
     "power_law": {"coefficient": ("number", True), "exponent": ("number", True)},
     "flattened_parabola": {"radius": ("length", True), "flat_radius": ("length", True)},
     "profile": {"r": ("length_list", False), "f": ("length_list", False), "file": ("path", False)},
+    "polygon_punch": {"vertices": ("points", True), "pixels": ("count", False)},
+    "height_map": {"file": ("path", True), "spacing": ("length", True)},
 }
 MATERIAL_KEYS = {"E", "nu", "rigid"}
 TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model"}
@@ -241,6 +243,16 @@ class _Reader:
             if not isinstance(value, str):
                 self.fail(key, "must be a file name (a string)")
             return value
+        if kind == "points":
+            if not isinstance(value, list) or len(value) < 3 or not all(
+                    isinstance(v, list) and len(v) == 2 for v in value):
+                self.fail(key, "must be a list of at least three [x, y] corners")
+            return [[self.quantity(c, "length", f"{key}[{j}]") for c in v]
+                    for j, v in enumerate(value)]
+        if kind == "count":
+            if isinstance(value, bool) or not isinstance(value, int) or not 8 <= value <= 2048:
+                self.fail(key, f"must be an integer in [8, 2048], got {value!r}")
+            return value
         raise AssertionError(kind)
 
     def check_shape(self, shape: str, p: dict, key: str) -> None:
@@ -262,6 +274,13 @@ class _Reader:
             self.fail(f"{key}.flat_radius", f"must be >= 0, got {p['flat_radius']}")
         if shape == "profile":
             self.profile(p, key)
+        if shape == "height_map":
+            if not p["spacing"] > 0:
+                self.fail(f"{key}.spacing", f"must be > 0, got {p['spacing']}")
+            path = (self.base_dir or Path.cwd()) / p["file"]
+            if not path.is_file():
+                self.fail(f"{key}.file", f"height map {str(path)!r} not found")
+            p["file"] = str(path)
 
     def profile(self, p: dict, key: str) -> None:
         if "file" in p:
