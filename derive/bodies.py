@@ -13,7 +13,11 @@ Starting points:
   H = K1 + Q(omega) K2 Q(omega)^T, and its principal curvatures are the eigenvalues of H
   (as in Problem 2). Crossed cylinders are the case 1/R_1b = 1/R_2b = 0, omega = alpha.
 - The elliptic contact by the Gaussian radius (5.28)-(5.31) is the chapter's APPROXIMATION:
-  semi-axes sqrt(R_i d), the ellipsoidal pressure (5.31) with the p0 of (5.22) at R = R~.
+  semi-axes sqrt(R_i d), the ellipsoidal pressure (5.31) with the p0 of (5.22) at R = R~, its
+  force and the depth under a given force. This module is its only derivation:
+  :mod:`hertzmdr.derive.ellipse` derives the exact contact, and
+  ``hertzmdr.numeric.ellipse.solve(..., model="gaussian")`` calls the ``bodies_gaussian_*``
+  functions.
 
 Problem 2 of the chapter takes the eigenvalues of the coefficient matrix of h (h = x^T M x),
 not of its Hessian H = 2M: its principal radii, Gaussian radius and force are wrong (errata).
