@@ -178,9 +178,9 @@ CASES += [
 
 
 def _kappa(n):
-    from test_powerlaw import kappa_reference
-
     from hertzmdr.numeric import powerlaw
+
+    from test_powerlaw import kappa_reference
 
     return (lambda: powerlaw.kappa(n)), (lambda: kappa_reference(mp.mpf(n)))
 
@@ -198,9 +198,9 @@ def _normalized_pressure(n, rt):
 
 
 def _axis_stress(comp, nu, z_over_a):
-    from test_stress import _axis_reference
-
     from hertzmdr.numeric import stress
+
+    from test_stress import _axis_reference
 
     idx = 0 if comp == "zz" else 1
     return (lambda: stress.axis_stresses(z_over_a, 1.0, 1.0, nu)[idx]), \
