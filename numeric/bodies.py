@@ -106,7 +106,9 @@ def _radii_from_curvatures(k1, k2, names):
                          "and the larger > 0 for the bodies to touch in a point or a line")
     R_1 = 1 / k1
     R_2 = np.full(k2.shape, np.inf)
-    np.divide(1.0, k2, out=R_2, where=k2 > 0)
+    with np.errstate(over="ignore"):  # k2 below 1/DBL_MAX (cylinders crossed at ~1e-154 rad):
+        np.divide(1.0, k2, out=R_2, where=k2 > 0)  # R_2 = inf, the line-contact limit, is right
+
     return result(R_1), result(R_2)
 
 
