@@ -501,7 +501,7 @@ class Profile:
                 if Ft > Fmax:
                     raise ValueError(f"force = {Ft} exceeds F(r_max) = {Fmax}")
                 a = brentq(lambda aa, rp=rep, ft=Ft: self._force_of_radius(rp, aa, E_star) - ft,
-                           0.0, self.r_max, xtol=1e-16 * self.r_max, rtol=4e-16)
+                           0.0, self.r_max, xtol=1e-16 * self.r_max, rtol=1e-15)
                 d = float(rep.g_direct(np.array([a]))[0])
             out.append((d, a, self._force(rep, a, d, E_star)))
         (d, a, F), (dc, ac, Fc) = out
