@@ -176,7 +176,11 @@ class _Rep:
             parts = []
             for lo, hi in zip(self.edges[:-1], self.edges[1:], strict=True):
                 kn = self.knots[(self.knots > lo) & (self.knots < hi)]
-                grade = np.concatenate([lo + (hi - lo) * _GRADE[:20], hi - (hi - lo) * _GRADE[:20]])
+                # grade towards the centre and towards kinks (not towards r_max): 10 levels
+                # keep the spline of g' well conditioned (spacing ratios <= 2^10)
+                grade = lo + (hi - lo) * _GRADE[:10]
+                if hi < self.edges[-1]:
+                    grade = np.concatenate([grade, hi - (hi - lo) * _GRADE[:10]])
                 parts.append(np.unique(np.concatenate([[lo, hi], kn, grade])))
             X = np.unique(np.concatenate(parts))
             gX, gpX = self.g_direct(X), self.gprime_direct(X)
