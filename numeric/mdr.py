@@ -176,7 +176,11 @@ class _Rep:
             parts = []
             for lo, hi in zip(self.edges[:-1], self.edges[1:], strict=True):
                 kn = self.knots[(self.knots > lo) & (self.knots < hi)]
-                grade = np.concatenate([lo + (hi - lo) * _GRADE[:20], hi - (hi - lo) * _GRADE[:20]])
+                # grade towards the centre and towards kinks (not towards r_max): 10 levels
+                # keep the spline of g' well conditioned (spacing ratios <= 2^10)
+                grade = lo + (hi - lo) * _GRADE[:10]
+                if hi < self.edges[-1]:
+                    grade = np.concatenate([grade, hi - (hi - lo) * _GRADE[:10]])
                 parts.append(np.unique(np.concatenate([[lo, hi], kn, grade])))
             X = np.unique(np.concatenate(parts))
             gX, gpX = self.g_direct(X), self.gprime_direct(X)
@@ -501,7 +505,7 @@ class Profile:
                 if Ft > Fmax:
                     raise ValueError(f"force = {Ft} exceeds F(r_max) = {Fmax}")
                 a = brentq(lambda aa, rp=rep, ft=Ft: self._force_of_radius(rp, aa, E_star) - ft,
-                           0.0, self.r_max, xtol=1e-16 * self.r_max, rtol=4e-16)
+                           0.0, self.r_max, xtol=1e-16 * self.r_max, rtol=1e-15)
                 d = float(rep.g_direct(np.array([a]))[0])
             out.append((d, a, self._force(rep, a, d, E_star)))
         (d, a, F), (dc, ac, Fc) = out
