@@ -111,6 +111,10 @@ def relations() -> list[Relation]:
                  "F/L of the matched pressure with a = sqrt(R d)",
                  f"{TEST}::test_line_by_displacement_gradient",
                  printed=sp.pi / 4 * E_star * L * d),
+        Relation("line_stiffness", "(5.34), differentiated", sp.diff(s["F"], d), (E_star, L),
+                 "differential stiffness dF/dd [N/m] of a line contact of length L (with d "
+                 "defined by (5.35))", "the derivative of (5.34)",
+                 f"{TEST}::test_line_stiffness_by_derivative"),
         Relation("line_depth_from_force", "(5.34), inverted", s["d_F"], (E_star, F, L),
                  "depth d [m] (in the sense of (5.35)) of a line contact under the force F",
                  "(5.34) solved for d", f"{TEST}::test_line_by_displacement_gradient"),

@@ -197,13 +197,12 @@ def numerical_mdr_force() -> Quantity:
 
 
 def impact_time() -> Quantity:
-    import math
-
+    from hertzmdr.numeric import _generated as g
     from hertzmdr.numeric import _generated_mp as gm
     from hertzmdr.numeric import impact, motion
 
     E, R, v0 = E_STEEL, 0.01, 1.0
-    m = 4 / 3 * math.pi * R**3 * 7800.0  # the steel ball of Problem 3, as a number here
+    m = float(g.impact_sphere_mass(R, 7800.0))  # the steel ball of Problem 3
 
     def truth():
         import mpmath as mp

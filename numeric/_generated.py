@@ -97,6 +97,7 @@ __all__ = [
     'line_max_pressure_from_force',
     'line_max_pressure_from_half_width',
     'line_pressure',
+    'line_stiffness',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -237,6 +238,7 @@ RELATIONS = (
     ('line_max_pressure_from_force', '(5.37), third form', 'line', 'sqrt(E_star)*sqrt(F)/(sqrt(pi)*sqrt(L)*sqrt(R))', 'a factor pi is missing under the root: p0 = (E* F/(pi L R))^(1/2) (from p0 = E* a/(2R) and F/L = pi a p0/2; the print is sqrt(pi) = 1.77 times too large)'),
     ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
     ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
+    ('line_stiffness', '(5.34), differentiated', 'line', 'pi*E_star*L/4', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
@@ -2259,6 +2261,24 @@ def line_pressure(E_star, R, d, x):
     import functools
 
     return (1/2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - x**2/(R*d)]))/numpy.sqrt(R)
+
+
+def line_stiffness(E_star, L):
+    """Differential stiffness dF/dd [N/m] of a line contact of length L (with d defined by (5.35)).
+
+    Chapter: (5.34), differentiated. Derived from: the derivative of (5.34).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_stiffness_by_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    L : float or ndarray
+        length of a line contact [m]
+    """
+    return (1/4)*numpy.pi*E_star*L
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):

@@ -97,6 +97,7 @@ __all__ = [
     'line_max_pressure_from_force',
     'line_max_pressure_from_half_width',
     'line_pressure',
+    'line_stiffness',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -2084,6 +2085,24 @@ def line_pressure(E_star, R, d, x):
         coordinate [m]
     """
     return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.sqrt(d)*mpmath.sqrt(max(0, 1 - x**2/(R*d)))/mpmath.sqrt(R)
+
+
+def line_stiffness(E_star, L):
+    """Differential stiffness dF/dd [N/m] of a line contact of length L (with d defined by (5.35)).
+
+    Chapter: (5.34), differentiated. Derived from: the derivative of (5.34).
+
+    Derivation: ``hertzmdr.derive.line``. Verified by
+    ``tests/test_line.py::test_line_stiffness_by_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    L : mpmath.mpf
+        length of a line contact [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):

@@ -126,6 +126,17 @@ def test_line_sweep():
                         ref_F("d"), fdoms, rtol=TOL, n=m, dps=35, name="line_depth_from_force")
 
 
+def test_line_stiffness_by_derivative():
+    """dF/dd of the quadrature force (d from (5.35), a = sqrt(R d)) by mpmath's numerical
+    derivative at 35 digits; the float64 closed form is one product (1e-15)."""
+    E, R, L = 2e11, 0.01, 0.02
+    for d in (1e-9, 1e-6):
+        with mp.workdps(35):
+            k = mp.diff(lambda x: L * reference(mp.mpf(E), mp.mpf(R), mp.sqrt(R * x))[1],
+                        mp.mpf(d))
+        assert abs(g.line_stiffness(E, L) / k - 1) < 1e-15
+
+
 @given(st.floats(1e-9, 1e-1), st.floats(1e-6, 1e2), st.floats(1e3, 1e12),
        st.floats(1.0 + 1e-9, 10.0))
 def test_force_increases_and_inverts(d, L, E, factor):

@@ -54,9 +54,10 @@ class LineContact(Contact):
         return Value(st.force / (2 * a * self.L), "F/(2 a L)", CLOSED_FORM_RTOL)
 
     def effect_stiffness(self, st):
-        return Value(np.full(np.shape(st.force), np.pi / 4 * self.E_star * self.L),
-                     "dF/dd of (5.34): (pi/4) E* L, under the convention (5.35)",
-                     CLOSED_FORM_RTOL)
+        from hertzmdr.numeric import _generated as g
+
+        return Value(np.full(np.shape(st.force), float(g.line_stiffness(self.E_star, self.L))),
+                     "dF/dd of (5.34), under the convention (5.35)", CLOSED_FORM_RTOL)
 
     def effect_pressure_profile(self, st):
         d = self.last(st)
