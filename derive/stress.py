@@ -219,7 +219,8 @@ def relations() -> list[Relation]:
                  "radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure, "
                  "the form of (5.49) (for z < a)",
                  "(5.41) superposed over (5.15) along the axis",
-                 f"{TEST}::test_axis_stresses_by_superposition", printed=printed_xx),
+                 f"{TEST}::test_axis_stresses_by_superposition", printed=printed_xx,
+                 domain={z: a * unit_interval()}),
         Relation("stress_axis_sigma_xx_deep", "(5.49)", s["xx"], (a, nu, p0, z),
                  "radial stress sigma_xx = sigma_yy [Pa] on the axis under the Hertz pressure "
                  "(for z >= a)", "(5.41) superposed over (5.15) along the axis",
