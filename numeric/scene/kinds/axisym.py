@@ -289,6 +289,16 @@ class Worn(Axisymmetric):
     closed form here, by the numerical MDR with its error estimate."""
 
     kind = "flattened_parabola"
+    #: the numerical MDR's pressure misses the 1/sqrt(x - b) singularity of g' at the kink:
+    #: 4-9 % off on the flat (r < b) while its estimate says 0.5 % (checked against the
+    #: quadrature of (5.59) in tests/test_worn.py). Not offered until that is fixed.
+    _NO_PRESSURE = ("pressure_profile", "max_pressure", "axis_stresses", "max_shear",
+                    "von_mises_field", "max_von_mises")
+    why_not = {e: "the worn parabola's pressure (and the stresses under it) is not available "
+               "yet: the numerical MDR is not accurate at the kink r = b" for e in _NO_PRESSURE}
+
+    def has(self, effect):
+        return effect not in self._NO_PRESSURE and super().has(effect)
 
     def __init__(self, E_star, rtol, R, b):
         super().__init__(E_star, rtol)
@@ -341,10 +351,13 @@ class Worn(Axisymmetric):
 
         a = float(self.radius(d))
         if self._profile is None or self._profile.r_max < 1.5 * a:
-            b, R = self.b, self.R
-            self._profile = mdr.Profile.from_callable(
-                lambda r: np.where(r < b, 0.0, (r * r - b * b) / (2 * R)), r_max=2 * a,
-                breakpoints=(b,) if 0 < b < 2 * a else (), rtol=self.rtol or 1e-10)
+            # samples with the kink r = b as a breakpoint: the splines of both segments then
+            # reproduce the piecewise parabola exactly (numeric/mdr.py)
+            b, R, r_max = self.b, self.R, 2 * a
+            parts = [np.linspace(0.0, b, 33)[:-1]] if b > 0 else []
+            r = np.concatenate(parts + [np.linspace(b, r_max, 65)])
+            f = np.where(r < b, 0.0, (r * r - b * b) / (2 * R))
+            self._profile = mdr.Profile.from_samples(r, f, breakpoints=(b,) if b > 0 else ())
         return self._profile.solve(depth=float(d), E_star=self.E_star, rtol=self.rtol or 1e-8)
 
     def p(self, r, d):
