@@ -4,8 +4,15 @@ from __future__ import annotations
 
 from hertzmdr.numeric.accuracy import Quantity, Way
 
-# a steel pair (E = 210 GPa, nu = 0.3 both): E* = E / (2 (1 - nu^2))
-E_STEEL = 210e9 / (2 * (1 - 0.3**2))
+
+def _steel_pair() -> float:
+    """E* (5.26) of two steel bodies, E = 210 GPa and nu = 0.3."""
+    from hertzmdr.numeric import bodies
+
+    return float(bodies.effective_modulus(210e9, 0.3, 210e9, 0.3))
+
+
+E_STEEL = _steel_pair()
 
 
 def _mp_digits(fn, args, dps):
@@ -66,7 +73,7 @@ def hertz_far_displacement() -> Quantity:
     from hertzmdr.numeric import _generated_mp as gm
 
     R, d = 0.5, 1e-5
-    a = (R * d) ** 0.5
+    a = float(g.hertz_contact_radius(R, d))  # (5.21)
     r = 1e4 * a
 
     def truth():

@@ -137,8 +137,14 @@ class EllipticContact:
             against the contact's arrays.
         """
         x, y = as_float("x", x), as_float("y", y)
-        s = 1 - (x / self.a) ** 2 - (y / self.b) ** 2
-        return result(self.max_pressure * np.sqrt(np.maximum(s, 0.0)))  # (5.31)
+        if self.model == "gaussian":  # (5.31) with (5.28), (5.22) and R~ (5.30)
+            return result(g.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2,
+                                                            self.depth, x, y))
+        major_x = np.asarray(self.R1 >= self.R2)  # the generated form has x along the major axis
+        xm, ym = np.where(major_x, x, y), np.where(major_x, y, x)
+        Rmaj = np.maximum(self.R1, self.R2)
+        t = np.minimum(self.a, self.b) / np.maximum(self.a, self.b)
+        return result(g.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym))  # (5.31)
 
 
 def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> EllipticContact:
