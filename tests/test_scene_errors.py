@@ -109,15 +109,14 @@ def test_effect_that_does_not_apply(tmp_path, capsys):
     assert "'contact_radius' does not apply" in err and "use 'half_width'" in err
 
 
-def test_worn_pressure_is_not_offered(tmp_path, capsys):
-    """Until the numerical MDR resolves the kink of the worn parabola, its pressure is refused
-    with the reason rather than given with an error estimate that misses the kink."""
+def test_worn_max_pressure_is_refused_with_the_reason(tmp_path, capsys):
+    """The worn parabola's pressure is log-infinite at r = b: no maximum to report."""
     path = tmp_path / "worn.toml"
     path.write_text('effects = ["max_pressure"]\n[[body]]\nshape = "flattened_parabola"\n'
                     'radius = 0.01\nflat_radius = 1e-4\nrigid = true\n[[body]]\n'
                     'shape = "flat"\nE = 1e9\nnu = 0.4\n[load]\ndepth = 1e-6\n')
     assert main(["run", str(path)]) == 2
-    assert "not accurate at the kink" in capsys.readouterr().err
+    assert "log-infinite at the edge of the flat" in capsys.readouterr().err
 
 
 def test_missing_file(tmp_path, capsys):
