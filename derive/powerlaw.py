@@ -26,6 +26,7 @@ from __future__ import annotations
 from functools import cache
 
 import sympy as sp
+from sympy.codegen.cfunctions import log1p
 
 from hertzmdr.derive import mdr
 from hertzmdr.derive.relation import Relation
@@ -130,6 +131,33 @@ def pressure_hyper() -> tuple[sp.Expr, sp.Expr]:
     return p_b.subs(z, 1 - rp**2 / a**2).subs(rp, r), p_a.subs(z, 1 - rp**2 / a**2).subs(rp, r)
 
 
+w_quad = symbol("w_quad")
+
+
+@cache
+def pressure_integrand() -> tuple[sp.Expr, sp.Expr]:
+    """(5.59) as an integral over w in (0, 1) with a smooth integrand, for quadrature at any n.
+
+    x^2 = r^2 + (a^2 - r^2)(1 - w)^2 takes x from a (w = 0) to r (w = 1) and removes the
+    1/sqrt(x^2 - r^2) of the Abel kernel: dx/sqrt(x^2 - r^2) = -sqrt(a^2 - r^2) dw / x. The
+    variable is w = 1 - v rather than v so that the layer at x = a, where the integrand lives
+    for large n, is resolved in absolute terms (1 - v rounded would cost n ulp). Returns
+    (derived, stable): the stable form writes (x/a)^(n - 2) as
+    exp((n/2 - 1) log1p(-(a^2 - r^2) w (2 - w)/a^2)), which neither overflows nor loses
+    digits for n up to 1e8 and more.
+    """
+    g = solution()["g"].subs(c_n, d / (kappa_n * a**n))  # (5.52), d = g(a) (5.55)
+    u = sp.Symbol("u", positive=True)  # u = 1 - w in (0, 1)
+    xw = sp.sqrt(rp**2 + (a**2 - rp**2) * u**2)
+    jac = sp.diff(xw, u) / sp.sqrt(sp.factor(xw**2 - rp**2))  # dx/dw = -dx/du, w: 0 -> 1
+    derived = sp.powsimp(sp.simplify(E_star / sp.pi * sp.diff(g, x).subs(x, xw) * jac),
+                         force=True).subs(u, 1 - w_quad)
+    ratio = (a - rp) * (a + rp) * w_quad * (2 - w_quad) / a**2  # 1 - (x/a)^2
+    stable = (E_star * n * d / (sp.pi * a**2) * sp.sqrt((a - rp) * (a + rp))
+              * sp.exp((n / 2 - 1) * log1p(-ratio)))
+    return derived.subs(rp, r), stable.subs(rp, r)
+
+
 def _hyper_arg_clipped(expr: sp.Expr) -> sp.Expr:
     """Write z = 1 - r^2/a^2 as Max(0, (a - r)(a + r))/a^2: exact near the rim, 0 outside."""
     zc = sp.Max(0, (a - r) * (a + r)) / a**2
@@ -181,6 +209,7 @@ def relations() -> list[Relation]:
     half = sp.Rational(1, 2)
     printed_kappa = sp.sqrt(sp.pi) / 2 * n * sp.gamma(n / 2) / sp.gamma(n / 2 + half)
     p_b, p_a = pressure_hyper()
+    pq_derived, pq_stable = pressure_integrand()
     outside = {r: a / unit_interval()}
     pun = punch()
     rels = [
@@ -232,6 +261,17 @@ def relations() -> list[Relation]:
                  "contact pressure p(r) [Pa] of a power-law indenter, 0 for r > a; the form "
                  "accurate for n < 1.5 (singular like r^(n-1) at the centre for n < 1)",
                  "(5.59) with x = r/sqrt(1 - z t)", f"{TEST}::test_against_3d_elasticity"),
+        Relation("powerlaw_pressure_integrand", "Problem 7(d), (5.59)", pq_derived,
+                 (E_star, a, d, n, r, w_quad),
+                 "integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a "
+                 "boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n)",
+                 "(5.59) with x^2 = r^2 + (a^2 - r^2)(1 - w)^2",
+                 f"{TEST}::test_pressure_large_n_by_quadrature",
+                 stable=pq_stable,
+                 stable_why="(x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding n-fold "
+                 "and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2)))"
+                 " with 1 - x^2/a^2 factored",
+                 domain={r: a * unit_interval(), w_quad: unit_interval("t_w")}),
         Relation("powerlaw_pressure_normalized", "Fig. 5.17",
                  _normalized(p_a, s["pm"]), (n, r_tilde),
                  "normalized pressure p/p_mean [1] at r_tilde = r/a < 1 of a power-law "

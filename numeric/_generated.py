@@ -109,6 +109,7 @@ __all__ = [
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
     'powerlaw_pressure',
+    'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
     'powerlaw_pressure_n2',
     'powerlaw_pressure_n3',
@@ -252,6 +253,7 @@ RELATIONS = (
     ('powerlaw_kappa_asymptotic', 'Problem 7(d), large n', 'powerlaw', 'sqrt(2)*sqrt(pi)*sqrt(n)*exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + 31/(4608*n**2))/n**2)/n**2)/n**2)/n)/2', ''),
     ('powerlaw_mean_pressure', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n/(pi*a*(n + 1))', ''),
     ('powerlaw_pressure', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*hyper((1, 1 - n/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a**2)', ''),
+    ('powerlaw_pressure_integrand', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**(n/2 - 1)/(pi*a**n)', ''),
     ('powerlaw_pressure_n1', 'Problem 7(d), n = 1', 'powerlaw', 'E_star*d*log((a + sqrt(a**2 - r**2))/r)/(pi*a)', ''),
     ('powerlaw_pressure_n2', 'Problem 7(d), n = 2', 'powerlaw', '2*E_star*d*sqrt(a**2 - r**2)/(pi*a**2)', ''),
     ('powerlaw_pressure_n3', 'Problem 7(d), n = 3', 'powerlaw', '3*E_star*d*(a*sqrt(a**2 - r**2) - r**2*log(r) + r**2*log(a + sqrt(a**2 - r**2)))/(2*pi*a**3)', ''),
@@ -2540,6 +2542,37 @@ def powerlaw_pressure(E_star, a, d, n, r):
     return E_star*d*n*scipy.special.hyp2f1(1, 1 - 1/2*n, 3/2, functools.reduce(numpy.maximum, [0, (a - r)*(a + r)])/a**2)*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - r)*(a + r)]))/(numpy.pi*a**2)
 
 
+def powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
+    """Integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.59). Derived from: (5.59) with x^2 = r^2 + (a^2 - r^2)(1 -
+    w)^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_pressure_large_n_by_quadrature``.
+
+    Printed in a stable form: (x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding
+    n-fold and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2)))
+    with 1 - x^2/a^2 factored.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    w_quad : float or ndarray
+        integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
+    """
+    return E_star*d*n*numpy.sqrt(a - r)*numpy.sqrt(a + r)*numpy.exp(((1/2)*n - 1)*numpy.log1p(-w_quad*(2 - w_quad)*(a - r)*(a + r)/a**2))/(numpy.pi*a**2)
+
+
 def powerlaw_pressure_n1(E_star, a, d, r):
     """Contact pressure p(r) [Pa] of the power-law indenter n = 1 for 0 < r < a, in elementary functions.
 
@@ -3834,6 +3867,33 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
+
+
+def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
+    """Integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n), in the derived (textbook) form; use powerlaw_pressure_integrand: (x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding n-fold and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2))) with 1 - x^2/a^2 factored.
+
+    Chapter: Problem 7(d), (5.59). Derived from: (5.59) with x^2 = r^2 + (a^2 - r^2)(1 -
+    w)^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_pressure_large_n_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    w_quad : float or ndarray
+        integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
+    """
+    return E_star*a**(-n)*d*n*numpy.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((1/2)*n - 1)/numpy.pi
 
 
 def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):

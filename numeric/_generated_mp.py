@@ -109,6 +109,7 @@ __all__ = [
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
     'powerlaw_pressure',
+    'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
     'powerlaw_pressure_n2',
     'powerlaw_pressure_n3',
@@ -2352,6 +2353,37 @@ def powerlaw_pressure(E_star, a, d, n, r):
     return E_star*d*n*mpmath.hyper((1, 1 - mpmath.mpf(1)/mpmath.mpf(2)*n), (mpmath.mpf(3)/mpmath.mpf(2),), max(0, (a - r)*(a + r))/a**2)*mpmath.sqrt(max(0, (a - r)*(a + r)))/(mpmath.pi*a**2)
 
 
+def powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
+    """Integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.59). Derived from: (5.59) with x^2 = r^2 + (a^2 - r^2)(1 -
+    w)^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_pressure_large_n_by_quadrature``.
+
+    Printed in a stable form: (x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding
+    n-fold and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2)))
+    with 1 - x^2/a^2 factored.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_quad : mpmath.mpf
+        integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
+    """
+    return E_star*d*n*mpmath.sqrt(a - r)*mpmath.sqrt(a + r)*mpmath.exp(((mpmath.mpf(1)/mpmath.mpf(2))*n - 1)*mpmath.log1p(-w_quad*(2 - w_quad)*(a - r)*(a + r)/a**2))/(mpmath.pi*a**2)
+
+
 def powerlaw_pressure_n1(E_star, a, d, r):
     """Contact pressure p(r) [Pa] of the power-law indenter n = 1 for 0 < r < a, in elementary functions.
 
@@ -3600,6 +3632,33 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
+
+
+def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
+    """Integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n), in the derived (textbook) form; use powerlaw_pressure_integrand: (x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding n-fold and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2))) with 1 - x^2/a^2 factored.
+
+    Chapter: Problem 7(d), (5.59). Derived from: (5.59) with x^2 = r^2 + (a^2 - r^2)(1 -
+    w)^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_pressure_large_n_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_quad : mpmath.mpf
+        integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
+    """
+    return E_star*a**(-n)*d*n*mpmath.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((mpmath.mpf(1)/mpmath.mpf(2))*n - 1)/mpmath.pi
 
 
 def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):

@@ -126,7 +126,7 @@ def test_general_n_pressure_forms():
     """The 2F1 forms (general n) against the Abel integral of Problem 7(d) by quadrature."""
     E, aa, dd = 2.0, 1.5, 0.3
     pts = n_points(12, 4)
-    for n in np.geomspace(0.2, powerlaw.N_PRESSURE_MAX, pts):
+    for n in np.geomspace(0.2, powerlaw.N_PRESSURE_QUADRATURE, pts):
         for rt in (1e-3, 0.3, 0.8, 0.999):
             rr = rt * aa
             with mp.workdps(30):
@@ -142,6 +142,55 @@ def test_general_n_pressure_forms():
             # measured worst 2e-9 at n in (1, 1.5) near the centre
             tol = 1e-8 if 0.9 < n < 1.6 else 1e-11
             assert_close(got, ref, tol, f"n={n}, r/a={rt}")
+
+
+def _abel_reference(E, aa, dd, n, rr):
+    """(5.59) of g' = n d x^(n-1)/a^n by 30-digit tanh-sinh, split in the layer at x = a."""
+    with mp.workdps(30):
+        nn, A = mp.mpf(n), mp.mpf(aa)
+        layer = [A * (1 - k / nn) for k in (100, 10, 1) if k / nn < 1 - rr / aa]
+        if rr == 0:  # (5.59) at the centre: integral_0^a x^(n-2) dx = a^(n-1)/(n-1), n > 1
+            return E * nn * dd / (mp.pi * A**nn) * A ** (nn - 1) / (nn - 1)
+        rr = mp.mpf(rr)  # x = r cosh(tau)
+        return E * nn * dd / (mp.pi * A**nn) * mp.quad(
+            lambda t: (rr * mp.cosh(t)) ** (nn - 1),
+            [0, *(mp.acosh(x / rr) for x in layer), mp.acosh(A / rr)])
+
+
+@pytest.mark.sweep
+def test_pressure_large_n_by_quadrature():
+    """Above N_PRESSURE_QUADRATURE the pressure is (5.59) by Gauss-Legendre on the smooth
+    integrand powerlaw_pressure_integrand: measured <= 4.4e-16 up to n = 1e8 against 30-digit
+    quadrature; asserted at 1e-14 (a few ulp of the sum of ~500 positive terms)."""
+    E, aa, dd = 2.0, 1.5, 0.3
+    ns = (41.0, 345.0, 999.0, 1e4, 1e6, 1e8)[:n_points(6, 4)]
+    for n in ns:
+        for rt in (0.0, 1e-3, 0.3, 0.9, 0.999, 1 - 1e-7):
+            rr = rt * aa
+            got = powerlaw._pressure_at(*(np.atleast_1d(v) for v in (rr, aa, dd, n, E)))[0]
+            assert_close(got, _abel_reference(E, aa, dd, n, rr), 1e-14, f"n={n}, r/a={rt}")
+
+
+def test_pressure_has_no_nan_at_any_n():
+    """Every n from 0.1 to 1e8 gives a finite pressure inside the contact (SciPy's 2F1 gave NaN
+    near the centre for n >= 343 before the quadrature took over above n = 40)."""
+    n = np.concatenate([np.arange(5.0, 1001.0, 1.0), np.geomspace(0.1, 1e8, 400)])
+    rt = np.array([1e-3, 0.1, 0.3, 0.5, 0.9, 0.999])
+    N, RT = np.meshgrid(n, rt)
+    p = powerlaw.pressure(RT, 1.0, 1.0 / powerlaw.kappa(N), N, 1.0)  # a = 1 at d = 1
+    assert np.all(np.isfinite(p)) and np.all(p > 0)
+    assert np.all(np.isfinite(powerlaw.pressure(0.0, 1.0, 1.0, n[n > 1], 1.0)))
+
+
+def test_centre_pressure_for_n_between_1_and_2():
+    """p(0) = E* n d/(pi a (n - 1)) is finite for n > 1; the small-n form is 0 * inf there, the
+    Euler-transformed 2F1 form is used (at z = 1 SciPy applies Gauss's theorem: measured
+    4.4e-16 from n = 1.001 to 1.49); tolerance 1e-14, a few ulp."""
+    E, aa, dd = 2.0, 1.5, 0.3
+    for n in (1.001, 1.01, 1.2, 1.49, 1.5, 1.7):
+        c = dd / (float(powerlaw.kappa(n)) * aa**n)  # a = aa at d = dd
+        assert_close(powerlaw.pressure(0.0, dd, c, n, E), _abel_reference(E, aa, dd, n, 0.0),
+                     1e-14, f"p(0), n={n}")
 
 
 def test_force_by_pressure():
