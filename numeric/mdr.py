@@ -161,6 +161,8 @@ class _Rep:
     k: int = 5
     _tables: list | None = field(default=None, repr=False)
     _kinks: tuple | None = field(default=None, repr=False)
+    _u: tuple | None = field(default=None, repr=False)
+    table_nodes: int = 256  # at most about this many table nodes per segment
 
     def _seg_index(self, u):
         return np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0,
@@ -232,15 +234,75 @@ class _Rep:
                     out[sel] += bj * sj / np.sqrt((xs - bj) * (xs + bj))
         return out
 
+    def _ugrid(self):
+        """Gauss nodes in u on every piece of the spline (between consecutive sample radii,
+        where f is one polynomial), with f'(u) and h(u) = f' + u f'' there: computed once."""
+        if self._u is None:
+            br = np.unique(np.concatenate([self.knots, self.edges]))
+            t, w = _gauss(self.m_theta - 2)
+            half = np.diff(br) / 2
+            u = (br[:-1] + half)[:, None] + half[:, None] * t
+            f1, f2 = self.derivs(u.ravel())
+            f1, f2 = f1.reshape(u.shape), f2.reshape(u.shape)
+            wt = half[:, None] * w
+            self._u = (br, u.ravel(), (wt * f1).ravel(), (wt * (f1 + u * f2)).ravel())
+        return self._u
+
     def direct(self, x):
-        """g(x) (5.52) and the smooth part q(x) of g' by theta quadrature, f' and f''
-        evaluated once per node: g = x integral f'(x sin t) dt, q = integral h(x sin t) dt."""
+        """g(x) (5.52), the smooth part q(x) of g' and G(x) = integral_0^x g by quadrature:
+
+            g = x integral_0^x f'(u) du / sqrt(x^2 - u^2),  q = integral_0^x h(u) du /
+            sqrt(x^2 - u^2),  G = integral_0^x f'(u) sqrt(x^2 - u^2) du.
+
+        The spline's pieces far from u = x (at least two widths away) by Gauss-Legendre in u
+        on fixed nodes (f', h evaluated once for all x); the rest, [u_near, x], with
+        u = x sin(theta), which removes the 1/sqrt(x - u), by Gauss-Legendre in theta with
+        panels broken at the pieces' ends."""
         x = np.atleast_1d(np.abs(np.asarray(x, float)))
-        th, w = self._theta_nodes(x)
-        u = x[:, None] * np.sin(th)
-        f1, f2 = self.derivs(u.ravel())
-        f1, f2 = f1.reshape(u.shape), f2.reshape(u.shape)
-        return x * np.sum(w * f1, axis=1), np.sum(w * (f1 + u * f2), axis=1)
+        br, u, wf1, wh = self._ugrid()
+        lo, hi = br[:-1], br[1:]
+        width = hi - lo
+        # first piece that is not far from x: u_near is its left end
+        notfar = (x[:, None] - hi[None, :] < 2 * width[None, :])
+        first = np.argmax(notfar, axis=1)
+        u_near = lo[first]
+        g, q, G = np.zeros(len(x)), np.zeros(len(x)), np.zeros(len(x))
+        # far pieces are a prefix: the first nfar nodes in u; rows by increasing nfar, in
+        # chunks computed up to the chunk's largest nfar
+        nfar = first * (len(u) // len(lo))
+        order = np.argsort(nfar, kind="stable")
+        for c in range(0, len(x), 32):
+            rows = order[c:c + 32]
+            ncol = int(nfar[rows[-1]])
+            if ncol == 0:
+                continue
+            xc, uc = x[rows, None], u[None, :ncol]
+            far = np.arange(ncol)[None, :] < nfar[rows, None]
+            s2 = np.where(far, (xc - uc) * (xc + uc), 1.0)
+            root = np.sqrt(s2) * far
+            inv = far / np.sqrt(s2)
+            g[rows] = x[rows] * (inv @ wf1[:ncol])
+            q[rows] = inv @ wh[:ncol]
+            G[rows] = root @ wf1[:ncol]
+        # near part: theta from asin(u_near/x) to pi/2, broken at the pieces' ends
+        jx = np.clip(np.searchsorted(br, x, side="right") - 1, 0, len(lo) - 1)
+        K = int(np.max(jx - first)) + 1 if len(x) else 1
+        kidx = np.minimum(first[:, None] + 1 + np.arange(K)[None, :], len(br) - 1)
+        kb = br[kidx]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s0 = np.where(x > 0, u_near / x, 0.0)
+            sk = np.where(x[:, None] > 0, kb / x[:, None], 1.0)
+        th0 = np.arcsin(np.clip(s0, 0, 1))
+        thk = np.arcsin(np.clip(sk, 0, 1))
+        th, w = _panels(th0, np.full(len(x), np.pi / 2), thk, self.m_theta)
+        live = w > 0
+        uu = x[:, None] * np.sin(th)
+        f1, f2 = np.zeros(th.shape), np.zeros(th.shape)
+        f1[live], f2[live] = self.derivs(uu[live])
+        g += x * np.sum(w * f1, axis=1)
+        q += np.sum(w * (f1 + uu * f2), axis=1)
+        G += x**2 * np.sum(w * f1 * np.cos(th) ** 2, axis=1)
+        return g, q, G
 
     def g_direct(self, x):
         """(5.52): g(x) = x * integral_0^(pi/2) f'(x sin theta) dtheta."""
@@ -253,15 +315,12 @@ class _Rep:
 
     def g_and_gprime_direct(self, x):
         x = np.atleast_1d(np.abs(np.asarray(x, float)))
-        gg, q = self.direct(x)
+        gg, q, _ = self.direct(x)
         return gg, q + self._kink_terms(x, 1)
 
     def G(self, a):
-        """integral_0^a g dx = a^2 integral_0^(pi/2) f'(a sin t) cos^2 t dt."""
-        a = np.atleast_1d(np.abs(np.asarray(a, float)))
-        th, w = self._theta_nodes(a)
-        return a**2 * np.sum(w * self.fprime((a[:, None] * np.sin(th)).ravel()).reshape(
-            th.shape) * np.cos(th) ** 2, axis=1)
+        """integral_0^a g dx = integral_0^a f'(u) sqrt(a^2 - u^2) du."""
+        return self.direct(a)[2]
 
     # -- tables of the smooth remainders, built on first use --------------------------------
     def tables(self) -> list[_Seg]:
@@ -271,10 +330,9 @@ class _Rep:
             out = []
             for lo, hi in zip(self.edges[:-1], self.edges[1:], strict=True):
                 kn = self.knots[(self.knots > lo) & (self.knots < hi)]
-                if lo == 0:
-                    # grade towards the centre (f' ~ r^alpha): 10 levels keep the spline
-                    # well conditioned (spacing ratios <= 2^10)
-                    v = _merge(np.concatenate([[lo, hi], kn]), lo + (hi - lo) * _GRADE[:10])
+                kn = kn[::-(-len(kn) // self.table_nodes)] if len(kn) else kn
+                if lo == 0:  # the spline is a polynomial on [0, r_1]: so is q, no grading
+                    v = np.concatenate([[lo], kn, [hi]])
                     xv = v
                 else:
                     # t = sqrt(x - lo): the knots' images, and the wide intervals near t = 0
@@ -283,7 +341,7 @@ class _Rep:
                     v = _fill(np.concatenate([[0.0], np.sqrt(kn - lo), [T]]), T / (len(kn) + 1))
                     xv = lo + v * v
                     xv[-1] = hi
-                gg, q = self.direct(xv)
+                gg, q, _ = self.direct(xv)
                 Gs = gg - self._kink_terms(xv, 0)
                 dG = q if lo == 0 else 2 * v * q
                 out.append(_Seg(lo, hi, lo != 0, v, CubicHermiteSpline(v, Gs, dG),
@@ -334,27 +392,39 @@ class _Rep:
                 xk = _subsample(seg.lo + seg.nodes**2 if seg.in_t else seg.nodes, 64)
                 with np.errstate(invalid="ignore"):
                     wk = np.sqrt(np.clip(xk[None, :] - rr[:, None], 0, None))
-                br = np.concatenate([wk, _graded(np.zeros(len(rr)), W)], axis=1)
-                wn, ww = _panels(np.zeros(len(rr)), W, br, m)
-                xx = rr[:, None] + wn * wn
+                # grade towards w = 0 down to the scale of the nearest singularity: the
+                # kernel's at w^2 = -2r, and past a kink q's sqrt(x - lo) at w^2 = lo - r
+                sig = np.sqrt(2 * rr)
                 if seg.in_t:
-                    qv = seg.q(np.sqrt((rr[:, None] - seg.lo) + wn * wn).ravel())
+                    sig = np.minimum(sig, np.sqrt(rr - seg.lo))
+                with np.errstate(divide="ignore"):
+                    lev = np.clip(np.ceil(np.log2(W / np.maximum(sig, 1e-300 * W))) + 2, 3, 30)
+                grade = _graded(np.zeros(len(rr)), W)
+                grade[np.arange(30)[None, :] >= lev[:, None]] = 0.0
+                wn, ww = _panels(np.zeros(len(rr)), W, np.concatenate([wk, grade], axis=1), m)
+                live = ww > 0
+                rl = np.broadcast_to(rr[:, None], wn.shape)[live]
+                wl = wn[live]
+                if seg.in_t:
+                    qv = seg.q(np.sqrt((rl - seg.lo) + wl * wl))
                 else:
-                    qv = seg.q(xx.ravel())
-                den = np.sqrt(xx + rr[:, None])
-                den[ww == 0] = 1.0  # empty panels (breaks below r): a node may sit at x = r = 0
-                smooth[sel] += np.sum(ww * 2 * qv.reshape(xx.shape) / den, axis=1)
-            # the later segments [lo, top] with r < lo: x = lo + t^2, dx = 2 t dt
+                    qv = seg.q(rl + wl * wl)
+                vals = np.zeros(wn.shape)
+                vals[live] = 2 * qv / np.sqrt(2 * rl + wl * wl)
+                smooth[sel] += np.sum(ww * vals, axis=1)
+            # the later segments [lo, top] with r < lo: x = lo + t^2, dx = 2 t dt; the nodes
+            # in t are the same for every r (graded towards t = 0 for r -> lo), q once
             sel = np.flatnonzero(idx < i)
             if len(sel) and seg.in_t:
                 rr = r[sel]
-                T = np.full(len(rr), np.sqrt(top - seg.lo))
-                tk = _subsample(seg.nodes, 64)[None, :].repeat(len(rr), 0)
-                br = np.concatenate([tk, _graded(np.zeros(len(rr)), T)], axis=1)
-                tn, tw = _panels(np.zeros(len(rr)), T, br, m)
+                T = np.array([np.sqrt(top - seg.lo)])
+                br = np.concatenate([_subsample(seg.nodes, 64)[None, :], _graded(np.zeros(1), T)],
+                                    axis=1)
+                tn, tw = _panels(np.zeros(1), T, br, m)
+                tn, tw = tn[:, tw[0] > 0], tw[:, tw[0] > 0]
+                qv = seg.q(tn[0])[None, :]
                 xmr = (seg.lo - rr[:, None]) + tn * tn
                 xx = seg.lo + tn * tn
-                qv = seg.q(tn.ravel()).reshape(tn.shape)
                 smooth[sel] += np.sum(tw * 2 * tn * qv / np.sqrt(xmr * (xx + rr[:, None])),
                                       axis=1)
         return out + E_star / np.pi * smooth
@@ -493,6 +563,7 @@ class Profile:
 
     def __init__(self, reps: list[_Rep], r_max: float, source: str):
         self._reps = reps  # increasing resolution; the last is the finest
+        reps[0].table_nodes = reps[-1].table_nodes // 2  # the coarse one: coarser tables too
         self.r_max = r_max
         self.source = source
 
