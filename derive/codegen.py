@@ -64,30 +64,34 @@ class _Printer(SciPyPrinter):
         args = ", ".join(self._print(e) for e in (*expr.ap, *expr.bq, expr.argument))
         return f"scipy.special.hyp2f1({args})"
 
-    # SymPy's elliptic_k(m), elliptic_e(m) and SciPy's ellipk(m), ellipe(m) share the parameter
-    # convention m = k^2.
+    # SymPy's elliptic_k(m), elliptic_e(m), elliptic_f(phi, m), elliptic_e(phi, m) and SciPy's
+    # ellipk(m), ellipe(m), ellipkinc(phi, m), ellipeinc(phi, m) share the parameter m = k^2.
     def _print_elliptic_k(self, expr):
         return f"scipy.special.ellipk({self._print(expr.args[0])})"
 
     def _print_elliptic_e(self, expr):
-        if len(expr.args) != 1:
-            return self._print_not_supported(expr)
-        return f"scipy.special.ellipe({self._print(expr.args[0])})"
+        args = ", ".join(self._print(e) for e in expr.args)
+        return f"scipy.special.{'ellipe' if len(expr.args) == 1 else 'ellipeinc'}({args})"
+
+    def _print_elliptic_f(self, expr):
+        args = ", ".join(self._print(e) for e in expr.args)
+        return f"scipy.special.ellipkinc({args})"
 
     def _print_not_supported(self, expr):
         raise ValueError(f"cannot print {expr!r} as NumPy/SciPy code")
 
 
 class _MpPrinter(MpmathPrinter):
-    """mpmath printer with the complete elliptic integrals (parameter m, as in SymPy)."""
+    """mpmath printer with the elliptic integrals (parameter m, as in SymPy)."""
 
     def _print_elliptic_k(self, expr):
         return f"mpmath.ellipk({self._print(expr.args[0])})"
 
-    def _print_elliptic_e(self, expr):
-        if len(expr.args) != 1:
-            return self._print_not_supported(expr)
-        return f"mpmath.ellipe({self._print(expr.args[0])})"
+    def _print_elliptic_e(self, expr):  # mpmath.ellipe(m) or ellipe(phi, m)
+        return f"mpmath.ellipe({', '.join(self._print(e) for e in expr.args)})"
+
+    def _print_elliptic_f(self, expr):
+        return f"mpmath.ellipf({', '.join(self._print(e) for e in expr.args)})"
 
 
 def print_expr(expr: sp.Expr, flavor: str = "numpy") -> str:

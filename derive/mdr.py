@@ -124,6 +124,56 @@ def line_load_from_pressure(p: sp.Expr, *, seconds=None) -> sp.Expr:
     return sp.simplify(_integrate(integrand, (_rp, x, a), seconds=seconds))
 
 
+def elliptic_abel_integral(A: sp.Expr, B: sp.Expr, L: sp.Expr, S: sp.Expr, upper: sp.Expr,
+                           X: sp.Expr | None = None, Q: sp.Expr | None = None) -> sp.Expr:
+    """integral_L^upper (A x^2 + B) / sqrt((x^2 - L^2)(x^2 - S^2)) dx for upper > L > S > 0.
+
+    ``X`` = upper^2 - L^2 and ``Q`` = L^2 - S^2 may be passed in a form that keeps precision
+    (factored, clipped at 0); the amplitude is phi = atan2(sqrt(X), sqrt(Q)), which is exactly
+    pi/2 when S = L (the log-infinite case) and keeps full relative precision as X -> 0.
+
+    The integral of (5.59) (and of (5.52), (5.60)) whenever g' has one extra square-root branch
+    point, such as the edge b of a worn tip or a kink of f: its radicand is a cubic in x^2, and
+    SymPy's ``integrate`` has no closed form. The substitution
+    sin^2(phi) = (x^2 - L^2)/(x^2 - S^2), i.e. x = L Delta/cos(phi) with
+    Delta = sqrt(1 - m sin^2(phi)), m = S^2/L^2, turns dx/sqrt(...) into dphi/(L Delta) (checked
+    here); the antiderivative is then sought as alpha x sin(phi) + beta E(phi|m) + gamma F(phi|m)
+    with Legendre's incomplete integrals F(phi|m) = integral_0^phi dt/Delta and
+    E(phi|m) = integral_0^phi Delta dt, and SymPy solves for alpha, beta, gamma by equating the
+    derivative with the integrand. The lower limit x = L is phi = 0, where all three vanish.
+    """
+    Ls, Ss, As, Bs = sp.symbols("L S A B", positive=True)
+    ph = sp.Symbol("phi", positive=True)
+    s, c, D = sp.symbols("s c Delta", positive=True)
+    m = Ss**2 / Ls**2
+    Delta = sp.sqrt(1 - m * sp.sin(ph) ** 2)
+    x_phi = Ls * Delta / sp.cos(ph)
+
+    def reduce(e):  # a polynomial in (s, c, Delta) modulo c^2 = 1 - s^2, Delta^2 = 1 - m s^2
+        e = sp.expand(e.subs({sp.sin(ph): s, sp.cos(ph): c}).subs(sp.sqrt(1 - m * s**2), D))
+        e = sp.expand(sp.numer(sp.together(e)))
+        for _ in range(3):
+            e = sp.expand(e.subs({c**2: 1 - s**2, D**2: 1 - m * s**2}))
+        return e
+
+    # the Jacobian, squared to stay rational: (dx/dphi)^2 L^2 Delta^2 = (x^2 - L^2)(x^2 - S^2)
+    jac = reduce(sp.together(sp.diff(x_phi, ph) ** 2 * Ls**2 * Delta**2
+                             - (x_phi**2 - Ls**2) * (x_phi**2 - Ss**2)))
+    if jac != 0:
+        raise AssertionError(f"substitution of elliptic_abel_integral is wrong: {jac}")
+    al, be, ga = sp.symbols("alpha beta gamma")
+    ansatz = al * x_phi * sp.sin(ph) + be * sp.elliptic_e(ph, m) + ga * sp.elliptic_f(ph, m)
+    residual = reduce(sp.together(sp.diff(ansatz, ph) - (As * x_phi**2 + Bs) / (Ls * Delta)))
+    (coef,) = sp.solve(sp.Poly(residual, s, c, D).coeffs(), [al, be, ga], dict=True)
+    X = upper**2 - L**2 if X is None else X
+    Q = L**2 - S**2 if Q is None else Q
+    sin_u = sp.sqrt(X) / sp.sqrt(X + Q)  # sin^2(phi) = (x^2 - L^2)/(x^2 - S^2) at x = upper
+    phi_u = sp.atan2(sp.sqrt(X), sp.sqrt(Q))
+    result = (coef[al] * upper * sin_u + coef[be] * sp.elliptic_e(phi_u, m)
+              + coef[ga] * sp.elliptic_f(phi_u, m))
+    return result.subs({As: A, Bs: B, Ls: L, Ss: S}, simultaneous=True)
+
+
 @dataclass
 class MDRSolution:
     """What SymPy could do for the profile f(r); ``missing`` names what it could not.

@@ -48,7 +48,9 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "c_n": ("m^(1-n)", "coefficient of the power-law profile f = c_n r^n"),
     "kappa_n": ("1", "MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d))"),
     "r_tilde": ("1", "normalized radius r/a"),
-    "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8)"),
+    "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius "
+          "of a kink of the profile (derive/kink.py)"),
+    "slope_jump": ("1", "jump f'(b+) - f'(b-) of the profile's slope at a kink r = b"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

@@ -7,10 +7,12 @@ d = g(a) is solved for a^2, giving a(d) and F(d). The outside displacement (5.60
 integral of x sqrt(x^2 - b^2)/sqrt(r^2 - x^2) over (b, a), which the substitution
 x^2 = b^2 + (r^2 - b^2) sin^2(phi) turns into the elementary integral of sin^2(phi).
 
-The pressure (5.59) is an incomplete elliptic integral (the radicand of
+The pressure (5.59) is an incomplete elliptic integral: the radicand of
 integral (2x^2 - b^2) dx / sqrt((x^2 - b^2)(x^2 - r^2)) is a cubic in x^2 with three distinct
-roots): SymPy has no closed form, and :func:`hertzmdr.derive.mdr.solve` says so;
-:mod:`hertzmdr.numeric.mdr` computes it by quadrature.
+roots. SymPy's ``integrate`` has no closed form (:func:`hertzmdr.derive.mdr.solve` says so);
+:func:`hertzmdr.derive.mdr.elliptic_abel_integral` finds it in Legendre's incomplete integrals
+F(phi|m), E(phi|m), with the larger of r, b as L and the smaller as S. It is log-infinite at the
+edge r = b of the flat (where f' jumps) and 0 outside the contact.
 
 The chapter's F(d) contains sqrt(-1 + sqrt(1 + s^2)), s = 2 R d / b^2, which cancels
 catastrophically for s << 1 (a shallow indentation of a strongly worn tip, where the contact
@@ -66,7 +68,26 @@ def solution() -> dict[str, sp.Expr]:
         sp.cos(ph_a), sp.sqrt(1 - sin_a**2)).subs(ph_a, sp.asin(sin_a))
     u_out = 2 / sp.pi * (depth * sp.asin(a / ro) - I_x / R)
     return {"g": g, "d": depth, "F_a": F_a, "a": a_d, "F": F_d,
-            "u_out": sp.simplify(u_out).subs(ro, r)}
+            "u_out": sp.simplify(u_out).subs(ro, r), "p": pressure(g)}
+
+
+def pressure(g: sp.Expr) -> sp.Expr:
+    """(5.59): p(r) = (E*/pi) integral_{max(r, b)}^a g'(x)/sqrt(x^2 - r^2) dx (g' = 0 below b).
+
+    R sqrt(x^2 - b^2) g'(x) is a polynomial A x^2 + B (checked), so the integrand is
+    (A x^2 + B)/(R sqrt((x^2 - L^2)(x^2 - S^2))) with L = max(r, b), S = min(r, b). For r >= a
+    the interval is empty: max(0, a^2 - L^2) in the amplitude makes p = 0 there.
+    """
+    poly = sp.Poly(sp.expand(sp.simplify(R * sp.sqrt(x**2 - b**2) * sp.diff(g, x))), x)
+    if poly.degree() != 2 or poly.coeff_monomial(x) != 0:
+        raise AssertionError(f"R sqrt(x^2 - b^2) g' is not A x^2 + B: {poly}")
+    A, B = poly.coeff_monomial(x**2), poly.coeff_monomial(1)
+    L, S = sp.Max(r, b), sp.Min(r, b)
+    # the differences of squares factored, so that they keep full precision as r -> a and
+    # r -> b, and a^2 - L^2 clipped at 0 (p = 0 for r >= a)
+    integral = mdr.elliptic_abel_integral(A, B, L, S, a, X=sp.Max(0, (a - L) * (a + L)),
+                                          Q=(L - S) * (L + S))
+    return E_star / (sp.pi * R) * integral
 
 
 def displacement_outside_stable() -> sp.Expr:
@@ -119,6 +140,12 @@ def relations() -> list[Relation]:
                  stable=force_stable(),
                  stable_why="sqrt(-1 + sqrt(1 + s^2)), s = 2 R d/b^2, cancels for s << 1; "
                  "it is written s/sqrt(sqrt(1 + s^2) + 1)"),
+        Relation("worn_pressure", "Problem 8, (5.59)", s["p"], (E_star, R, a, b, r),
+                 "contact pressure p(r) [Pa] of the worn paraboloid (log-infinite at r = b, 0 "
+                 "for r >= a)",
+                 "(5.59) of g, in incomplete elliptic integrals (mdr.elliptic_abel_integral)",
+                 f"{TEST}::test_pressure_by_quadrature_of_59", domain={r: a * unit_interval(),
+                                                                      b: a * tb}),
         Relation("worn_displacement_outside", "Problem 8, (5.60)", s["u_out"], (R, a, b, r),
                  "surface displacement u_z(r) [m] outside the contact (r > a) of the worn "
                  "paraboloid", "(5.60) with x^2 = b^2 + (r^2 - b^2) sin^2(phi)",

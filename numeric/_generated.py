@@ -98,6 +98,7 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_kink_pressure',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -147,6 +148,7 @@ __all__ = [
     'worn_force',
     'worn_force_from_radius',
     'worn_g',
+    'worn_pressure',
 ]
 
 #: every relation: (name, equation, family, derived formula, erratum or "")
@@ -239,6 +241,7 @@ RELATIONS = (
     ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
     ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
     ('line_stiffness', '(5.34), differentiated', 'line', 'pi*E_star*L/4', ''),
+    ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
@@ -288,6 +291,7 @@ RELATIONS = (
     ('worn_force', 'Problem 8', 'worn', 'E_star*sqrt(-2*b**2 + 2*sqrt(4*R**2*d**2 + b**4))*(2*b**2 + sqrt(4*R**2*d**2 + b**4))/(3*R)', ''),
     ('worn_force_from_radius', 'Problem 8', 'worn', '2*E_star*sqrt(a - b)*sqrt(a + b)*(2*a**2 + b**2)/(3*R)', ''),
     ('worn_g', 'Problem 8', 'worn', 'x*sqrt(Max(0, (-b + x)*(b + x)))/R', ''),
+    ('worn_pressure', 'Problem 8, (5.59)', 'worn', 'E_star*(2*a*sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r))))/sqrt((Max(b, r) - Min(b, r))*(Max(b, r) + Min(b, r)) + Max(0, (a - Max(b, r))*(a + Max(b, r)))) + (-b**2 + 2*Max(b, r)**2)*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/Max(b, r) - 2*elliptic_e(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)*Max(b, r))/(pi*R)', ''),
 )
 
 
@@ -2281,6 +2285,34 @@ def line_stiffness(E_star, L):
     return (1/4)*numpy.pi*E_star*L
 
 
+def mdr_kink_pressure(E_star, a, b, r, slope_jump):
+    """Pressure p(r) [Pa] of the branch-point term b s/sqrt(x^2 - b^2) of g' at a kink r = b < a where f' jumps by s (log-infinite at r = b, 0 for r >= a).
+
+    Chapter: (5.59). Derived from: (5.59) of the singular part of g' for f = s (r - b), r >
+    b.
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_pressure_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    """
+    import functools
+    import scipy.special
+
+    return E_star*b*slope_jump*scipy.special.ellipkinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)/(numpy.pi*functools.reduce(numpy.maximum, [b, r]))
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -3270,7 +3302,7 @@ def worn_contact_radius(R, b, d):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     d : float or ndarray
         indentation depth [m]
     """
@@ -3292,7 +3324,7 @@ def worn_depth(R, a, b):
     a : float or ndarray
         contact radius [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     """
     return a*numpy.sqrt(a**2 - b**2)/R
 
@@ -3316,7 +3348,7 @@ def worn_displacement_outside(R, a, b, r):
     a : float or ndarray
         contact radius [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     r : float or ndarray
         radial coordinate on the surface [m]
     """
@@ -3343,7 +3375,7 @@ def worn_force(E_star, R, b, d):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     d : float or ndarray
         indentation depth [m]
     """
@@ -3367,7 +3399,7 @@ def worn_force_from_radius(E_star, R, a, b):
     a : float or ndarray
         contact radius [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     """
     return (2/3)*E_star*numpy.sqrt(a - b)*numpy.sqrt(a + b)*(2*a**2 + b**2)/R
 
@@ -3385,13 +3417,41 @@ def worn_g(R, b, x):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     x : float or ndarray
         coordinate [m]
     """
     import functools
 
     return x*numpy.sqrt(functools.reduce(numpy.maximum, [0, (-b + x)*(b + x)]))/R
+
+
+def worn_pressure(E_star, R, a, b, r):
+    """Contact pressure p(r) [Pa] of the worn paraboloid (log-infinite at r = b, 0 for r >= a).
+
+    Chapter: Problem 8, (5.59). Derived from: (5.59) of g, in incomplete elliptic integrals
+    (mdr.elliptic_abel_integral).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import functools
+    import scipy.special
+
+    return E_star*(2*a*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))]))/numpy.sqrt((functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r])) + functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])) + (-b**2 + 2*functools.reduce(numpy.maximum, [b, r])**2)*scipy.special.ellipkinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)/functools.reduce(numpy.maximum, [b, r]) - 2*scipy.special.ellipeinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)*functools.reduce(numpy.maximum, [b, r]))/(numpy.pi*R)
 
 
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
@@ -3947,7 +4007,7 @@ def textbook_worn_displacement_outside(R, a, b, r):
     a : float or ndarray
         contact radius [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     r : float or ndarray
         radial coordinate on the surface [m]
     """
@@ -3969,7 +4029,7 @@ def textbook_worn_force(E_star, R, b, d):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : float or ndarray
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     d : float or ndarray
         indentation depth [m]
     """

@@ -98,6 +98,7 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_kink_pressure',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -147,6 +148,7 @@ __all__ = [
     'worn_force',
     'worn_force_from_radius',
     'worn_g',
+    'worn_pressure',
 ]
 
 
@@ -2105,6 +2107,31 @@ def line_stiffness(E_star, L):
     return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
 
 
+def mdr_kink_pressure(E_star, a, b, r, slope_jump):
+    """Pressure p(r) [Pa] of the branch-point term b s/sqrt(x^2 - b^2) of g' at a kink r = b < a where f' jumps by s (log-infinite at r = b, 0 for r >= a).
+
+    Chapter: (5.59). Derived from: (5.59) of the singular part of g' for f = s (r - b), r >
+    b.
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_pressure_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    """
+    return E_star*b*slope_jump*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/(mpmath.pi*max(b, r))
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -3071,7 +3098,7 @@ def worn_contact_radius(R, b, d):
     R : mpmath.mpf
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     d : mpmath.mpf
         indentation depth [m]
     """
@@ -3093,7 +3120,7 @@ def worn_depth(R, a, b):
     a : mpmath.mpf
         contact radius [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     """
     return a*mpmath.sqrt(a**2 - b**2)/R
 
@@ -3117,7 +3144,7 @@ def worn_displacement_outside(R, a, b, r):
     a : mpmath.mpf
         contact radius [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     r : mpmath.mpf
         radial coordinate on the surface [m]
     """
@@ -3142,7 +3169,7 @@ def worn_force(E_star, R, b, d):
     R : mpmath.mpf
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     d : mpmath.mpf
         indentation depth [m]
     """
@@ -3166,7 +3193,7 @@ def worn_force_from_radius(E_star, R, a, b):
     a : mpmath.mpf
         contact radius [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     """
     return (mpmath.mpf(2)/mpmath.mpf(3))*E_star*mpmath.sqrt(a - b)*mpmath.sqrt(a + b)*(2*a**2 + b**2)/R
 
@@ -3184,11 +3211,36 @@ def worn_g(R, b, x):
     R : mpmath.mpf
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     x : mpmath.mpf
         coordinate [m]
     """
     return x*mpmath.sqrt(max(0, (-b + x)*(b + x)))/R
+
+
+def worn_pressure(E_star, R, a, b, r):
+    """Contact pressure p(r) [Pa] of the worn paraboloid (log-infinite at r = b, 0 for r >= a).
+
+    Chapter: Problem 8, (5.59). Derived from: (5.59) of g, in incomplete elliptic integrals
+    (mdr.elliptic_abel_integral).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return E_star*(2*a*mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r))))/mpmath.sqrt((max(b, r) - min(b, r))*(max(b, r) + min(b, r)) + max(0, (a - max(b, r))*(a + max(b, r)))) + (-b**2 + 2*max(b, r)**2)*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/max(b, r) - 2*mpmath.ellipe(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)*max(b, r))/(mpmath.pi*R)
 
 
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
@@ -3719,7 +3771,7 @@ def textbook_worn_displacement_outside(R, a, b, r):
     a : mpmath.mpf
         contact radius [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     r : mpmath.mpf
         radial coordinate on the surface [m]
     """
@@ -3741,7 +3793,7 @@ def textbook_worn_force(E_star, R, b, d):
     R : mpmath.mpf
         radius of curvature (effective radius (5.27) for two bodies) [m]
     b : mpmath.mpf
-        radius of the flat (worn) tip of a flattened paraboloid (Problem 8) [m]
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     d : mpmath.mpf
         indentation depth [m]
     """

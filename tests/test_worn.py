@@ -1,12 +1,14 @@
 """The worn (flattened) paraboloid of Problem 8 by independent routes.
 
-The MDR pressure has no closed form (an incomplete elliptic integral); the reference evaluates
-(5.59) by mpmath quadrature of the derived g'(x) and puts it through the Boussinesq integral
-(5.7) (tests/kernels.py, tanh-sinh, split at the circle rho = b where p is log-singular). The
-force is the pressure integrated over the disc.
+The MDR pressure is an incomplete elliptic integral (derive/worn.py). It is checked against
+(5.59) evaluated by mpmath quadrature of the derived g'(x); its mpmath form is then put through
+the Boussinesq integral (5.7) (tests/kernels.py, tanh-sinh, split at the circle rho = b where p
+is log-singular), which must give back d - f(r) inside and the derived u(r) outside. The force
+is the pressure integrated over the disc.
 """
 
 import mpmath as mp
+import numpy as np
 import pytest
 import sympy as sp
 
@@ -14,6 +16,7 @@ from hertzmdr.derive import worn as dw
 from hertzmdr.derive.mdr import x
 from hertzmdr.derive.symbols import R
 from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated_mp as gm
 
 from kernels import uz_axisymmetric
 from oracle import FULL, WORST, assert_close
@@ -58,6 +61,58 @@ def pressure_ref(rho, a, b, Rv, E):
             return 2 * gprime(xx, b, Rv, (rho - b) + u * u) / mp.sqrt(xx + rho)
         top = mp.sqrt(a - rho)
     return E / mp.pi * mp.quad(integrand, [0, top])
+
+
+def _pressure_tol(rho, a, b):
+    """Float64 error model of worn_pressure: a few ulp, times the conditioning of F(phi|m) as
+    m = (S/L)^2 -> 1 near the kink (an absolute rounding of m is relative 1/(1 - m) in 1 - m,
+    and F ~ log(1/(1 - m))/2), and of sqrt(a^2 - r^2) at the rim."""
+    L, S = max(rho, b), min(rho, b)
+    one_minus_m = (L - S) * (L + S) / L**2
+    return 8 * 2.2e-16 * (1 + 1 / one_minus_m + a / max(a - rho, 1e-300))
+
+
+# radii on the flat, at the kink from both sides, beyond it and at the rim (a = 0.8, b = 0.5)
+RHOS = (0.0, 0.1, 0.3, 0.499, 0.5 - 1e-7, 0.5 + 1e-7, 0.501, 0.6, 0.79, 0.8 - 1e-9)
+
+
+def test_pressure_by_quadrature_of_59():
+    """The closed form against (5.59) by quadrature: float64 within its error model, the mpmath
+    form at 30 digits within 1e-25 (tanh-sinh on the smooth substituted integrand: ~1e-28)."""
+    Rv, b, E, a = 1.0, 0.5, 3.0, 0.8
+    for rho in RHOS:
+        with mp.workdps(30):
+            ref = pressure_ref(mp.mpf(rho), mp.mpf(a), mp.mpf(b), mp.mpf(Rv), mp.mpf(E))
+            assert abs(gm.worn_pressure(*(mp.mpf(v) for v in (E, Rv, a, b, rho))) / ref - 1) \
+                < 1e-25, rho
+        assert_close(g.worn_pressure(E, Rv, a, b, rho), ref, _pressure_tol(rho, a, b),
+                     f"p({rho})")
+    assert g.worn_pressure(E, Rv, a, b, b) == float("inf")  # log singularity at the kink
+    assert list(g.worn_pressure(E, Rv, a, b, [a, 2 * a])) == [0.0, 0.0]
+
+
+def test_pressure_is_hertz_without_wear():
+    """b -> 0: the worn pressure tends to Hertz's (2E*/(pi R)) sqrt(a^2 - r^2) (5.15)."""
+    Rv, E, a = 1.0, 3.0, 0.8
+    r = [0.0, 0.3, 0.7]
+    hertz = [2 * E / (mp.pi * Rv) * mp.sqrt(a**2 - rr**2) for rr in r]
+    b = 1e-9
+    for rr, h in zip(r, hertz, strict=True):
+        # the flat removes O(b) at the centre, -(E*/(pi R)) b acos(b/a) (relative pi b/(4a)),
+        # and O(b^2/r^2) beyond the flat, where the modulus k = b/r of F and E is small
+        tol = 1e-14 + (np.pi * b / (4 * a) * 1.01 if rr == 0 else (b / rr) ** 2)
+        assert_close(g.worn_pressure(E, Rv, a, b, rr), h, tol, f"b->0 at r={rr}")
+
+
+def test_force_by_closed_form_pressure():
+    """integral p 2 pi r dr of the closed form (30 digits, split at the log singularity at b)
+    equals (5.57) of the derived F(a)."""
+    Rv, b, E, a = 1.0, 0.5, 3.0, 0.8
+    with mp.workdps(30):
+        args = [mp.mpf(v) for v in (E, Rv, a, b)]
+        F = mp.quad(lambda rr: gm.worn_pressure(*args, rr) * 2 * mp.pi * rr, [0, b, a])
+        F_a = gm.worn_force_from_radius(*args)
+        assert abs(F / F_a - 1) < 1e-25
 
 
 def test_g_by_quadrature():

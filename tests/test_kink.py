@@ -1,0 +1,70 @@
+"""The branch-point pressure of a kink (derive/kink.py) by independent routes.
+
+Reference: (5.59) of the singular part b s/sqrt(x^2 - b^2) of g', by mpmath quadrature at 30
+digits with the substitution x = max(r, b) + u^2, which removes the 1/sqrt at the lower end; the
+strength b s of the branch point is checked against g' of (5.52) evaluated by quadrature.
+"""
+
+import mpmath as mp
+
+from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated_mp as gm
+
+from oracle import assert_close
+
+E, A, B = 2e9, 1e-3, 4e-4  # Pa, m, m
+
+
+def p_ref(rho, a, b, s, E_star):
+    """(E*/pi) integral_{max(rho, b)}^a b s / sqrt((x^2 - b^2)(x^2 - rho^2)) dx."""
+    lo, other = (b, rho) if rho < b else (rho, b)
+
+    def integrand(u):  # x = lo + u^2, dx/sqrt(x - lo) = 2 du
+        xx = lo + u * u
+        return 2 * b * s / (mp.sqrt(xx + lo) * mp.sqrt((xx - other) * (xx + other)))
+
+    return E_star / mp.pi * mp.quad(integrand, [0, mp.sqrt(a - lo)])
+
+
+def test_kink_strength_from_52():
+    """sqrt(x^2 - b^2) g'(x) -> b s as x -> b, with g' of f = s (r - b) from (5.52) by
+    quadrature: g(x) = x integral_b^x s/sqrt(x^2 - r^2) dr, differentiated numerically."""
+    s = mp.mpf("0.3")
+    with mp.workdps(40):
+        b = mp.mpf(B)
+
+        def g_of(xx):  # r = x sin(theta): g = x s (pi/2 - asin(b/x)), here by quadrature
+            return xx * mp.quad(lambda th: s, [mp.asin(b / xx), mp.pi / 2])
+
+        for eps in (mp.mpf("1e-12"), mp.mpf("1e-16")):
+            xx = b * (1 + eps)
+            strength = mp.sqrt(xx**2 - b**2) * mp.diff(g_of, xx)
+            # the continuous part s acos(b/x) sqrt(x^2 - b^2) = O(eps) relative
+            assert abs(strength / (b * s) - 1) < 10 * eps
+
+
+def test_kink_pressure_by_quadrature():
+    """float64 within a few ulp times the conditioning of F(phi|m) as m -> 1 (as in
+    tests/test_worn.py); the mpmath form within 1e-25 of the 30-digit quadrature."""
+    s = 0.25
+    for t in (0.0, 0.2, 0.399, 0.4 - 1e-8, 0.4 + 1e-8, 0.5, 0.9, 0.999):
+        rho = t * A  # radii in (0, a); the kink is at t = B/A = 0.4
+        with mp.workdps(30):
+            args = [mp.mpf(v) for v in (E, A, B, rho, s)]
+            ref = p_ref(args[3], args[1], args[2], args[4], args[0])
+            assert abs(gm.mdr_kink_pressure(*args) / ref - 1) < 1e-25, t
+        L, S = max(rho, B), min(rho, B)
+        tol = 8 * 2.2e-16 * (1 + L**2 / ((L - S) * (L + S)) + A / (A - rho))
+        assert_close(g.mdr_kink_pressure(E, A, B, rho, s), ref, tol, f"p({rho})")
+    assert g.mdr_kink_pressure(E, A, B, B, s) == float("inf")
+    assert g.mdr_kink_pressure(E, A, B, 2 * A, s) == 0.0
+
+
+def test_worn_pressure_contains_the_kink_term():
+    """The worn paraboloid's f' jumps by b/R at b: its pressure minus the kink term is finite at
+    r = b and continuous there (the log singularities cancel)."""
+    R = 0.05
+    near = [B * (1 - 1e-9), B * (1 + 1e-9)]
+    rest = [g.worn_pressure(E, R, A, B, rr) - g.mdr_kink_pressure(E, A, B, rr, B / R)
+            for rr in near]
+    assert abs(rest[0] - rest[1]) < 1e-6 * abs(rest[0])
