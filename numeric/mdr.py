@@ -44,6 +44,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["Profile", "Solution", "ForceDepthCurve"]
@@ -85,25 +86,6 @@ def _graded(lo, hi, toward_lo=True, levels=30):
 def _subsample(v, n):
     """At most about n of the sorted values v (every few), for panel breaks."""
     return v[:: max(1, len(v) // n)] if len(v) else v
-
-
-def kink_pressure(E_star, a, b, r, s):
-    """(5.59) of one kink term of g': (E*/pi) integral_max(r,b)^a b s / sqrt((x^2 - b^2)
-    (x^2 - r^2)) dx [Pa], an incomplete elliptic integral of the first kind; +inf at r = b,
-    0 for r >= a. Stand-in until the generated ``mdr_kink_pressure`` lands on main."""
-    from scipy.special import ellipkinc
-
-    r = np.asarray(r, float)
-    L, S = np.maximum(r, b), np.minimum(r, b)
-    out = np.zeros(r.shape)
-    ok = L < a
-    Lk, Sk = L[ok], S[ok]
-    sphi = np.sqrt((a - Lk) * (a + Lk) / ((a - Sk) * (a + Sk)))
-    with np.errstate(divide="ignore"):
-        out[ok] = E_star * s * b / (np.pi * Lk) * ellipkinc(np.arcsin(np.minimum(sphi, 1.0)),
-                                                             (Sk / Lk) ** 2)
-    out[ok & (r == b)] = np.inf
-    return out
 
 
 def _merge(base, extra):
@@ -376,7 +358,7 @@ class _Rep:
         b, s = self.kinks()
         for bj, sj in zip(b, s, strict=True):
             if bj < a:
-                out += kink_pressure(E_star, a, bj, r, sj)
+                out += gen.mdr_kink_pressure(E_star, a, bj, r, sj)  # (5.59)
         tabs = self.tables()
         idx = self._seg_index(r)
         smooth = np.zeros(r.shape)

@@ -284,28 +284,18 @@ class NumericalMDR(Axisymmetric):
 
 
 class Worn(Axisymmetric):
-    """Problem 8's flattened (worn) parabola: a(d), F(d), g(x) and the outside displacement in
-    closed form (derive/worn.py, F(d) in its stable form); the pressure, an integral without a
-    closed form here, by the numerical MDR with its error estimate."""
+    """Problem 8's flattened (worn) parabola: a(d), F(d), g(x), the pressure and the outside
+    displacement in closed form (derive/worn.py; F(d) in its stable form, the pressure in
+    incomplete elliptic integrals). The pressure is log-infinite at the edge of the flat,
+    r = b: ``max_pressure`` is then +inf, and says so in its method."""
 
     kind = "flattened_parabola"
-    #: the numerical MDR's pressure misses the 1/sqrt(x - b) singularity of g' at the kink:
-    #: 4-9 % off on the flat (r < b) while its estimate says 0.5 % (checked against the
-    #: quadrature of (5.59) in tests/test_worn.py). Not offered until that is fixed.
-    _NO_PRESSURE = ("pressure_profile", "max_pressure", "axis_stresses", "max_shear",
-                    "von_mises_field", "max_von_mises")
-    why_not = {e: "the worn parabola's pressure (and the stresses under it) is not available "
-               "yet: the numerical MDR is not accurate at the kink r = b" for e in _NO_PRESSURE}
-
-    def has(self, effect):
-        return effect not in self._NO_PRESSURE and super().has(effect)
 
     def __init__(self, E_star, rtol, R, b):
         super().__init__(E_star, rtol)
         self.R, self.b = R, b
         self.label = "flattened (worn) parabola, Problem 8"
         self.method = "Problem 8"
-        self._profile = None
 
     def info(self):
         return {**super().info(), "radius": self.R, "flat_radius": self.b}
@@ -346,36 +336,22 @@ class Worn(Axisymmetric):
         out[~ins] = g.worn_displacement_outside(self.R, a, self.b, r[~ins])
         return out
 
-    def _mdr(self, d):
-        from hertzmdr.numeric import mdr
-
-        a = float(self.radius(d))
-        if self._profile is None or self._profile.r_max < 1.5 * a:
-            # samples with the kink r = b as a breakpoint: the splines of both segments then
-            # reproduce the piecewise parabola exactly (numeric/mdr.py)
-            b, R, r_max = self.b, self.R, 2 * a
-            parts = [np.linspace(0.0, b, 33)[:-1]] if b > 0 else []
-            r = np.concatenate(parts + [np.linspace(b, r_max, 65)])
-            f = np.where(r < b, 0.0, (r * r - b * b) / (2 * R))
-            self._profile = mdr.Profile.from_samples(r, f, breakpoints=(b,) if b > 0 else ())
-        return self._profile.solve(depth=float(d), E_star=self.E_star, rtol=self.rtol or 1e-8)
-
     def p(self, r, d):
-        return self._mdr(d).pressure(r)
-
-    def effect_pressure_profile(self, st):
-        s = self._mdr(self.last(st))
-        r = np.linspace(0.0, 1.5 * s.contact_radius, FIELD_POINTS)
-        p, e = s.pressure(r, return_error=True)
-        return Value({"r": r, "p": p}, "numerical MDR (5.59)", float(np.max(e) / np.max(p)))
+        r = np.asarray(r, float)
+        a = float(self.radius(d))
+        out = np.zeros(r.shape)
+        ins = r < a
+        # b = 0 is Hertz: p(0) as the limit r -> 0 (the relation divides by max(r, b))
+        rr = r[ins] if self.b > 0 else np.maximum(r[ins], 1e-300 * a)
+        out[ins] = g.worn_pressure(self.E_star, self.R, a, self.b, rr)  # Problem 8, (5.59)
+        return out
 
     def effect_max_pressure(self, st):
-        out, err = [], 0.0
-        for d in np.atleast_1d(st.depth):
-            s = self._mdr(d)
-            r = np.linspace(0, s.contact_radius, 1001)[:-1]
-            p, e = s.pressure(r, return_error=True)
-            k = int(np.argmax(p))
-            out.append(p[k])
-            err = max(err, e[k] / p[k])
-        return Value(np.array(out), "numerical MDR (5.59), max over 1000 radii", err)
+        """+inf for b > 0: p ~ -(E* b/(pi R)) log|r - b| at the edge of the flat (the kink's
+        branch point, mdr_kink_pressure); for b = 0 (Hertz) p(0)."""
+        d = np.atleast_1d(st.depth)
+        if self.b > 0:
+            return Value(np.full(d.shape, np.inf), "(5.59): log-infinite at the edge of the "
+                         "flat r = b (Problem 8)", self.rel)
+        return Value(np.array([float(self.p(np.array([0.0]), dd)[0]) for dd in d]),
+                     "(5.59) at r = 0 (b = 0: Hertz)", self.rel)
