@@ -99,6 +99,17 @@ def _merge(base, extra):
     return np.unique(np.concatenate([base, extra[keep]]))
 
 
+def _thin(v, step, rel):
+    """A subset of the sorted positive v: each kept point at least min(step, rel * v) from the
+    previous kept one (all of them where the spacing of v is finer than that)."""
+    keep, last = [], -np.inf
+    for x in v:
+        if x - last >= min(step, rel * x) * 0.999:
+            keep.append(x)
+            last = x
+    return np.asarray(keep, float)
+
+
 def _fill(v, step):
     """Sorted nodes v with every interval longer than ``step`` divided evenly."""
     parts = [v[:1]]
@@ -144,7 +155,7 @@ class _Rep:
     _tables: list | None = field(default=None, repr=False)
     _kinks: tuple | None = field(default=None, repr=False)
     _u: tuple | None = field(default=None, repr=False)
-    table_nodes: int = 256  # at most about this many table nodes per segment
+    table_nodes: int = 128  # table spacing at most (segment length)/table_nodes
 
     def _seg_index(self, u):
         return np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0,
@@ -230,8 +241,9 @@ class _Rep:
             self._u = (br, u.ravel(), (wt * f1).ravel(), (wt * (f1 + u * f2)).ravel())
         return self._u
 
-    def direct(self, x):
-        """g(x) (5.52), the smooth part q(x) of g' and G(x) = integral_0^x g by quadrature:
+    def direct(self, x, with_G=False):
+        """g(x) (5.52), the smooth part q(x) of g' and G(x) = integral_0^x g by quadrature
+        (G only ``with_G``, else zeros):
 
             g = x integral_0^x f'(u) du / sqrt(x^2 - u^2),  q = integral_0^x h(u) du /
             sqrt(x^2 - u^2),  G = integral_0^x f'(u) sqrt(x^2 - u^2) du.
@@ -253,19 +265,19 @@ class _Rep:
         # chunks computed up to the chunk's largest nfar
         nfar = first * (len(u) // len(lo))
         order = np.argsort(nfar, kind="stable")
-        for c in range(0, len(x), 32):
-            rows = order[c:c + 32]
+        for c in range(0, len(x), 64):
+            rows = order[c:c + 64]
             ncol = int(nfar[rows[-1]])
             if ncol == 0:
                 continue
             xc, uc = x[rows, None], u[None, :ncol]
             far = np.arange(ncol)[None, :] < nfar[rows, None]
-            s2 = np.where(far, (xc - uc) * (xc + uc), 1.0)
-            root = np.sqrt(s2) * far
-            inv = far / np.sqrt(s2)
+            root = np.sqrt(np.maximum((xc - uc) * (xc + uc), 1e-300))
+            inv = far / root
             g[rows] = x[rows] * (inv @ wf1[:ncol])
             q[rows] = inv @ wh[:ncol]
-            G[rows] = root @ wf1[:ncol]
+            if with_G:
+                G[rows] = (root * far) @ wf1[:ncol]
         # near part: theta from asin(u_near/x) to pi/2, broken at the pieces' ends
         jx = np.clip(np.searchsorted(br, x, side="right") - 1, 0, len(lo) - 1)
         K = int(np.max(jx - first)) + 1 if len(x) else 1
@@ -283,7 +295,8 @@ class _Rep:
         f1[live], f2[live] = self.derivs(uu[live])
         g += x * np.sum(w * f1, axis=1)
         q += np.sum(w * (f1 + uu * f2), axis=1)
-        G += x**2 * np.sum(w * f1 * np.cos(th) ** 2, axis=1)
+        if with_G:
+            G += x**2 * np.sum(w * f1 * np.cos(th) ** 2, axis=1)
         return g, q, G
 
     def g_direct(self, x):
@@ -302,7 +315,7 @@ class _Rep:
 
     def G(self, a):
         """integral_0^a g dx = integral_0^a f'(u) sqrt(a^2 - u^2) du."""
-        return self.direct(a)[2]
+        return self.direct(a, with_G=True)[2]
 
     # -- tables of the smooth remainders, built on first use --------------------------------
     def tables(self) -> list[_Seg]:
@@ -312,11 +325,15 @@ class _Rep:
             out = []
             for lo, hi in zip(self.edges[:-1], self.edges[1:], strict=True):
                 kn = self.knots[(self.knots > lo) & (self.knots < hi)]
-                kn = kn[::-(-len(kn) // self.table_nodes)] if len(kn) else kn
-                if lo == 0:  # the spline is a polynomial on [0, r_1]: so is q, no grading
-                    v = np.concatenate([[lo], kn, [hi]])
+                if lo == 0:
+                    # spacing at most (hi - lo)/table_nodes, and at most x/32 towards the
+                    # centre, where q ~ x^(n-1) for f ~ r^n; 10 levels below the first knot
+                    base = np.concatenate([[lo], _thin(kn, hi / self.table_nodes, 1 / 32),
+                                           [hi]])
+                    v = _merge(base, base[1] * _GRADE[:10])
                     xv = v
                 else:
+                    kn = kn[::-(-len(kn) // self.table_nodes)] if len(kn) else kn
                     # t = sqrt(x - lo): the knots' images, and the wide intervals near t = 0
                     # divided evenly (as many nodes as knots would give evenly)
                     T = np.sqrt(hi - lo)
@@ -377,7 +394,7 @@ class _Rep:
             if len(sel):
                 rr = r[sel]
                 W = np.sqrt(top - rr)
-                xk = _subsample(seg.lo + seg.nodes**2 if seg.in_t else seg.nodes, 64)
+                xk = _subsample(seg.lo + seg.nodes**2 if seg.in_t else seg.nodes, 16)
                 with np.errstate(invalid="ignore"):
                     wk = np.sqrt(np.clip(xk[None, :] - rr[:, None], 0, None))
                 # grade towards w = 0 down to the scale of the nearest singularity: the
@@ -703,14 +720,19 @@ class Profile:
         for _ in range(100):
             gg, gp = rep.g_and_gprime_direct(np.array([a]))
             ga, gp = gg[0] - d, gp[0]
+            if ga == 0:
+                return a
             if ga > 0:
                 hi = a
             else:
                 lo = a
-            a_new = a - ga / gp if gp > 0 else np.inf
-            if not (lo < a_new < hi):
+            step = ga / gp if gp > 0 else np.inf
+            if abs(step) <= 2e-16 * a:  # quadratic convergence: this step is the last
+                return a - step
+            a_new = a - step
+            if not (lo <= a_new <= hi):
                 a_new = (lo + hi) / 2
-            if abs(a_new - a) <= 1e-15 * a or hi - lo <= 1e-15 * hi:
+            if hi - lo <= 4e-16 * hi:
                 return a_new
             a = a_new
         return a
