@@ -3,10 +3,11 @@
 Usage::
 
     from hertzmdr.numeric import mdr
-    prof = mdr.Profile.from_samples(r_i, f_i)            # or Profile.from_callable(f, r_max)
+    prof = mdr.Profile.from_samples(r_i, f_i, breakpoints=[b])  # or Profile.from_callable(f, r_max)
     res = prof.solve(depth=1e-6, E_star=1e11)            # or force=..., rtol=...
     res.contact_radius, res.force, res.rel_error
     res.pressure(r), res.displacement(r), res.g(x)
+    p, err = res.pressure(r, return_error=True)
     curve = prof.force_depth_curve(depths, E_star=1e11)  # F(d), a(d), rel_error per depth
 
 Method (all lengths in m, pressures in Pa, forces in N):
@@ -14,27 +15,37 @@ Method (all lengths in m, pressures in Pa, forces in N):
 - The profile f is represented by interpolating splines of degree ``k`` (5 by default: f' and
   f'' are then accurate to O(h^5), O(h^4) for a smooth profile sampled with spacing h), one per
   segment between user ``breakpoints`` (kinks such as the edge of a worn tip).
-- (5.52) with r = x sin(theta): g(x) = x * integral_0^(pi/2) f'(x sin theta) dtheta, and
-  g'(x) = integral_0^(pi/2) h(x sin theta) dtheta with h(u) = (u f'(u))' -- no endpoint
-  singularity is left; Gauss-Legendre in theta, split at the images of the breakpoints.
-- (5.55) g(a) = d by a safeguarded Newton iteration (g' is known); force control solves
-  F(a) = F by bracketing and Brent's method on the monotone F(a) = 2 E* integral_0^a x g'(x) dx.
-- (5.57) F = 2 E* (d a - integral_0^a g),
-  integral_0^a g = a^2 integral_0^(pi/2) f'(a sin t) cos^2 t dt.
-- (5.59) with x = r cosh(tau): p(r) = (E*/pi) integral_0^(acosh(a/r)) g'(r cosh tau) dtau,
-  p(0) = (E*/pi) integral_0^a g'(x)/x dx.
-- Every quadrature is composite Gauss-Legendre with panels broken at the images of the sample
-  radii (the spline's pieces) and graded geometrically towards the ends, so that profiles like
-  r^1.5 (f'' singular at 0) and kinks at breakpoints keep the order of the interpolation.
+- At a kink b_j, f' jumps by s_j. With h = (u f')' away from the kinks,
+  g'(x) = q(x) + sum_j b_j s_j / sqrt(x^2 - b_j^2) and g(x) = G_s(x) + sum_j b_j s_j
+  acosh(x / b_j) (terms for x > b_j), q(x) = integral_0^x h(u) du / sqrt(x^2 - u^2), G_s' = q.
+  The kink terms are exact; q and G_s go like c0 + c1 sqrt(x - b_j) + ... past a kink and are
+  tabulated in t = sqrt(x - b_j) there (in x on the first segment), q by a quintic spline,
+  G_s by a cubic Hermite spline, built on first use (a pressure, g or a displacement).
+- (5.52) by quadrature: g(x) = x integral_0^x f'(u) du / sqrt(x^2 - u^2) and q(x): the
+  spline's pieces at least two widths below x by Gauss-Legendre on fixed nodes in u (f', f''
+  evaluated once for every x), the rest with u = x sin(theta), which removes the endpoint
+  singularity, by Gauss-Legendre in theta broken at the pieces' ends.
+- (5.55) g(a) = d by safeguarded Newton on g and g' by quadrature (no tables); force control
+  solves F(a) = F by Brent's method on the monotone F(a) = 2 E* integral_0^a x g'(x) dx.
+- (5.57) F = 2 E* (d a - integral_0^a g), integral_0^a g = integral_0^a f'(u) sqrt(a^2 - u^2) du.
+- (5.59) p(r) = (E*/pi) integral_r^a g'(x) dx / sqrt(x^2 - r^2): the kink terms by the
+  generated ``mdr_kink_pressure`` (incomplete elliptic integrals, log-infinite at r = b_j);
+  the q part per segment with x = r + w^2 on the segment holding r (removes the Abel kernel's
+  1/sqrt(x - r)) and x = b_j + t^2 on later segments, Gauss-Legendre graded towards w = 0 (or
+  t = 0) down to the scale of the nearest singularity. p(0) is +inf for a conical tip (f'(0)
+  > 0, resolved by both resolutions).
 - (5.60) with x = r sin(theta): u(r) = (2/pi) integral_0^(asin(min(1, a/r))) (d - g(r sin theta)).
 - Error estimate: every result is computed twice, with the full resolution and with every other
-  sample (samples) or half the grid (callables) and half the quadrature points; ``rel_error`` is
-  their relative difference, an upper estimate of the error of the coarse solution (so a
-  conservative estimate for the returned, fine one). For callables the grid is doubled until
+  sample (samples) or half the grid (callables), coarser tables and fewer quadrature points;
+  ``rel_error`` is their relative difference, an upper estimate of the error of the coarse
+  solution (so a conservative estimate for the returned, fine one). The pressure's estimate
+  adds the Abel integral of |q - q_coarse| (the signed difference can vanish at some r while
+  both are in error) and a rounding bound (the spline's derivatives lose about log10(N)
+  digits; a kink term's parameter (r/b)^2 near 1). For callables the grid is doubled until
   ``rel_error <= rtol``; for samples the resolution is what was measured, and ``converged``
   says whether ``rtol`` was met.
 
-Measured convergence orders are in ``docs/mdr.md`` (``benchmarks/bench_mdr.py``).
+Measured convergence orders and timings are in ``docs/mdr.md`` (``benchmarks/bench_mdr.py``).
 """
 
 from __future__ import annotations
@@ -186,16 +197,6 @@ class _Rep:
         inner = self.knots[1:-1]
         step = 1 if self.k == 1 else max(1, len(inner) // 64)
         return np.union1d(inner[::step], self.edges[1:-1])
-
-    def _theta_nodes(self, x):
-        """Composite Gauss nodes in theta for r = x sin(theta): panels broken at the images of
-        the knots and graded towards theta = 0 (for f' ~ r^alpha at the centre)."""
-        with np.errstate(divide="ignore", invalid="ignore"):
-            s = np.where(x[:, None] > 0, self._panel_knots()[None, :] / x[:, None], 2.0)
-        th = np.arcsin(np.clip(s, 0, 1))
-        br = np.concatenate([th, _graded(np.zeros(len(x)), np.full(len(x), np.pi / 2))],
-                            axis=1)
-        return _panels(np.zeros(len(x)), np.full(len(x), np.pi / 2), br, self.m_theta)
 
     def kinks(self):
         """The radii b_j where f' jumps (segment edges; every knot for k = 1) and the jumps
@@ -526,7 +527,11 @@ class Solution:
     def pressure(self, r, *, return_error=False):
         """Contact pressure p(r) [Pa] (5.59) at r [m] (0 outside the contact).
 
-        With ``return_error=True`` also returns the estimated absolute error per point.
+        +inf at a kink r = b < a (a log singularity, (5.59) of b s / sqrt(x^2 - b^2)) and at
+        r = 0 under a conical tip. With ``return_error=True`` also returns the estimated
+        absolute error per point [Pa]: coarse-vs-fine difference, the Abel integral of the
+        tables' difference and a rounding bound (module docstring); it bounds the error of
+        the returned pressure, conservatively (tests/test_mdr.py checks it near kinks too).
         """
         r = nonnegative("r", r)
         flat = r.ravel()
