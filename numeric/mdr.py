@@ -19,8 +19,8 @@ Method (all lengths in m, pressures in Pa, forces in N):
   g'(x) = q(x) + sum_j b_j s_j / sqrt(x^2 - b_j^2) and g(x) = G_s(x) + sum_j b_j s_j
   acosh(x / b_j) (terms for x > b_j), q(x) = integral_0^x h(u) du / sqrt(x^2 - u^2), G_s' = q.
   The kink terms are exact; q and G_s go like c0 + c1 sqrt(x - b_j) + ... past a kink and are
-  tabulated in t = sqrt(x - b_j) there (in x on the first segment), q by a quintic spline,
-  G_s by a cubic Hermite spline, built on first use (a pressure, g or a displacement).
+  tabulated in t = sqrt(x - b_j) there (in x on the first segment) by quintic splines,
+  built on first use (a pressure, g or a displacement).
 - (5.52) by quadrature: g(x) = x integral_0^x f'(u) du / sqrt(x^2 - u^2) and q(x): the
   spline's pieces at least two widths below x by Gauss-Legendre on fixed nodes in u (f', f''
   evaluated once for every x), the rest with u = x sin(theta), which removes the endpoint
@@ -140,8 +140,8 @@ class _Seg:
     hi: float
     in_t: bool
     nodes: np.ndarray  # in the table variable
-    G: object  # cubic Hermite spline of G_s (the remainder of g)
-    q: object  # cubic spline of q (the remainder of g')
+    G: object  # quintic spline of G_s (the remainder of g)
+    q: object  # quintic spline of q (the remainder of g')
 
     def var(self, x):
         return np.sqrt(np.maximum(x - self.lo, 0.0)) if self.in_t else x
@@ -321,7 +321,7 @@ class _Rep:
     # -- tables of the smooth remainders, built on first use --------------------------------
     def tables(self) -> list[_Seg]:
         if self._tables is None:
-            from scipy.interpolate import CubicHermiteSpline, make_interp_spline
+            from scipy.interpolate import make_interp_spline
 
             out = []
             for lo, hi in zip(self.edges[:-1], self.edges[1:], strict=True):
@@ -343,9 +343,9 @@ class _Rep:
                     xv[-1] = hi
                 gg, q, _ = self.direct(xv)
                 Gs = gg - self._kink_terms(xv, 0)
-                dG = q if lo == 0 else 2 * v * q
-                out.append(_Seg(lo, hi, lo != 0, v, CubicHermiteSpline(v, Gs, dG),
-                                make_interp_spline(v, q, k=min(5, len(v) - 1))))
+                kk = min(5, len(v) - 1)
+                out.append(_Seg(lo, hi, lo != 0, v, make_interp_spline(v, Gs, k=kk),
+                                make_interp_spline(v, q, k=kk)))
             self._tables = out
         return self._tables
 
@@ -381,7 +381,7 @@ class _Rep:
         otabs = other.tables() if other is not None else None
         b, s = self.kinks()
         for bj, sj in zip(b, s, strict=True):
-            if bj < a:
+            if bj < a and sj != 0:  # (a zero jump: k = 1 splines through collinear samples)
                 out += gen.mdr_kink_pressure(E_star, a, bj, r, sj)  # (5.59)
         tabs = self.tables()
         idx = self._seg_index(r)
