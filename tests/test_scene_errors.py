@@ -176,3 +176,25 @@ def test_scene_never_executes_code(tmp_path, capsys):
     assert main(["run", str(path)]) == 2
     assert not marker.exists()
     assert "cannot read" in capsys.readouterr().err
+
+
+def test_sampled_conical_tip_pressure_is_infinite_at_the_axis():
+    """A sampled cone (f'(0) > 0): p(0) = +inf, max_pressure says +inf without a NaN error, the
+    profile's error is over the finite values, and p agrees with the cone's (5.39)."""
+    import numpy as np
+
+    from hertzmdr.numeric import cone, scene
+
+    tan_t, E, nu, d = 0.5, 1e9, 0.3, 1e-7
+    r = np.linspace(0, 2e-6, 41)
+    doc = scene.load({"effects": ["pressure_profile", "max_pressure"],
+                      "body": [{"shape": "profile", "r": r.tolist(), "f": (tan_t * r).tolist(),
+                                "rigid": True}, {"shape": "flat", "E": E, "nu": nu}],
+                      "load": {"depth": d}}).run()["effects"]
+    assert np.isinf(doc["max_pressure"]["value"])
+    prof = doc["pressure_profile"]
+    rr, p = np.asarray(prof["value"]["r"]), np.asarray(prof["value"]["p"])
+    assert np.isinf(p[0]) and np.isfinite(prof["rel_error"]) and prof["rel_error"] < 1e-6
+    ref = cone.pressure(rr[1:], d, np.arctan(tan_t), E / (1 - nu**2))
+    # piecewise linear f: the quintic spline is exact; the tables' error (estimate above)
+    np.testing.assert_allclose(p[1:], ref, rtol=1e-7, atol=1e-9 * np.max(p[1:]))
