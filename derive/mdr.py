@@ -42,7 +42,9 @@ x = symbol("x")
 t = sp.Symbol("t", positive=True)
 
 __all__ = ["MDRSolution", "solve", "transform", "inverse_transform", "force",
-           "pressure", "displacement_outside", "line_load_from_pressure", "x", "t"]
+           "pressure", "displacement_outside", "line_load_from_pressure", "x", "t",
+           "abel_kernel", "line_load_after_pressure", "profile_after_transform",
+           "elliptic_abel_integral"]
 
 
 class StepTimeout(Exception):
@@ -122,6 +124,44 @@ def line_load_from_pressure(p: sp.Expr, *, seconds=None) -> sp.Expr:
     """q(x) of (5.61) for 0 < x < a from a pressure p(r) that vanishes for r > a."""
     integrand = 2 * _rp * p.subs(r_out, _rp) / sp.sqrt(_rp**2 - x**2)
     return sp.simplify(_integrate(integrand, (_rp, x, a), seconds=seconds))
+
+
+def abel_kernel() -> sp.Expr:
+    """K(x, s) = integral_x^s r dr / sqrt((r^2 - x^2)(s^2 - r^2)) for 0 <= x < s.
+
+    The kernel left when two Abel integrals are composed and the order of integration is
+    exchanged. With r^2 = x^2 + D v (D = s^2 - x^2), r dr = D dv/2, it is
+    (1/2) integral_0^1 dv/sqrt(v (1 - v)): independent of x and s (SymPy: pi/2).
+    """
+    v, D = sp.symbols("v D", positive=True)
+    K = _integrate(sp.simplify((D / 2) / sp.sqrt((D * v) * (D - D * v))), (v, 0, 1))
+    if K.free_symbols:
+        raise AssertionError(f"the Abel kernel depends on {K.free_symbols}: {K}")
+    return K
+
+
+def line_load_after_pressure(q: sp.Expr, xs: sp.Symbol = x) -> sp.Expr:
+    """(5.61) after (5.59) for a line load q(x) on (0, a), symbolically.
+
+    p(r) = -(1/pi) integral_r^a q'(s)/sqrt(s^2 - r^2) ds (5.59) put into (5.61),
+    q~(x) = 2 integral_x^a r p(r)/sqrt(r^2 - x^2) dr, with the order exchanged over
+    x < r < s < a: q~(x) = -(2/pi) integral_x^a q'(s) K(x, s) ds, K of :func:`abel_kernel`.
+    The round trip is the identity when this equals q(x), i.e. when q(a) = 0.
+    """
+    s = sp.Symbol("s_", positive=True)
+    return -2 / sp.pi * _integrate(sp.diff(q, xs).subs(xs, s) * abel_kernel(), (s, xs, a))
+
+
+def profile_after_transform(f: sp.Expr, r: sp.Symbol) -> sp.Expr:
+    """(5.53) after (5.52) for a profile f(r), symbolically.
+
+    g(x) = x integral_0^x f'(u)/sqrt(x^2 - u^2) du (5.52) put into (5.53),
+    f~(r) = (2/pi) integral_0^r g(x)/sqrt(r^2 - x^2) dx, with the order exchanged over
+    0 < u < x < r: f~(r) = (2/pi) integral_0^r f'(u) K(u, r) du, K of :func:`abel_kernel`.
+    The round trip is the identity when this equals f(r), i.e. when f(0) = 0.
+    """
+    u = sp.Symbol("u_", positive=True)
+    return 2 / sp.pi * _integrate(sp.diff(f, r).subs(r, u) * abel_kernel(), (u, 0, r))
 
 
 def elliptic_abel_integral(A: sp.Expr, B: sp.Expr, L: sp.Expr, S: sp.Expr, upper: sp.Expr,

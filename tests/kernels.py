@@ -75,6 +75,30 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
     return total / (mp.pi * E_star)
 
 
+def uz_rings(p: Callable[[mp.mpf], mp.mpf], r, a, E_star, splits=()) -> mp.mpf:
+    """u_z(r) under an axisymmetric pressure p(rho) supported on rho < a, by (5.7) in polar
+    coordinates (rho, phi) centred on the axis: u_z = 1/(pi E*) integral_0^a p(rho) rho
+    integral_0^(2 pi) dphi / s drho, s^2 = (r - rho)^2 + 4 r rho sin^2(phi/2).
+
+    Both integrals by tanh-sinh; the pressure is evaluated once per ring, which makes this the
+    route for pressures that are costly to evaluate (elliptic integrals). The ring integral has
+    a log singularity at rho = r (split there), ``splits`` are radii where p is singular (split
+    there too, e.g. the edge b of a worn tip). Call inside ``mp.workdps``; returns an mpf.
+    """
+    r, a = mp.mpf(r), mp.mpf(a)
+
+    def ring(rho):  # even in phi: twice the integral over (0, pi)
+        def inv_s(phi):
+            return 1 / mp.sqrt((r - rho) ** 2 + 4 * r * rho * mp.sin(phi / 2) ** 2)
+
+        return 2 * rho * mp.quad(inv_s, [0, mp.pi])
+
+    pts = {mp.mpf(0), a, *(mp.mpf(c) for c in splits if 0 < c < a)}
+    if 0 < r < a:
+        pts.add(r)
+    return mp.quad(lambda rho: p(rho) * ring(rho), sorted(pts)) / (mp.pi * E_star)
+
+
 def force_axisymmetric(p: Callable[[mp.mpf], mp.mpf], a) -> mp.mpf:
     """F = integral of p(r) 2 pi r dr over [0, a] (5.11), (5.17), (5.57)."""
     return mp.quad(lambda rr: p(rr) * 2 * mp.pi * rr, [0, a])

@@ -87,8 +87,26 @@ def test_roundtrips_symbolic():
     c = sp.Symbol("c_n", positive=True)
     gx = mdr.transform(c * rp**n, rp)
     assert sp.simplify(mdr.inverse_transform(gx) - c * r**n) == 0
-    # (5.61) after (5.59) is checked numerically (test_numeric_roundtrips): SymPy's integral
-    # of r p(r)/sqrt(r^2 - x^2) for these pressures does not finish in reasonable time
+
+
+def test_roundtrips_symbolic_any_n():
+    """(5.53)(5.52) and (5.61)(5.59) are the identity for f = c r^n with symbolic n > 0, and for
+    any profile f with f(0) = 0 and any line load with q(a) = 0: composing the two Abel
+    integrals and exchanging the order of integration leaves the kernel K = pi/2
+    (mdr.abel_kernel), and the fundamental theorem of calculus. (Composing SymPy's closed forms
+    directly, e.g. integrating r p(r)/sqrt(r^2 - x^2) for the 2F1 pressure, does not finish.)"""
+    assert mdr.abel_kernel() == sp.pi / 2
+    n, c = powerlaw.n, powerlaw.c_n
+    assert sp.simplify(mdr.profile_after_transform(c * rp**n, rp) - c * rp**n) == 0
+    # the line load of the power law, q = E* (d - g(x)) with g = kappa c x^n (5.52, derived)
+    # and d = g(a) (5.55)
+    gx = powerlaw.kappa() * c * mdr.x**n
+    q = E_star * (gx.subs(mdr.x, a) - gx)
+    assert sp.simplify(mdr.line_load_after_pressure(q) - q) == 0
+    # any line load: the round trip gives q(x) - q(a)
+    qf, ff = sp.Function("q"), sp.Function("f")
+    assert sp.simplify(mdr.line_load_after_pressure(qf(mdr.x)) - (qf(mdr.x) - qf(a))) == 0
+    assert sp.simplify(mdr.profile_after_transform(ff(rp), rp) - (ff(rp) - ff(0))) == 0
 
 
 # -- numerical MDR ---------------------------------------------------------------------------

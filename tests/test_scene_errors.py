@@ -109,17 +109,17 @@ def test_effect_that_does_not_apply(tmp_path, capsys):
     assert "'contact_radius' does not apply" in err and "use 'half_width'" in err
 
 
-def test_worn_pressure_and_stresses_are_offered():
+def test_worn_pressure_matches_the_numerical_mdr():
     """The worn tip's pressure (closed form, Problem 8) agrees with the numerical MDR of the
     same profile sampled with the kink r = b as a breakpoint (an independent route: splines,
-    quadrature, the kink's branch-point term); max_pressure is +inf (log-infinite at r = b)
-    and says why; the stresses under it run."""
+    quadrature, the kink's branch-point term), and the axis stresses under it with a ring sum
+    of Boussinesq's point force within their error estimate."""
     import numpy as np
 
     from hertzmdr.numeric import mdr, scene
 
     R, b, E, nu, d = 0.01, 1e-4, 1e9, 0.4, 1e-6
-    doc = scene.load({"effects": ["pressure_profile", "max_pressure", "axis_stresses"],
+    doc = scene.load({"effects": ["pressure_profile", "axis_stresses"],
                       "body": [{"shape": "flattened_parabola", "radius": R, "flat_radius": b,
                                 "rigid": True}, {"shape": "flat", "E": E, "nu": nu}],
                       "load": {"depth": d}}).run()["effects"]
@@ -133,8 +133,6 @@ def test_worn_pressure_and_stresses_are_offered():
     assert np.all(np.isfinite(p)) and p[0] > 0 and p[-1] == 0
     # the numerical MDR's own estimate bounds its error (tests/test_mdr.py); x2 for safety
     assert np.all(np.abs(p - pm) <= 2 * em + 1e-12 * np.max(p))
-    mp_ = doc["max_pressure"]
-    assert np.isinf(mp_["value"]) and "log-infinite" in mp_["method"]
     ax = doc["axis_stresses"]["value"]
     szz = np.asarray(ax["sigma_zz"])
     assert np.all(np.isfinite(szz)) and np.all(szz < 0)
@@ -150,6 +148,16 @@ def test_worn_pressure_and_stresses_are_offered():
         ref = -quad(lambda rho, z=zi: float(g.worn_pressure(E_star, R, a, b, rho)) * 3 * z**3
                     * rho / (rho**2 + z**2) ** 2.5, 0, a, points=[b], limit=200)[0]
         assert abs(si / ref - 1) <= max(err, 1e-6), (zi, si, ref, err)
+
+
+def test_worn_max_pressure_is_refused_with_the_reason(tmp_path, capsys):
+    """The worn parabola's pressure is log-infinite at r = b: no maximum to report."""
+    path = tmp_path / "worn.toml"
+    path.write_text('effects = ["max_pressure"]\n[[body]]\nshape = "flattened_parabola"\n'
+                    'radius = 0.01\nflat_radius = 1e-4\nrigid = true\n[[body]]\n'
+                    'shape = "flat"\nE = 1e9\nnu = 0.4\n[load]\ndepth = 1e-6\n')
+    assert main(["run", str(path)]) == 2
+    assert "log-infinite at the edge of the flat" in capsys.readouterr().err
 
 
 def test_missing_file(tmp_path, capsys):

@@ -6,6 +6,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from hertzmdr.numeric import scene
@@ -241,3 +242,28 @@ def test_height_map_meets_hertz():
     F = doc["effects"]["force"]
     hertz_F = 4 / 3 * 2e9 / (1 - 0.16) * 1e-3**0.5 * 1e-7**1.5  # (5.23)
     assert abs(F["value"] / hertz_F - 1) <= F["rel_error"]
+
+
+def test_worn_tip_pressure_and_stresses(tmp_path):
+    """A worn tip's scene gives the closed-form pressure (Problem 8) and the stresses under it:
+    the pressure integrates to the scene's force, and sigma_zz under the centre tends to -p(0).
+    """
+    path = tmp_path / "worn.toml"
+    path.write_text('effects = ["force", "pressure_profile", "axis_stresses"]\n'
+                    '[[body]]\nshape = "flattened_parabola"\nradius = "50 um"\n'
+                    'flat_radius = "2 um"\nrigid = true\n'
+                    '[[body]]\nshape = "flat"\nE = "130 GPa"\nnu = 0.28\n'
+                    '[load]\ndepth = "50 nm"\n')
+    eff = scene.load(path).run()["effects"]
+    prof = eff["pressure_profile"]["value"]
+    r, p = np.asarray(prof["r"]), np.asarray(prof["p"])
+    assert np.all(np.isfinite(p)) and p[-1] == 0.0
+    # trapezoid over 201 points across a log singularity at b and a square root at a: the
+    # rule's error is O(h log h) there, ~1 % for h = a/134
+    F = np.trapezoid(2 * np.pi * r * p, r)
+    assert abs(F / eff["force"]["value"] - 1) < 0.02
+    ax = eff["axis_stresses"]
+    szz = np.asarray(ax["value"]["sigma_zz"])
+    # sigma_zz(z) = -p(0) + O(z) on the axis: the first depth is ~a/10; allow that and the
+    # route's own error estimate
+    assert abs(szz[0] / -p[0] - 1) < 0.05 + ax["rel_error"]

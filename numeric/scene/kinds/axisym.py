@@ -285,12 +285,18 @@ class NumericalMDR(Axisymmetric):
 
 
 class Worn(Axisymmetric):
-    """Problem 8's flattened (worn) parabola: a(d), F(d), g(x), the pressure and the outside
-    displacement in closed form (derive/worn.py; F(d) in its stable form, the pressure in
-    incomplete elliptic integrals). The pressure is log-infinite at the edge of the flat,
-    r = b: ``max_pressure`` is then +inf, and says so in its method."""
+    """Problem 8's flattened (worn) parabola: a(d), F(d), g(x), the pressure (incomplete elliptic
+    integrals) and the outside displacement in closed form (derive/worn.py, F(d) in its stable
+    form). The pressure is log-infinite at the edge of the flat r = b, where f' jumps: it has
+    no maximum, and the stresses come from superposing it (tanh-sinh with an error estimate)."""
 
     kind = "flattened_parabola"
+    why_not = {"max_pressure": "the worn parabola's pressure is log-infinite at the edge of "
+               "the flat r = b (where the slope of the profile jumps): it has no finite maximum; "
+               "ask for 'pressure_profile' or the stresses"}
+
+    def has(self, effect):
+        return effect != "max_pressure" and super().has(effect)
 
     def __init__(self, E_star, rtol, R, b):
         super().__init__(E_star, rtol)
@@ -338,21 +344,14 @@ class Worn(Axisymmetric):
         return out
 
     def p(self, r, d):
-        r = np.asarray(r, float)
         a = float(self.radius(d))
-        out = np.zeros(r.shape)
-        ins = r < a
-        # b = 0 is Hertz: p(0) as the limit r -> 0 (the relation divides by max(r, b))
-        rr = r[ins] if self.b > 0 else np.maximum(r[ins], 1e-300 * a)
-        out[ins] = g.worn_pressure(self.E_star, self.R, a, self.b, rr)  # Problem 8, (5.59)
-        return out
+        return g.worn_pressure(self.E_star, self.R, a, self.b, np.asarray(r, float))  # (5.59)
 
-    def effect_max_pressure(self, st):
-        """+inf for b > 0: p ~ -(E* b/(pi R)) log|r - b| at the edge of the flat (the kink's
-        branch point, mdr_kink_pressure); for b = 0 (Hertz) p(0)."""
-        d = np.atleast_1d(st.depth)
-        if self.b > 0:
-            return Value(np.full(d.shape, np.inf), "(5.59): log-infinite at the edge of the "
-                         "flat r = b (Problem 8)", self.rel)
-        return Value(np.array([float(self.p(np.array([0.0]), dd)[0]) for dd in d]),
-                     "(5.59) at r = 0 (b = 0: Hertz)", self.rel)
+    def effect_pressure_profile(self, st):
+        d = self.last(st)
+        a = float(self.radius(d))
+        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+        # p is log-infinite at r = b: a grid point that falls on it moves by 1e-3 of a step
+        r[np.abs(r - self.b) <= 1e-12 * a] += 1e-3 * (r[1] - r[0])
+        return Value({"r": r, "p": np.asarray(self.p(r, d), float)},
+                     "(5.59) in incomplete elliptic integrals (Problem 8)", self.rel)
