@@ -3,10 +3,11 @@
 Usage::
 
     from hertzmdr.numeric import mdr
-    prof = mdr.Profile.from_samples(r_i, f_i)            # or Profile.from_callable(f, r_max)
+    prof = mdr.Profile.from_samples(r_i, f_i, breakpoints=[b])  # or Profile.from_callable(f, r_max)
     res = prof.solve(depth=1e-6, E_star=1e11)            # or force=..., rtol=...
     res.contact_radius, res.force, res.rel_error
     res.pressure(r), res.displacement(r), res.g(x)
+    p, err = res.pressure(r, return_error=True)
     curve = prof.force_depth_curve(depths, E_star=1e11)  # F(d), a(d), rel_error per depth
 
 Method (all lengths in m, pressures in Pa, forces in N):
@@ -14,27 +15,37 @@ Method (all lengths in m, pressures in Pa, forces in N):
 - The profile f is represented by interpolating splines of degree ``k`` (5 by default: f' and
   f'' are then accurate to O(h^5), O(h^4) for a smooth profile sampled with spacing h), one per
   segment between user ``breakpoints`` (kinks such as the edge of a worn tip).
-- (5.52) with r = x sin(theta): g(x) = x * integral_0^(pi/2) f'(x sin theta) dtheta, and
-  g'(x) = integral_0^(pi/2) h(x sin theta) dtheta with h(u) = (u f'(u))' -- no endpoint
-  singularity is left; Gauss-Legendre in theta, split at the images of the breakpoints.
-- (5.55) g(a) = d by a safeguarded Newton iteration (g' is known); force control solves
-  F(a) = F by bracketing and Brent's method on the monotone F(a) = 2 E* integral_0^a x g'(x) dx.
-- (5.57) F = 2 E* (d a - integral_0^a g),
-  integral_0^a g = a^2 integral_0^(pi/2) f'(a sin t) cos^2 t dt.
-- (5.59) with x = r cosh(tau): p(r) = (E*/pi) integral_0^(acosh(a/r)) g'(r cosh tau) dtau,
-  p(0) = (E*/pi) integral_0^a g'(x)/x dx.
-- Every quadrature is composite Gauss-Legendre with panels broken at the images of the sample
-  radii (the spline's pieces) and graded geometrically towards the ends, so that profiles like
-  r^1.5 (f'' singular at 0) and kinks at breakpoints keep the order of the interpolation.
+- At a kink b_j, f' jumps by s_j. With h = (u f')' away from the kinks,
+  g'(x) = q(x) + sum_j b_j s_j / sqrt(x^2 - b_j^2) and g(x) = G_s(x) + sum_j b_j s_j
+  acosh(x / b_j) (terms for x > b_j), q(x) = integral_0^x h(u) du / sqrt(x^2 - u^2), G_s' = q.
+  The kink terms are exact; q and G_s go like c0 + c1 sqrt(x - b_j) + ... past a kink and are
+  tabulated in t = sqrt(x - b_j) there (in x on the first segment) by quintic splines,
+  built on first use (a pressure, g or a displacement).
+- (5.52) by quadrature: g(x) = x integral_0^x f'(u) du / sqrt(x^2 - u^2) and q(x): the
+  spline's pieces at least two widths below x by Gauss-Legendre on fixed nodes in u (f', f''
+  evaluated once for every x), the rest with u = x sin(theta), which removes the endpoint
+  singularity, by Gauss-Legendre in theta broken at the pieces' ends.
+- (5.55) g(a) = d by safeguarded Newton on g and g' by quadrature (no tables); force control
+  solves F(a) = F by Brent's method on the monotone F(a) = 2 E* integral_0^a x g'(x) dx.
+- (5.57) F = 2 E* (d a - integral_0^a g), integral_0^a g = integral_0^a f'(u) sqrt(a^2 - u^2) du.
+- (5.59) p(r) = (E*/pi) integral_r^a g'(x) dx / sqrt(x^2 - r^2): the kink terms by the
+  generated ``mdr_kink_pressure`` (incomplete elliptic integrals, log-infinite at r = b_j);
+  the q part per segment with x = r + w^2 on the segment holding r (removes the Abel kernel's
+  1/sqrt(x - r)) and x = b_j + t^2 on later segments, Gauss-Legendre graded towards w = 0 (or
+  t = 0) down to the scale of the nearest singularity. p(0) is +inf for a conical tip (f'(0)
+  > 0, resolved by both resolutions).
 - (5.60) with x = r sin(theta): u(r) = (2/pi) integral_0^(asin(min(1, a/r))) (d - g(r sin theta)).
 - Error estimate: every result is computed twice, with the full resolution and with every other
-  sample (samples) or half the grid (callables) and half the quadrature points; ``rel_error`` is
-  their relative difference, an upper estimate of the error of the coarse solution (so a
-  conservative estimate for the returned, fine one). For callables the grid is doubled until
+  sample (samples) or half the grid (callables), coarser tables and fewer quadrature points;
+  ``rel_error`` is their relative difference, an upper estimate of the error of the coarse
+  solution (so a conservative estimate for the returned, fine one). The pressure's estimate
+  adds the Abel integral of |q - q_coarse| (the signed difference can vanish at some r while
+  both are in error) and a rounding bound (the spline's derivatives lose about log10(N)
+  digits; a kink term's parameter (r/b)^2 near 1). For callables the grid is doubled until
   ``rel_error <= rtol``; for samples the resolution is what was measured, and ``converged``
   says whether ``rtol`` was met.
 
-Measured convergence orders are in ``docs/mdr.md`` (``benchmarks/bench_mdr.py``).
+Measured convergence orders and timings are in ``docs/mdr.md`` (``benchmarks/bench_mdr.py``).
 """
 
 from __future__ import annotations
@@ -44,6 +55,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["Profile", "Solution", "ForceDepthCurve"]
@@ -75,38 +87,109 @@ def _panels(lo, hi, breaks, m):
 _GRADE = 0.5 ** np.arange(1, 31)  # geometric grading towards an endpoint: 2^-1 ... 2^-30
 
 
-def _graded(lo, hi, toward_lo=True):
-    """Break points grading [lo, hi] geometrically towards lo (or hi): shape (M, 30)."""
+def _graded(lo, hi, toward_lo=True, levels=30):
+    """Break points grading [lo, hi] geometrically towards lo (or hi): shape (M, levels)."""
     lo, hi = np.asarray(lo, float)[:, None], np.asarray(hi, float)[:, None]
-    return lo + (hi - lo) * _GRADE if toward_lo else hi - (hi - lo) * _GRADE
+    g = _GRADE[:levels]
+    return lo + (hi - lo) * g if toward_lo else hi - (hi - lo) * g
+
+
+def _subsample(v, n):
+    """At most about n of the sorted values v (every few), for panel breaks."""
+    return v[:: max(1, len(v) // n)] if len(v) else v
+
+
+def _merge(base, extra):
+    """The sorted union of ``base`` and those ``extra`` points not closer to a point of base
+    than a fifth of the local spacing (nearly coincident nodes make an interpolating spline
+    amplify the quadrature noise of the tabulated values)."""
+    base = np.unique(base)
+    i = np.clip(np.searchsorted(base, extra), 1, len(base) - 1)
+    left, right = base[i - 1], base[i]
+    keep = np.minimum(extra - left, right - extra) > 0.2 * (right - left)
+    return np.unique(np.concatenate([base, extra[keep]]))
+
+
+def _thin(v, step, rel):
+    """A subset of the sorted positive v: each kept point at least min(step, rel * v) from the
+    previous kept one (all of them where the spacing of v is finer than that)."""
+    keep, last = [], -np.inf
+    for x in v:
+        if x - last >= min(step, rel * x) * 0.999:
+            keep.append(x)
+            last = x
+    return np.asarray(keep, float)
+
+
+def _fill(v, step):
+    """Sorted nodes v with every interval longer than ``step`` divided evenly."""
+    parts = [v[:1]]
+    for lo, hi in zip(v[:-1], v[1:], strict=True):
+        n = max(1, int(np.ceil((hi - lo) / step)))
+        parts.append(np.linspace(lo, hi, n + 1)[1:])
+    return np.concatenate(parts)
+
+
+@dataclass
+class _Seg:
+    """Tables of the smooth remainders on one segment [lo, hi] of the profile: in x on the
+    first segment, in t = sqrt(x - lo) on a segment that starts at a kink (where the
+    remainders go like sqrt(x - lo))."""
+
+    lo: float
+    hi: float
+    in_t: bool
+    nodes: np.ndarray  # in the table variable
+    G: object  # quintic spline of G_s (the remainder of g)
+    q: object  # quintic spline of q (the remainder of g')
+
+    def var(self, x):
+        return np.sqrt(np.maximum(x - self.lo, 0.0)) if self.in_t else x
 
 
 @dataclass
 class _Rep:
-    """A piecewise spline representation of f at one resolution, and its MDR tables."""
+    """A piecewise spline representation of f at one resolution, and its MDR tables.
+
+    f' jumps by s_j at the kinks b_j (the segment edges; every knot for k = 1). Then
+    g'(x) = q(x) + sum_j b_j s_j / sqrt(x^2 - b_j^2) and g(x) = G_s(x) + sum_j b_j s_j
+    acosh(x / b_j) (terms for x > b_j), where q(x) = integral_0^(pi/2) h(x sin theta) dtheta,
+    h = (u f')' away from the kinks, and G_s' = q. The kink terms are exact; q and G_s are
+    tabulated (they go like c0 + c1 sqrt(x - b_j) + ... past a kink: tables in sqrt(x - b_j)).
+    """
 
     segments: list  # scipy BSplines, one per segment
     edges: np.ndarray  # segment edges, edges[0] = 0, edges[-1] = r_max
     m_theta: int  # Gauss points per panel
     knots: np.ndarray  # the sample radii: the spline's pieces
     k: int = 5
-    _table: tuple | None = field(default=None, repr=False)
+    _tables: list | None = field(default=None, repr=False)
+    _kinks: tuple | None = field(default=None, repr=False)
+    _u: tuple | None = field(default=None, repr=False)
+    table_nodes: int = 128  # table spacing at most (segment length)/table_nodes
 
-    def deriv(self, u: np.ndarray, nu: int) -> np.ndarray:
+    def _seg_index(self, u):
+        return np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0,
+                       len(self.segments) - 1)
+
+    def derivs(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """f'(u) and f''(u), one segment lookup for both."""
         u = np.asarray(u, float)
-        out = np.zeros(u.shape)
-        idx = np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0, len(self.segments) - 1)
+        f1, f2 = np.zeros(u.shape), np.zeros(u.shape)
+        if len(self.segments) == 1:
+            spl = self.segments[0]
+            return spl(u, nu=1), (spl(u, nu=2) if self.k > 1 else f2)
+        idx = self._seg_index(u)
         for i, spl in enumerate(self.segments):
             sel = idx == i
             if sel.any():
-                out[sel] = spl(u[sel], nu=nu)
-        return out
+                f1[sel] = spl(u[sel], nu=1)
+                if self.k > 1:
+                    f2[sel] = spl(u[sel], nu=2)
+        return f1, f2
 
     def fprime(self, u):
-        return self.deriv(u, 1)
-
-    def h(self, u):  # (u f')' = f' + u f''
-        return self.deriv(u, 1) + u * self.deriv(u, 2)
+        return self.derivs(u)[0]
 
     def _panel_knots(self):
         """Knots used as panel breaks: all of them for k = 1 (f' jumps there), every few for
@@ -115,97 +198,258 @@ class _Rep:
         step = 1 if self.k == 1 else max(1, len(inner) // 64)
         return np.union1d(inner[::step], self.edges[1:-1])
 
-    def _theta_breaks(self, x):
-        """Panel breaks in theta for r = x sin(theta): the images of the knots and a geometric
-        grading towards theta = 0 (for f' ~ r^alpha at the centre)."""
-        with np.errstate(divide="ignore", invalid="ignore"):
-            s = np.where(x[:, None] > 0, self._panel_knots()[None, :] / x[:, None], 2.0)
-        th = np.arcsin(np.clip(s, 0, 1))
-        return np.concatenate([th, _graded(np.zeros(len(x)), np.full(len(x), np.pi / 2))],
-                              axis=1)
+    def kinks(self):
+        """The radii b_j where f' jumps (segment edges; every knot for k = 1) and the jumps
+        s_j = f'(b_j+) - f'(b_j-)."""
+        if self._kinks is None:
+            b = self.edges[1:-1]
+            s = np.array([self.segments[i + 1](bb, nu=1) - self.segments[i](bb, nu=1)
+                          for i, bb in enumerate(b)], float)
+            if self.k == 1:  # a linear spline: f' jumps at every knot
+                inner = self.knots[1:-1]
+                h = np.diff(self.knots)
+                sk = self.fprime(inner + h[1:] / 2) - self.fprime(inner - h[:-1] / 2)
+                sk[np.isin(inner, b)] = s
+                b, s = inner, sk
+            self._kinks = (b, s)
+        return self._kinks
 
-    def _theta_quad(self, x, fn, weight=None):
+    def _kink_terms(self, x, nu):
+        """sum_j b_j s_j acosh(x / b_j) (nu = 0) or b_j s_j / sqrt(x^2 - b_j^2) (nu = 1)."""
+        b, s = self.kinks()
+        out = np.zeros(x.shape)
+        for bj, sj in zip(b, s, strict=True):
+            sel = x > bj
+            if sel.any():
+                xs = x[sel]
+                if nu == 0:
+                    out[sel] += bj * sj * np.arccosh(xs / bj)
+                else:
+                    out[sel] += bj * sj / np.sqrt((xs - bj) * (xs + bj))
+        return out
+
+    def _ugrid(self):
+        """Gauss nodes in u on every piece of the spline (between consecutive sample radii,
+        where f is one polynomial), with f'(u) and h(u) = f' + u f'' there: computed once."""
+        if self._u is None:
+            br = np.unique(np.concatenate([self.knots, self.edges]))
+            t, w = _gauss(self.m_theta - 2)
+            half = np.diff(br) / 2
+            u = (br[:-1] + half)[:, None] + half[:, None] * t
+            f1, f2 = self.derivs(u.ravel())
+            f1, f2 = f1.reshape(u.shape), f2.reshape(u.shape)
+            wt = half[:, None] * w
+            self._u = (br, u.ravel(), (wt * f1).ravel(), (wt * (f1 + u * f2)).ravel())
+        return self._u
+
+    def direct(self, x, with_G=False):
+        """g(x) (5.52), the smooth part q(x) of g' and G(x) = integral_0^x g by quadrature
+        (G only ``with_G``, else zeros):
+
+            g = x integral_0^x f'(u) du / sqrt(x^2 - u^2),  q = integral_0^x h(u) du /
+            sqrt(x^2 - u^2),  G = integral_0^x f'(u) sqrt(x^2 - u^2) du.
+
+        The spline's pieces far from u = x (at least two widths away) by Gauss-Legendre in u
+        on fixed nodes (f', h evaluated once for all x); the rest, [u_near, x], with
+        u = x sin(theta), which removes the 1/sqrt(x - u), by Gauss-Legendre in theta with
+        panels broken at the pieces' ends."""
         x = np.atleast_1d(np.abs(np.asarray(x, float)))
-        th, w = _panels(np.zeros(len(x)), np.full(len(x), np.pi / 2),
-                        self._theta_breaks(x), self.m_theta)
-        vals = fn((x[:, None] * np.sin(th)).ravel()).reshape(th.shape)
-        if weight is not None:
-            vals = vals * weight(th)
-        return x, np.sum(w * vals, axis=1)
+        br, u, wf1, wh = self._ugrid()
+        lo, hi = br[:-1], br[1:]
+        width = hi - lo
+        # first piece that is not far from x: u_near is its left end
+        notfar = (x[:, None] - hi[None, :] < 2 * width[None, :])
+        first = np.argmax(notfar, axis=1)
+        u_near = lo[first]
+        g, q, G = np.zeros(len(x)), np.zeros(len(x)), np.zeros(len(x))
+        # far pieces are a prefix: the first nfar nodes in u; rows by increasing nfar, in
+        # chunks computed up to the chunk's largest nfar
+        nfar = first * (len(u) // len(lo))
+        order = np.argsort(nfar, kind="stable")
+        for c in range(0, len(x), 64):
+            rows = order[c:c + 64]
+            ncol = int(nfar[rows[-1]])
+            if ncol == 0:
+                continue
+            xc, uc = x[rows, None], u[None, :ncol]
+            far = np.arange(ncol)[None, :] < nfar[rows, None]
+            root = np.sqrt(np.maximum((xc - uc) * (xc + uc), 1e-300))
+            inv = far / root
+            g[rows] = x[rows] * (inv @ wf1[:ncol])
+            q[rows] = inv @ wh[:ncol]
+            if with_G:
+                G[rows] = (root * far) @ wf1[:ncol]
+        # near part: theta from asin(u_near/x) to pi/2, broken at the pieces' ends
+        jx = np.clip(np.searchsorted(br, x, side="right") - 1, 0, len(lo) - 1)
+        K = int(np.max(jx - first)) + 1 if len(x) else 1
+        kidx = np.minimum(first[:, None] + 1 + np.arange(K)[None, :], len(br) - 1)
+        kb = br[kidx]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s0 = np.where(x > 0, u_near / x, 0.0)
+            sk = np.where(x[:, None] > 0, kb / x[:, None], 1.0)
+        th0 = np.arcsin(np.clip(s0, 0, 1))
+        thk = np.arcsin(np.clip(sk, 0, 1))
+        th, w = _panels(th0, np.full(len(x), np.pi / 2), thk, self.m_theta)
+        live = w > 0
+        uu = x[:, None] * np.sin(th)
+        f1, f2 = np.zeros(th.shape), np.zeros(th.shape)
+        f1[live], f2[live] = self.derivs(uu[live])
+        g += x * np.sum(w * f1, axis=1)
+        q += np.sum(w * (f1 + uu * f2), axis=1)
+        if with_G:
+            G += x**2 * np.sum(w * f1 * np.cos(th) ** 2, axis=1)
+        return g, q, G
 
     def g_direct(self, x):
         """(5.52): g(x) = x * integral_0^(pi/2) f'(x sin theta) dtheta."""
-        x, q = self._theta_quad(x, self.fprime)
-        return x * q
-
-    def _jumps(self):
-        """Radii u_j where f' jumps (segment edges; every knot for k = 1) and u_j [f'](u_j)."""
-        u = self.knots[1:-1] if self.k == 1 else self.edges[1:-1]
-        if len(u) == 0:
-            return u, u
-        eps = 1e-12 * self.edges[-1]
-        jump = self.fprime(u + eps) - self.fprime(u - eps)
-        if self.k != 1:  # exact one-sided values of the segment splines
-            jump = np.array([self.segments[i + 1](uu, nu=1) - self.segments[i](uu, nu=1)
-                             for i, uu in enumerate(u)])
-        return u, u * jump
+        return self.direct(x)[0]
 
     def gprime_direct(self, x):
-        """g'(x) = integral_0^(pi/2) h(x sin theta) dtheta, h = (u f')', plus the delta terms
-        of h where f' jumps: sum_j u_j [f'](u_j) / sqrt(x^2 - u_j^2) for u_j < x."""
-        x, q = self._theta_quad(x, self.h)
-        u, uj = self._jumps()
-        if len(u):
-            with np.errstate(divide="ignore", invalid="ignore"):
-                dx = (x[:, None] - u[None, :]) * (x[:, None] + u[None, :])
-                q = q + np.sum(np.where(dx > 0, uj[None, :] / np.sqrt(np.where(dx > 0, dx, 1)),
-                                        0.0), axis=1)
-        return q
+        """g'(x) = q(x) + the kink terms sum_j b_j s_j / sqrt(x^2 - b_j^2), x > b_j."""
+        x = np.atleast_1d(np.abs(np.asarray(x, float)))
+        return self.direct(x)[1] + self._kink_terms(x, 1)
+
+    def g_and_gprime_direct(self, x):
+        x = np.atleast_1d(np.abs(np.asarray(x, float)))
+        gg, q, _ = self.direct(x)
+        return gg, q + self._kink_terms(x, 1)
 
     def G(self, a):
-        """integral_0^a g dx = a^2 integral_0^(pi/2) f'(a sin t) cos^2 t dt."""
-        a, q = self._theta_quad(a, self.fprime, lambda th: np.cos(th) ** 2)
-        return a**2 * q
+        """integral_0^a g dx = integral_0^a f'(u) sqrt(a^2 - u^2) du."""
+        return self.direct(a, with_G=True)[2]
 
-    # -- tables: g and g' on the knots (graded towards 0 and the breakpoints) ----------------
-    def table(self):
-        """Cubic Hermite interpolant of g (from g, g') and cubic splines of g' per segment."""
-        if self._table is None:
-            from scipy.interpolate import CubicHermiteSpline, make_interp_spline
+    # -- tables of the smooth remainders, built on first use --------------------------------
+    def tables(self) -> list[_Seg]:
+        if self._tables is None:
+            from scipy.interpolate import make_interp_spline
 
-            parts = []
+            out = []
             for lo, hi in zip(self.edges[:-1], self.edges[1:], strict=True):
                 kn = self.knots[(self.knots > lo) & (self.knots < hi)]
-                # grade towards the centre and towards kinks (not towards r_max): 10 levels
-                # keep the spline of g' well conditioned (spacing ratios <= 2^10)
-                grade = lo + (hi - lo) * _GRADE[:10]
-                if hi < self.edges[-1]:
-                    grade = np.concatenate([grade, hi - (hi - lo) * _GRADE[:10]])
-                parts.append(np.unique(np.concatenate([[lo, hi], kn, grade])))
-            X = np.unique(np.concatenate(parts))
-            gX, gpX = self.g_direct(X), self.gprime_direct(X)
-            hermite = CubicHermiteSpline(X, gX, gpX)
-            gp_spl = []
-            for part in parts:
-                sel = np.isin(X, part)
-                xs, ys = X[sel], gpX[sel]
-                gp_spl.append(make_interp_spline(xs, ys, k=min(3, len(xs) - 1)))
-            self._table = (hermite, gp_spl)
-        return self._table
+                if lo == 0:
+                    # spacing at most (hi - lo)/table_nodes, and at most x/32 towards the
+                    # centre, where q ~ x^(n-1) for f ~ r^n; 10 levels below the first knot
+                    base = np.concatenate([[lo], _thin(kn, hi / self.table_nodes, 1 / 32),
+                                           [hi]])
+                    v = _merge(base, base[1] * _GRADE[:10])
+                    xv = v
+                else:
+                    kn = kn[::-(-len(kn) // self.table_nodes)] if len(kn) else kn
+                    # t = sqrt(x - lo): the knots' images, and the wide intervals near t = 0
+                    # divided evenly (as many nodes as knots would give evenly)
+                    T = np.sqrt(hi - lo)
+                    v = _fill(np.concatenate([[0.0], np.sqrt(kn - lo), [T]]), T / (len(kn) + 1))
+                    xv = lo + v * v
+                    xv[-1] = hi
+                gg, q, _ = self.direct(xv)
+                Gs = gg - self._kink_terms(xv, 0)
+                kk = min(5, len(v) - 1)
+                out.append(_Seg(lo, hi, lo != 0, v, make_interp_spline(v, Gs, k=kk),
+                                make_interp_spline(v, q, k=kk)))
+            self._tables = out
+        return self._tables
+
+    def _eval(self, x, which):
+        x = np.abs(np.asarray(x, float))
+        out = np.zeros(x.shape)
+        idx = self._seg_index(x)
+        for i, seg in enumerate(self.tables()):
+            sel = idx == i
+            if sel.any():
+                out[sel] = getattr(seg, which)(seg.var(x[sel]))
+        return out
 
     def g(self, x):
         x = np.abs(np.asarray(x, float))
-        return self.table()[0](x)
+        return self._eval(x, "G") + self._kink_terms(x, 0)
 
     def gprime(self, x):
         x = np.abs(np.asarray(x, float))
-        out = np.zeros(x.shape)
-        idx = np.clip(np.searchsorted(self.edges, x, side="right") - 1, 0, len(self.edges) - 2)
-        for i, spl in enumerate(self.table()[1]):
-            sel = idx == i
-            if sel.any():
-                out[sel] = spl(x[sel])
-        return out
+        return self._eval(x, "q") + self._kink_terms(x, 1)
+
+    def pressure(self, r, a, E_star, m, other=None):
+        """(5.59): p(r) = (E*/pi) integral_r^a g'(x) / sqrt(x^2 - r^2) dx for 0 <= r < a: the
+        kink terms exactly (incomplete elliptic integrals), the smooth part q by Gauss-Legendre
+        per segment: x = r + w^2 on the segment holding r (removes the Abel kernel's
+        1/sqrt(x - r)), x = b_j + t^2 on the later ones (the table's variable).
+
+        With ``other`` (another representation of the same profile) also returns
+        (E*/pi) integral_r^a |q - q_other| / sqrt(x^2 - r^2) dx on the same nodes: the
+        difference of the two tables without the cancellations of the signed difference."""
+        out = np.zeros(r.shape)
+        dev = np.zeros(r.shape)
+        otabs = other.tables() if other is not None else None
+        b, s = self.kinks()
+        for bj, sj in zip(b, s, strict=True):
+            if bj < a and sj != 0:  # (a zero jump: k = 1 splines through collinear samples)
+                out += gen.mdr_kink_pressure(E_star, a, bj, r, sj)  # (5.59)
+        tabs = self.tables()
+        idx = self._seg_index(r)
+        smooth = np.zeros(r.shape)
+        for i, seg in enumerate(tabs):
+            if seg.lo >= a:
+                break
+            top = min(seg.hi, a)
+            # the segment that holds r: x = r + w^2, dx / sqrt(x^2 - r^2) = 2 dw / sqrt(x + r)
+            sel = np.flatnonzero(idx == i)
+            if len(sel):
+                rr = r[sel]
+                W = np.sqrt(top - rr)
+                xk = _subsample(seg.lo + seg.nodes**2 if seg.in_t else seg.nodes, 16)
+                with np.errstate(invalid="ignore"):
+                    wk = np.sqrt(np.clip(xk[None, :] - rr[:, None], 0, None))
+                # grade towards w = 0 down to the scale of the nearest singularity: the
+                # kernel's at w^2 = -2r, and past a kink q's sqrt(x - lo) at w^2 = lo - r
+                sig = np.sqrt(2 * rr)
+                if seg.in_t:
+                    sig = np.minimum(sig, np.sqrt(rr - seg.lo))
+                with np.errstate(divide="ignore"):
+                    lev = np.clip(np.ceil(np.log2(W / np.maximum(sig, 1e-300 * W))) + 2, 3, 30)
+                grade = _graded(np.zeros(len(rr)), W)
+                grade[np.arange(30)[None, :] >= lev[:, None]] = 0.0
+                wn, ww = _panels(np.zeros(len(rr)), W, np.concatenate([wk, grade], axis=1), m)
+                live = ww > 0
+                rl = np.broadcast_to(rr[:, None], wn.shape)[live]
+                wl = wn[live]
+                if seg.in_t:
+                    qv = seg.q(np.sqrt((rl - seg.lo) + wl * wl))
+                else:
+                    qv = seg.q(rl + wl * wl)
+                if i == 0 and (rr == 0).any():
+                    # p(0) = (E*/pi) integral q(x)/x dx: a smooth tip has f'(0) = 0, so q(0) =
+                    # pi f'(0)/2 = 0 (the spline's q(0) is its interpolation error, whose log
+                    # divergence is not the profile's); a conical tip has p(0) = inf (Solution)
+                    qv = qv - np.where(rl == 0, seg.q(np.zeros(1))[0], 0.0)
+                vals = np.zeros(wn.shape)
+                vals[live] = 2 * qv / np.sqrt(2 * rl + wl * wl)
+                smooth[sel] += np.sum(ww * vals, axis=1)
+                if otabs is not None:
+                    o = otabs[i]
+                    qo = o.q(np.sqrt((rl - seg.lo) + wl * wl) if seg.in_t else rl + wl * wl)
+                    if i == 0 and (rr == 0).any():
+                        qo = qo - np.where(rl == 0, o.q(np.zeros(1))[0], 0.0)
+                    vals[live] = 2 * np.abs(qv - qo) / np.sqrt(2 * rl + wl * wl)
+                    dev[sel] += np.sum(ww * vals, axis=1)
+            # the later segments [lo, top] with r < lo: x = lo + t^2, dx = 2 t dt; the nodes
+            # in t are the same for every r (graded towards t = 0 for r -> lo), q once
+            sel = np.flatnonzero(idx < i)
+            if len(sel) and seg.in_t:
+                rr = r[sel]
+                T = np.array([np.sqrt(top - seg.lo)])
+                br = np.concatenate([_subsample(seg.nodes, 64)[None, :], _graded(np.zeros(1), T)],
+                                    axis=1)
+                tn, tw = _panels(np.zeros(1), T, br, m)
+                tn, tw = tn[:, tw[0] > 0], tw[:, tw[0] > 0]
+                qv = seg.q(tn[0])[None, :]
+                xmr = (seg.lo - rr[:, None]) + tn * tn
+                xx = seg.lo + tn * tn
+                kern = tw * 2 * tn / np.sqrt(xmr * (xx + rr[:, None]))
+                smooth[sel] += np.sum(kern * qv, axis=1)
+                if otabs is not None:
+                    dev[sel] += np.sum(kern * np.abs(qv - otabs[i].q(tn[0])[None, :]), axis=1)
+        if other is not None:
+            return out + E_star / np.pi * smooth, E_star / np.pi * dev
+        return out + E_star / np.pi * smooth
 
 
 def _build_rep(r, f, breakpoints, k, smoothing, m_theta) -> _Rep:
@@ -252,51 +496,76 @@ class Solution:
     rtol: float
     _rep: _Rep = field(repr=False)
     _coarse: _Rep = field(repr=False)
+    _a_coarse: float | None = field(default=None, repr=False)
 
     def g(self, x):
         """MDR profile g(x) [m] (5.52) at |x| [m]."""
         x = nonnegative("x", np.abs(as_float("x", x)))
         return result(self._rep.g(x.ravel()).reshape(x.shape))
 
-    def _pressure(self, rep, r, m_tau):
-        a, E = self.contact_radius, self.E_star
-        out = np.zeros(r.shape)
-        ins = (r < a) & (r > 0)
+    def _pressure(self, rep, r, m, a=None, other=None):
+        a, E = (self.contact_radius if a is None else a), self.E_star
+        out, dev = np.zeros(r.shape), np.zeros(r.shape)
+        ins = r < a
         if ins.any():
-            ri = r[ins]
-            tau_max = np.arccosh(a / ri)
-            # breaks: images of the knots, x = r cosh(tau), and a grading towards tau_max
-            # (x -> a, where g' may have a kink) and towards 0
-            with np.errstate(invalid="ignore"):
-                kt = np.arccosh(np.clip(rep._panel_knots()[None, :] / ri[:, None], 1, None))
-            br = np.concatenate([kt, _graded(np.zeros(len(ri)), tau_max, toward_lo=False),
-                                 _graded(np.zeros(len(ri)), tau_max)[:, :8]], axis=1)
-            tau, w = _panels(np.zeros(len(ri)), tau_max, br, m_tau)
-            gp = rep.gprime((ri[:, None] * np.cosh(tau)).ravel()).reshape(tau.shape)
-            out[ins] = E / np.pi * np.sum(w * gp, axis=1)
-        zero = r == 0
-        if zero.any():
-            # p(0) = (E*/pi) integral_0^a g'(x)/x dx; +inf when g'(0) = (pi/2) f'(0) > 0
-            if rep.fprime(np.array([0.0]))[0] > 1e-300:
-                out[zero] = np.inf
+            if other is None:
+                out[ins] = rep.pressure(r[ins], a, E, m)
             else:
-                br = np.concatenate([rep._panel_knots()[None, :], _graded([0.0], [a])], axis=1)
-                xs, w = _panels(np.zeros(1), np.full(1, a), br, m_tau)
-                out[zero] = E / np.pi * np.sum(w * rep.gprime(xs.ravel()) / xs.ravel())
-        return out
+                out[ins], dev[ins] = rep.pressure(r[ins], a, E, m, other)
+        if (r == 0).any() and self._conical_tip():
+            out[r == 0] = np.inf  # p(0) = (E*/pi) integral_0^a g'(x)/x dx, g'(0) = pi f'(0)/2
+        return out if other is None else (out, dev)
+
+    def _conical_tip(self):
+        """Whether f'(0) > 0 (then p is log-infinite at r = 0): the fine spline's slope at 0 is
+        above rounding and the coarse one agrees with it to 10 % (a smooth tip's splines have
+        f'(0) of the order of their interpolation error, which changes with the resolution)."""
+        f0, fa = self._rep.fprime(np.array([0.0, self.contact_radius]))
+        f0c = self._coarse.fprime(np.array([0.0]))[0]
+        return f0 > 1e3 * np.finfo(float).eps * abs(fa) and abs(f0 - f0c) <= 0.1 * f0
 
     def pressure(self, r, *, return_error=False):
         """Contact pressure p(r) [Pa] (5.59) at r [m] (0 outside the contact).
 
-        With ``return_error=True`` also returns the estimated absolute error per point.
+        +inf at a kink r = b < a (a log singularity, (5.59) of b s / sqrt(x^2 - b^2)) and at
+        r = 0 under a conical tip. With ``return_error=True`` also returns the estimated
+        absolute error per point [Pa]: coarse-vs-fine difference, the Abel integral of the
+        tables' difference and a rounding bound (module docstring); it bounds the error of
+        the returned pressure, conservatively (tests/test_mdr.py checks it near kinks too).
         """
         r = nonnegative("r", r)
         flat = r.ravel()
-        p = self._pressure(self._rep, flat, 6)
         if not return_error:
-            return result(p.reshape(r.shape))
-        pc = self._pressure(self._coarse, flat, 4)
-        return result(p.reshape(r.shape)), result(np.abs(p - pc).reshape(r.shape))
+            return result(self._pressure(self._rep, flat, 6).reshape(r.shape))
+        # coarse: the half-resolution profile, its own contact radius, fewer Gauss points;
+        # dev: the same integral of |q - q_coarse| (the signed difference may pass through 0
+        # at some r while both are in error)
+        p, dev = self._pressure(self._rep, flat, 6, other=self._coarse)
+        pc = self._pressure(self._coarse, flat, 4, self._a_coarse)
+        with np.errstate(invalid="ignore"):  # inf - inf at a conical tip's r = 0
+            err = np.abs(p - pc) + dev + self._rounding(flat, p)
+        err[np.isinf(p)] = np.inf
+        return result(p.reshape(r.shape)), result(err.reshape(r.shape))
+
+    def _rounding(self, r, p):
+        """A bound of the rounding errors that the coarse-vs-fine difference cannot see:
+        (64 + 4 N) eps |p| (N samples: differentiating the spline loses about log10(N)
+        digits), amplified by a/(a - r) near the edge (the rounding of a enters p ~
+        sqrt(a - r) there), and for each kink term the rounding of its parameter
+        m = (S/L)^2 near 1: 4 eps E* |s| b / (pi L) * (1 + L^2/|L^2 - S^2|)."""
+        eps = np.finfo(float).eps
+        a = self.contact_radius
+        out = np.zeros(r.shape)
+        ins = r < a
+        n = len(self._rep.knots)
+        out[ins] = (64 + 4 * n) * eps * np.abs(p[ins]) * (1 + a / (a - r[ins]))
+        b, s = self._rep.kinks()
+        for bj, sj in zip(b, s, strict=True):
+            L, S = np.maximum(r, bj), np.minimum(r, bj)
+            sel = ins & (L < a) & (L > S)
+            out[sel] += (4 * eps * self.E_star * abs(sj) * bj / (np.pi * L[sel])
+                         * (1 + L[sel] ** 2 / ((L[sel] - S[sel]) * (L[sel] + S[sel]))))
+        return out
 
     def displacement(self, r):
         """Surface displacement u_z(r) [m], inside and outside the contact (5.60)."""
@@ -335,6 +604,7 @@ class Profile:
 
     def __init__(self, reps: list[_Rep], r_max: float, source: str):
         self._reps = reps  # increasing resolution; the last is the finest
+        reps[0].table_nodes = reps[-1].table_nodes // 2  # the coarse one: coarser tables too
         self.r_max = r_max
         self.source = source
 
@@ -433,38 +703,41 @@ class Profile:
         x = np.abs(as_float("x", x))
         return result(self._reps[-1].g(x.ravel()).reshape(x.shape))
 
-    def _radius(self, rep: _Rep, d: float) -> float:
-        """Solve g(a) = d (5.55): bracket on a grid, then safeguarded Newton."""
+    def _radius(self, rep: _Rep, d: float, guess: float | None = None) -> float:
+        """Solve g(a) = d (5.55) by safeguarded Newton on g and g' by quadrature (no tables):
+        bracket on 16 radii (one vectorized quadrature) unless a guess is given."""
         lo, hi = 0.0, self.r_max
-        if rep.g(np.array([hi]))[0] < d:
-            raise ValueError(f"depth {d} exceeds g(r_max) = {rep.g(np.array([hi]))[0]}: "
-                             "the profile is too short for this depth")
-        xs = np.linspace(0, hi, 33)[1:]
-        gs = rep.g(xs)
-        i = int(np.searchsorted(gs, d))
-        lo, hi = (xs[i - 1] if i > 0 else 0.0), xs[min(i, len(xs) - 1)]
-        a = (lo + hi) / 2
-        for _ in range(100):  # on the interpolated g
-            ga, gp = rep.g(np.array([a]))[0] - d, rep.gprime(np.array([a]))[0]
+        g_hi = rep.g_direct(np.array([hi]))[0]
+        if g_hi < d:
+            raise ValueError(f"depth {d} exceeds g(r_max) = {g_hi}: the profile is too short "
+                             "for this depth")
+        if guess is None:
+            xs = np.linspace(0, hi, 17)[1:]
+            gs = rep.g_direct(xs)
+            i = int(np.searchsorted(gs, d))
+            lo, hi = (xs[i - 1] if i > 0 else 0.0), xs[min(i, len(xs) - 1)]
+            g_lo = gs[i - 1] if i > 0 else 0.0
+            g_hi = gs[min(i, len(xs) - 1)]
+            # secant start inside the bracket
+            a = lo + (hi - lo) * (d - g_lo) / (g_hi - g_lo) if g_hi > g_lo else (lo + hi) / 2
+        else:
+            a = guess
+        for _ in range(100):
+            gg, gp = rep.g_and_gprime_direct(np.array([a]))
+            ga, gp = gg[0] - d, gp[0]
+            if ga == 0:
+                return a
             if ga > 0:
                 hi = a
             else:
                 lo = a
             step = ga / gp if gp > 0 else np.inf
+            if abs(step) <= 2e-16 * a:  # quadratic convergence: this step is the last
+                return a - step
             a_new = a - step
-            if not (lo < a_new < hi):
+            if not (lo <= a_new <= hi):
                 a_new = (lo + hi) / 2
-            if abs(a_new - a) <= 1e-15 * a:
-                a = a_new
-                break
-            a = a_new
-        for _ in range(3):  # polish on g and g' by quadrature (quadratic convergence)
-            ga = rep.g_direct(np.array([a]))[0] - d
-            gp = rep.gprime_direct(np.array([a]))[0]
-            if not gp > 0:
-                break
-            a_new = a - ga / gp
-            if abs(a_new - a) <= 1e-15 * a:
+            if hi - lo <= 4e-16 * hi:
                 return a_new
             a = a_new
         return a
@@ -498,7 +771,7 @@ class Profile:
         for rep in (fine, coarse):
             if depth is not None:
                 d = float(positive("depth", depth))
-                a = self._radius(rep, d)
+                a = self._radius(rep, d, out[0][1] if out else None)
             else:
                 Ft = float(positive("force", force))
                 Fmax = self._force_of_radius(rep, self.r_max, E_star)
@@ -511,7 +784,8 @@ class Profile:
         (d, a, F), (dc, ac, Fc) = out
         err = max(abs(F - Fc) / F, abs(a - ac) / a, abs(d - dc) / d)
         return Solution(depth=d, contact_radius=a, force=F, E_star=E_star, rel_error=err,
-                        converged=err <= rtol, rtol=rtol, _rep=fine, _coarse=coarse)
+                        converged=err <= rtol, rtol=rtol, _rep=fine, _coarse=coarse,
+                        _a_coarse=ac)
 
     def force_depth_curve(self, depths, *, E_star: float) -> ForceDepthCurve:
         """F(d) [N] and a(d) [m] at each depth [m] of ``depths`` (monotone in d)."""

@@ -109,6 +109,47 @@ def test_effect_that_does_not_apply(tmp_path, capsys):
     assert "'contact_radius' does not apply" in err and "use 'half_width'" in err
 
 
+def test_worn_pressure_matches_the_numerical_mdr():
+    """The worn tip's pressure (closed form, Problem 8) agrees with the numerical MDR of the
+    same profile sampled with the kink r = b as a breakpoint (an independent route: splines,
+    quadrature, the kink's branch-point term), and the axis stresses under it with a ring sum
+    of Boussinesq's point force within their error estimate."""
+    import numpy as np
+
+    from hertzmdr.numeric import mdr, scene
+
+    R, b, E, nu, d = 0.01, 1e-4, 1e9, 0.4, 1e-6
+    doc = scene.load({"effects": ["pressure_profile", "axis_stresses"],
+                      "body": [{"shape": "flattened_parabola", "radius": R, "flat_radius": b,
+                                "rigid": True}, {"shape": "flat", "E": E, "nu": nu}],
+                      "load": {"depth": d}}).run()["effects"]
+    prof = doc["pressure_profile"]["value"]
+    r, p = np.asarray(prof["r"]), np.asarray(prof["p"])
+    E_star = E / (1 - nu**2)
+    rs = np.unique(np.concatenate([np.linspace(0, b, 41), np.linspace(b, 4 * b, 121)]))
+    sol = mdr.Profile.from_samples(rs, np.where(rs < b, 0, (rs**2 - b**2) / (2 * R)),
+                                   breakpoints=[b]).solve(depth=d, E_star=E_star)
+    pm, em = sol.pressure(r, return_error=True)
+    assert np.all(np.isfinite(p)) and p[0] > 0 and p[-1] == 0
+    # the numerical MDR's own estimate bounds its error (tests/test_mdr.py); x2 for safety
+    assert np.all(np.abs(p - pm) <= 2 * em + 1e-12 * np.max(p))
+    ax = doc["axis_stresses"]["value"]
+    szz = np.asarray(ax["sigma_zz"])
+    assert np.all(np.isfinite(szz)) and np.all(szz < 0)
+    # on the axis sigma_zz = -integral_0^a p(rho) 3 z^3 rho / (rho^2 + z^2)^(5/2) d rho
+    # (Boussinesq's point force summed over rings); QUADPACK split at the log singularity b
+    from scipy.integrate import quad
+
+    from hertzmdr.numeric import _generated as g
+
+    a = float(g.worn_contact_radius(R, b, d))
+    err = doc["axis_stresses"]["rel_error"]
+    for zi, si in list(zip(ax["z"], szz, strict=True))[::10]:
+        ref = -quad(lambda rho, z=zi: float(g.worn_pressure(E_star, R, a, b, rho)) * 3 * z**3
+                    * rho / (rho**2 + z**2) ** 2.5, 0, a, points=[b], limit=200)[0]
+        assert abs(si / ref - 1) <= max(err, 1e-6), (zi, si, ref, err)
+
+
 def test_worn_max_pressure_is_refused_with_the_reason(tmp_path, capsys):
     """The worn parabola's pressure is log-infinite at r = b: no maximum to report."""
     path = tmp_path / "worn.toml"
@@ -143,3 +184,25 @@ def test_scene_never_executes_code(tmp_path, capsys):
     assert main(["run", str(path)]) == 2
     assert not marker.exists()
     assert "cannot read" in capsys.readouterr().err
+
+
+def test_sampled_conical_tip_pressure_is_infinite_at_the_axis():
+    """A sampled cone (f'(0) > 0): p(0) = +inf, max_pressure says +inf without a NaN error, the
+    profile's error is over the finite values, and p agrees with the cone's (5.39)."""
+    import numpy as np
+
+    from hertzmdr.numeric import cone, scene
+
+    tan_t, E, nu, d = 0.5, 1e9, 0.3, 1e-7
+    r = np.linspace(0, 2e-6, 41)
+    doc = scene.load({"effects": ["pressure_profile", "max_pressure"],
+                      "body": [{"shape": "profile", "r": r.tolist(), "f": (tan_t * r).tolist(),
+                                "rigid": True}, {"shape": "flat", "E": E, "nu": nu}],
+                      "load": {"depth": d}}).run()["effects"]
+    assert np.isinf(doc["max_pressure"]["value"])
+    prof = doc["pressure_profile"]
+    rr, p = np.asarray(prof["value"]["r"]), np.asarray(prof["value"]["p"])
+    assert np.isinf(p[0]) and np.isfinite(prof["rel_error"]) and prof["rel_error"] < 1e-6
+    ref = cone.pressure(rr[1:], d, np.arctan(tan_t), E / (1 - nu**2))
+    # piecewise linear f: the quintic spline is exact; the tables' error (estimate above)
+    np.testing.assert_allclose(p[1:], ref, rtol=1e-7, atol=1e-9 * np.max(p[1:]))

@@ -271,16 +271,17 @@ class NumericalMDR(Axisymmetric):
             r = np.linspace(0, s.contact_radius, 1001)[:-1]
             p, e = s.pressure(r, return_error=True)
             k = int(np.argmax(p))
-            vals.append(p[k])
-            errs.append(e[k] / p[k] if p[k] > 0 else 0.0)
+            vals.append(p[k])  # +inf under a conical tip (p is log-infinite at r = 0)
+            errs.append(e[k] / p[k] if 0 < p[k] < np.inf else 0.0)
         return Value(np.array(vals), self.method + ", max over 1000 radii", max(errs))
 
     def effect_pressure_profile(self, st):
         s = self._solve(depth=self.last(st))
         r = np.linspace(0.0, 1.5 * s.contact_radius, FIELD_POINTS)
         p, e = s.pressure(r, return_error=True)
-        scale = float(np.max(p)) if np.max(p) > 0 else 1.0
-        return Value({"r": r, "p": p}, self.method, float(np.max(e)) / scale)
+        fin = np.isfinite(p)  # p(0) = +inf under a conical tip
+        scale = float(np.max(p[fin])) if np.max(p[fin]) > 0 else 1.0
+        return Value({"r": r, "p": p}, self.method, float(np.max(e[fin])) / scale)
 
 
 class Worn(Axisymmetric):
