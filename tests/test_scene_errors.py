@@ -41,6 +41,8 @@ CASES = [
     ("nu out of range", ("nu = 0.3", "nu = 0.7"), ["body[0] (ball).nu", "-1 < nu <= 0.5"]),
     ("E negative", ('E = "210 GPa"', 'E = "-210 GPa"'), ["body[0] (ball).E", "must be > 0"]),
     ("zero radius", ('radius = "10 mm"', "radius = 0"), ["body[0] (ball).radius", "not be 0"]),
+    ("unworn worn tip", ('shape = "sphere"', 'shape = "flattened_parabola"\nflat_radius = 0'),
+     ["body[0] (ball).flat_radius", "must be > 0", "shape = \"sphere\""]),
     ("two loads", ('depth = "1 um"', 'depth = "1 um"\nforce = "1 N"'),
      ["load", "exactly one of depth, force"]),
     ("no load", ('[load]\ndepth = "1 um"\n', ""), ["load", "missing"]),

@@ -270,8 +270,9 @@ class _Reader:
                 self.fail(f"{key}.exponent", f"must be > 0, got {p['exponent']}")
             if not p["coefficient"] > 0:
                 self.fail(f"{key}.coefficient", f"must be > 0, got {p['coefficient']}")
-        if shape == "flattened_parabola" and not 0 <= p["flat_radius"]:
-            self.fail(f"{key}.flat_radius", f"must be >= 0, got {p['flat_radius']}")
+        if shape == "flattened_parabola" and not 0 < p["flat_radius"]:
+            self.fail(f"{key}.flat_radius", f"must be > 0, got {p['flat_radius']} (an unworn "
+                      "tip, b = 0, is shape = \"sphere\")")
         if shape == "profile":
             self.profile(p, key)
         if shape == "height_map":
