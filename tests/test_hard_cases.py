@@ -222,6 +222,28 @@ def _cone_tip(r_over_a):
     return (lambda: cone.pressure(r, d, theta, E)), ref
 
 
+def _powerlaw_pressure(n, rt):
+    """p(r) of f = c r^n at r = rt a against (5.59) by 30-digit tanh-sinh (test_powerlaw)."""
+    from hertzmdr.numeric import powerlaw
+
+    from test_powerlaw import _abel_reference
+
+    E, aa, dd = 2.0, 1.0, 0.3  # a = 1: a^n neither overflows nor underflows at n = 1e8
+    c = dd / (float(powerlaw.kappa(n)) * aa**n)
+    a = float(powerlaw.contact_radius(dd, c, n))  # the same float a in the reference
+    return (lambda: powerlaw.pressure(rt * a, dd, c, n, E)), \
+        (lambda: _abel_reference(E, a, dd, n, rt * a))
+
+
+def _worn_pressure(r_of, a=0.8, b=0.5):
+    """worn_pressure (incomplete elliptic integrals) against (5.59) by quadrature (test_worn)."""
+    from test_worn import pressure_ref
+
+    r = r_of(a, b)
+    return (lambda: g.worn_pressure(3.0, 1.0, a, b, r)), \
+        (lambda: pressure_ref(mp.mpf(r), mp.mpf(a), mp.mpf(b), mp.mpf(1), mp.mpf(3)))
+
+
 def _edge_sigma_rr(nu):
     """At the contact edge on the surface sigma_rr = (1 - 2 nu) p0/3 (Johnson 1985, 3.41)."""
     from hertzmdr.numeric import stress
@@ -253,6 +275,23 @@ CASES += [
          *_axis_stress("zz", 0.3, 1e4), WELL),
     Case("sigma_rr at the contact edge, nu = 0.3", "the surface at r = a, where the pressure's "
          "slope is infinite", *_edge_sigma_rr(0.3), WELL),
+    Case("power-law pressure, n = 345 at r = 1e-3 a", "SciPy's 2F1(1, 1 - n/2; 3/2; z) returns "
+         "NaN here; (5.59) is integrated instead", *_powerlaw_pressure(345.0, 1e-3), WELL),
+    Case("power-law pressure, n = 1e8 at r = a/2", "x^(n-1) lives in a layer of width a/n at "
+         "x = a and its base 1 - O(1/n) would amplify rounding n-fold",
+         *_powerlaw_pressure(1e8, 0.5), WELL),
+    Case("power-law pressure, n = 1.001 at the centre", "the small-n form is 0 * inf at r = 0 "
+         "for 1 < n < 1.5; p(0) ~ 1/(n - 1) is large", *_powerlaw_pressure(1.001, 0.0), WELL),
+    Case("worn parabola pressure at r = b (1 - 1e-10)", "next to the log singularity at the "
+         "kink: the modulus m = (r/b)^2 of F(phi|m) is 1 - 2e-10",
+         *_worn_pressure(lambda a, b: b * (1 - 1e-10)), 4 * EPS / 2e-10,
+         "F(phi|m) ~ log(1/(1 - m))/2 as m -> 1: a rounding of m is relative 1/(1 - m) in "
+         "1 - m, so 4 eps/(1 - m)"),
+    Case("worn parabola pressure at r = a (1 - 1e-12)", "the rim, p ~ sqrt(a - r): (a - r)(a + r)"
+         " is factored", *_worn_pressure(lambda a, b: a * (1 - 1e-12)), WELL),
+    Case("worn parabola pressure, b = a (1 - 1e-9), at r = b/2", "a nearly flat punch: the "
+         "contact barely reaches past the flat, sin(phi) ~ 4e-5",
+         *_worn_pressure(lambda a, b: b / 2, b=0.8 * (1 - 1e-9)), WELL),
 ]
 
 
