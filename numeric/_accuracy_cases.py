@@ -172,6 +172,49 @@ def worn_small_depth() -> Quantity:
                     "nothing of s^2 = 1e-12 in float64.", truth, ways)
 
 
+def powerlaw_pressure_large_n() -> Quantity:
+    from hertzmdr.numeric import _generated as g
+    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import powerlaw
+
+    E, a, d, n = 1e9, 1e-3, 1e-6, 1001.0
+    r = 0.1 * a
+
+    def truth():
+        import mpmath as mp
+
+        # (5.59) by tanh-sinh: E* n d/(pi a) integral_0^acosh(a/r) (r cosh(t)/a)^(n-1) dt,
+        # split in the layer x = a (1 - k/n) where the integrand lives; scaled to at most 1
+        # (mp.quad's tolerance is absolute)
+        with mp.workdps(40):
+            nn, A, rr = mp.mpf(n), mp.mpf(a), mp.mpf(r)
+            pts = [0, *(mp.acosh(A * (1 - k / nn) / rr) for k in (100, 10, 1)),
+                   mp.acosh(A / rr)]
+            return E * nn * d / (mp.pi * A) * mp.quad(
+                lambda t: (rr * mp.cosh(t) / A) ** (nn - 1), pts)
+
+    def ways():
+        import numpy as np
+
+        args = [np.atleast_1d(v) for v in (r, a, d, n, E)]
+        out = [Way("2F1 closed form (SciPy hyp2f1)", "float64",
+                   lambda: g.powerlaw_pressure(E, a, d, n, r))]
+        for m in (4, 8, 16):
+            out.append(Way("Gauss-Legendre of the (5.59) integrand (hertzmdr: 16)",
+                           f"{m} points a panel",
+                           lambda m=m: powerlaw._pressure_quadrature(*args[:4], args[4], m=m)[0]))
+        for dps in (15, 30):
+            out.append(Way("2F1 closed form in mpmath", f"{dps} digits",
+                           _mp_digits(gm.powerlaw_pressure, (E, a, d, n, r), dps)))
+        return out
+
+    return Quantity("power-law pressure, n = 1001, at r = a/10",
+                    "The pressure of f = c r^n for large n (towards the flat punch, Fig. 5.17). "
+                    "SciPy's 2F1(1, 1 - n/2; 3/2; z) returns NaN near the centre once n > ~340 "
+                    "(unless n is even, when the series terminates); "
+                    "hertzmdr integrates the derived (5.59) integrand instead.", truth, ways)
+
+
 def numerical_mdr_force() -> Quantity:
     import numpy as np
 
@@ -279,4 +322,5 @@ def stress_superposition() -> Quantity:
 
 def all_quantities() -> list[Quantity]:
     return [hertz_force(), hertz_far_displacement(), kappa_large_n(), worn_small_depth(),
-            numerical_mdr_force(), impact_time(), stress_superposition()]
+            powerlaw_pressure_large_n(), numerical_mdr_force(), impact_time(),
+            stress_superposition()]

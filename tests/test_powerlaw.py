@@ -135,8 +135,9 @@ def test_general_n_pressure_forms():
                 tm = mp.acosh(mp.mpf(aa) / rr)  # the integrand peaks at tm for large n
                 pts_t = sorted({mp.mpf(0), tm, *(tm - k / nn for k in (1, 10, 100)
                                                  if k / nn < tm)})
-                ref = E * nn * dd / (mp.pi * mp.mpf(aa) ** nn) * mp.quad(
-                    lambda t, nn=nn, rr=rr: (rr * mp.cosh(t)) ** (nn - 1), pts_t)
+                # scaled by a^(n-1): mp.quad's tolerance is absolute
+                ref = E * nn * dd / (mp.pi * mp.mpf(aa)) * mp.quad(
+                    lambda t, nn=nn, rr=rr: (rr * mp.cosh(t) / aa) ** (nn - 1), pts_t)
             got = powerlaw._pressure_at(*(np.atleast_1d(v) for v in (rr, aa, dd, n, E)))[0]
             # scipy's hyp2f1 near z = 1 with c - a - b close to 0 (n near 1) loses digits:
             # measured worst 2e-9 at n in (1, 1.5) near the centre
@@ -151,9 +152,10 @@ def _abel_reference(E, aa, dd, n, rr):
         layer = [A * (1 - k / nn) for k in (100, 10, 1) if k / nn < 1 - rr / aa]
         if rr == 0:  # (5.59) at the centre: integral_0^a x^(n-2) dx = a^(n-1)/(n-1), n > 1
             return E * nn * dd / (mp.pi * A**nn) * A ** (nn - 1) / (nn - 1)
-        rr = mp.mpf(rr)  # x = r cosh(tau)
-        return E * nn * dd / (mp.pi * A**nn) * mp.quad(
-            lambda t: (rr * mp.cosh(t)) ** (nn - 1),
+        rr = mp.mpf(rr)  # x = r cosh(tau); the integrand scaled by a^(n-1) to at most 1, as
+        # mp.quad's tolerance is absolute
+        return E * nn * dd / (mp.pi * A) * mp.quad(
+            lambda t: (rr * mp.cosh(t) / A) ** (nn - 1),
             [0, *(mp.acosh(x / rr) for x in layer), mp.acosh(A / rr)])
 
 
