@@ -10,6 +10,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from _mdr_doc import derivations_section, verification_section
 
 from hertzmdr.numeric import _generated as g
 from hertzmdr.numeric import mdr
@@ -224,10 +225,9 @@ def main():
     out = ["# Numerical MDR: accuracy, convergence, speed\n\n",
            "<!-- Written by `benchmarks/bench_mdr.py`; timings are wall clock on the shared "
            "2-core development machine. -->\n\n",
-           "The derivations are in [derivations.md](derivations.md) (families `powerlaw`, "
-           "`worn`) and the errata in [errata.md](errata.md). `hertzmdr.derive.mdr.solve(f, r)` "
-           "runs the MDR on a user's SymPy profile and reports the steps without closed "
-           "form.\n\n## Convergence against the closed forms\n\n",
+           derivations_section(), verification_section(),
+           "Errata of the chapter's MDR formulas are in [errata.md](errata.md).\n\n"
+           "## Convergence against the closed forms\n\n",
            "Samples r_i = i/N on [0, 1], quintic splines (k = 5), contact radius 1/2. "
            "Errors are relative; 'order' is the least-squares slope of log(error) vs log(N). "
            "Power laws n = 1, 2, 3, 4 are reproduced to rounding by the quintic spline "
