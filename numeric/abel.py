@@ -1,0 +1,403 @@
+"""Abel transforms of sampled contact data: the pressure back-transform (5.59) and (5.61).
+
+On PyAbel's input convention -- a uniform grid x_i = i*dx, i = 0..N-1, the right half of a
+symmetric profile, any leading axes are rows -- this module offers::
+
+    from hertzmdr.numeric import abel
+    p = abel.pressure_from_line_load(q, dx)     # (5.59): q [N/m] -> p [Pa], inverse Abel
+    q = abel.line_load_from_pressure(p, dx)     # (5.61): p [Pa] -> q [N/m], forward Abel
+
+Method (product integration in s = x^2)
+---------------------------------------
+With s = x^2 and t = r^2 both transforms become Riemann-Liouville integrals with the kernel
+(s - t)^(-1/2) (Q(s) = q(sqrt s), P(t) = p(sqrt t), A = a^2):
+
+.. math::
+
+    P(t) = -\\frac{1}{\\pi}\\int_t^A \\frac{Q'(s)}{\\sqrt{s - t}}\\,ds \\quad (5.59),
+    \\qquad
+    Q(s) = \\int_s^A \\frac{P(t)}{\\sqrt{t - s}}\\,dt \\quad (5.61).
+
+- The samples are interpolated by a piecewise polynomial of degree ``degree`` in s on the
+  nodes s_i = (i dx)^2: each piece [s_i, s_(i+1)] takes the Lagrange polynomial of the
+  ``degree + 1`` nodes centred on it (shifted, never straddling the end of the support).
+  Even profiles are smooth functions of s = x^2, so no mirror points are needed at the axis
+  and p(0) needs no special case; Hertz (q linear in s) and every even power law of degree
+  <= 2*degree are reproduced to rounding.
+- (5.59): the moments of the derivative of the interpolant against (s - t)^(-1/2) are
+  integrated EXACTLY: with s = t + w^2 the kernel disappears, ds/sqrt(s - t) = 2 dw, and the
+  integrand is a polynomial in w of degree 2*degree - 2, which Gauss-Legendre with
+  ``degree`` nodes integrates exactly (the piece boundaries in w are computed without
+  cancellation, w_b - w_a = (s_b - s_a)/(w_a + w_b)). The 1/sqrt singularity is therefore
+  integrated analytically -- no point is dropped or shifted.
+- (5.61) with a contact edge: p ~ sqrt(a^2 - r^2) at the edge, so the interpolated function is
+  the smooth R(t) = P(t)/sqrt(A - t) and the weight sqrt(A - t)/sqrt(t - s) is integrated
+  against it: with t = s + (A - s) sin^2(theta) the weight becomes 2 (A - s) cos^2(theta)
+  d(theta), both end singularities vanish and the integrand is an entire function of theta;
+  Gauss-Legendre with ``degree + 4`` nodes per piece (panels of at most 0.1 rad) integrates it
+  to rounding (tested against the exact Hertz and n = 4 cases). Without an edge (the samples
+  do not vanish at the end of the grid) P itself is interpolated and the w-substitution
+  above integrates it exactly; the transform is then truncated at the end of the grid, as in
+  PyAbel.
+- The end of the support: ``edge=None`` takes the last non-zero sample x_K; when the samples
+  after it are zero, the edge a in (x_K, x_(K+1)] is the root of the polynomial through the
+  last ``degree + 1`` samples of q (which vanishes like a - x) or of p^2 (which vanishes like
+  a - r), extrapolated from x_K; if it has no root there, a = x_(K+1). ``edge=a`` gives it
+  (then samples at x >= a must be zero). For (5.59) the node a carries q(a) = 0.
+- The transform is a matrix acting on the last axis, built once per (N, K, a/dx, degree,
+  direction) and cached (least recently used, 8 operators), so a repeated transform of the
+  same support is one matrix product, O(N^2), as PyAbel's cached operators.
+
+Accuracy: for data that are smooth functions of x^2 inside the support the error is
+O(dx^degree) for (5.59) (one derivative of the interpolant) and O(dx^(degree + 1)) for (5.61);
+non-smooth data (a cone's |x|, the worn paraboloid's sqrt(x^2 - b^2)) reduce it locally. The
+measured orders are in ``docs/abel.md`` (``benchmarks/bench_abel.py``).
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+
+import numpy as np
+
+from hertzmdr.numeric._validate import as_float, positive
+
+__all__ = ["pressure_from_line_load", "line_load_from_pressure"]
+
+_THETA_PANEL = 0.1  # widest theta panel of the (5.61) edge quadrature [rad]
+_CACHE: OrderedDict = OrderedDict()
+_CACHE_SIZE = 8
+_BLOCK = 48  # rows of the operator built at once (bounds the memory of the build)
+
+
+def _gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes mapped to [0, 1] and their weights (summing to 1)."""
+    t, w = np.polynomial.legendre.leggauss(n)
+    return (t + 1) / 2, w / 2
+
+
+def _stencils(n_pieces: int, last_node: int, degree: int) -> np.ndarray:
+    """First node of the stencil of each piece [i, i+1]: centred, never past ``last_node``."""
+    start = np.arange(n_pieces) - (degree - 1) // 2
+    return np.clip(start, 0, max(last_node - degree, 0))
+
+
+def _lagrange_power(nodes: np.ndarray) -> np.ndarray:
+    """Power-basis coefficients of the Lagrange polynomials of ``nodes`` (shape (P, m+1)).
+
+    Returns C with shape (P, m+1, m+1): l_l(v) = sum_k C[:, k, l] v^k. Built as products of
+    linear factors (no Vandermonde inverse), which stays accurate for the nodes 0, 1, 4, 9 ...
+    of the first pieces.
+    """
+    P, m1 = nodes.shape
+    C = np.zeros((P, m1, m1))
+    for ll in range(m1):
+        poly = np.zeros((P, m1))
+        poly[:, 0] = 1.0
+        for rr in range(m1):
+            if rr == ll:
+                continue
+            den = nodes[:, ll] - nodes[:, rr]
+            shifted = np.zeros_like(poly)
+            shifted[:, 1:] = poly[:, :-1]
+            poly = (shifted - nodes[:, rr, None] * poly) / den[:, None]
+        C[:, :, ll] = poly
+    return C
+
+
+def _pieces(edges: np.ndarray, nodes: np.ndarray, degree: int):
+    """Stencils, widths and Lagrange coefficients of the pieces [edges_i, edges_(i+1)].
+
+    Returns (idx, width, C, deg): idx (P, deg+1) the node indices of each stencil (centred,
+    clipped to the nodes), C (P, deg+1, deg+1) in the local variable v = (s - edges_i)/width_i.
+    """
+    n_pieces = len(edges) - 1
+    deg = min(degree, len(nodes) - 1)
+    start = _stencils(n_pieces, len(nodes) - 1, deg)
+    idx = start[:, None] + np.arange(deg + 1)
+    width = edges[1:] - edges[:-1]
+    local = (nodes[idx] - edges[:-1, None]) / width[:, None]
+    return idx, width, _lagrange_power(local), deg
+
+
+def _moments_w(tau, s_lo, s_hi, width, kmax, n_gauss):
+    """mu_k = int_{s_lo}^{s_hi} v^k (s - tau)^(-1/2) ds, v = (s - s_lo)/width, k = 0..kmax.
+
+    Exact when 2*kmax <= 2*n_gauss - 1: the integrand is 2 v^k, a polynomial of degree 2k in
+    w = sqrt(s - tau). Shapes: tau (B, 1), s_lo/s_hi/width (1, P) -> (B, P, kmax+1).
+    """
+    xg, wg = _gauss(n_gauss)
+    da = np.maximum(s_lo - tau, 0.0)
+    wa = np.sqrt(da)
+    wb = np.sqrt(np.maximum(s_hi - tau, 0.0))
+    span = (s_hi - s_lo) / np.where(wa + wb > 0, wa + wb, 1.0)  # wb - wa without cancellation
+    w = wa[..., None] + span[..., None] * xg
+    v = (w - wa[..., None]) * (w + wa[..., None]) / width[..., None]
+    out = np.empty(np.broadcast_shapes(da.shape, width.shape) + (kmax + 1,))
+    vk = np.ones_like(v)
+    for k in range(kmax + 1):
+        out[..., k] = 2 * span * (vk @ wg)
+        vk = vk * v
+    return out
+
+
+def _moments_theta(tau, s_lo, s_hi, width, A, kmax, n_gauss):
+    """mu_k = int_{s_lo}^{s_hi} v^k sqrt(A - s)/sqrt(s - tau) ds (the (5.61) edge weight).
+
+    With s = tau + (A - tau) sin^2(theta): mu_k = 2 (A - tau) int v^k cos^2(theta) d(theta),
+    composite Gauss-Legendre on panels of at most _THETA_PANEL rad. Shapes as _moments_w.
+    """
+    L = A - tau  # (B, 1)
+    sa = np.sqrt(np.clip((s_lo - tau) / L, 0, 1))
+    ca = np.sqrt(np.clip((A - s_lo) / L, 0, 1))
+    sb = np.sqrt(np.clip((s_hi - tau) / L, 0, 1))
+    cb = np.sqrt(np.clip((A - s_hi) / L, 0, 1))
+    # theta_b - theta_a from sin and cos of the difference: sin = (sb^2 - sa^2)/(sb ca + sa cb)
+    den = sb * ca + sa * cb
+    sin_d = np.where(den > 0, ((s_hi - s_lo) / L) / np.where(den > 0, den, 1), 0.0)
+    cos_d = cb * ca + sb * sa
+    dtheta = np.arctan2(sin_d, cos_d)
+    theta_a = np.arctan2(sa, ca)
+    xg, wg = _gauss(n_gauss)
+    shape = np.broadcast_shapes(dtheta.shape, width.shape)
+    out = np.zeros(shape + (kmax + 1,))
+    n_panels = np.maximum(np.ceil(dtheta / _THETA_PANEL), 1).astype(int)
+    for n_p in np.unique(n_panels):
+        sel = n_panels == n_p
+        ta = np.broadcast_to(theta_a, shape)[sel]
+        dt = np.broadcast_to(dtheta, shape)[sel]
+        Ls = np.broadcast_to(L, shape)[sel]
+        ws = np.broadcast_to(width, shape)[sel]
+        # all nodes of the n_p panels, as offsets phi from theta_a
+        xs = ((np.arange(n_p)[:, None] + xg) / n_p).ravel()
+        ww = np.tile(wg / n_p, n_p)
+        phi = dt[:, None] * xs
+        theta = ta[:, None] + phi
+        v = Ls[:, None] * np.sin(phi) * np.sin(2 * ta[:, None] + phi) / ws[:, None]
+        weight = 2 * Ls[:, None] * np.cos(theta) ** 2 * dt[:, None] * ww
+        vk = np.ones_like(v)
+        res = np.empty((sel.sum(), kmax + 1))
+        for k in range(kmax + 1):
+            res[:, k] = np.sum(vk * weight, axis=1)
+            vk = vk * v
+        out[sel] = res
+    return out
+
+
+def _build(direction: str, K: int, A: float | None, degree: int) -> np.ndarray:
+    """The operator (K+1, K+1) on the samples 0..K, in units dx = 1 (see module docstring)."""
+    s = np.arange(K + 1, dtype=float) ** 2
+    edges = np.append(s, A) if A is not None else s
+    if direction == "inverse":
+        # the edge is a node too, carrying q(a) = 0; its column is dropped below
+        idx, width, C, deg = _pieces(edges, edges, degree)
+        # the derivative Q'(s) = sum_k D[:, k, l] v^k y_l
+        D = C[:, 1:, :] * np.arange(1, deg + 1)[None, :, None] / width[:, None, None]
+        kmax, n_gauss, scale = deg - 1, max(deg, 1), -1 / np.pi
+    else:
+        # R = P/sqrt(A - s) (or P without an edge) from the samples only; the last piece
+        # [s_K, A] extrapolates the last stencil
+        idx, width, D, deg = _pieces(edges, s, degree)
+        kmax, scale = deg, 1.0
+        n_gauss = deg + 4 if A is not None else deg + 1
+    rows, cols = K + 1, len(edges)
+    W = np.zeros((rows, cols))
+    if deg == 0 and direction == "inverse":
+        return W[:, :rows]  # a single node: Q' = 0
+    for j0 in range(0, rows, _BLOCK):
+        j1 = min(j0 + _BLOCK, rows)
+        tau = s[j0:j1, None]
+        lo, hi, wd = edges[None, j0:-1], edges[None, j0 + 1:], width[None, j0:]
+        if direction == "forward" and A is not None:
+            mu = _moments_theta(tau, lo, hi, wd, A, kmax, n_gauss)
+        else:
+            mu = _moments_w(tau, lo, hi, wd, kmax, n_gauss)
+        mu[np.broadcast_to(lo < tau, mu.shape[:2])] = 0.0  # pieces left of the output point
+        contrib = np.einsum("bik,ikl->bil", mu, D[j0:])  # piece i -> node idx[i, l]
+        B = j1 - j0
+        flat = (np.arange(B)[:, None, None] * cols + idx[None, j0:, :]).ravel()
+        W[j0:j1] += np.bincount(flat, weights=contrib.ravel(), minlength=B * cols).reshape(
+            B, cols)
+    W = W[:, :rows] * scale
+    if direction == "forward" and A is not None:
+        W = W / np.sqrt(A - s)[None, :]  # R_i = P_i / sqrt(A - s_i)
+    return W
+
+
+def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]:
+    """(K, A) of one row in units dx = 1: K the last sample inside the support, A = a^2.
+
+    ``y`` is q (inverse) or p^2 (forward): a function vanishing linearly in s at the edge.
+    """
+    N = y.size
+    if x_edge is not None:
+        K = min(int(np.ceil(x_edge)) - 1, N - 1)
+        K = max(K, 0)
+        return K, x_edge**2
+    nz = np.flatnonzero(y)
+    if nz.size == 0:
+        return -1, None
+    K = int(nz[-1])
+    if K == N - 1:
+        return K, None  # no edge on the grid: truncated transform
+    deg = min(_EDGE_DEGREE, K)
+    s_next = float(K + 1) ** 2
+    A = s_next
+    if deg >= 1:
+        span = s_next - K**2  # local variable u = (s - s_K)/span: the root is in (0, 1]
+        nodes = (np.arange(K - deg, K + 1, dtype=float) ** 2 - K**2) / span
+        coef = np.linalg.solve(np.vander(nodes, deg + 1, increasing=True), y[K - deg:K + 1])
+        roots = np.polynomial.polynomial.polyroots(coef) if np.any(coef[1:]) else np.array([])
+        real = roots.real[(np.abs(roots.imag) <= 1e-9) & (roots.real > 0)
+                          & (roots.real <= 1 + 1e-12)]
+        if real.size:
+            u = float(real.min())
+            for _ in range(3):  # polish: the companion matrix loses digits when the top
+                # coefficients are rounding noise (data linear in s, as for Hertz)
+                d1 = np.polynomial.polynomial.polyval(u, np.polynomial.polynomial.polyder(coef))
+                if d1 == 0:
+                    break
+                u -= np.polynomial.polynomial.polyval(u, coef) / d1
+            A = K**2 + span * min(max(u, 0.0), 1.0)
+    return K, A
+
+
+_EDGE_DEGREE = 3  # the edge extrapolation: cubic through the last 4 samples
+
+
+def _operator(direction: str, K: int, A: float | None, degree: int) -> np.ndarray:
+    key = (direction, K, A, degree)
+    W = _CACHE.get(key)
+    if W is None:
+        W = _build(direction, K, A, degree)
+        _CACHE[key] = W
+        if len(_CACHE) > _CACHE_SIZE:
+            _CACHE.popitem(last=False)
+    else:
+        _CACHE.move_to_end(key)
+    return W
+
+
+def _transform(direction, name, values, dx, edge, degree):
+    y = as_float(name, values)
+    if not np.all(np.isfinite(y)):
+        bad = ~np.isfinite(y)
+        i = tuple(int(k) for k in np.argwhere(bad)[0])
+        raise ValueError(f"{name}{list(i)} = {y[i]!r} is out of range; valid: finite numbers")
+    if y.ndim == 0 or y.shape[-1] < 2:
+        raise ValueError(f"{name} has shape {y.shape}; valid: at least 2 samples along the "
+                         "last axis (x_i = i*dx, i = 0..N-1)")
+    h = float(positive("dx", dx))
+    if isinstance(degree, bool) or not isinstance(degree, (int, np.integer)) or not (
+            1 <= degree <= 9):
+        raise ValueError(f"degree = {degree!r} is out of range; valid: an integer 1 <= degree "
+                         "<= 9")
+    N = y.shape[-1]
+    x_edge = None
+    if edge is not None:
+        a = float(positive("edge", edge))
+        x_edge = a / h
+        if not (0 < x_edge <= N - 1):
+            raise ValueError(f"edge = {a!r} is out of range; valid: 0 < edge <= (N-1)*dx = "
+                             f"{(N - 1) * h!r}")
+        outside = np.arange(N) >= x_edge * (1 - 1e-12)
+        beyond = (y[..., outside] != 0)
+        if beyond.any():
+            i = int(np.flatnonzero(outside)[np.argwhere(beyond)[0][-1]])
+            raise ValueError(f"{name}[..., {i}] = {y[..., i].ravel()[0]!r} at x = {i * h!r} "
+                             f"is beyond edge = {a!r}; valid: 0 at and beyond the edge")
+    rows = y.reshape(-1, N)
+    out = np.zeros_like(rows)
+    keys: dict = {}
+    for r, row in enumerate(rows):
+        K, A = _edge_index(row if direction == "inverse" else row**2, x_edge)
+        keys.setdefault((K, A), []).append(r)
+    for (K, A), members in keys.items():
+        if K < 0:
+            continue  # an all-zero row transforms to zero
+        W = _operator(direction, K, A, int(degree))
+        block = rows[members, :K + 1]
+        out[members, :K + 1] = block @ W.T
+    scale = 1 / h if direction == "inverse" else h
+    return out.reshape(y.shape) * scale
+
+
+def pressure_from_line_load(q, dx, *, edge=None, degree=5):
+    """Contact pressure p(r) [Pa] from samples of the MDR line load q(x) [N/m], (5.59).
+
+    The inverse Abel transform p(r) = -(1/pi) int_r^a q'(x)/sqrt(x^2 - r^2) dx on PyAbel's
+    convention: q[..., i] = q(i*dx), i = 0..N-1, the right half of the symmetric line load;
+    leading axes are independent rows. Returns p on the same grid, 0 at and beyond the edge.
+
+    Parameters
+    ----------
+    q : array_like, shape (..., N)
+        Line load samples [N/m] (q = E* (d - g(x)) inside the contact, (5.58)), finite.
+    dx : float
+        Grid spacing [m], dx > 0.
+    edge : float, optional
+        Contact radius a [m], 0 < a <= (N-1)*dx; samples at x >= a must be 0. By default the
+        edge is found from the samples: between the last non-zero sample and the next one, at
+        the root of the cubic through the last four non-zero samples (q vanishes like a - x);
+        if no sample is zero at the end of the grid, the integral is truncated there.
+    degree : int, optional
+        Degree of the piecewise interpolant of q in s = x^2, 1..9 (default 5). The error is
+        O(dx^degree) for a line load that is a smooth function of x^2.
+
+    Returns
+    -------
+    ndarray, shape (..., N)
+        p(r_i) [Pa] at r_i = i*dx.
+
+    Notes
+    -----
+    With s = x^2, t = r^2 (5.59) reads
+
+    .. math:: p(\\sqrt t) = -\\frac{1}{\\pi}\\int_t^{a^2}\\frac{dq/ds}{\\sqrt{s - t}}\\,ds,
+
+    integrated exactly for the piecewise polynomial (substitution s = t + w^2, Gauss-Legendre
+    exact in w); see the module docstring. The operator is cached per (N, edge, degree).
+    """
+    return _transform("inverse", "q", q, dx, edge, degree)  # (5.59)
+
+
+def line_load_from_pressure(p, dx, *, edge=None, degree=5):
+    """MDR line load q(x) [N/m] from samples of the pressure p(r) [Pa], (5.61).
+
+    The forward Abel transform q(x) = 2 int_x^a r p(r)/sqrt(r^2 - x^2) dr on PyAbel's
+    convention: p[..., i] = p(i*dx), i = 0..N-1; leading axes are independent rows. Returns q
+    on the same grid, 0 at and beyond the edge.
+
+    Parameters
+    ----------
+    p : array_like, shape (..., N)
+        Pressure samples [Pa], finite.
+    dx : float
+        Grid spacing [m], dx > 0.
+    edge : float, optional
+        Contact radius a [m], 0 < a <= (N-1)*dx; samples at r >= a must be 0. By default found
+        from the samples as the root of the cubic through the last four non-zero values of
+        p^2 (p vanishes like sqrt(a - r) at a contact edge), extrapolated to the next sample;
+        if no sample is zero at the end of the grid, p is interpolated itself and the integral
+        truncated there.
+    degree : int, optional
+        Degree of the piecewise interpolant in s = r^2, 1..9 (default 5). With an edge the
+        interpolated function is p/sqrt(a^2 - r^2), smooth for a contact pressure; the error
+        is O(dx^(degree + 1)) when it is a smooth function of r^2.
+
+    Returns
+    -------
+    ndarray, shape (..., N)
+        q(x_i) [N/m] at x_i = i*dx.
+
+    Notes
+    -----
+    With s = x^2, t = r^2 (5.61) reads
+
+    .. math:: q(\\sqrt s) = \\int_s^{a^2}\\frac{p(\\sqrt t)}{\\sqrt{t - s}}\\,dt
+        = \\int_s^{a^2} R(t)\\,\\frac{\\sqrt{a^2 - t}}{\\sqrt{t - s}}\\,dt,
+
+    with R = p/sqrt(a^2 - t) interpolated and the weight integrated by t = s + (a^2 - s)
+    sin^2(theta); see the module docstring. The operator is cached per (N, edge, degree).
+    """
+    return _transform("forward", "p", p, dx, edge, degree)  # (5.61)
