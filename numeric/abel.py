@@ -231,8 +231,7 @@ def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]
     """
     N = y.size
     if x_edge is not None:
-        K = min(int(np.ceil(x_edge)) - 1, N - 1)
-        K = max(K, 0)
+        K = max(min(int(np.ceil(x_edge)) - 1, N - 1), 0)
         return K, x_edge**2
     nz = np.flatnonzero(y)
     if nz.size == 0:
@@ -241,27 +240,75 @@ def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]
     if K == N - 1:
         return K, None  # no edge on the grid: truncated transform
     deg = min(_EDGE_DEGREE, K)
-    s_next = float(K + 1) ** 2
-    A = s_next
-    if deg >= 1:
-        span = s_next - K**2  # local variable u = (s - s_K)/span: the root is in (0, 1]
-        nodes = (np.arange(K - deg, K + 1, dtype=float) ** 2 - K**2) / span
-        coef = np.linalg.solve(np.vander(nodes, deg + 1, increasing=True), y[K - deg:K + 1])
-        roots = np.polynomial.polynomial.polyroots(coef) if np.any(coef[1:]) else np.array([])
-        real = roots.real[(np.abs(roots.imag) <= 1e-9) & (roots.real > 0)
-                          & (roots.real <= 1 + 1e-12)]
-        if real.size:
-            u = float(real.min())
-            for _ in range(3):  # polish: the companion matrix loses digits when the top
-                # coefficients are rounding noise (data linear in s, as for Hertz)
-                d1 = np.polynomial.polynomial.polyval(u, np.polynomial.polynomial.polyder(coef))
-                if d1 == 0:
-                    break
-                u -= np.polynomial.polynomial.polyval(u, coef) / d1
-            A = K**2 + span * min(max(u, 0.0), 1.0)
-    return K, A
+    span = 2.0 * K + 1  # s_(K+1) - s_K; the local variable u = (s - s_K)/span
+    if deg == 0:
+        return K, K**2 + span
+    coef = _edge_vandermonde_inv(K, deg) @ y[K - deg:K + 1]  # power coefficients in u
+    u = _edge_root(coef)
+    return K, K**2 + span * u
 
 
+def _edge_vandermonde_inv(K: int, deg: int) -> np.ndarray:
+    key = (K, deg)
+    V = _EDGE_CACHE.get(key)
+    if V is None:
+        nodes = (np.arange(K - deg, K + 1, dtype=float) ** 2 - K**2) / (2.0 * K + 1)
+        V = np.linalg.inv(np.vander(nodes, deg + 1, increasing=True))
+        if len(_EDGE_CACHE) > 4096:
+            _EDGE_CACHE.clear()
+        _EDGE_CACHE[key] = V
+    return V
+
+
+def _edge_root(coef: np.ndarray) -> float:
+    """The smallest root in (0, 1] of the polynomial sum_k coef[k] u^k; 1 if there is none.
+
+    Newton from the linear root (a few float operations; the data vanish nearly linearly),
+    accepted when it converges inside (0, 1] with no sign change of the polynomial before it;
+    otherwise the companion-matrix roots, polished by Newton.
+    """
+    c = [float(v) for v in coef]
+
+    def val(u):
+        acc, der = 0.0, 0.0
+        for ck in reversed(c):
+            der = der * u + acc
+            acc = acc * u + ck
+        return acc, der
+
+    u = -c[0] / c[1] if c[1] != 0 else 0.5
+    ok = False
+    if 0 < u <= 1.5:
+        for _ in range(8):
+            f, d1 = val(u)
+            if d1 == 0:
+                break
+            step = f / d1
+            u -= step
+            if abs(step) <= 1e-15 * max(abs(u), 1e-300):
+                ok = True
+                break
+    if ok and 0 < u <= 1 + 1e-12:
+        # no earlier root: the polynomial keeps the sign of c[0] on a few points of (0, u)
+        probe = [val(u * t)[0] for t in (0.25, 0.5, 0.75)]
+        if all(np.sign(pv) == np.sign(c[0]) for pv in probe):
+            return min(u, 1.0)
+    roots = np.polynomial.polynomial.polyroots(coef) if np.any(coef[1:]) else np.array([])
+    real = roots.real[(np.abs(roots.imag) <= 1e-9) & (roots.real > 0)
+                      & (roots.real <= 1 + 1e-12)]
+    if not real.size:
+        return 1.0  # no root before the next (zero) sample: the edge is that sample
+    u = float(real.min())
+    for _ in range(3):  # polish: the companion matrix loses digits when the top coefficients
+        # are rounding noise (data linear in s, as for Hertz)
+        f, d1 = val(u)
+        if d1 == 0:
+            break
+        u -= f / d1
+    return min(max(u, 0.0), 1.0)
+
+
+_EDGE_CACHE: dict = {}
 _EDGE_DEGREE = 3  # the edge extrapolation: cubic through the last 4 samples
 
 
@@ -280,14 +327,13 @@ def _operator(direction: str, K: int, A: float | None, degree: int) -> np.ndarra
 
 def _transform(direction, name, values, dx, edge, degree):
     y = as_float(name, values)
-    if not np.all(np.isfinite(y)):
-        bad = ~np.isfinite(y)
-        i = tuple(int(k) for k in np.argwhere(bad)[0])
-        raise ValueError(f"{name}{list(i)} = {y[i]!r} is out of range; valid: finite numbers")
     if y.ndim == 0 or y.shape[-1] < 2:
         raise ValueError(f"{name} has shape {y.shape}; valid: at least 2 samples along the "
                          "last axis (x_i = i*dx, i = 0..N-1)")
-    h = float(positive("dx", dx))
+    if not np.isfinite(y).all():
+        i = tuple(int(k) for k in np.argwhere(~np.isfinite(y))[0])
+        raise ValueError(f"{name}{list(i)} = {y[i]!r} is out of range; valid: finite numbers")
+    h = dx if isinstance(dx, float) and 0 < dx < np.inf else float(positive("dx", dx))
     if isinstance(degree, bool) or not isinstance(degree, (int, np.integer)) or not (
             1 <= degree <= 9):
         raise ValueError(f"degree = {degree!r} is out of range; valid: an integer 1 <= degree "
@@ -300,26 +346,26 @@ def _transform(direction, name, values, dx, edge, degree):
         if not (0 < x_edge <= N - 1):
             raise ValueError(f"edge = {a!r} is out of range; valid: 0 < edge <= (N-1)*dx = "
                              f"{(N - 1) * h!r}")
-        outside = np.arange(N) >= x_edge * (1 - 1e-12)
-        beyond = (y[..., outside] != 0)
+        outside = np.flatnonzero(np.arange(N) >= x_edge * (1 - 1e-12))
+        beyond = y[..., outside] != 0
         if beyond.any():
-            i = int(np.flatnonzero(outside)[np.argwhere(beyond)[0][-1]])
+            i = int(outside[np.argwhere(beyond)[0][-1]])
             raise ValueError(f"{name}[..., {i}] = {y[..., i].ravel()[0]!r} at x = {i * h!r} "
                              f"is beyond edge = {a!r}; valid: 0 at and beyond the edge")
     rows = y.reshape(-1, N)
-    out = np.zeros_like(rows)
-    keys: dict = {}
+    groups: dict = {}
     for r, row in enumerate(rows):
-        K, A = _edge_index(row if direction == "inverse" else row**2, x_edge)
-        keys.setdefault((K, A), []).append(r)
-    for (K, A), members in keys.items():
+        K, A = _edge_index(row if direction == "inverse" else row * row, x_edge)
+        groups.setdefault((K, A), []).append(r)
+    scale = 1 / h if direction == "inverse" else h
+    out = np.zeros_like(rows)
+    for (K, A), members in groups.items():
         if K < 0:
             continue  # an all-zero row transforms to zero
         W = _operator(direction, K, A, int(degree))
-        block = rows[members, :K + 1]
-        out[members, :K + 1] = block @ W.T
-    scale = 1 / h if direction == "inverse" else h
-    return out.reshape(y.shape) * scale
+        sel = slice(None) if len(members) == len(rows) else members
+        out[sel, :K + 1] = (rows[sel, :K + 1] @ W.T) * scale
+    return out.reshape(y.shape)
 
 
 def pressure_from_line_load(q, dx, *, edge=None, degree=5):
