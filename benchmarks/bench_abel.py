@@ -222,6 +222,26 @@ def summary(rows, N=201):
     return "".join(out)
 
 
+RESULTS = Path(__file__).parent / "results" / "abel.json"
+
+
+def mdr_section(N=201):
+    """The comparison for docs/mdr.md: the summary table of the last full run
+    (benchmarks/results/abel.json), or of a run at N = 201 only when there is none."""
+    import json
+
+    rows = json.loads(RESULTS.read_text()) if RESULTS.exists() else None
+    if rows is None:
+        try:
+            import abel  # noqa: F401
+        except ImportError:
+            return "PyAbel not installed (`pip install -e .[bench]`).\n"
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            rows = run(Ns=(N,), verbose=False)
+    return summary(rows, N)
+
+
 def write_docs(rows):
     import matplotlib
 
@@ -318,7 +338,7 @@ def main():
         rows = run()
     write_docs(rows)
     import json
-    (Path(__file__).parent / "results" / "abel.json").write_text(json.dumps(rows, indent=0))
+    RESULTS.write_text(json.dumps(rows, indent=0))
     return rows
 
 
