@@ -66,7 +66,7 @@ __all__ = ["pressure_from_line_load", "line_load_from_pressure"]
 
 _THETA_PANEL = 0.1  # widest theta panel of the (5.61) edge quadrature [rad]
 _CACHE: OrderedDict = OrderedDict()
-_CACHE_SIZE = 8
+_CACHE_BYTES = 512 * 2**20  # operators kept: N = 3201 takes 80 MB each
 _BLOCK = 48  # rows of the operator built at once (bounds the memory of the build)
 
 
@@ -120,24 +120,30 @@ def _pieces(edges: np.ndarray, nodes: np.ndarray, degree: int):
     return idx, width, _lagrange_power(local), deg
 
 
-def _moments_w(tau, s_lo, s_hi, width, kmax, n_gauss):
+def _moments_w(tau, s_lo, s_hi, width, kmax, n_gauss, A=None):
     """mu_k = int_{s_lo}^{s_hi} v^k (s - tau)^(-1/2) ds, v = (s - s_lo)/width, k = 0..kmax.
 
     Exact when 2*kmax <= 2*n_gauss - 1: the integrand is 2 v^k, a polynomial of degree 2k in
-    w = sqrt(s - tau). Shapes: tau (B, 1), s_lo/s_hi/width (1, P) -> (B, P, kmax+1).
+    w = sqrt(s - tau). With ``A``, the integrand has the factor sqrt(A - s), analytic on
+    pieces at least 4 widths from A (see _build): Gauss-Legendre in w converges geometrically.
+    Shapes: tau (B, 1), s_lo/s_hi/width (1, P) -> (B, P, kmax+1).
     """
     xg, wg = _gauss(n_gauss)
-    da = np.maximum(s_lo - tau, 0.0)
-    wa = np.sqrt(da)
+    wa = np.sqrt(np.maximum(s_lo - tau, 0.0))
     wb = np.sqrt(np.maximum(s_hi - tau, 0.0))
     span = (s_hi - s_lo) / np.where(wa + wb > 0, wa + wb, 1.0)  # wb - wa without cancellation
     w = wa[..., None] + span[..., None] * xg
     v = (w - wa[..., None]) * (w + wa[..., None]) / width[..., None]
-    out = np.empty(np.broadcast_shapes(da.shape, width.shape) + (kmax + 1,))
-    vk = np.ones_like(v)
-    for k in range(kmax + 1):
-        out[..., k] = 2 * span * (vk @ wg)
+    weight = np.broadcast_to(2 * span[..., None] * wg, v.shape)
+    if A is not None:  # A - s = (A - s_lo) - v width, no cancellation (clipped at 0 for the
+        # pieces left of tau, whose moments are discarded)
+        weight = weight * np.sqrt(np.maximum((A - s_lo)[..., None] - v * width[..., None], 0))
+    out = np.empty(v.shape[:-1] + (kmax + 1,))
+    out[..., 0] = weight.sum(axis=-1)
+    vk = weight
+    for k in range(1, kmax + 1):
         vk = vk * v
+        out[..., k] = vk.sum(axis=-1)
     return out
 
 
@@ -184,44 +190,103 @@ def _moments_theta(tau, s_lo, s_hi, width, A, kmax, n_gauss):
     return out
 
 
-def _build(direction: str, K: int, A: float | None, degree: int) -> np.ndarray:
-    """The operator (K+1, K+1) on the samples 0..K, in units dx = 1 (see module docstring)."""
-    s = np.arange(K + 1, dtype=float) ** 2
+_NEAR_EDGE = 4.0  # (5.61): pieces closer to the edge than this many widths use theta
+
+
+def _config(direction, M, A, degree):
+    """Pieces of the interpolant on the samples 0..M-1 (units dx = 1) and an edge A or None."""
+    s = np.arange(M, dtype=float) ** 2
     edges = np.append(s, A) if A is not None else s
     if direction == "inverse":
-        # the edge is a node too, carrying q(a) = 0; its column is dropped below
+        # the edge is a node too, carrying q(a) = 0 (its column is dropped by the caller)
         idx, width, C, deg = _pieces(edges, edges, degree)
         # the derivative Q'(s) = sum_k D[:, k, l] v^k y_l
         D = C[:, 1:, :] * np.arange(1, deg + 1)[None, :, None] / width[:, None, None]
-        kmax, n_gauss, scale = deg - 1, max(deg, 1), -1 / np.pi
     else:
         # R = P/sqrt(A - s) (or P without an edge) from the samples only; the last piece
         # [s_K, A] extrapolates the last stencil
         idx, width, D, deg = _pieces(edges, s, degree)
-        kmax, scale = deg, 1.0
-        n_gauss = deg + 4 if A is not None else deg + 1
-    rows, cols = K + 1, len(edges)
-    W = np.zeros((rows, cols))
-    if deg == 0 and direction == "inverse":
-        return W[:, :rows]  # a single node: Q' = 0
+    return s, edges, idx, width, D, deg
+
+
+def _assemble(direction, cfg, A, p0, p1, n_rows):
+    """Contributions of the pieces p0..p1-1 to the rows 0..n_rows-1: (n_rows, len(edges))."""
+    s, edges, idx, width, D, deg = cfg
+    W = np.zeros((n_rows, len(edges)))
+    if direction == "inverse":
+        if deg == 0:
+            return W  # a single node: Q' = 0
+        kmax, n_gauss = deg - 1, deg
+    else:
+        # with an edge, sqrt(A - s) is analytic on the pieces done in w (>= _NEAR_EDGE widths
+        # from A; its branch point then lies >= 2 piece widths away in w as well): 9 or more
+        # Gauss points, error ~ 10^-18; theta needs fewer on its short panels
+        kmax, n_gauss = deg, max(deg + 5, 9) if A is not None else deg + 1
+    cols = len(edges)
+    rows = min(n_rows, p1)  # the pieces left of an output point contribute nothing
     for j0 in range(0, rows, _BLOCK):
         j1 = min(j0 + _BLOCK, rows)
         tau = s[j0:j1, None]
-        lo, hi, wd = edges[None, j0:-1], edges[None, j0 + 1:], width[None, j0:]
+        a0 = max(p0, j0)
+        lo, hi, wd = edges[None, a0:p1], edges[None, a0 + 1:p1 + 1], width[None, a0:p1]
         if direction == "forward" and A is not None:
-            mu = _moments_theta(tau, lo, hi, wd, A, kmax, n_gauss)
+            # the last pieces (both end singularities close) by theta, the others by w
+            near = int(np.searchsorted(-((A - hi[0]) / wd[0]), -_NEAR_EDGE))
+            mu = np.concatenate([
+                _moments_w(tau, lo[:, :near], hi[:, :near], wd[:, :near], kmax, n_gauss, A),
+                _moments_theta(tau, lo[:, near:], hi[:, near:], wd[:, near:], A, kmax,
+                               n_gauss)], axis=1)
         else:
             mu = _moments_w(tau, lo, hi, wd, kmax, n_gauss)
         mu[np.broadcast_to(lo < tau, mu.shape[:2])] = 0.0  # pieces left of the output point
-        contrib = np.einsum("bik,ikl->bil", mu, D[j0:])  # piece i -> node idx[i, l]
+        contrib = np.einsum("bik,ikl->bil", mu, D[a0:p1])  # piece i -> node idx[i, l]
         B = j1 - j0
-        flat = (np.arange(B)[:, None, None] * cols + idx[None, j0:, :]).ravel()
+        flat = (np.arange(B)[:, None, None] * cols + idx[None, a0:p1, :]).ravel()
         W[j0:j1] += np.bincount(flat, weights=contrib.ravel(), minlength=B * cols).reshape(
             B, cols)
-    W = W[:, :rows] * scale
-    if direction == "forward" and A is not None:
-        W = W / np.sqrt(A - s)[None, :]  # R_i = P_i / sqrt(A - s_i)
     return W
+
+
+def _build(direction: str, K: int, A: float | None, degree: int) -> np.ndarray:
+    """The operator (K+1, K+1) on the samples 0..K, in units dx = 1 (see module docstring)."""
+    cfg = _config(direction, K + 1, A, degree)
+    n_pieces = len(cfg[1]) - 1
+    W = _assemble(direction, cfg, A, 0, n_pieces, K + 1)[:, :K + 1]
+    if direction == "inverse":
+        return W * (-1 / np.pi)
+    if A is not None:
+        W /= np.sqrt(A - cfg[0])[None, :]  # R_i = P_i / sqrt(A - s_i)
+    return W
+
+
+def _edge_correction(K: int, A: float, degree: int, N: int):
+    """(5.59) with an edge: the operator is the edge-free one of N samples (cached per N),
+    restricted to the samples 0..K, plus this correction of the last pieces, O(N degree^2).
+
+    Returns (c0, Corr): add y[c0:K+1] @ Corr.T. The pieces whose stencils are the same with
+    and without the edge (all but the last ~degree/2 + 1) contribute the same to both.
+    """
+    edge_cfg = _config("inverse", K + 1, A, degree)
+    full_cfg = _config("inverse", N, None, degree)
+    idx_e, idx_f = edge_cfg[2], full_cfg[2]
+    n_full = len(full_cfg[1]) - 1
+    i_e = K
+    for i in range(max(0, K - 2 * degree - 2), K + 1):
+        same = (i < n_full and idx_e[i, 0] == idx_f[i, 0] and idx_e[i, -1] <= K
+                and idx_f[i, -1] <= K and i < K)
+        if not same:
+            i_e = i
+            break
+    # the pieces of the edge-free operator that reach the columns 0..K from i_e on
+    p1_full = n_full
+    while p1_full > i_e and idx_f[p1_full - 1, 0] > K:
+        p1_full -= 1
+    T_edge = _assemble("inverse", edge_cfg, A, i_e, K + 1, K + 1)[:, :K + 1]
+    T_full = (_assemble("inverse", full_cfg, None, i_e, p1_full, K + 1)[:, :K + 1]
+              if p1_full > i_e else 0.0)
+    c0 = int(min(idx_e[i_e, 0], idx_f[min(i_e, n_full - 1), 0]))
+    corr = (T_edge - T_full)[:, c0:] * (-1 / np.pi)
+    return c0, corr
 
 
 def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]:
@@ -312,17 +377,35 @@ _EDGE_CACHE: dict = {}
 _EDGE_DEGREE = 3  # the edge extrapolation: cubic through the last 4 samples
 
 
-def _operator(direction: str, K: int, A: float | None, degree: int) -> np.ndarray:
-    key = (direction, K, A, degree)
-    W = _CACHE.get(key)
-    if W is None:
-        W = _build(direction, K, A, degree)
-        _CACHE[key] = W
-        if len(_CACHE) > _CACHE_SIZE:
-            _CACHE.popitem(last=False)
-    else:
+def _cached(key, make):
+    """Least-recently-used cache of operators, at most _CACHE_BYTES of arrays."""
+    hit = _CACHE.get(key)
+    if hit is not None:
         _CACHE.move_to_end(key)
-    return W
+        return hit
+    value = make()
+    _CACHE[key] = value
+
+    def nbytes(v):
+        return sum(a.nbytes for a in v if isinstance(a, np.ndarray)) if isinstance(
+            v, tuple) else v.nbytes
+    while len(_CACHE) > 1 and sum(nbytes(v) for v in _CACHE.values()) > _CACHE_BYTES:
+        _CACHE.popitem(last=False)
+    return value
+
+
+def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: np.ndarray):
+    """The transform of the rows ``block`` (B, K+1) in units dx = 1."""
+    if direction == "inverse" and A is not None:
+        # the edge-free operator of N samples, shared by every edge, and a correction of the
+        # last pieces: a new edge costs O(N degree^2), not O(N^2)
+        base = _cached(("inverse", N - 1, None, degree),
+                       lambda: _build("inverse", N - 1, None, degree))
+        c0, corr = _cached(("inverse-edge", K, A, degree, N),
+                           lambda: _edge_correction(K, A, degree, N))
+        return block @ base[:K + 1, :K + 1].T + block[:, c0:] @ corr.T
+    W = _cached((direction, K, A, degree), lambda: _build(direction, K, A, degree))
+    return block @ W.T
 
 
 def _transform(direction, name, values, dx, edge, degree):
@@ -362,9 +445,8 @@ def _transform(direction, name, values, dx, edge, degree):
     for (K, A), members in groups.items():
         if K < 0:
             continue  # an all-zero row transforms to zero
-        W = _operator(direction, K, A, int(degree))
         sel = slice(None) if len(members) == len(rows) else members
-        out[sel, :K + 1] = (rows[sel, :K + 1] @ W.T) * scale
+        out[sel, :K + 1] = _apply(direction, K, A, int(degree), N, rows[sel, :K + 1]) * scale
     return out.reshape(y.shape)
 
 

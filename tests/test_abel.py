@@ -255,13 +255,22 @@ def test_bad_input_raises(kwargs, match):
             f(values, **kwargs)
 
 
-def test_operator_is_cached():
-    """A repeated transform of the same support reuses the operator (one matrix product)."""
+def test_operators_are_cached():
+    """A repeated transform of the same support is one matrix product with a cached operator;
+    for (5.59) a new edge on the same grid only adds the correction of its last pieces."""
     x, dx = grid(101)
-    q, _ = powerlaw_pair(2, x)
+    q, p = powerlaw_pair(2, x)
     abel._CACHE.clear()
     abel.pressure_from_line_load(q, dx)
-    (key, W), = abel._CACHE.items()
-    abel.pressure_from_line_load(2 * q, dx)  # same support: the same operator object
-    assert len(abel._CACHE) == 1 and abel._CACHE[key] is W
-
+    first = dict(abel._CACHE)  # the edge-free operator of N samples and this edge's correction
+    assert len(first) == 2
+    abel.pressure_from_line_load(2 * q, dx)  # the same support: nothing new
+    assert all(abel._CACHE[k] is v for k, v in first.items()) and len(abel._CACHE) == 2
+    q2, _ = powerlaw_pair(2, x / 0.9)  # another edge: one more correction, the same base
+    abel.pressure_from_line_load(q2, dx)
+    assert len(abel._CACHE) == 3 and all(abel._CACHE[k] is v for k, v in first.items())
+    big = [v for v in abel._CACHE.values() if isinstance(v, np.ndarray)]
+    assert len(big) == 1 and big[0].shape == (101, 101)
+    abel.line_load_from_pressure(p, dx)
+    abel.line_load_from_pressure(3 * p, dx)
+    assert len(abel._CACHE) == 4
