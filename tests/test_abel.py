@@ -14,6 +14,8 @@ which limits (5.59) to O(dx^(n-1)) and (5.61) to O(dx^n) near the axis; the worn
 sqrt(x^2 - b^2) at x = b limits (5.59) to O(dx^1.5) for r < b.
 """
 
+import math
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -87,6 +89,27 @@ def test_powerlaw_n4_to_rounding(degree):
             2e-15 * 301)  # rounding amplified by ~N, as for Hertz
     _record("abel forward n=4", rel_err(abel.line_load_from_pressure(p, dx, degree=degree), q, m),
             1e-14)
+
+
+@pytest.mark.parametrize("k", [0, 1, 2, 3, 4])
+def test_polynomials_in_s_to_rounding(k):
+    """The Abel pair p = (a^2 - r^2)^(k + 1/2) <-> q = B(k + 3/2, 1/2) (a^2 - x^2)^(k + 1)
+    (Euler's Beta integral): q is a polynomial of degree k + 1 in s, p/sqrt(a^2 - r^2) one of
+    degree k, so the quintic reproduces both and every moment v^0..v^5 of the exact
+    integration enters: rounding only (inverse: ~N ulp from the differences of q; forward:
+    a few ulp, the moments are sums of positive terms). For k >= 1 these vanish faster than a
+    contact's q ~ a - x, p ~ sqrt(a - r), which the edge finder assumes: the edge is given."""
+    x, dx = grid(201)
+    a2 = A_CONTACT**2
+    beta = math.gamma(k + 1.5) * math.gamma(0.5) / math.gamma(k + 2)
+    gap = np.clip(a2 - x**2, 0, None) / a2
+    p = E * gap ** (k + 0.5)
+    q = E * A_CONTACT * beta * gap ** (k + 1)
+    m = inside(x)
+    p_got = abel.pressure_from_line_load(q, dx, edge=A_CONTACT)
+    q_got = abel.line_load_from_pressure(p, dx, edge=A_CONTACT)
+    _record("abel inverse (a^2-x^2)^(k+1)", rel_err(p_got, p, m), 2e-15 * 201)
+    _record("abel forward (a^2-r^2)^(k+1/2)", rel_err(q_got, q, m), 1e-14)
 
 
 def _errors(n, Ns, degree, lo=0.0):
