@@ -31,27 +31,37 @@ With s = x^2 and t = r^2 both transforms become Riemann-Liouville integrals with
   cancellation, w_b - w_a = (s_b - s_a)/(w_a + w_b)). The 1/sqrt singularity is therefore
   integrated analytically -- no point is dropped or shifted.
 - (5.61) with a contact edge: p ~ sqrt(a^2 - r^2) at the edge, so the interpolated function is
-  the smooth R(t) = P(t)/sqrt(A - t) and the weight sqrt(A - t)/sqrt(t - s) is integrated
-  against it: with t = s + (A - s) sin^2(theta) the weight becomes 2 (A - s) cos^2(theta)
-  d(theta), both end singularities vanish and the integrand is an entire function of theta;
-  Gauss-Legendre with ``degree + 4`` nodes per piece (panels of at most 0.1 rad) integrates it
-  to rounding (tested against the exact Hertz and n = 4 cases). Without an edge (the samples
-  do not vanish at the end of the grid) P itself is interpolated and the w-substitution
-  above integrates it exactly; the transform is then truncated at the end of the grid, as in
-  PyAbel.
+  the smooth R(t) = P(t)/sqrt(A - t) (R_i = p_i/sqrt(a^2 - r_i^2) at the samples; the last
+  piece [r_K^2, a^2] extrapolates the last stencil), and the weight sqrt(A - t)/sqrt(t - s) is
+  integrated against it. Pieces at least 10 widths from the edge: t = s + w^2 as above, the
+  factor sqrt(A - t) is analytic there and Gauss-Legendre with degree + 6 points in w gives
+  every moment to 1e-15. The last 10 pieces: t = s + (A - s) sin^2(theta) turns the weight
+  into 2 (A - s) cos^2(theta) d(theta), both end singularities vanish, and Gauss-Legendre on
+  panels of at most 0.1 rad gives 1e-15 (both checked against mpmath moments). Without an
+  edge (the samples do not vanish at the end of the grid) P itself is interpolated, the
+  w-substitution integrates it exactly, and the transform is truncated at the end of the
+  grid, as in PyAbel.
 - The end of the support: ``edge=None`` takes the last non-zero sample x_K; when the samples
-  after it are zero, the edge a in (x_K, x_(K+1)] is the root of the polynomial through the
-  last ``degree + 1`` samples of q (which vanishes like a - x) or of p^2 (which vanishes like
-  a - r), extrapolated from x_K; if it has no root there, a = x_(K+1). ``edge=a`` gives it
-  (then samples at x >= a must be zero). For (5.59) the node a carries q(a) = 0.
-- The transform is a matrix acting on the last axis, built once per (N, K, a/dx, degree,
-  direction) and cached (least recently used, 8 operators), so a repeated transform of the
-  same support is one matrix product, O(N^2), as PyAbel's cached operators.
+  after it are zero, the edge a in (x_K, x_(K+1)] is the root of the cubic through the last
+  four samples of q (which vanishes like a - x at a contact edge) or of p^2 (p vanishes like
+  sqrt(a - r)), extrapolated from x_K; if it has no root there, a = x_(K+1). Data that vanish
+  otherwise (faster, or with a jump) need ``edge=a`` (then samples at x >= a must be zero).
+  For (5.59) the node a carries q(a) = 0.
+- Operators, applied to the last axis and cached (least recently used, up to 512 MB): (5.59)
+  without an edge is one N x N matrix per (N, degree); with an edge it is that matrix
+  restricted to the samples 0..K plus a correction of the last ~degree/2 + 1 pieces, whose
+  stencils see the edge -- O(N degree^2) to build, so a new contact radius on the same grid
+  costs no O(N^2) rebuild. (5.61) with an edge depends on a through every weight: one
+  (K+1) x (K+1) matrix per (N, a, degree). A repeated transform of the same support is one
+  matrix product, O(N^2), as with PyAbel's cached operators.
 
 Accuracy: for data that are smooth functions of x^2 inside the support the error is
-O(dx^degree) for (5.59) (one derivative of the interpolant) and O(dx^(degree + 1)) for (5.61);
-non-smooth data (a cone's |x|, the worn paraboloid's sqrt(x^2 - b^2)) reduce it locally. The
-measured orders are in ``docs/abel.md`` (``benchmarks/bench_abel.py``).
+O(dx^degree) for (5.59) (one derivative of the interpolant; measured 5.4 for degree 5) and
+O(dx^(degree + 1)) for (5.61); data polynomial in s (Hertz, n = 4) are reproduced to
+rounding. A profile |x|^n that is not even-smooth limits the order to n - 1 for (5.59) and
+n for (5.61) at the axis; the worn paraboloid's sqrt(x^2 - b^2) to 1.5 for r < b. The
+measured orders and the comparison with PyAbel are in ``docs/abel.md``
+(``benchmarks/bench_abel.py``).
 """
 
 from __future__ import annotations
