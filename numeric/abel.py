@@ -41,6 +41,12 @@ With s = x^2 and t = r^2 both transforms become Riemann-Liouville integrals with
   edge (the samples do not vanish at the end of the grid) P itself is interpolated, the
   w-substitution integrates it exactly, and the transform is truncated at the end of the
   grid, as in PyAbel.
+- A square-root kink of q at x = b (``kink=b`` in (5.59)), the MDR image of a kink of the
+  profile such as the edge of a worn flat (Problem 8): left of b the pieces end at b; beyond
+  it U = (Q - Q(b^2))/sqrt(s - b^2) is interpolated (Q(b^2) from the left interpolant, or the
+  sample at b), so Q' = T(s)/sqrt(s - b^2) with T a polynomial, and the moments of
+  1/sqrt((s - b^2)(s - t)) come from s = c + h cosh(u), c = (b^2 + t)/2, h = |b^2 - t|/2,
+  whose weight is du: Gauss-Legendre on u-panels of at most 0.25. p is log-singular at b.
 - The end of the support: ``edge=None`` takes the last non-zero sample x_K; when the samples
   after it are zero, the edge a in (x_K, x_(K+1)] is the root of the cubic through the last
   four samples of q (which vanishes like a - x at a contact edge) or of p^2 (p vanishes like
@@ -301,6 +307,135 @@ def _edge_correction(K: int, A: float, degree: int, N: int):
     return c0, corr
 
 
+_COSH_PANEL = 0.25  # widest u panel of the kink quadrature
+
+
+def _moments_cosh(tau, s_lo, s_hi, width, beta, kmax, n_gauss):
+    """mu_k = int_{s_lo}^{s_hi} v^k ds/sqrt((s - beta)(s - tau)), s_lo >= max(beta, tau).
+
+    With c = (beta + tau)/2, h = |beta - tau|/2 and s = c + h cosh(u) the weight is du; the
+    integrand v^k is an entire function of u, integrated by Gauss-Legendre on panels of at most
+    _COSH_PANEL (error ~ (5 * 0.125)^16/16! for k = 5). Shapes as _moments_w; tau != beta.
+    """
+    hi_pt, lo_pt = np.maximum(beta, tau), np.minimum(beta, tau)
+    valid = (s_lo >= hi_pt) & (hi_pt > lo_pt)  # the others are zero
+    h = np.where(hi_pt > lo_pt, (hi_pt - lo_pt) / 2, 1.0)
+    s_lo = np.where(valid, s_lo, hi_pt + width)
+    s_hi = s_lo + width
+    z_lo = (s_lo - (beta + tau) / 2) / h
+    z_hi = (s_hi - (beta + tau) / 2) / h
+    S_lo = np.sqrt((s_lo - hi_pt) * (s_lo - lo_pt)) / h  # sinh(u_lo)
+    S_hi = np.sqrt((s_hi - hi_pt) * (s_hi - lo_pt)) / h
+    # u_hi - u_lo from sinh of the difference, (z_hi^2 - z_lo^2)/(S_hi z_lo + z_hi S_lo)
+    du = np.arcsinh((width / h) * (z_hi + z_lo) / (S_hi * z_lo + z_hi * S_lo))
+    du = np.where(valid, du, 0.0)
+    shape = du.shape
+    out = np.zeros(shape + (kmax + 1,))
+    xg, wg = _gauss(n_gauss)
+    n_panels = np.maximum(np.ceil(du / _COSH_PANEL), 1).astype(int)
+    for n_p in np.unique(n_panels):
+        sel = n_panels == n_p
+        d = du[sel]
+        zl, sl = np.broadcast_to(z_lo, shape)[sel], np.broadcast_to(S_lo, shape)[sel]
+        scale = (np.broadcast_to(h, shape) / np.broadcast_to(width, shape))[sel]
+        xs = ((np.arange(n_p)[:, None] + xg) / n_p).ravel()
+        ww = np.tile(wg / n_p, n_p)
+        phi = d[:, None] * xs
+        v = scale[:, None] * (2 * zl[:, None] * np.sinh(phi / 2) ** 2 + sl[:, None] * np.sinh(phi))
+        weight = d[:, None] * ww
+        res = np.empty((sel.sum(), kmax + 1))
+        vk = weight
+        res[:, 0] = vk.sum(axis=1)
+        for k in range(1, kmax + 1):
+            vk = vk * v
+            res[:, k] = vk.sum(axis=1)
+        out[sel] = res
+    return out
+
+
+def _build_kink(K: int, A: float | None, beta: float, degree: int) -> np.ndarray:
+    """(5.59) with a square-root kink of q at s = beta (units dx = 1): (K+1, K+1).
+
+    Left of the kink Q is a polynomial in s as usual, ending with the piece [s_J, beta]; right
+    of it Q = Q(beta) + sqrt(s - beta) U(s) with U interpolated (U_i = (Q_i - Q(beta))/sqrt(s_i
+    - beta), Q(beta) from the left interpolant, U(A) = -Q(beta)/sqrt(A - beta) at the edge),
+    so Q' = T(s)/sqrt(s - beta) with T a polynomial and the kernel
+    1/sqrt((s - beta)(s - t)) is integrated by s = c + h cosh(u) (_moments_cosh).
+    """
+    s = np.arange(K + 1, dtype=float) ** 2
+    near = round(float(np.sqrt(beta)))
+    if abs(beta - near**2) <= 1e-9 * (2 * near + 1):
+        beta = float(near**2)  # the kink is a sample: it closes the left part
+    J = int(np.searchsorted(s, beta, side="right")) - 1  # last sample at or left of the kink
+    on_grid = s[J] == beta
+    W = np.zeros((K + 1, K + 1))
+    # left: the pieces [s_0, s_1] ... [s_J, beta] on the samples 0..J
+    left_edges = s[:J + 1] if on_grid else np.append(s[:J + 1], beta)
+    idx_l, w_l, C_l, deg_l = _pieces(left_edges, s[:J + 1], degree)
+    e_beta = np.zeros(K + 1)  # Q(beta) = e_beta @ y: the sample, or the last piece at v = 1
+    if on_grid:
+        e_beta[J] = 1.0
+    else:
+        e_beta[idx_l[-1]] = C_l[-1].sum(axis=0)
+    # right: the pieces [beta, s_(J+1)], ..., [s_K, A] (or up to s_K without an edge)
+    r_nodes = s[J + 1:] if A is None else np.append(s[J + 1:], A)
+    r_edges = np.concatenate([[beta], r_nodes])
+    n_r = len(r_nodes)
+    G = np.zeros((n_r, K + 1))  # U at the right nodes = G @ y
+    dist = np.sqrt(r_nodes - beta)
+    for r in range(n_r):
+        if J + 1 + r <= K:
+            G[r, J + 1 + r] += 1 / dist[r]
+        G[r] -= e_beta / dist[r]
+    deg_r = min(degree, n_r - 1)
+    n_rp = len(r_edges) - 1
+    start = np.clip(np.arange(n_rp) - 1 - (deg_r - 1) // 2, 0, max(n_r - 1 - deg_r, 0))
+    idx_r = start[:, None] + np.arange(deg_r + 1)
+    w_r = r_edges[1:] - r_edges[:-1]
+    C_r = _lagrange_power((r_nodes[idx_r] - r_edges[:-1, None]) / w_r[:, None])
+    e_off = (r_edges[:-1] - beta) / w_r
+    kk = np.arange(deg_r + 1)[None, :, None]
+    C_next = np.concatenate([C_r[:, 1:, :], np.zeros_like(C_r[:, :1, :])], axis=1)
+    T = C_r * (kk + 0.5) + e_off[:, None, None] * (kk + 1) * C_next
+    Wr = np.zeros((K + 1, n_r))
+    # left pieces for the rows left of the kink (exact w-moments of the derivative)
+    if deg_l >= 1:
+        D_l = C_l[:, 1:, :] * np.arange(1, deg_l + 1)[None, :, None] / w_l[:, None, None]
+        for j0 in range(0, J + 1, _BLOCK):
+            j1 = min(j0 + _BLOCK, J + 1)
+            tau = s[j0:j1, None]
+            lo, hi, wd = left_edges[None, j0:-1], left_edges[None, j0 + 1:], w_l[None, j0:]
+            mu = _moments_w(tau, lo, hi, wd, deg_l - 1, deg_l)
+            mu[np.broadcast_to(lo < tau, mu.shape[:2])] = 0.0
+            contrib = np.einsum("bik,ikl->bil", mu, D_l[j0:])
+            for ll in range(idx_l.shape[1]):
+                np.add.at(W, (np.arange(j0, j1)[:, None], idx_l[None, j0:, ll]),
+                          contrib[:, :, ll])
+    # right pieces for every row (the row at the kink itself is log-singular: inf)
+    for j0 in range(0, K + 1, _BLOCK):
+        j1 = min(j0 + _BLOCK, K + 1)
+        tau = s[j0:j1, None].copy()
+        tau[tau[:, 0] == beta] = -1.0  # the row at the kink: any value, zeroed below
+        lo, hi, wd = r_edges[None, :-1], r_edges[None, 1:], w_r[None, :]
+        ok = np.broadcast_to(lo >= tau, (j1 - j0, n_rp))
+        mu = np.zeros((j1 - j0, n_rp, deg_r + 1))
+        if ok.any():
+            rows_ok = np.flatnonzero(ok.any(axis=1))
+            first = int(np.argmax(ok[rows_ok[0]]))
+            mu_part = _moments_cosh(tau[rows_ok], lo[:, first:], hi[:, first:], wd[:, first:],
+                                    beta, deg_r, 8)
+            mu[rows_ok, first:] = mu_part
+            mu[~ok] = 0.0
+        contrib = np.einsum("bik,ikl->bil", mu, T)
+        for ll in range(idx_r.shape[1]):
+            np.add.at(Wr, (np.arange(j0, j1)[:, None], idx_r[None, :, ll]), contrib[:, :, ll])
+    W = (W + Wr @ G) * (-1 / np.pi)
+    j_kink = int(J) if on_grid else -1
+    W[j_kink if on_grid else slice(0, 0)] = 0.0  # the log-singular row: set by _apply
+    u0 = (C_r[0, 0, :] @ G[idx_r[0]]) if on_grid else None  # U(beta) = u0 @ y
+    return W, j_kink, u0
+
+
 def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]:
     """(K, A) of one row in units dx = 1: K the last sample inside the support, A = a^2.
 
@@ -406,8 +541,19 @@ def _cached(key, make):
     return value
 
 
-def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: np.ndarray):
+def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: np.ndarray,
+           beta: float | None = None):
     """The transform of the rows ``block`` (B, K+1) in units dx = 1."""
+    if beta is not None and beta < (A if A is not None else K**2):
+        W, j_kink, u0 = _cached(("inverse-kink", K, A, beta, degree),
+                                lambda: _build_kink(K, A, beta, degree))
+        out = block @ W.T
+        if j_kink >= 0:  # p ~ (u0/(2 pi)) log|r^2 - b^2| with u0 = U(b): +-inf, or, without
+            # the singular term (u0 = 0), the mean of the neighbours
+            u = block @ u0
+            lo, hi = out[:, max(j_kink - 1, 0)], out[:, min(j_kink + 1, K)]
+            out[:, j_kink] = np.where(u < 0, np.inf, np.where(u > 0, -np.inf, (lo + hi) / 2))
+        return out
     if direction == "inverse" and A is not None:
         # the edge-free operator of N samples, shared by every edge, and a correction of the
         # last pieces: a new edge costs O(N degree^2), not O(N^2)
@@ -420,7 +566,7 @@ def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: 
     return block @ W.T
 
 
-def _transform(direction, name, values, dx, edge, degree):
+def _transform(direction, name, values, dx, edge, degree, kink=None):
     y = as_float(name, values)
     if y.ndim == 0 or y.shape[-1] < 2:
         raise ValueError(f"{name} has shape {y.shape}; valid: at least 2 samples along the "
@@ -447,6 +593,13 @@ def _transform(direction, name, values, dx, edge, degree):
             i = int(outside[np.argwhere(beyond)[0][-1]])
             raise ValueError(f"{name}[..., {i}] = {y[..., i].ravel()[0]!r} at x = {i * h!r} "
                              f"is beyond edge = {a!r}; valid: 0 at and beyond the edge")
+    beta = None
+    if kink is not None:
+        b = float(positive("kink", kink))
+        if not b < (N - 1) * h:
+            raise ValueError(f"kink = {b!r} is out of range; valid: 0 < kink < (N-1)*dx = "
+                             f"{(N - 1) * h!r}")
+        beta = (b / h) ** 2
     rows = y.reshape(-1, N)
     groups: dict = {}
     for r, row in enumerate(rows):
@@ -458,11 +611,12 @@ def _transform(direction, name, values, dx, edge, degree):
         if K < 0:
             continue  # an all-zero row transforms to zero
         sel = slice(None) if len(members) == len(rows) else members
-        out[sel, :K + 1] = _apply(direction, K, A, int(degree), N, rows[sel, :K + 1]) * scale
+        out[sel, :K + 1] = _apply(direction, K, A, int(degree), N, rows[sel, :K + 1],
+                                  beta) * scale
     return out.reshape(y.shape)
 
 
-def pressure_from_line_load(q, dx, *, edge=None, degree=5):
+def pressure_from_line_load(q, dx, *, edge=None, degree=5, kink=None):
     """Contact pressure p(r) [Pa] from samples of the MDR line load q(x) [N/m], (5.59).
 
     The inverse Abel transform p(r) = -(1/pi) int_r^a q'(x)/sqrt(x^2 - r^2) dx on PyAbel's
@@ -483,6 +637,14 @@ def pressure_from_line_load(q, dx, *, edge=None, degree=5):
     degree : int, optional
         Degree of the piecewise interpolant of q in s = x^2, 1..9 (default 5). The error is
         O(dx^degree) for a line load that is a smooth function of x^2.
+    kink : float, optional
+        Radius b [m], 0 < b < (N-1)*dx, where q has a square-root kink: smooth for x < b,
+        q(b) + sqrt(x - b) * (smooth) beyond -- the MDR image (5.52) of a kink of the profile
+        f, e.g. the edge of the flat of a worn paraboloid (Problem 8). The part beyond b is
+        interpolated as (q - q(b))/sqrt(x^2 - b^2) and integrated against the kernel exactly
+        (see the module docstring); without it, stencils straddling b limit the error to
+        O(dx^1.5) for r < b. p is log-singular at r = b: a sample there is returned as +inf
+        (or -inf for a line load rising beyond b).
 
     Returns
     -------
@@ -498,7 +660,7 @@ def pressure_from_line_load(q, dx, *, edge=None, degree=5):
     integrated exactly for the piecewise polynomial (substitution s = t + w^2, Gauss-Legendre
     exact in w); see the module docstring. The operator is cached per (N, edge, degree).
     """
-    return _transform("inverse", "q", q, dx, edge, degree)  # (5.59)
+    return _transform("inverse", "q", q, dx, edge, degree, kink)  # (5.59)
 
 
 def line_load_from_pressure(p, dx, *, edge=None, degree=5):

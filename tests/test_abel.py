@@ -197,6 +197,39 @@ def test_worn_paraboloid_against_quadrature():
     _record("abel inverse worn r > b, N=1601", errs[-1, 3:].max(), 1e-12)
 
 
+def test_worn_paraboloid_with_the_kink_given():
+    """kink=b: beyond b the interpolated function is (q - q(b))/sqrt(x^2 - b^2), which for the
+    worn paraboloid is -E* x/R, smooth; the kernel 1/sqrt((s - b^2)(s - r^2)) is integrated
+    by s = c + h cosh(u). Measured (degree 5) at r = 0, 0.15, 0.288, 0.312, 0.6, 0.9:
+    1.5e-10, 3.3e-12, 3.4e-13 for N = 201, 401, 801 (order ~5.5, then rounding); asserted
+    with a factor 2. p(b) is log-singular: +inf at the sample r = b."""
+    a, b, Rv = 1.0, 0.3, 1.0
+    d = float(g.worn_depth(Rv, a, b))
+    radii = np.array([0.0, 0.15, 0.288, 0.312, 0.6, 0.9])  # grid points of every N below
+    with mp.workdps(30):
+        ref = np.array([float(worn_pressure_ref(mp.mpf(r), mp.mpf(a), mp.mpf(b), mp.mpf(Rv),
+                                                mp.mpf(1))) for r in radii])
+    for N, tol in ((201, 3e-10), (401, 7e-12), (801, 7e-13)):
+        x = np.linspace(0, 1.2, N)
+        q = np.where(x < a, d - g.worn_g(Rv, b, np.minimum(x, a)), 0.0)
+        p = abel.pressure_from_line_load(q, x[1], kink=b)
+        idx = np.rint(radii / x[1]).astype(int)
+        _record(f"abel inverse worn kink=b N={N}", float(np.max(np.abs(p[idx] / ref - 1))), tol)
+        assert p[int(np.rint(b / x[1]))] == np.inf
+    # b between two samples (N = 203): no infinite sample, the same accuracy
+    x = np.linspace(0, 1.2, 203)
+    q = np.where(x < a, d - g.worn_g(Rv, b, np.minimum(x, a)), 0.0)
+    p = abel.pressure_from_line_load(q, x[1], kink=b)
+    assert np.all(np.isfinite(p))
+    j = int(np.searchsorted(x, b))  # the samples either side of b
+    with mp.workdps(30):
+        near = [float(worn_pressure_ref(mp.mpf(float(x[i])), mp.mpf(a), mp.mpf(b), mp.mpf(Rv),
+                                        mp.mpf(1))) for i in (j - 1, j)]
+    # measured 1.3e-13 and 3.7e-10 (the larger next to b, beyond it: 0.5 dx from the kink)
+    _record("abel inverse worn kink between samples", float(np.max(np.abs(p[[j - 1, j]] / near
+                                                                     - 1))), 1e-9)
+
+
 def test_without_edge_the_gaussian_pair():
     """No zero at the end of the grid: the transform is truncated there (PyAbel's convention).
     exp(-r^2) <-> sqrt(pi) exp(-x^2) on [0, 7]: the truncation is below 1e-21, what is left is
@@ -276,6 +309,20 @@ def test_bad_input_raises(kwargs, match):
     for f in (abel.pressure_from_line_load, abel.line_load_from_pressure):
         with pytest.raises(ValueError, match=match):
             f(values, **kwargs)
+
+
+@pytest.mark.parametrize("kink", [0.0, -1.0, 2.0, np.nan])
+def test_bad_kink_raises(kink):
+    with pytest.raises(ValueError, match="kink"):
+        abel.pressure_from_line_load([1.0, 0.5, 0.0], 1.0, kink=kink)
+
+
+def test_kink_outside_the_support_is_ignored():
+    """A row whose edge lies before the kink has no kink: the plain transform."""
+    x, dx = grid(101)
+    q, _ = powerlaw_pair(2, x)
+    np.testing.assert_array_equal(abel.pressure_from_line_load(q, dx, kink=1.1 * A_CONTACT),
+                                  abel.pressure_from_line_load(q, dx))
 
 
 def test_operators_are_cached():
