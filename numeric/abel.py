@@ -502,8 +502,8 @@ def _edge_root(coef: np.ndarray) -> float:
                 break
     if ok and 0 < u <= 1 + 1e-12:
         # no earlier root: the polynomial keeps the sign of c[0] on a few points of (0, u)
-        probe = [val(u * t)[0] for t in (0.25, 0.5, 0.75)]
-        if all(np.sign(pv) == np.sign(c[0]) for pv in probe):
+        mid = val(0.5 * u)[0]  # one probe: a root before u would show as a sign change
+        if (mid > 0) == (c[0] > 0) and mid != 0:
             return min(u, 1.0)
     roots = np.polynomial.polynomial.polyroots(coef) if np.any(coef[1:]) else np.array([])
     real = roots.real[(np.abs(roots.imag) <= 1e-9) & (roots.real > 0)
@@ -567,11 +567,15 @@ def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: 
 
 
 def _transform(direction, name, values, dx, edge, degree, kink=None):
-    y = as_float(name, values)
+    try:
+        y = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        y = as_float(name, values)  # raises, naming the value
     if y.ndim == 0 or y.shape[-1] < 2:
         raise ValueError(f"{name} has shape {y.shape}; valid: at least 2 samples along the "
                          "last axis (x_i = i*dx, i = 0..N-1)")
     if not np.isfinite(y).all():
+        as_float(name, y)  # NaN: its message
         i = tuple(int(k) for k in np.argwhere(~np.isfinite(y))[0])
         raise ValueError(f"{name}{list(i)} = {y[i]!r} is out of range; valid: finite numbers")
     h = dx if isinstance(dx, float) and 0 < dx < np.inf else float(positive("dx", dx))
