@@ -15,6 +15,8 @@ sqrt(x^2 - b^2) at x = b limits (5.59) to O(dx^1.5) for r < b.
 """
 
 import math
+import subprocess
+import sys
 
 import mpmath as mp
 import numpy as np
@@ -344,3 +346,10 @@ def test_operators_are_cached():
     abel.line_load_from_pressure(p, dx)
     abel.line_load_from_pressure(3 * p, dx)
     assert len(abel._CACHE) == 4
+
+
+def test_imports_neither_sympy_nor_scipy():
+    code = ("import sys, hertzmdr.numeric.abel;"
+            "print(','.join(m for m in ('sympy', 'scipy', 'matplotlib') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "", f"imported at import time: {out.stdout.strip()}"
