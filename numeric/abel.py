@@ -444,7 +444,7 @@ def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]
     N = y.size
     if x_edge is not None:
         K = max(min(int(np.ceil(x_edge)) - 1, N - 1), 0)
-        return K, x_edge**2
+        return _snap(K, x_edge**2)
     nz = np.flatnonzero(y)
     if nz.size == 0:
         return -1, None
@@ -457,7 +457,17 @@ def _edge_index(y: np.ndarray, x_edge: float | None) -> tuple[int, float | None]
         return K, K**2 + span
     coef = _edge_vandermonde_inv(K, deg) @ y[K - deg:K + 1]  # power coefficients in u
     u = _edge_root(coef)
-    return K, K**2 + span * u
+    return _snap(K, K**2 + span * u)
+
+
+def _snap(K: int, A: float) -> tuple[int, float]:
+    """An edge within 1e-9 dx after the sample K is that sample (a/dx off a grid point by
+    rounding): a last piece [s_K, A] that short would make the interpolant through the nearly
+    coincident nodes s_K, A amplify the rounding of the (nearly zero) sample K by dx/(a - x_K).
+    The sample K is then replaced by the edge's exact 0."""
+    if K >= 1 and A - K**2 <= 1e-9 * (2 * K + 1):
+        return K - 1, float(K**2)
+    return K, A
 
 
 def _edge_vandermonde_inv(K: int, deg: int) -> np.ndarray:
@@ -591,12 +601,17 @@ def _transform(direction, name, values, dx, edge, degree, kink=None):
         if not (0 < x_edge <= N - 1):
             raise ValueError(f"edge = {a!r} is out of range; valid: 0 < edge <= (N-1)*dx = "
                              f"{(N - 1) * h!r}")
-        outside = np.flatnonzero(np.arange(N) >= x_edge * (1 - 1e-12))
-        beyond = y[..., outside] != 0
+        first_out = int(np.ceil(x_edge))
+        tail = y[..., first_out:]
+        beyond = np.abs(tail) > 1e-12 * np.max(np.abs(y))  # rounding-level values count as 0
         if beyond.any():
-            i = int(outside[np.argwhere(beyond)[0][-1]])
-            raise ValueError(f"{name}[..., {i}] = {y[..., i].ravel()[0]!r} at x = {i * h!r} "
+            where = tuple(int(k) for k in np.argwhere(beyond)[0])
+            where = where[:-1] + (where[-1] + first_out,)
+            raise ValueError(f"{name}{list(where)} = {y[where]!r} at x = {where[-1] * h!r} "
                              f"is beyond edge = {a!r}; valid: 0 at and beyond the edge")
+        if tail.size and np.any(tail):
+            y = y.copy()
+            y[..., first_out:] = 0.0
     beta = None
     if kink is not None:
         b = float(positive("kink", kink))

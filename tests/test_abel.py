@@ -291,6 +291,23 @@ def test_hertz_any_edge_position(ratio, N_extra):
     assert np.all(abel.pressure_from_line_load(q, dx)[x >= 1] == 0)
 
 
+@pytest.mark.parametrize("frac", [0.0, 1e-14, 1e-12, 1e-9, 2e-9, 1e-6, 0.5, 1 - 1e-12])
+def test_edge_next_to_a_sample(frac):
+    """a = (80 + frac) dx, given or found: an edge within 1e-9 dx after a sample is snapped to
+    it (the last piece would amplify the rounding of the nearly-zero sample by dx/(a - x_K));
+    the worst case is the crossover, measured 2.5e-11 (inverse) and 1.5e-11 (forward)."""
+    x = np.arange(120.0)
+    a = 80 + frac
+    q = np.where(x < a, a * a - x**2, 0.0)
+    p = 2 / np.pi * np.sqrt(np.clip(a * a - x**2, 0, None))
+    m = x <= 0.9 * a
+    for edge in (None, a):
+        _record("abel edge next to a sample, inverse",
+                rel_err(abel.pressure_from_line_load(q, 1.0, edge=edge), p, m), 5e-11)
+        _record("abel edge next to a sample, forward",
+                rel_err(abel.line_load_from_pressure(p, 1.0, edge=edge), q, m), 5e-11)
+
+
 @pytest.mark.parametrize("kwargs, match", [
     (dict(values=[[1.0, np.nan, 0.0]], dx=1.0), "NaN"),
     (dict(values=[1.0, np.inf, 0.0], dx=1.0), "finite"),
