@@ -51,8 +51,9 @@ With s = x^2 and t = r^2 both transforms become Riemann-Liouville integrals with
   after it are zero, the edge a in (x_K, x_(K+1)] is the root of the cubic through the last
   four samples of q (which vanishes like a - x at a contact edge) or of p^2 (p vanishes like
   sqrt(a - r)), extrapolated from x_K; if it has no root there, a = x_(K+1). Data that vanish
-  otherwise (faster, or with a jump) need ``edge=a`` (then samples at x >= a must be zero).
-  For (5.59) the node a carries q(a) = 0.
+  otherwise (faster, or with a jump) need ``edge=a`` (then samples at x >= a must be zero, up
+  to 1e-12 of the largest). An edge within 1e-9 dx after a sample is snapped to that sample
+  (a/dx off a grid point by rounding). For (5.59) the node a carries q(a) = 0.
 - Operators, applied to the last axis and cached (least recently used, up to 512 MB): (5.59)
   without an edge is one N x N matrix per (N, degree); with an edge it is that matrix
   restricted to the samples 0..K plus a correction of the last ~degree/2 + 1 pieces, whose
