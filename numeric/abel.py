@@ -47,6 +47,7 @@ With s = x^2 and t = r^2 both transforms become Riemann-Liouville integrals with
   sample at b), so Q' = T(s)/sqrt(s - b^2) with T a polynomial, and the moments of
   1/sqrt((s - b^2)(s - t)) come from s = c + h cosh(u), c = (b^2 + t)/2, h = |b^2 - t|/2,
   whose weight is du: Gauss-Legendre on u-panels of at most 0.25. p is log-singular at b.
+  ``kink=0`` is the same for a conical tip, q = q(0) + |x| U(x^2).
 - The end of the support: ``edge=None`` takes the last non-zero sample x_K; when the samples
   after it are zero, the edge a in (x_K, x_(K+1)] is the root of the cubic through the last
   four samples of q (which vanishes like a - x at a contact edge) or of p^2 (p vanishes like
@@ -77,7 +78,7 @@ from collections import OrderedDict
 
 import numpy as np
 
-from hertzmdr.numeric._validate import as_float, positive
+from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
 __all__ = ["pressure_from_line_load", "line_load_from_pressure"]
 
@@ -615,9 +616,9 @@ def _transform(direction, name, values, dx, edge, degree, kink=None):
             y[..., first_out:] = 0.0
     beta = None
     if kink is not None:
-        b = float(positive("kink", kink))
+        b = float(nonnegative("kink", kink))
         if not b < (N - 1) * h:
-            raise ValueError(f"kink = {b!r} is out of range; valid: 0 < kink < (N-1)*dx = "
+            raise ValueError(f"kink = {b!r} is out of range; valid: 0 <= kink < (N-1)*dx = "
                              f"{(N - 1) * h!r}")
         beta = (b / h) ** 2
     rows = y.reshape(-1, N)
@@ -658,13 +659,14 @@ def pressure_from_line_load(q, dx, *, edge=None, degree=5, kink=None):
         Degree of the piecewise interpolant of q in s = x^2, 1..9 (default 5). The error is
         O(dx^degree) for a line load that is a smooth function of x^2.
     kink : float, optional
-        Radius b [m], 0 < b < (N-1)*dx, where q has a square-root kink: smooth for x < b,
+        Radius b [m], 0 <= b < (N-1)*dx, where q has a square-root kink: smooth for x < b,
         q(b) + sqrt(x - b) * (smooth) beyond -- the MDR image (5.52) of a kink of the profile
         f, e.g. the edge of the flat of a worn paraboloid (Problem 8). The part beyond b is
         interpolated as (q - q(b))/sqrt(x^2 - b^2) and integrated against the kernel exactly
         (see the module docstring); without it, stencils straddling b limit the error to
-        O(dx^1.5) for r < b. p is log-singular at r = b: a sample there is returned as +inf
-        (or -inf for a line load rising beyond b).
+        O(dx^1.5) for r < b. ``kink=0`` is a conical tip, q = q(0) + |x| * (smooth in x^2)
+        (the cone's q ~ d - c|x| is then reproduced to rounding). p is log-singular at r = b:
+        a sample there is returned as +inf (or -inf for a line load rising beyond b).
 
     Returns
     -------

@@ -232,6 +232,26 @@ def test_worn_paraboloid_with_the_kink_given():
                                                                      - 1))), 1e-9)
 
 
+def test_cone_with_kink_at_the_axis():
+    """kink=0: q = q(0) + |x| U(x^2); for the cone U is constant, so with the edge given the
+    transform is exact to rounding and p(0) = +inf (the cone's
+    pressure is log-singular at the axis). With the edge found, the cubic extrapolation of
+    q = d - c sqrt(s) to its root is the error: measured 2.5e-6, 1.2e-9, 4e-12 for N = 51,
+    201, 801 (order ~5, as that of the root); asserted with a factor 2."""
+    for N, tol_found in ((51, 5e-6), (201, 2.4e-9), (801, 8e-12)):
+        x, dx = grid(N)
+        q, p = powerlaw_pair(1, x)
+        m = inside(x) & (x > 0)
+        given = abel.pressure_from_line_load(q, dx, kink=0.0, edge=A_CONTACT)
+        assert given[0] == np.inf
+        # U_1 = (q_1 - q(0))/dx is a difference of nearly equal samples: near the axis the
+        # rounding grows like N^2 (measured 1.7e-14, 9.7e-14, 2.9e-12 at r = dx), elsewhere
+        # ~N ulp as for Hertz
+        _record("abel inverse cone kink=0 edge given", rel_err(given, p, m), 1e-17 * N**2 + 1e-13)
+        found = abel.pressure_from_line_load(q, dx, kink=0.0)
+        _record(f"abel inverse cone kink=0 N={N}", rel_err(found, p, m), tol_found)
+
+
 def test_without_edge_the_gaussian_pair():
     """No zero at the end of the grid: the transform is truncated there (PyAbel's convention).
     exp(-r^2) <-> sqrt(pi) exp(-x^2) on [0, 7]: the truncation is below 1e-21, what is left is
@@ -330,7 +350,7 @@ def test_bad_input_raises(kwargs, match):
             f(values, **kwargs)
 
 
-@pytest.mark.parametrize("kink", [0.0, -1.0, 2.0, np.nan])
+@pytest.mark.parametrize("kink", [-1e-300, -1.0, 2.0, np.nan, np.inf])
 def test_bad_kink_raises(kink):
     with pytest.raises(ValueError, match="kink"):
         abel.pressure_from_line_load([1.0, 0.5, 0.0], 1.0, kink=kink)
