@@ -21,11 +21,11 @@ def derivations_section() -> str:
            "`mdr.elliptic_abel_integral` in Legendre's F(phi|m), E(phi|m). "
            "`hertzmdr.derive.mdr.solve(f, r)` runs the same steps on a user's SymPy profile and "
            "reports those without a closed form.\n\n",
-           "| function | chapter | returns | generated form |\n| --- | --- | --- | --- |\n"]
+           "| function | chapter | returns | derived form |\n| --- | --- | --- | --- |\n"]
     for name, eq, fam, expr, _ in g.RELATIONS:
         if fam not in FAMILIES:
             continue
-        summary = getattr(g, name).__doc__.strip().splitlines()[0].rstrip(".")
+        summary = getattr(g, name).__doc__.strip().splitlines()[0].rstrip(".").replace("|", "\\|")
         form = expr if len(expr) <= 90 else expr[:87] + "..."
         out.append(f"| `{name}` | {eq} | {summary} | `{form}` |\n")
     return "".join(out) + "\n"

@@ -1,7 +1,7 @@
 """Benchmark of the numerical MDR (numeric/mdr.py); writes docs/mdr.md and docs/mdr_*.png.
 
-Run: ``.venv/bin/python benchmarks/bench_mdr.py`` (needs the ``plot`` extra; PyAbel from the
-``bench`` extra for the inverse-Abel comparison). Timings are of this machine, wall clock.
+Run: ``.venv/bin/python benchmarks/bench_mdr.py`` (needs the ``plot`` extra; the PyAbel
+comparison is bench_abel.py's, summarized here). Timings are of this machine, wall clock.
 """
 
 from __future__ import annotations
@@ -9,6 +9,7 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import bench_abel
 import numpy as np
 from _mdr_doc import derivations_section, verification_section
 
@@ -174,47 +175,6 @@ def order(Ns, errs):
     return float(-np.polyfit(np.log(Ns[ok]), np.log(errs[ok]), 1)[0])
 
 
-def pyabel_table(N=201):
-    """Inverse Abel (5.59) of the Hertz line load q = 1 - x^2 (a = 1) on N points of [0, 1.2]:
-    PyAbel's methods, error in p against the closed form 2/pi sqrt(1 - r^2), and time."""
-    try:
-        import abel
-    except ImportError:
-        return None
-    x = np.linspace(0, 1.2, N)
-    dx = x[1]
-    q = np.clip(1 - x**2, 0, None)
-    p_ref = 2 / np.pi * np.sqrt(np.clip(1 - x**2, 0, None))
-    inner = (x > 0.05) & (x < 0.95)
-    rows = []
-    methods = {
-        "basex": lambda: abel.basex.basex_transform(q[None, :], dr=dx, verbose=False,
-                                                    direction="inverse"),
-        "three_point": lambda: abel.dasch.three_point_transform(q[None, :], dr=dx,
-                                                                direction="inverse"),
-        "daun": lambda: abel.daun.daun_transform(q[None, :], dr=dx, verbose=False,
-                                                 direction="inverse"),
-        "hansenlaw": lambda: abel.hansenlaw.hansenlaw_transform(q[None, :], dr=dx,
-                                                                direction="inverse"),
-        "direct": lambda: abel.direct.direct_transform(q[None, :], dr=dx, direction="inverse"),
-    }
-    for name, call in methods.items():
-        call()  # basis generation / warm-up
-        t0 = time.perf_counter()
-        out = np.ravel(call())
-        t = time.perf_counter() - t0
-        rows.append((name, float(np.max(np.abs(out[inner] - p_ref[inner]) / p_ref[inner])), t))
-    # hertzmdr: the same samples as a profile f = x^2/2 (R = 1, d = 1: q = E*(d - g) = 1 - x^2
-    # for E* = 1) -- the MDR goes from f, not from q, so the input differs from PyAbel's
-    f = x**2 / 2
-    t0 = time.perf_counter()
-    sol = mdr.Profile.from_samples(x, f).solve(depth=1.0, E_star=1.0)
-    p = sol.pressure(x[inner])
-    t = time.perf_counter() - t0
-    rows.append(("hertzmdr (from f)", float(np.max(np.abs(p - p_ref[inner]) / p_ref[inner])), t))
-    return rows
-
-
 def main():
     import matplotlib
 
@@ -325,18 +285,8 @@ def main():
                "ms per depth, the first one included: " + "; ".join(
                    f"N = {N}: {'met' if t <= 20 and e <= 1e-8 else 'NOT met'} ({t:.1f} ms with "
                    f"the error estimate, error {e:.1e})" for N, t, e in goal) + ".\n\n")
-    rows = pyabel_table()
-    out.append("## Inverse Abel transform (5.59): PyAbel on the same grid\n\n")
-    if rows is None:
-        out.append("PyAbel not installed (`pip install -e .[bench]`).\n")
-    else:
-        out.append("Hertz line load q = 1 - x^2 on 201 points of [0, 1.2]; error: max relative "
-                   "error of p on 0.05 < r < 0.95. Not yet like-for-like: hertzmdr starts from "
-                   "the profile samples f, PyAbel from q; a sample-based inverse/forward Abel "
-                   "entry point of numeric/mdr.py is still to be written.\n\n"
-                   "| method | max rel. error | time [ms] |\n|---|---|---|\n")
-        for name, err, t in rows:
-            out.append(f"| {name} | {err:.1e} | {1e3 * t:.1f} |\n")
+    out.append("## Abel transforms (5.59), (5.61) from samples: PyAbel on the same grids\n\n")
+    out.append(bench_abel.mdr_section())
     (DOCS / "mdr.md").write_text("".join(out))
     print("".join(out))
 
