@@ -23,12 +23,12 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from test_worn import pressure_ref as worn_pressure_ref
 
 from hertzmdr.numeric import _generated as g
 from hertzmdr.numeric import abel
 
 from oracle import WORST
+from test_worn import pressure_ref as worn_pressure_ref
 
 E = 2.1e11  # Pa
 A_CONTACT = 3e-4  # m
