@@ -36,6 +36,8 @@ K_COMMON = np.arange(3, 40)  # common radii r = 0.024 k
 WORN_R, WORN_B = 1.0, 0.3
 KINK = "hertzmdr (degree=5, kink=b)"  # the worn profile's kink
 KINK0 = "hertzmdr (degree=5, kink=0)"  # the cone's tip
+MATRIX = "hertzmdr matrix (degree=5, edge=a)"  # pressure_matrix / line_load_matrix, a known
+A_EDGE = 1.0  # the contact radius of every profile
 
 
 def _powerlaw(n):
@@ -126,7 +128,23 @@ def hertzmdr_methods(direction):
     if direction == "inverse":  # told where the kink is (PyAbel cannot use it)
         meths[KINK] = lambda y, dx: f(y, dx, degree=5, kink=WORN_B)
         meths[KINK0] = lambda y, dx: f(y, dx, degree=5, kink=0.0)
-    return meths, habel._CACHE.clear
+    # the operator as a matrix for the known contact radius: one product a call, no
+    # validation or edge search (built on the first call of each N, as PyAbel's operators)
+    build = habel.pressure_matrix if direction == "inverse" else habel.line_load_matrix
+    mats: dict = {}
+
+    def matrix(y, dx):
+        N = y.shape[-1]
+        if N not in mats:
+            mats[N] = build(N, dx, edge=A_EDGE).T.copy()
+        return y @ mats[N]
+
+    meths[MATRIX] = matrix
+
+    def clear():
+        habel._CACHE.clear()
+        mats.clear()
+    return meths, clear
 
 
 def _time(call, y, dx, repeat):
@@ -182,11 +200,12 @@ def run(Ns=NS, verbose=True):
     return rows
 
 
-def verdict(rows, direction, profile, with_kink=False):
+def verdict(rows, direction, profile, with_kink=False, with_matrix=False):
     """Is every PyAbel (time, error) point beaten by a hertzmdr point no slower than it?"""
     sel = [r for r in rows if r["direction"] == direction and r["profile"] == profile]
     ours = [(r["again"], r["error"]) for r in sel if r["method"].startswith("hertzmdr")
-            and (with_kink or "kink" not in r["method"])]
+            and (with_kink or "kink" not in r["method"])
+            and (with_matrix or r["method"] != MATRIX)]
     theirs = [r for r in sel if not r["method"].startswith("hertzmdr")]
     beaten, faster, worse = 0, [], []
     fastest_ours = min(t for t, _ in ours)
@@ -202,10 +221,11 @@ def verdict(rows, direction, profile, with_kink=False):
                 fastest_ours=fastest_ours)
 
 
-def verdict_line(rows, direction, prof, with_kink=False):
-    v = verdict(rows, direction, prof, with_kink)
+def verdict_line(rows, direction, prof, with_kink=False, with_matrix=False):
+    v = verdict(rows, direction, prof, with_kink, with_matrix)
     what = "(5.59)" if direction == "inverse" else "(5.61)"
     line = f"- {what} {prof}" + (" with the kink given" if with_kink else "") + (
+        " with the matrix for a known contact radius" if with_matrix else "") + (
         f": {v['beaten']} of {v['total']} PyAbel points beaten")
     if v["faster"]:
         best = min(v["faster"], key=lambda r: r["error"])
@@ -311,6 +331,22 @@ def plain_statement(rows):
             f"{top['error']:.1e} ({top['method']}, N={top['N']}), while hertzmdr's calls on "
             f"the coarsest grid give {min(coarse):.0e} to {max(coarse):.0e} depending on the "
             "profile. ")
+    if any(r["method"] == MATRIX for r in rows):
+        met_m, not_m = [], []
+        for direction, prof in combos:
+            kinked = any("kink" in r["method"] and r["profile"] == prof for r in rows)
+            v = verdict(rows, direction, prof, with_kink=kinked, with_matrix=True)
+            what = ("(5.59) " if direction == "inverse" else "(5.61) ") + prof
+            (not_m if (v["worse"] or v["faster"]) else met_m).append(what)
+        t_m = [r["again"] for r in rows if r["method"] == MATRIX and r["N"] == min(
+            r2["N"] for r2 in rows)]
+        text.append(f"For a known contact radius, the operator as a matrix "
+                    f"(`abel.pressure_matrix`, `abel.line_load_matrix`: one product a call, "
+                    f"{1e3 * min(t_m):.4f}-{1e3 * max(t_m):.4f} ms at N = "
+                    f"{min(r['N'] for r in rows)}) beats every PyAbel point, the fastest "
+                    "included, for " + (", ".join(met_m) if met_m else "no profile")
+                    + ("" if not not_m else "; not for " + ", ".join(not_m)
+                       + " (see the lines 'with the matrix')") + ". ")
     nmax = max(r["N"] for r in rows)
     firsts = {}
     for r in rows:
@@ -386,7 +422,9 @@ def write_docs(rows, threads):
            .replace("  ", " ").strip().join(["Set-up, the same for every method: ", "\n\n"]),
            "Methods: `hertzmdr.numeric.abel` (product integration of a piecewise polynomial in "
            "s = x^2, exact against the kernel; degree 3 and 5; the edge found from the "
-           "samples; for the worn profile also with `kink=b`, the radius where its line load "
+           "samples; `abel.pressure_matrix`/`abel.line_load_matrix` for the known contact "
+           "radius a = 1 (the operator as one matrix, applied by a product); "
+           "for the worn profile also with `kink=b`, the radius where its line load "
            "has a square-root kink, and for the cone with `kink=0`, its tip -- information "
            "PyAbel cannot use, so it is reported apart) and PyAbel's basex, three_point "
            "(inverse only), daun (degree 0, the default, and 3), hansenlaw, direct, all with "
@@ -407,8 +445,11 @@ def write_docs(rows, threads):
                "N') is no slower (repeated call) and has a smaller error.\n\n")
     for direction, prof in combos:
         out.append(verdict_line(rows, direction, prof))
-        if any("kink" in r["method"] and r["profile"] == prof for r in rows):
+        kinked = any("kink" in r["method"] and r["profile"] == prof for r in rows)
+        if kinked:
             out.append(verdict_line(rows, direction, prof, with_kink=True))
+        if any(r["method"] == MATRIX for r in rows):
+            out.append(verdict_line(rows, direction, prof, with_kink=kinked, with_matrix=True))
     out.append("\n" + plain_statement(rows) + best_table(rows))
     out.append("\n![error vs time](abel_error_time.png)\n\n## Convergence orders\n\n"
                "Least-squares slope of log(error) against log(N), errors below 1e-12 (the "

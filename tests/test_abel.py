@@ -390,3 +390,44 @@ def test_imports_neither_sympy_nor_scipy():
             "print(','.join(m for m in ('sympy', 'scipy', 'matplotlib') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "", f"imported at import time: {out.stdout.strip()}"
+
+
+@pytest.mark.parametrize("N", [51, 401])
+def test_matrices_are_the_transforms(N):
+    """pressure_matrix/line_load_matrix for a known edge apply the same operators as the
+    functions: equal up to the rounding of the sums, whose order differs (the functions add
+    the edge correction separately): 64 ulp of sum_j |M_ij v_j|, the size of the terms (the
+    differentiating (5.59) operator has terms ~1e3 times its result at N = 401)."""
+    eps = np.finfo(float).eps
+
+    def close(M, v, ref):
+        return np.all(np.abs(M @ v - ref) <= 64 * eps * (np.abs(M) @ np.abs(v)))
+
+    x, dx = grid(N)
+    for n in (2.0, 2.5, 4.0):
+        q, p = powerlaw_pair(n, x)
+        M, F = (abel.pressure_matrix(N, dx, edge=A_CONTACT),
+                abel.line_load_matrix(N, dx, edge=A_CONTACT))
+        assert close(M, q, abel.pressure_from_line_load(q, dx, edge=A_CONTACT))
+        assert close(F, p, abel.line_load_from_pressure(p, dx, edge=A_CONTACT))
+        assert not M[x >= A_CONTACT].any() and not M[:, x >= A_CONTACT].any()
+    # with a kink between two samples: the worn paraboloid's operator
+    a, b = 1.0, 0.3005
+    xx = np.linspace(0, 1.2, N)
+    q = np.where(xx < a, 0.1 - g.worn_g(1.0, b, np.minimum(xx, a)), 0.0)
+    pk = abel.pressure_from_line_load(q, xx[1], edge=a, kink=b)
+    Mk = abel.pressure_matrix(N, xx[1], edge=a, kink=b)
+    assert close(Mk, q, pk)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(N=1, dx=0.1, edge=0.05), "N = 1 is out of range"),
+    (dict(N=11, dx=-0.1, edge=0.5), "dx"),
+    (dict(N=11, dx=0.1, edge=2.0), "edge = 2.0 is out of range"),
+    (dict(N=11, dx=0.1, edge=0.5, degree=0), "degree = 0 is out of range"),
+    (dict(N=11, dx=0.1, edge=0.5, kink=0.6), "kink = 0.6 is out of range"),
+    (dict(N=11, dx=0.1, edge=0.5, kink=0.2), "is a grid point"),
+])
+def test_matrix_bad_input_raises(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        abel.pressure_matrix(**kwargs)
