@@ -5,7 +5,7 @@ f = s (r - b) for r > b added to a smooth profile. (5.52) gives its g(x) = s x a
 (x > b), and g' has a square-root branch point at x = b of strength
 B = lim_{x -> b} sqrt(x^2 - b^2) g'(x) = b s: g' = s acos(b/x) + b s / sqrt(x^2 - b^2). The
 first part is continuous; the second, put through (5.59), is an incomplete elliptic integral of
-the first kind (:func:`hertzmdr.derive.mdr.elliptic_abel_integral`), log-infinite at r = b.
+the first kind (:func:`hertzmdr.derive.mdr.branch_point_integral`), log-infinite at r = b.
 
 The numerical MDR (:mod:`hertzmdr.numeric.mdr`) adds this term analytically for every kink it
 is told of (``breakpoints``), and integrates only the continuous remainder by quadrature.
@@ -36,10 +36,7 @@ def solution() -> dict[str, sp.Expr]:
                                        (rr, b, x)))
     gp = sp.diff(g, x)
     strength = sp.simplify(sp.limit(sp.sqrt(x**2 - b**2) * gp, x, b, "+"))
-    L, S = sp.Max(r, b), sp.Min(r, b)
-    # as in worn.pressure: factored differences of squares, p = 0 for r >= a
-    integral = mdr.elliptic_abel_integral(sp.S.Zero, strength, L, S, a,
-                                          X=sp.Max(0, (a - L) * (a + L)), Q=(L - S) * (L + S))
+    integral = mdr.branch_point_integral(sp.S.Zero, strength, r, b, a)  # 0 for r >= a
     return {"g": g, "strength": strength, "p": E_star / sp.pi * integral}
 
 

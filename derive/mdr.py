@@ -44,7 +44,7 @@ t = sp.Symbol("t", positive=True)
 __all__ = ["MDRSolution", "solve", "transform", "inverse_transform", "force",
            "pressure", "displacement_outside", "line_load_from_pressure", "x", "t",
            "abel_kernel", "line_load_after_pressure", "profile_after_transform",
-           "elliptic_abel_integral"]
+           "elliptic_abel_integral", "branch_point_integral"]
 
 
 class StepTimeout(Exception):
@@ -212,6 +212,20 @@ def elliptic_abel_integral(A: sp.Expr, B: sp.Expr, L: sp.Expr, S: sp.Expr, upper
     result = (coef[al] * upper * sin_u + coef[be] * sp.elliptic_e(phi_u, m)
               + coef[ga] * sp.elliptic_f(phi_u, m))
     return result.subs({As: A, Bs: B, Ls: L, Ss: S}, simultaneous=True)
+
+
+def branch_point_integral(A: sp.Expr, B: sp.Expr, r: sp.Symbol, b: sp.Expr,
+                          upper: sp.Expr) -> sp.Expr:
+    """integral_{max(r, b)}^upper (A x^2 + B)/sqrt((x^2 - b^2)(x^2 - r^2)) dx, 0 for r >= upper.
+
+    The (5.59) integral of a g' with a square-root branch point at b (a kink of f, the edge of
+    a worn tip), for r on either side of b: :func:`elliptic_abel_integral` with L = max(r, b),
+    S = min(r, b), the differences of squares factored (full precision as r -> upper and
+    r -> b) and upper^2 - L^2 clipped at 0.
+    """
+    L, S = sp.Max(r, b), sp.Min(r, b)
+    return elliptic_abel_integral(A, B, L, S, upper, X=sp.Max(0, (upper - L) * (upper + L)),
+                                  Q=(L - S) * (L + S))
 
 
 @dataclass

@@ -75,19 +75,13 @@ def pressure(g: sp.Expr) -> sp.Expr:
     """(5.59): p(r) = (E*/pi) integral_{max(r, b)}^a g'(x)/sqrt(x^2 - r^2) dx (g' = 0 below b).
 
     R sqrt(x^2 - b^2) g'(x) is a polynomial A x^2 + B (checked), so the integrand is
-    (A x^2 + B)/(R sqrt((x^2 - L^2)(x^2 - S^2))) with L = max(r, b), S = min(r, b). For r >= a
-    the interval is empty: max(0, a^2 - L^2) in the amplitude makes p = 0 there.
+    (A x^2 + B)/(R sqrt((x^2 - b^2)(x^2 - r^2))): mdr.branch_point_integral, 0 for r >= a.
     """
     poly = sp.Poly(sp.expand(sp.simplify(R * sp.sqrt(x**2 - b**2) * sp.diff(g, x))), x)
     if poly.degree() != 2 or poly.coeff_monomial(x) != 0:
         raise AssertionError(f"R sqrt(x^2 - b^2) g' is not A x^2 + B: {poly}")
     A, B = poly.coeff_monomial(x**2), poly.coeff_monomial(1)
-    L, S = sp.Max(r, b), sp.Min(r, b)
-    # the differences of squares factored, so that they keep full precision as r -> a and
-    # r -> b, and a^2 - L^2 clipped at 0 (p = 0 for r >= a)
-    integral = mdr.elliptic_abel_integral(A, B, L, S, a, X=sp.Max(0, (a - L) * (a + L)),
-                                          Q=(L - S) * (L + S))
-    return E_star / (sp.pi * R) * integral
+    return E_star / (sp.pi * R) * mdr.branch_point_integral(A, B, r, b, a)
 
 
 def displacement_outside_stable() -> sp.Expr:
