@@ -80,6 +80,7 @@ from collections import OrderedDict
 
 import numpy as np
 
+from hertzmdr.numeric._quadrature import gauss
 from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
 __all__ = ["pressure_from_line_load", "line_load_from_pressure", "pressure_matrix",
@@ -93,7 +94,7 @@ _BLOCK = 48  # rows of the operator built at once (bounds the memory of the buil
 
 def _gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
     """Gauss-Legendre nodes mapped to [0, 1] and their weights (summing to 1)."""
-    t, w = np.polynomial.legendre.leggauss(n)
+    t, w = gauss(n)
     return (t + 1) / 2, w / 2
 
 
@@ -581,6 +582,21 @@ def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: 
     return block @ W.T
 
 
+def _check_degree(degree) -> None:
+    if isinstance(degree, bool) or not isinstance(degree, (int, np.integer)) or not (
+            1 <= degree <= 9):
+        raise ValueError(f"degree = {degree!r} is out of range; valid: an integer 1 <= degree "
+                         "<= 9")
+
+
+def _edge_over_dx(a: float, h: float, N: int) -> float:
+    """The edge a > 0 in units of dx = h, checked to lie on the grid of N samples."""
+    if not a / h <= N - 1:
+        raise ValueError(f"edge = {a!r} is out of range; valid: 0 < edge <= (N-1)*dx = "
+                         f"{(N - 1) * h!r}")
+    return a / h
+
+
 def _transform(direction, name, values, dx, edge, degree, kink=None):
     try:
         y = np.asarray(values, dtype=float)
@@ -594,18 +610,12 @@ def _transform(direction, name, values, dx, edge, degree, kink=None):
         i = tuple(int(k) for k in np.argwhere(~np.isfinite(y))[0])
         raise ValueError(f"{name}{list(i)} = {y[i]!r} is out of range; valid: finite numbers")
     h = dx if isinstance(dx, float) and 0 < dx < np.inf else float(positive("dx", dx))
-    if isinstance(degree, bool) or not isinstance(degree, (int, np.integer)) or not (
-            1 <= degree <= 9):
-        raise ValueError(f"degree = {degree!r} is out of range; valid: an integer 1 <= degree "
-                         "<= 9")
+    _check_degree(degree)
     N = y.shape[-1]
     x_edge = None
     if edge is not None:
         a = float(positive("edge", edge))
-        x_edge = a / h
-        if not (0 < x_edge <= N - 1):
-            raise ValueError(f"edge = {a!r} is out of range; valid: 0 < edge <= (N-1)*dx = "
-                             f"{(N - 1) * h!r}")
+        x_edge = _edge_over_dx(a, h, N)
         first_out = int(np.ceil(x_edge))
         tail = y[..., first_out:]
         beyond = np.abs(tail) > 1e-12 * np.max(np.abs(y))  # rounding-level values count as 0
@@ -734,15 +744,9 @@ def _matrix(direction: str, N, dx, edge, degree, kink=None) -> np.ndarray:
     if isinstance(N, bool) or not isinstance(N, (int, np.integer)) or N < 2:
         raise ValueError(f"N = {N!r} is out of range; valid: an integer N >= 2")
     h = float(positive("dx", dx))
-    if isinstance(degree, bool) or not isinstance(degree, (int, np.integer)) or not (
-            1 <= degree <= 9):
-        raise ValueError(f"degree = {degree!r} is out of range; valid: an integer 1 <= degree "
-                         "<= 9")
+    _check_degree(degree)
     a = float(positive("edge", edge))
-    x_edge = a / h
-    if not x_edge <= N - 1:
-        raise ValueError(f"edge = {a!r} is out of range; valid: 0 < edge <= (N-1)*dx = "
-                         f"{(N - 1) * h!r}")
+    x_edge = _edge_over_dx(a, h, N)
     K, A = _edge_index(np.zeros(N), x_edge)
     beta = None
     if kink is not None:

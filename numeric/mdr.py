@@ -56,33 +56,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric._quadrature import gauss as _gauss
+from hertzmdr.numeric._quadrature import panels as _panels
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["Profile", "Solution", "ForceDepthCurve"]
-
-_GL_CACHE: dict[int, tuple[np.ndarray, np.ndarray]] = {}
-
-
-def _gauss(m: int) -> tuple[np.ndarray, np.ndarray]:
-    if m not in _GL_CACHE:
-        _GL_CACHE[m] = np.polynomial.legendre.leggauss(m)
-    return _GL_CACHE[m]
-
-
-def _panels(lo, hi, breaks, m):
-    """Composite Gauss-Legendre nodes/weights on [lo, hi] (arrays, shape (M,)), split at the
-    sorted ``breaks`` (shape (M, B), values outside [lo, hi] clipped). Returns (M, P*m)."""
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    edges = np.concatenate([lo[:, None], np.clip(breaks, lo[:, None], hi[:, None]),
-                            hi[:, None]], axis=1)
-    edges = np.sort(edges, axis=1)
-    t, w = _gauss(m)
-    left, right = edges[:, :-1], edges[:, 1:]
-    half = (right - left) / 2
-    nodes = (left + half)[:, :, None] + half[:, :, None] * t
-    weights = half[:, :, None] * w
-    return nodes.reshape(len(lo), -1), weights.reshape(len(lo), -1)
-
 
 _GRADE = 0.5 ** np.arange(1, 31)  # geometric grading towards an endpoint: 2^-1 ... 2^-30
 

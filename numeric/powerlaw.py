@@ -166,16 +166,11 @@ def _pressure_quadrature(r, a, d, n, E_star, m=16):
     w = 2^j/L (j = -6, -5, ...), so that each panel sees at most a factor e^(2^j) of decay
     (measured against 30-digit quadrature: < 1e-14 for n = 40 ... 1e8, tests/test_powerlaw.py).
     """
+    from hertzmdr.numeric._quadrature import panels
+
     lam = n * (a - r) * (a + r) / a**2
     j = 2.0 ** np.arange(-6, 64)
-    edges = np.sort(np.concatenate([np.zeros((len(r), 1)),
-                                    np.clip(j[None, :] / lam[:, None], 0, 1),
-                                    np.ones((len(r), 1))], axis=1), axis=1)
-    t, wt = np.polynomial.legendre.leggauss(m)
-    lo, hi = edges[:, :-1], edges[:, 1:]
-    half = (hi - lo) / 2
-    w = ((lo + half)[:, :, None] + half[:, :, None] * t).reshape(len(r), -1)
-    wts = (half[:, :, None] * wt).reshape(len(r), -1)
+    w, wts = panels(np.zeros(len(r)), np.ones(len(r)), j[None, :] / lam[:, None], m)
     w[wts == 0] = 0.5  # the empty panels of clipped edges: any w in (0, 1), weight 0
 
     def col(v):
