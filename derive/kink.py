@@ -37,7 +37,12 @@ def solution() -> dict[str, sp.Expr]:
     gp = sp.diff(g, x)
     strength = sp.simplify(sp.limit(sp.sqrt(x**2 - b**2) * gp, x, b, "+"))
     integral = mdr.branch_point_integral(sp.S.Zero, strength, r, b, a)  # 0 for r >= a
-    return {"g": g, "strength": strength, "p": E_star / sp.pi * integral}
+    # the singular part of g' (x > b), factored at x -> b, and its integral from b
+    gp_sing = strength / sp.sqrt((x - b) * (x + b))
+    xx = sp.Symbol("xx", positive=True)
+    g_sing = sp.simplify(mdr._integrate(gp_sing.subs(x, xx), (xx, b, x)))
+    return {"g": g, "strength": strength, "p": E_star / sp.pi * integral,
+            "gp_sing": gp_sing, "g_sing": g_sing}
 
 
 def relations() -> list[Relation]:
@@ -49,4 +54,17 @@ def relations() -> list[Relation]:
                  "(5.59) of the singular part of g' for f = s (r - b), r > b",
                  f"{TEST}::test_kink_pressure_by_quadrature",
                  domain={r: a * unit_interval(), b: a * unit_interval("t_b")}),
+        Relation("mdr_kink_gprime", "(5.52)", sol["gp_sing"], (b, s, x),
+                 "branch-point term b s/sqrt(x^2 - b^2) [1] of g'(x), x > b, at a kink r = b "
+                 "where f' jumps by s",
+                 "lim sqrt(x^2 - b^2) g'(x), x -> b, of (5.52) for f = s (r - b)",
+                 f"{TEST}::test_kink_gprime_is_the_singular_part_of_52",
+                 domain={x: b / unit_interval()}),
+        Relation("mdr_kink_g", "(5.52)", sol["g_sing"], (b, s, x),
+                 "integral from b to x > b [m] of the branch-point term of g' at a kink r = b",
+                 "integral of mdr_kink_gprime", f"{TEST}::test_kink_g_by_quadrature",
+                 stable=2 * b * s * sp.asinh(sp.sqrt((x - b) / (2 * b))),
+                 stable_why="acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b "
+                 "(relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b)))",
+                 domain={x: b / unit_interval()}),
     ]

@@ -98,6 +98,8 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_kink_g',
+    'mdr_kink_gprime',
     'mdr_kink_pressure',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
@@ -242,6 +244,8 @@ RELATIONS = (
     ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
     ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
     ('line_stiffness', '(5.34), differentiated', 'line', 'pi*E_star*L/4', ''),
+    ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
+    ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
@@ -2287,6 +2291,50 @@ def line_stiffness(E_star, L):
     return (1/4)*numpy.pi*E_star*L
 
 
+def mdr_kink_g(b, slope_jump, x):
+    """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
+
+    Chapter: (5.52). Derived from: integral of mdr_kink_gprime.
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_g_by_quadrature``.
+
+    Printed in a stable form: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b
+    (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return 2*b*slope_jump*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(-b + x)/numpy.sqrt(b))
+
+
+def mdr_kink_gprime(b, slope_jump, x):
+    """Branch-point term b s/sqrt(x^2 - b^2) [1] of g'(x), x > b, at a kink r = b where f' jumps by s.
+
+    Chapter: (5.52). Derived from: lim sqrt(x^2 - b^2) g'(x), x -> b, of (5.52) for f = s (r
+    - b).
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_gprime_is_the_singular_part_of_52``.
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return b*slope_jump/(numpy.sqrt(-b + x)*numpy.sqrt(b + x))
+
+
 def mdr_kink_pressure(E_star, a, b, r, slope_jump):
     """Pressure p(r) [Pa] of the branch-point term b s/sqrt(x^2 - b^2) of g' at a kink r = b < a where f' jumps by s (log-infinite at r = b, 0 for r >= a).
 
@@ -3867,6 +3915,26 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
+
+
+def textbook_mdr_kink_g(b, slope_jump, x):
+    """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b, in the derived (textbook) form; use mdr_kink_g: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
+
+    Chapter: (5.52). Derived from: integral of mdr_kink_gprime.
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_g_by_quadrature``.
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return 2*b*slope_jump*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b))
 
 
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):

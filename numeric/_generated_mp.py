@@ -98,6 +98,8 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_kink_g',
+    'mdr_kink_gprime',
     'mdr_kink_pressure',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
@@ -2108,6 +2110,50 @@ def line_stiffness(E_star, L):
     return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
 
 
+def mdr_kink_g(b, slope_jump, x):
+    """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
+
+    Chapter: (5.52). Derived from: integral of mdr_kink_gprime.
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_g_by_quadrature``.
+
+    Printed in a stable form: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b
+    (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return 2*b*slope_jump*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(-b + x)/mpmath.sqrt(b))
+
+
+def mdr_kink_gprime(b, slope_jump, x):
+    """Branch-point term b s/sqrt(x^2 - b^2) [1] of g'(x), x > b, at a kink r = b where f' jumps by s.
+
+    Chapter: (5.52). Derived from: lim sqrt(x^2 - b^2) g'(x), x -> b, of (5.52) for f = s (r
+    - b).
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_gprime_is_the_singular_part_of_52``.
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return b*slope_jump/(mpmath.sqrt(-b + x)*mpmath.sqrt(b + x))
+
+
 def mdr_kink_pressure(E_star, a, b, r, slope_jump):
     """Pressure p(r) [Pa] of the branch-point term b s/sqrt(x^2 - b^2) of g' at a kink r = b < a where f' jumps by s (log-infinite at r = b, 0 for r >= a).
 
@@ -3632,6 +3678,26 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
+
+
+def textbook_mdr_kink_g(b, slope_jump, x):
+    """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b, in the derived (textbook) form; use mdr_kink_g: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
+
+    Chapter: (5.52). Derived from: integral of mdr_kink_gprime.
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_g_by_quadrature``.
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return 2*b*slope_jump*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b))
 
 
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):

@@ -201,9 +201,9 @@ class _Rep:
             if sel.any():
                 xs = x[sel]
                 if nu == 0:
-                    out[sel] += bj * sj * np.arccosh(xs / bj)
+                    out[sel] += gen.mdr_kink_g(bj, sj, xs)  # (5.52)
                 else:
-                    out[sel] += bj * sj / np.sqrt((xs - bj) * (xs + bj))
+                    out[sel] += gen.mdr_kink_gprime(bj, sj, xs)  # (5.52)
         return out
 
     def _ugrid(self):

@@ -43,6 +43,39 @@ def test_kink_strength_from_52():
             assert abs(strength / (b * s) - 1) < 10 * eps
 
 
+def test_kink_gprime_is_the_singular_part_of_52():
+    """g' of (5.52) for f = s (r - b), by quadrature and numerical differentiation at 40
+    digits, minus mdr_kink_gprime is the continuous rest s acos(b/x) -> 0 as x -> b: at
+    x = b (1 + e) it is s sqrt(2 e) while g' itself is s/sqrt(2 e)."""
+    s = 0.3
+    with mp.workdps(40):
+        b = mp.mpf(B)
+
+        def g_of(xx):  # (5.52) with r = x sin(theta): x integral s dtheta over r > b
+            return xx * mp.quad(lambda th: s, [mp.asin(b / xx), mp.pi / 2])
+
+        for e in ("1e-12", "1e-6", "0.5"):
+            x_f = float(b * (1 + mp.mpf(e)))  # the same float x on both sides
+            rest = mp.diff(g_of, mp.mpf(x_f)) - mp.mpf(g.mdr_kink_gprime(B, s, x_f))
+            # bound: the continuous part s acos(b/x) <= s sqrt(2e) (1 + e), plus the float64
+            # rounding of the generated term (s/sqrt(2e) times 1e-15)
+            e_ = float(e)
+            assert abs(rest) <= s * (2 * e_) ** 0.5 * (1 + e_) + 1e-15 * s / (2 * e_) ** 0.5
+
+
+def test_kink_g_by_quadrature():
+    """mdr_kink_g against integral_b^x b s/sqrt(t^2 - b^2) dt by 30-digit quadrature (t = b +
+    u^2 removes the 1/sqrt): a few ulp of the float64 evaluation."""
+    s = -0.7
+    for ratio in (1 + 1e-10, 1.001, 2.0, 1e3):
+        xx = B * ratio
+        with mp.workdps(30):
+            bm = mp.mpf(B)
+            ref = mp.quad(lambda u, bm=bm: 2 * bm * s / mp.sqrt(2 * bm + u * u),
+                          [0, mp.sqrt(mp.mpf(xx) - bm)])
+        assert_close(g.mdr_kink_g(B, s, xx), ref, 1e-14, f"x/b = {ratio}")
+
+
 def test_kink_pressure_by_quadrature():
     """float64 within a few ulp times the conditioning of F(phi|m) as m -> 1 (as in
     tests/test_worn.py); the mpmath form within 1e-25 of the 30-digit quadrature."""
