@@ -3,7 +3,7 @@ generated RELATIONS table) and what the tests verify them against. Used by bench
 
 from __future__ import annotations
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 
 FAMILIES = ("powerlaw", "worn", "kink")
 
@@ -22,10 +22,10 @@ def derivations_section() -> str:
            "`hertzmdr.derive.mdr.solve(f, r)` runs the same steps on a user's SymPy profile and "
            "reports those without a closed form.\n\n",
            "| function | chapter | returns | derived form |\n| --- | --- | --- | --- |\n"]
-    for name, eq, fam, expr, _ in g.RELATIONS:
+    for name, eq, fam, expr, _ in gen.RELATIONS:
         if fam not in FAMILIES:
             continue
-        summary = getattr(g, name).__doc__.strip().splitlines()[0].rstrip(".").replace("|", "\\|")
+        summary = getattr(gen, name).__doc__.strip().splitlines()[0].rstrip(".").replace("|", "\\|")
         form = expr if len(expr) <= 90 else expr[:87] + "..."
         out.append(f"| `{name}` | {eq} | {summary} | `{form}` |\n")
     return "".join(out) + "\n"

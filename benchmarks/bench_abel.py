@@ -27,7 +27,7 @@ from pathlib import Path
 import mpmath as mp
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import abel as habel
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
@@ -47,16 +47,16 @@ def _powerlaw(n):
 
     def p(r):
         if n >= 1.5:
-            return g.powerlaw_pressure(1.0, 1.0, 1.0, n, r)
-        return g.powerlaw_pressure_small_n(1.0, 1.0, 1.0, n, r)
+            return gen.powerlaw_pressure(1.0, 1.0, 1.0, n, r)
+        return gen.powerlaw_pressure_small_n(1.0, 1.0, 1.0, n, r)
     return q, p
 
 
 def _worn():
-    d = float(g.worn_depth(WORN_R, 1.0, WORN_B))
+    d = float(gen.worn_depth(WORN_R, 1.0, WORN_B))
 
     def q(x):
-        return np.where(x < 1, d - g.worn_g(WORN_R, WORN_B, np.minimum(x, 1)), 0.0)
+        return np.where(x < 1, d - gen.worn_g(WORN_R, WORN_B, np.minimum(x, 1)), 0.0)
 
     def p_ref(rho):
         """(5.59) by mpmath: (1/pi) int g'(x)/sqrt(x^2 - rho^2), x = lo + u^2 at both

@@ -13,7 +13,7 @@ import bench_abel
 import numpy as np
 from _mdr_doc import derivations_section, verification_section
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import mdr
 from hertzmdr.numeric import powerlaw as pl
 
@@ -56,10 +56,10 @@ def worn_errors(N, breakpoint, k):
     rr = np.concatenate([np.linspace(0.02, 0.98, 25) * b, b * (1 + np.array([-1e-6, 1e-6])),
                          b + np.linspace(0.02, 0.98, 25) * (a - b)])
     p, e = sol.pressure(rr, return_error=True)
-    p_ref = g.worn_pressure(E, Rv, a, b, rr)  # Problem 8 in closed form (derive/worn.py)
+    p_ref = gen.worn_pressure(E, Rv, a, b, rr)  # Problem 8 in closed form (derive/worn.py)
     ep = np.abs(p / p_ref - 1)
-    return dict(F=abs(sol.force / g.worn_force(E, Rv, b, d) - 1),
-                a=abs(a / g.worn_contact_radius(Rv, b, d) - 1),
+    return dict(F=abs(sol.force / gen.worn_force(E, Rv, b, d) - 1),
+                a=abs(a / gen.worn_contact_radius(Rv, b, d) - 1),
                 est=sol.rel_error, p=float(np.max(ep)), p_est=float(np.max(e / p)),
                 honest=bool(np.all(e / p >= ep)))
 
@@ -70,7 +70,7 @@ def noisy_errors(N, sigma, seed=0):
     f = r**2 / 2 + sigma * rng.standard_normal(r.size)
     f[0] = 0
     sol = mdr.Profile.from_samples(r, f, smoothing="gcv").solve(depth=0.25, E_star=E)
-    return dict(F=abs(sol.force / g.hertz_force(E, 1.0, 0.25) - 1), est=sol.rel_error)
+    return dict(F=abs(sol.force / gen.hertz_force(E, 1.0, 0.25) - 1), est=sol.rel_error)
 
 
 def kinked_reference(radii, n=2.5, b=0.4, c2=1.0, a_target=0.7, dps=20):

@@ -26,15 +26,15 @@ def _mp_digits(fn, args, dps):
 
 
 def hertz_force() -> Quantity:
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
 
     E, R, d = E_STEEL, 0.5, 1e-5
 
     def truth():
         import mpmath as mp
 
-        return gm.hertz_force(mp.mpf(E), mp.mpf(R), mp.mpf(d))
+        return gen_mp.hertz_force(mp.mpf(E), mp.mpf(R), mp.mpf(d))
 
     def ways():
         import math
@@ -42,24 +42,24 @@ def hertz_force() -> Quantity:
         import mpmath as mp
         from scipy.integrate import quad
 
-        a = float(g.hertz_contact_radius(R, d))
-        out = [Way("closed form", "float64", lambda: g.hertz_force(E, R, d))]
+        a = float(gen.hertz_contact_radius(R, d))
+        out = [Way("closed form", "float64", lambda: gen.hertz_force(E, R, d))]
         for eps in (1e-3, 1e-6, 1e-9, 1e-12):
             out.append(Way("SciPy quad of the pressure (5.17)", f"epsrel={eps:g}",
-                           lambda eps=eps: quad(lambda r: g.hertz_pressure(E, R, d, r) * 2
+                           lambda eps=eps: quad(lambda r: gen.hertz_pressure(E, R, d, r) * 2
                                                 * math.pi * r, 0, a, epsrel=eps,
                                                 epsabs=0)[0]))
         for dps in (15, 30, 50, 100):
             def mp_quad(dps=dps):
                 with mp.workdps(dps):
                     Em, Rm, dm = mp.mpf(E), mp.mpf(R), mp.mpf(d)
-                    am = gm.hertz_contact_radius(Rm, dm)
-                    return +mp.quad(lambda r: gm.hertz_pressure(Em, Rm, dm, r) * 2 * mp.pi * r,
+                    am = gen_mp.hertz_contact_radius(Rm, dm)
+                    return +mp.quad(lambda r: gen_mp.hertz_pressure(Em, Rm, dm, r) * 2 * mp.pi * r,
                                     [0, am])
             out.append(Way("mpmath quad of the pressure (5.17)", f"{dps} digits", mp_quad))
         for dps in (15, 30, 50, 100):
             out.append(Way("closed form in mpmath", f"{dps} digits",
-                           _mp_digits(gm.hertz_force, (E, R, d), dps)))
+                           _mp_digits(gen_mp.hertz_force, (E, R, d), dps)))
         return out
 
     return Quantity("Hertz force F(d)",
@@ -69,36 +69,37 @@ def hertz_force() -> Quantity:
 
 
 def hertz_far_displacement() -> Quantity:
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
 
     R, d = 0.5, 1e-5
-    a = float(g.hertz_contact_radius(R, d))  # (5.21)
+    a = float(gen.hertz_contact_radius(R, d))  # (5.21)
     r = 1e4 * a
 
     def truth():
         import mpmath as mp
 
-        return gm.hertz_displacement_outside(mp.mpf(R), mp.mpf(d), mp.mpf(r))
+        return gen_mp.hertz_displacement_outside(mp.mpf(R), mp.mpf(d), mp.mpf(r))
 
     def ways():
-        p0_over_E = float(g.hertz_max_pressure(1.0, R, d))
+        p0_over_E = float(gen.hertz_max_pressure(1.0, R, d))
         out = [
             Way("stable closed form (hypergeometric)", "float64",
-                lambda: g.hertz_displacement_outside(R, d, r)),
+                lambda: gen.hertz_displacement_outside(R, d, r)),
             Way("textbook closed form (Problem 7 b)", "float64",
-                lambda: g.hertz_pressure_displacement_outside(1.0, a, p0_over_E, r)),
+                lambda: gen.hertz_pressure_displacement_outside(1.0, a, p0_over_E, r)),
         ]
         for dps in (15, 30, 50):
             out.append(Way("stable closed form in mpmath", f"{dps} digits",
-                           _mp_digits(gm.hertz_displacement_outside, (R, d, r), dps)))
+                           _mp_digits(gen_mp.hertz_displacement_outside, (R, d, r), dps)))
             def textbook(dps=dps):
                 import mpmath as mp
 
                 with mp.workdps(dps):
                     Rm, dm = mp.mpf(R), mp.mpf(d)
-                    am, pm = gm.hertz_contact_radius(Rm, dm), gm.hertz_max_pressure(1, Rm, dm)
-                    return +gm.hertz_pressure_displacement_outside(1, am, pm, mp.mpf(r))
+                    am = gen_mp.hertz_contact_radius(Rm, dm)
+                    pm = gen_mp.hertz_max_pressure(1, Rm, dm)
+                    return +gen_mp.hertz_pressure_displacement_outside(1, am, pm, mp.mpf(r))
             out.append(Way("textbook closed form in mpmath", f"{dps} digits", textbook))
         return out
 
@@ -109,8 +110,8 @@ def hertz_far_displacement() -> Quantity:
 
 
 def kappa_large_n() -> Quantity:
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
     from hertzmdr.numeric import powerlaw
 
     n = 1e3
@@ -118,7 +119,7 @@ def kappa_large_n() -> Quantity:
     def truth():
         import mpmath as mp
 
-        return gm.powerlaw_kappa(mp.mpf(n))
+        return gen_mp.powerlaw_kappa(mp.mpf(n))
 
     def ways():
         import warnings
@@ -126,15 +127,15 @@ def kappa_large_n() -> Quantity:
         def ratio():
             with warnings.catch_warnings(), __import__("numpy").errstate(all="ignore"):
                 warnings.simplefilter("ignore")
-                return g.powerlaw_kappa(n)
+                return gen.powerlaw_kappa(n)
         out = [Way("Gamma ratio (the derived form)", "float64", ratio),
                Way("Stirling series (large-n expansion)", "float64",
-                   lambda: g.powerlaw_kappa_asymptotic(n)),
+                   lambda: gen.powerlaw_kappa_asymptotic(n)),
                Way("numeric.powerlaw.kappa (picks the series above n = 40)", "float64",
                    lambda: powerlaw.kappa(n))]
         for dps in (15, 30, 50):
             out.append(Way("Gamma ratio in mpmath", f"{dps} digits",
-                           _mp_digits(gm.powerlaw_kappa, (n,), dps)))
+                           _mp_digits(gen_mp.powerlaw_kappa, (n,), dps)))
         return out
 
     return Quantity("kappa_n at n = 1000",
@@ -144,8 +145,8 @@ def kappa_large_n() -> Quantity:
 
 
 def worn_small_depth() -> Quantity:
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
 
     E, R, b = 1e9, 0.1, 1e-3
     d = 1e-6 * b**2 / (2 * R)  # 2 R d/b^2 = 1e-6
@@ -153,17 +154,17 @@ def worn_small_depth() -> Quantity:
     def truth():
         import mpmath as mp
 
-        return gm.worn_force(*(mp.mpf(v) for v in (E, R, b, d)))
+        return gen_mp.worn_force(*(mp.mpf(v) for v in (E, R, b, d)))
 
     def ways():
-        out = [Way("stable form (hertzmdr)", "float64", lambda: g.worn_force(E, R, b, d)),
+        out = [Way("stable form (hertzmdr)", "float64", lambda: gen.worn_force(E, R, b, d)),
                Way("the chapter's F(d) (Problem 8)", "float64",
-                   lambda: g.textbook_worn_force(E, R, b, d))]
+                   lambda: gen.textbook_worn_force(E, R, b, d))]
         for dps in (15, 30, 50):
             out.append(Way("the chapter's F(d) in mpmath", f"{dps} digits",
-                           _mp_digits(gm.textbook_worn_force, (E, R, b, d), dps)))
+                           _mp_digits(gen_mp.textbook_worn_force, (E, R, b, d), dps)))
             out.append(Way("stable form in mpmath", f"{dps} digits",
-                           _mp_digits(gm.worn_force, (E, R, b, d), dps)))
+                           _mp_digits(gen_mp.worn_force, (E, R, b, d), dps)))
         return out
 
     return Quantity("worn parabola F(d) at 2Rd/b^2 = 1e-6",
@@ -173,8 +174,8 @@ def worn_small_depth() -> Quantity:
 
 
 def powerlaw_pressure_large_n() -> Quantity:
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
     from hertzmdr.numeric import powerlaw
 
     E, a, d, n = 1e9, 1e-3, 1e-6, 1001.0
@@ -198,14 +199,14 @@ def powerlaw_pressure_large_n() -> Quantity:
 
         args = [np.atleast_1d(v) for v in (r, a, d, n, E)]
         out = [Way("2F1 closed form (SciPy hyp2f1)", "float64",
-                   lambda: g.powerlaw_pressure(E, a, d, n, r))]
+                   lambda: gen.powerlaw_pressure(E, a, d, n, r))]
         for m in (4, 8, 16):
             out.append(Way("Gauss-Legendre of the (5.59) integrand (hertzmdr: 16)",
                            f"{m} points a panel",
                            lambda m=m: powerlaw._pressure_quadrature(*args[:4], args[4], m=m)[0]))
         for dps in (15, 30):
             out.append(Way("2F1 closed form in mpmath", f"{dps} digits",
-                           _mp_digits(gm.powerlaw_pressure, (E, a, d, n, r), dps)))
+                           _mp_digits(gen_mp.powerlaw_pressure, (E, a, d, n, r), dps)))
         return out
 
     return Quantity("power-law pressure, n = 1001, at r = a/10",
@@ -218,15 +219,15 @@ def powerlaw_pressure_large_n() -> Quantity:
 def numerical_mdr_force() -> Quantity:
     import numpy as np
 
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated_mp as gen_mp
 
     E, c, n, d = 1e9, 1e2, 2.5, 1e-6  # n = 2.5: no spline represents r^2.5 exactly
 
     def truth():
         import mpmath as mp
 
-        return gm.powerlaw_force(mp.mpf(E), mp.mpf(c), mp.mpf(d),
-                                 gm.powerlaw_kappa(mp.mpf(n)), mp.mpf(n))
+        return gen_mp.powerlaw_force(mp.mpf(E), mp.mpf(c), mp.mpf(d),
+                                 gen_mp.powerlaw_kappa(mp.mpf(n)), mp.mpf(n))
 
     def ways():
         from hertzmdr.numeric import mdr, powerlaw
@@ -247,17 +248,17 @@ def numerical_mdr_force() -> Quantity:
 
 
 def impact_time() -> Quantity:
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
     from hertzmdr.numeric import impact, motion
 
     E, R, v0 = E_STEEL, 0.01, 1.0
-    m = float(g.impact_sphere_mass(R, 7800.0))  # the steel ball of Problem 3
+    m = float(gen.impact_sphere_mass(R, 7800.0))  # the steel ball of Problem 3
 
     def truth():
         import mpmath as mp
 
-        return gm.impact_contact_time(mp.mpf(E), mp.mpf(R), mp.mpf(m), mp.mpf(v0))
+        return gen_mp.impact_contact_time(mp.mpf(E), mp.mpf(R), mp.mpf(m), mp.mpf(v0))
 
     def ways():
         out = [Way("closed form (Problem 3)", "float64",
@@ -272,7 +273,7 @@ def impact_time() -> Quantity:
 
                 with mp.workdps(dps):
                     Em, Rm, mm, vm = (mp.mpf(v) for v in (E, R, m, v0))
-                    x0 = gm.impact_max_depth(Em, Rm, mm, vm)
+                    x0 = gen_mp.impact_max_depth(Em, Rm, mm, vm)
                     # tau = (2 x0/v0) * integral_0^1 dxi / sqrt(1 - xi^(5/2)) (Problem 3); with
                     # t = xi^(5/2) it is (2/5) integral_0^1 t^(-3/5) (1 - t)^(-1/2) dt, split at
                     # 1/2: t = u^5 on the left, 1 - t = v^2 on the right; both are then smooth
@@ -291,7 +292,7 @@ def impact_time() -> Quantity:
 
 
 def stress_superposition() -> Quantity:
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated_mp as gen_mp
     from hertzmdr.numeric import stress
 
     a, p0, nu, z = 1e-3, 1e9, 0.3, 0.02e-3  # near the surface, where the kernel is sharp
@@ -299,7 +300,7 @@ def stress_superposition() -> Quantity:
     def truth():
         import mpmath as mp
 
-        return gm.stress_axis_sigma_zz(mp.mpf(a), mp.mpf(p0), mp.mpf(z))
+        return gen_mp.stress_axis_sigma_zz(mp.mpf(a), mp.mpf(p0), mp.mpf(z))
 
     def ways():
         import numpy as np

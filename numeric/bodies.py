@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import (
     as_float,
     between,
@@ -57,7 +57,7 @@ def effective_modulus(E1, nu1, E2=None, nu2=None):
     """
     E1, nu1 = positive("E1", E1), poisson("nu1", nu1)
     if E2 is None:
-        return result(g.bodies_effective_modulus_rigid(E1, nu1))  # (5.8)
+        return result(gen.bodies_effective_modulus_rigid(E1, nu1))  # (5.8)
     E2 = positive("E2", E2, allow_inf=True)
     if nu2 is None:
         if np.isfinite(E2).any():
@@ -65,7 +65,7 @@ def effective_modulus(E1, nu1, E2=None, nu2=None):
                              "unless body 2 is rigid (E2 = None or inf)")
         nu2 = 0.0  # does not matter: (1 - nu2^2)/inf = 0
     nu2 = poisson("nu2", nu2)
-    return result(g.bodies_effective_modulus(E1, nu1, E2, nu2))  # (5.26)
+    return result(gen.bodies_effective_modulus(E1, nu1, E2, nu2))  # (5.26)
 
 
 def effective_radius(R1, R2=np.inf):
@@ -94,7 +94,7 @@ def effective_radius(R1, R2=np.inf):
         r2 = np.broadcast_to(R2, total.shape)[tuple(idx)]
         raise ValueError(f"R1 = {r1!r}, R2 = {r2!r}: the sum of the curvatures 1/R1 + 1/R2 "
                          "must be > 0 (a concave surface must be flatter than the convex one)")
-    return result(g.bodies_effective_radius(R1, R2))  # (5.27)
+    return result(gen.bodies_effective_radius(R1, R2))  # (5.27)
 
 
 def _radii_from_curvatures(k1, k2, names):
@@ -142,8 +142,8 @@ def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
     w = as_float("omega", omega)
     if not np.isfinite(w).all():
         raise ValueError(f"omega = {omega!r}: must be finite")
-    k1 = g.bodies_principal_curvature_1(*args, w)
-    k2 = g.bodies_principal_curvature_2(*args, w)
+    k1 = gen.bodies_principal_curvature_1(*args, w)
+    k2 = gen.bodies_principal_curvature_2(*args, w)
     return _radii_from_curvatures(k1, k2, "principal_radii")
 
 
@@ -167,8 +167,8 @@ def crossed_cylinder_radii(R1, R2, alpha):
     """
     R1, R2 = positive("R1", R1, allow_inf=True), positive("R2", R2, allow_inf=True)
     alpha = between("alpha", alpha, 0.0, np.pi, lo_open=False, hi_open=False)
-    k1 = g.bodies_crossed_cylinders_curvature_1(R1, R2, alpha)
-    k2 = g.bodies_crossed_cylinders_curvature_2(R1, R2, alpha)
+    k1 = gen.bodies_crossed_cylinders_curvature_1(R1, R2, alpha)
+    k2 = gen.bodies_crossed_cylinders_curvature_2(R1, R2, alpha)
     return _radii_from_curvatures(k1, k2, "crossed_cylinder_radii")
 
 
@@ -182,7 +182,7 @@ def crossed_cylinders_gaussian_radius(R1, R2, alpha):
     alpha : float or array_like
         Angle between the axes [rad], 0 < alpha < pi.
     """
-    return result(g.bodies_crossed_cylinders_gaussian_radius(
+    return result(gen.bodies_crossed_cylinders_gaussian_radius(
         positive("R1", R1), positive("R2", R2), between("alpha", alpha, 0.0, np.pi)))
 
 
@@ -194,7 +194,7 @@ def gaussian_radius(R1, R2):
     R1, R2 : float or array_like
         Principal radii of the gap [m], R > 0 and finite.
     """
-    return result(g.bodies_gaussian_radius(positive("R1", R1), positive("R2", R2)))
+    return result(gen.bodies_gaussian_radius(positive("R1", R1), positive("R2", R2)))
 
 
 def gaussian_approx_semi_axes(d, R1, R2):
@@ -211,8 +211,8 @@ def gaussian_approx_semi_axes(d, R1, R2):
         Principal radii of the gap [m], R > 0 and finite.
     """
     d, R1, R2 = nonnegative("d", d), positive("R1", R1), positive("R2", R2)
-    return (result(g.bodies_gaussian_approx_semi_axis_1(R1, d)),
-            result(g.bodies_gaussian_approx_semi_axis_2(R2, d)))
+    return (result(gen.bodies_gaussian_approx_semi_axis_1(R1, d)),
+            result(gen.bodies_gaussian_approx_semi_axis_2(R2, d)))
 
 
 def gaussian_approx_area(d, R1, R2):
@@ -220,7 +220,7 @@ def gaussian_approx_area(d, R1, R2):
 
     Parameters as :func:`gaussian_approx_semi_axes`.
     """
-    return result(g.bodies_gaussian_approx_area(positive("R1", R1), positive("R2", R2),
+    return result(gen.bodies_gaussian_approx_area(positive("R1", R1), positive("R2", R2),
                                                 nonnegative("d", d)))
 
 
@@ -236,7 +236,7 @@ def gaussian_approx_max_pressure(d, R1, R2, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.bodies_gaussian_approx_max_pressure(
+    return result(gen.bodies_gaussian_approx_max_pressure(
         positive("E_star", E_star), positive("R1", R1), positive("R2", R2),
         nonnegative("d", d)))
 
@@ -247,7 +247,7 @@ def gaussian_approx_force(d, R1, R2, E_star):
     The chapter (footnote 5) quotes 2.5 % accuracy up to R1/R2 = 10. Parameters as
     :func:`gaussian_approx_max_pressure`.
     """
-    return result(g.bodies_gaussian_approx_force(
+    return result(gen.bodies_gaussian_approx_force(
         positive("E_star", E_star), positive("R1", R1), positive("R2", R2),
         nonnegative("d", d)))
 
@@ -265,7 +265,7 @@ def gaussian_approx_depth_from_force(F, R1, R2, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.bodies_gaussian_approx_depth_from_force(
+    return result(gen.bodies_gaussian_approx_depth_from_force(
         positive("E_star", E_star), nonnegative("F", F), positive("R1", R1),
         positive("R2", R2)))
 
@@ -289,6 +289,6 @@ def gaussian_approx_pressure(x, y, d, R1, R2, E_star):
     for name, v in (("x", x), ("y", y)):
         if not np.isfinite(v).all():
             raise ValueError(f"{name} must be finite")
-    return result(g.bodies_gaussian_approx_pressure(
+    return result(gen.bodies_gaussian_approx_pressure(
         positive("E_star", E_star), positive("R1", R1), positive("R2", R2), positive("d", d),
         x, y))

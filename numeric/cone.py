@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import between, nonnegative, positive, result
 
 __all__ = ["contact_radius", "depth", "force", "pressure", "mean_pressure", "stiffness",
@@ -32,7 +32,7 @@ def contact_radius(d, theta):
     theta : float or array_like
         Angle between the cone's surface and the plane [rad], 0 < theta < pi/2.
     """
-    return result(g.cone_contact_radius(nonnegative("d", d), _theta(theta)))
+    return result(gen.cone_contact_radius(nonnegative("d", d), _theta(theta)))
 
 
 def depth(a, theta):
@@ -45,7 +45,7 @@ def depth(a, theta):
     theta : float or array_like
         Angle between the cone's surface and the plane [rad], 0 < theta < pi/2.
     """
-    return result(g.cone_depth(nonnegative("a", a), _theta(theta)))
+    return result(gen.cone_depth(nonnegative("a", a), _theta(theta)))
 
 
 def force(d, theta, E_star):
@@ -60,7 +60,7 @@ def force(d, theta, E_star):
     E_star : float or array_like
         Effective modulus (5.8)/(5.26) [Pa], E_star > 0.
     """
-    return result(g.cone_force(positive("E_star", E_star), nonnegative("d", d),
+    return result(gen.cone_force(positive("E_star", E_star), nonnegative("d", d),
                                _theta(theta)))
 
 
@@ -82,12 +82,12 @@ def pressure(r, d, theta, E_star):
     """
     r, d, theta, E_star = np.broadcast_arrays(nonnegative("r", r), nonnegative("d", d),
                                               _theta(theta), positive("E_star", E_star))
-    a = g.cone_contact_radius(d, theta)
+    a = gen.cone_contact_radius(d, theta)
     out = np.zeros(r.shape)
     tip = (r == 0) & (a > 0)
     out[tip] = np.inf
     inside = (r > 0) & (r < a)
-    out[inside] = g.cone_pressure(E_star[inside], d[inside], theta[inside], r[inside])  # (5.39)
+    out[inside] = gen.cone_pressure(E_star[inside], d[inside], theta[inside], r[inside])  # (5.39)
     return result(out)
 
 
@@ -101,12 +101,12 @@ def mean_pressure(theta, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.cone_mean_pressure(positive("E_star", E_star), _theta(theta)))
+    return result(gen.cone_mean_pressure(positive("E_star", E_star), _theta(theta)))
 
 
 def stiffness(d, theta, E_star):
     """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`."""
-    return result(g.cone_stiffness(positive("E_star", E_star), nonnegative("d", d),
+    return result(gen.cone_stiffness(positive("E_star", E_star), nonnegative("d", d),
                                    _theta(theta)))
 
 
@@ -120,7 +120,7 @@ def depth_from_force(F, theta, E_star):
     theta, E_star
         As in :func:`force`.
     """
-    return result(g.cone_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+    return result(gen.cone_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
                                           _theta(theta)))
 
 
@@ -129,5 +129,5 @@ def contact_radius_from_force(F, theta, E_star):
 
     Parameters as :func:`depth_from_force`.
     """
-    return result(g.cone_contact_radius_from_force(positive("E_star", E_star),
+    return result(gen.cone_contact_radius_from_force(positive("E_star", E_star),
                                                    nonnegative("F", F), _theta(theta)))

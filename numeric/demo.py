@@ -37,9 +37,9 @@ def print_relations(families: list[str] | None, out=sys.stdout) -> int:
     this listing needs no SymPy and no derivation at run time."""
     import inspect
 
-    from hertzmdr.numeric import _generated as g
+    from hertzmdr.numeric import _generated as gen
 
-    relations = [r for r in g.RELATIONS if families is None or r[2] in families]
+    relations = [r for r in gen.RELATIONS if families is None or r[2] in families]
     count = 0
     for fam in sorted({r[2] for r in relations}):
         print(f"\n== hertzmdr.derive.{fam} ==", file=out)
@@ -47,7 +47,7 @@ def print_relations(families: list[str] | None, out=sys.stdout) -> int:
             if family != fam:
                 continue
             flag = "!" if erratum else " "
-            args = ", ".join(inspect.signature(getattr(g, name)).parameters)
+            args = ", ".join(inspect.signature(getattr(gen, name)).parameters)
             text = f"{name}({args}) = {formula}"
             if len(text) > WIDTH:
                 text = text[: WIDTH - 1] + "…"

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 from hertzmdr.numeric.bodies import gaussian_radius  # (5.30): re-exported, owned by bodies
 
@@ -78,12 +78,12 @@ def axis_ratio(R1, R2):
     lo = -0.5 * np.log(q * (2 + np.log(q)))  # f(lo) > 0
     hi = np.zeros_like(q)  # f(hi) <= 0
     logq = np.log(q)
-    f_lo = np.log(g.ellipse_radius_ratio(np.exp(lo))) - logq
+    f_lo = np.log(gen.ellipse_radius_ratio(np.exp(lo))) - logq
     if np.any(f_lo <= 0):  # never for 1 <= q <= 1e8; kept as a guard against a silent bracket
         raise RuntimeError("axis_ratio: the eccentricity equation is not bracketed")
     for _ in range(64):
         mid = 0.5 * (lo + hi)
-        f_mid = np.log(g.ellipse_radius_ratio(np.exp(mid))) - logq
+        f_mid = np.log(gen.ellipse_radius_ratio(np.exp(mid))) - logq
         pos = f_mid > 0
         lo = np.where(pos, mid, lo)
         hi = np.where(pos, hi, mid)
@@ -138,13 +138,13 @@ class EllipticContact:
         """
         x, y = as_float("x", x), as_float("y", y)
         if self.model == "gaussian":  # (5.31) with (5.28), (5.22) and R~ (5.30)
-            return result(g.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2,
+            return result(gen.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2,
                                                             self.depth, x, y))
         major_x = np.asarray(self.R1 >= self.R2)  # the generated form has x along the major axis
         xm, ym = np.where(major_x, x, y), np.where(major_x, y, x)
         Rmaj = np.maximum(self.R1, self.R2)
         t = np.minimum(self.a, self.b) / np.maximum(self.a, self.b)
-        return result(g.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym))  # (5.31)
+        return result(gen.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym))  # (5.31)
 
 
 def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> EllipticContact:
@@ -176,29 +176,29 @@ def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> El
     _ratio(R1, R2)  # validates R1, R2 and their ratio
     R1, R2, E = positive("R1", R1), positive("R2", R2), positive("E_star", E_star)
     if model == "gaussian":  # the chapter's estimate, owned by derive/bodies.py
-        Rt = g.bodies_gaussian_radius(R1, R2)  # (5.30)
+        Rt = gen.bodies_gaussian_radius(R1, R2)  # (5.30)
         d = (nonnegative("depth", depth) if force is None
-             else g.bodies_gaussian_approx_depth_from_force(
+             else gen.bodies_gaussian_approx_depth_from_force(
                  E, nonnegative("force", force), R1, R2))  # (5.24) with R~
-        a = g.bodies_gaussian_approx_semi_axis_1(R1, d)  # (5.28)
-        b = g.bodies_gaussian_approx_semi_axis_2(R2, d)
-        F = g.bodies_gaussian_approx_force(E, R1, R2, d)  # (5.23) with R~
-        p0 = g.bodies_gaussian_approx_max_pressure(E, R1, R2, d)  # (5.22) with R~
-        pm, k = g.hertz_mean_pressure(E, Rt, d), g.hertz_stiffness(E, Rt, d)  # R -> R~
-        area = g.bodies_gaussian_approx_area(R1, R2, d)  # (5.29)
+        a = gen.bodies_gaussian_approx_semi_axis_1(R1, d)  # (5.28)
+        b = gen.bodies_gaussian_approx_semi_axis_2(R2, d)
+        F = gen.bodies_gaussian_approx_force(E, R1, R2, d)  # (5.23) with R~
+        p0 = gen.bodies_gaussian_approx_max_pressure(E, R1, R2, d)  # (5.22) with R~
+        pm, k = gen.hertz_mean_pressure(E, Rt, d), gen.hertz_stiffness(E, Rt, d)  # R -> R~
+        area = gen.bodies_gaussian_approx_area(R1, R2, d)  # (5.29)
     else:
         t = np.asarray(axis_ratio(R1, R2))
         Rmaj = np.maximum(R1, R2)  # a_major lies along the larger radius
         d = (nonnegative("depth", depth) if force is None
-             else g.ellipse_depth_from_force(E, nonnegative("force", force), Rmaj, t))
-        a_maj, b_min = g.ellipse_semi_major(Rmaj, d, t), g.ellipse_semi_minor(Rmaj, d, t)
+             else gen.ellipse_depth_from_force(E, nonnegative("force", force), Rmaj, t))
+        a_maj, b_min = gen.ellipse_semi_major(Rmaj, d, t), gen.ellipse_semi_minor(Rmaj, d, t)
         along_x = R1 >= R2
         a, b = np.where(along_x, a_maj, b_min), np.where(along_x, b_min, a_maj)
-        F = g.ellipse_force(E, Rmaj, d, t)
-        p0 = g.ellipse_max_pressure(E, Rmaj, d, t)
-        pm = g.ellipse_mean_pressure(E, Rmaj, d, t)
-        k = g.ellipse_stiffness(E, Rmaj, d, t)
-        area = g.ellipse_area(Rmaj, d, t)
+        F = gen.ellipse_force(E, Rmaj, d, t)
+        p0 = gen.ellipse_max_pressure(E, Rmaj, d, t)
+        pm = gen.ellipse_mean_pressure(E, Rmaj, d, t)
+        k = gen.ellipse_stiffness(E, Rmaj, d, t)
+        area = gen.ellipse_area(Rmaj, d, t)
     shape = np.broadcast(R1, R2, E, d).shape
     out = {name: np.broadcast_to(v, shape) * 1.0 for name, v in dict(
         a=a, b=b, depth=d, force=F, max_pressure=p0, mean_pressure=pm, stiffness=k,

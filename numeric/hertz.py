@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import nonnegative, positive, result
 
 __all__ = [
@@ -31,7 +31,7 @@ def contact_radius(d, R):
     R : float or array_like
         Effective radius of curvature [m], R > 0.
     """
-    return result(g.hertz_contact_radius(positive("R", R), nonnegative("d", d)))
+    return result(gen.hertz_contact_radius(positive("R", R), nonnegative("d", d)))
 
 
 def max_pressure(d, R, E_star):
@@ -46,19 +46,19 @@ def max_pressure(d, R, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.hertz_max_pressure(positive("E_star", E_star), positive("R", R),
+    return result(gen.hertz_max_pressure(positive("E_star", E_star), positive("R", R),
                                        nonnegative("d", d)))
 
 
 def mean_pressure(d, R, E_star):
     """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`."""
-    return result(g.hertz_mean_pressure(positive("E_star", E_star), positive("R", R),
+    return result(gen.hertz_mean_pressure(positive("E_star", E_star), positive("R", R),
                                         nonnegative("d", d)))
 
 
 def force(d, R, E_star):
     """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`."""
-    return result(g.hertz_force(positive("E_star", E_star), positive("R", R),
+    return result(gen.hertz_force(positive("E_star", E_star), positive("R", R),
                                 nonnegative("d", d)))
 
 
@@ -67,7 +67,7 @@ def energy(d, R, E_star):
 
     Parameters as :func:`max_pressure`.
     """
-    return result(g.hertz_energy(positive("E_star", E_star), positive("R", R),
+    return result(gen.hertz_energy(positive("E_star", E_star), positive("R", R),
                                  nonnegative("d", d)))
 
 
@@ -76,7 +76,7 @@ def stiffness(d, R, E_star):
 
     Parameters as :func:`max_pressure`.
     """
-    return result(g.hertz_stiffness(positive("E_star", E_star), positive("R", R),
+    return result(gen.hertz_stiffness(positive("E_star", E_star), positive("R", R),
                                     nonnegative("d", d)))
 
 
@@ -92,7 +92,7 @@ def depth_from_force(F, R, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.hertz_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+    return result(gen.hertz_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
                                            positive("R", R)))
 
 
@@ -101,7 +101,7 @@ def contact_radius_from_force(F, R, E_star):
 
     Parameters as :func:`depth_from_force`.
     """
-    return result(g.hertz_contact_radius_from_force(positive("E_star", E_star),
+    return result(gen.hertz_contact_radius_from_force(positive("E_star", E_star),
                                                     nonnegative("F", F), positive("R", R)))
 
 
@@ -110,7 +110,7 @@ def max_pressure_from_force(F, R, E_star):
 
     Parameters as :func:`depth_from_force`.
     """
-    return result(g.hertz_max_pressure_from_force(positive("E_star", E_star),
+    return result(gen.hertz_max_pressure_from_force(positive("E_star", E_star),
                                                   nonnegative("F", F), positive("R", R)))
 
 
@@ -126,7 +126,7 @@ def pressure(r, d, R, E_star):
     R, E_star
         As in :func:`max_pressure`.
     """
-    return result(g.hertz_pressure(positive("E_star", E_star), positive("R", R),
+    return result(gen.hertz_pressure(positive("E_star", E_star), positive("R", R),
                                    positive("d", d), nonnegative("r", r)))
 
 
@@ -149,6 +149,6 @@ def surface_displacement(r, d, R):
     r, d, R = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R))
     inside = r * r <= R * d  # r <= a, (5.21)
     out = np.empty(r.shape)
-    out[inside] = g.hertz_displacement_inside(R[inside], d[inside], r[inside])
-    out[~inside] = g.hertz_displacement_outside(R[~inside], d[~inside], r[~inside])
+    out[inside] = gen.hertz_displacement_inside(R[inside], d[inside], r[inside])
+    out[~inside] = gen.hertz_displacement_outside(R[~inside], d[~inside], r[~inside])
     return result(out)

@@ -12,7 +12,7 @@ The differential stiffness of Problem 5 is :func:`hertzmdr.numeric.hertz.stiffne
 
 from __future__ import annotations
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import positive, result
 
 __all__ = ["max_depth", "contact_time", "max_pressure", "max_force", "max_contact_radius"]
@@ -46,7 +46,7 @@ def max_depth(v0, R, E_star, *, m=None, rho=None):
     rho : float or array_like, optional
         Density of the sphere [kg/m^3], rho > 0 (instead of m).
     """
-    return _dispatch(g.impact_max_depth, g.impact_max_depth_density, v0, R, E_star, m, rho)
+    return _dispatch(gen.impact_max_depth, gen.impact_max_depth_density, v0, R, E_star, m, rho)
 
 
 def contact_time(v0, R, E_star, *, m=None, rho=None):
@@ -58,7 +58,7 @@ def contact_time(v0, R, E_star, *, m=None, rho=None):
 
     Parameters as :func:`max_depth`.
     """
-    return _dispatch(g.impact_contact_time, g.impact_contact_time_density, v0, R, E_star, m,
+    return _dispatch(gen.impact_contact_time, gen.impact_contact_time_density, v0, R, E_star, m,
                      rho)
 
 
@@ -71,18 +71,18 @@ def max_pressure(v0, R, E_star, *, m=None, rho=None):
     v0_, E_ = positive("v0", v0), positive("E_star", E_star)
     if rho is not None and m is None:
         positive("R", R)
-        return result(g.impact_max_pressure_density(E_, positive("rho", rho), v0_))
-    return _dispatch(g.impact_max_pressure, None, v0, R, E_star, m, rho)
+        return result(gen.impact_max_pressure_density(E_, positive("rho", rho), v0_))
+    return _dispatch(gen.impact_max_pressure, None, v0, R, E_star, m, rho)
 
 
 def max_force(v0, R, E_star, *, m=None, rho=None):
     """Maximum contact force [N] during the impact: (5.23) at x0. Parameters as
     :func:`max_depth`."""
-    return _dispatch(g.impact_max_force, g.impact_max_force_density, v0, R, E_star, m, rho)
+    return _dispatch(gen.impact_max_force, gen.impact_max_force_density, v0, R, E_star, m, rho)
 
 
 def max_contact_radius(v0, R, E_star, *, m=None, rho=None):
     """Maximum contact radius [m] during the impact: (5.21) at x0. Parameters as
     :func:`max_depth`."""
-    return _dispatch(g.impact_max_contact_radius, g.impact_max_contact_radius_density, v0, R,
+    return _dispatch(gen.impact_max_contact_radius, gen.impact_max_contact_radius_density, v0, R,
                      E_star, m, rho)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["half_width", "force", "depth_from_force", "half_width_from_force",
@@ -29,7 +29,7 @@ def half_width(d, R):
     R : float or array_like
         Effective radius (5.27) [m], R > 0.
     """
-    return result(g.line_half_width(positive("R", R), nonnegative("d", d)))
+    return result(gen.line_half_width(positive("R", R), nonnegative("d", d)))
 
 
 def force(d, L, E_star):
@@ -44,7 +44,7 @@ def force(d, L, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.line_force(positive("E_star", E_star), positive("L", L),
+    return result(gen.line_force(positive("E_star", E_star), positive("L", L),
                                nonnegative("d", d)))
 
 
@@ -58,7 +58,7 @@ def depth_from_force(F, L, E_star):
     L, E_star
         As in :func:`force`.
     """
-    return result(g.line_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+    return result(gen.line_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
                                           positive("L", L)))
 
 
@@ -76,7 +76,7 @@ def half_width_from_force(F, L, R, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.line_half_width_from_force(positive("E_star", E_star), nonnegative("F", F),
+    return result(gen.line_half_width_from_force(positive("E_star", E_star), nonnegative("F", F),
                                                positive("L", L), positive("R", R)))
 
 
@@ -92,7 +92,7 @@ def max_pressure(d, R, E_star):
     E_star : float or array_like
         Effective modulus [Pa], E_star > 0.
     """
-    return result(g.line_max_pressure(positive("E_star", E_star), positive("R", R),
+    return result(gen.line_max_pressure(positive("E_star", E_star), positive("R", R),
                                       nonnegative("d", d)))
 
 
@@ -102,7 +102,7 @@ def max_pressure_from_force(F, L, R, E_star):
     The chapter prints this without the pi (see docs/errata.md). Parameters as
     :func:`half_width_from_force`.
     """
-    return result(g.line_max_pressure_from_force(positive("E_star", E_star),
+    return result(gen.line_max_pressure_from_force(positive("E_star", E_star),
                                                  nonnegative("F", F), positive("L", L),
                                                  positive("R", R)))
 
@@ -122,5 +122,5 @@ def pressure(x, d, R, E_star):
     x = as_float("x", x)
     if not np.isfinite(x).all():
         raise ValueError(f"x = {x!r}: must be finite")
-    return result(g.line_pressure(positive("E_star", E_star), positive("R", R),
+    return result(gen.line_pressure(positive("E_star", E_star), positive("R", R),
                                   positive("d", d), x))

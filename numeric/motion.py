@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import positive
 
 
@@ -64,7 +64,7 @@ def integrate(v0, R, E_star, m, *, rtol: float = 1e-10) -> Motion:
 
     def rhs(_, y):
         x = max(y[0], 0.0) * xs
-        return [y[1], -float(g.hertz_force(E, R, x)) / fs]  # (5.23)
+        return [y[1], -float(gen.hertz_force(E, R, x)) / fs]  # (5.23)
 
     def turning(_, y):
         return y[1]
@@ -78,5 +78,5 @@ def integrate(v0, R, E_star, m, *, rtol: float = 1e-10) -> Motion:
     if sol.status != 1 or not len(sol.t_events[1]):
         raise RuntimeError(f"the impact did not end within the integration window: {sol.message}")
     x_max = float(sol.y_events[0][0][0]) * xs
-    return Motion(x_max, float(sol.t_events[1][0]) * ts, float(g.hertz_force(E, R, x_max)),
+    return Motion(x_max, float(sol.t_events[1][0]) * ts, float(gen.hertz_force(E, R, x_max)),
                   rtol, int(sol.nfev))

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import nonnegative, positive, result
 
 __all__ = ["kappa", "g_profile", "contact_radius", "force", "force_from_radius",
@@ -43,8 +43,8 @@ def kappa(n):
     """
     n = positive("n", n)
     with np.errstate(over="ignore", invalid="ignore"):
-        small = g.powerlaw_kappa(np.minimum(n, N_ASYMPTOTIC))
-    large = g.powerlaw_kappa_asymptotic(np.maximum(n, N_ASYMPTOTIC))
+        small = gen.powerlaw_kappa(np.minimum(n, N_ASYMPTOTIC))
+    large = gen.powerlaw_kappa_asymptotic(np.maximum(n, N_ASYMPTOTIC))
     return result(np.where(n < N_ASYMPTOTIC, small, large))
 
 
@@ -62,7 +62,7 @@ def g_profile(x, c_n, n):
     """
     x = np.abs(np.asarray(x, dtype=float))
     c_n, n = positive("c_n", c_n), positive("n", n)
-    return result(g.powerlaw_g(c_n, kappa(n), n, nonnegative("x", x)))
+    return result(gen.powerlaw_g(c_n, kappa(n), n, nonnegative("x", x)))
 
 
 def contact_radius(d, c_n, n):
@@ -76,7 +76,7 @@ def contact_radius(d, c_n, n):
         As in :func:`g_profile`.
     """
     c_n, n = positive("c_n", c_n), positive("n", n)
-    return result(g.powerlaw_contact_radius(c_n, nonnegative("d", d), kappa(n), n))
+    return result(gen.powerlaw_contact_radius(c_n, nonnegative("d", d), kappa(n), n))
 
 
 def force(d, c_n, n, E_star):
@@ -90,7 +90,7 @@ def force(d, c_n, n, E_star):
         Effective modulus [Pa], > 0.
     """
     c_n, n = positive("c_n", c_n), positive("n", n)
-    return result(g.powerlaw_force(positive("E_star", E_star), c_n, nonnegative("d", d),
+    return result(gen.powerlaw_force(positive("E_star", E_star), c_n, nonnegative("d", d),
                                    kappa(n), n))
 
 
@@ -106,7 +106,7 @@ def force_from_radius(a, d, n, E_star):
     n, E_star
         As above.
     """
-    return result(g.powerlaw_force_from_radius(positive("E_star", E_star),
+    return result(gen.powerlaw_force_from_radius(positive("E_star", E_star),
                                                nonnegative("a", a), nonnegative("d", d),
                                                positive("n", n)))
 
@@ -122,22 +122,22 @@ def depth_from_force(F, c_n, n, E_star):
         As above.
     """
     c_n, n = positive("c_n", c_n), positive("n", n)
-    return result(g.powerlaw_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+    return result(gen.powerlaw_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
                                               c_n, kappa(n), n))
 
 
 def mean_pressure(d, c_n, n, E_star):
     """Mean pressure F/(pi a^2) [Pa] (Fig. 5.17). Parameters as :func:`force`."""
     a = contact_radius(d, c_n, n)
-    return result(g.powerlaw_mean_pressure(positive("E_star", E_star), a, positive("d", d),
+    return result(gen.powerlaw_mean_pressure(positive("E_star", E_star), a, positive("d", d),
                                            positive("n", n)))
 
 
 def _pressure_at(r, a, d, n, E_star):
     """Pressure for broadcast arrays with r < a, n finite; picks the accurate form."""
     out = np.empty(r.shape)
-    forms = {1.0: g.powerlaw_pressure_n1, 2.0: g.powerlaw_pressure_n2,
-             3.0: g.powerlaw_pressure_n3, 4.0: g.powerlaw_pressure_n4}
+    forms = {1.0: gen.powerlaw_pressure_n1, 2.0: gen.powerlaw_pressure_n2,
+             3.0: gen.powerlaw_pressure_n3, 4.0: gen.powerlaw_pressure_n4}
     done = n > N_PRESSURE_QUADRATURE  # no 2F1 there: the quadrature of (5.59)
     if done.any():
         out[done] = _pressure_quadrature(r[done], a[done], d[done], n[done], E_star[done])
@@ -150,10 +150,10 @@ def _pressure_at(r, a, d, n, E_star):
     # n >= 1.5, and the centre for 1 < n < 1.5, where the small-n form is 0 * inf but this
     # one's 2F1 converges at z = 1 (c - a - b = (n - 1)/2 > 0)
     big = ~done & ((n >= 1.5) | ((r == 0) & (n > 1)))
-    out[big] = g.powerlaw_pressure(E_star[big], a[big], d[big], n[big], r[big])
+    out[big] = gen.powerlaw_pressure(E_star[big], a[big], d[big], n[big], r[big])
     small = ~done & ~big
     with np.errstate(divide="ignore"):  # r^(n-1) at r = 0 for n < 1: the true singularity
-        out[small] = g.powerlaw_pressure_small_n(E_star[small], a[small], d[small],
+        out[small] = gen.powerlaw_pressure_small_n(E_star[small], a[small], d[small],
                                                  n[small], r[small])
     return out
 
@@ -176,7 +176,7 @@ def _pressure_quadrature(r, a, d, n, E_star, m=16):
     def col(v):
         return v[:, None]
 
-    f = g.powerlaw_pressure_integrand(col(E_star), col(a), col(d), col(n), col(r), w)
+    f = gen.powerlaw_pressure_integrand(col(E_star), col(a), col(d), col(n), col(r), w)
     return np.sum(wts * f, axis=1)
 
 
@@ -213,7 +213,7 @@ def pressure(r, d, c_n, n, E_star):
     inside = r < a
     sel = inside & punch
     with np.errstate(divide="ignore"):
-        out[sel] = g.powerlaw_punch_pressure(E_star[sel], a[sel], d[sel], r[sel])
+        out[sel] = gen.powerlaw_punch_pressure(E_star[sel], a[sel], d[sel], r[sel])
     sel = inside & fin
     out[sel] = _pressure_at(r[sel], a[sel], d[sel], n[sel], E_star[sel])
     return result(out)
@@ -232,8 +232,8 @@ def pressure_normalized(r_tilde, n):
     rt, n = np.broadcast_arrays(nonnegative("r_tilde", r_tilde), positive("n", n, allow_inf=True))
     # p/p_mean = p(r) pi a^2/F for a = 1, d = 1, E* = 1: F from (5.57) (the punch's for n = inf)
     nn = np.where(np.isinf(n), 1.0, n)
-    F = np.where(np.isinf(n), g.powerlaw_punch_force(1.0, 1.0, 1.0),
-                 g.powerlaw_force_from_radius(1.0, 1.0, 1.0, nn))
+    F = np.where(np.isinf(n), gen.powerlaw_punch_force(1.0, 1.0, 1.0),
+                 gen.powerlaw_force_from_radius(1.0, 1.0, 1.0, nn))
     c = np.where(np.isinf(n), 1.0, 1.0 / kappa(nn))  # a = 1 at d = 1
     p = pressure(rt, 1.0, c, n, 1.0)
     return result(p * np.pi / F)
@@ -263,7 +263,7 @@ def surface_displacement(r, d, c_n, n):
     out[sel] = d[sel] - c_n[sel] * r[sel] ** n[sel]
     out[inside & punch] = d[inside & punch]
     sel = ~inside & fin
-    out[sel] = g.powerlaw_displacement_outside(a[sel], d[sel], n[sel], r[sel])
+    out[sel] = gen.powerlaw_displacement_outside(a[sel], d[sel], n[sel], r[sel])
     sel = ~inside & punch
-    out[sel] = g.powerlaw_punch_displacement_outside(a[sel], d[sel], r[sel])
+    out[sel] = gen.powerlaw_punch_displacement_outside(a[sel], d[sel], r[sel])
     return result(out)

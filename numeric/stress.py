@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
 
 __all__ = [
@@ -56,9 +56,9 @@ def spheroidal(r, z, a):
     u = np.zeros(r.shape)
     cos_b = np.zeros(r.shape)  # at the edge: the limit beta = pi/2
     one = np.ones(r.shape)
-    u[i] = g.stress_spheroidal_u_inside(one[i], r[i], z[i])
-    cos_b[i] = g.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
-    u[o] = g.stress_spheroidal_u(one[o], r[o], z[o])
+    u[i] = gen.stress_spheroidal_u_inside(one[i], r[i], z[i])
+    cos_b[i] = gen.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
+    u[o] = gen.stress_spheroidal_u(one[o], r[o], z[o])
     cos_b[o] = z[o] / np.sqrt(u[o])  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
     # on the edge circle the field is the limit beta -> pi/2, xi = 0, which every generated
     # form reaches continuously; 1e-100 keeps eta^3/(xi^2 + eta^2) from being 0/0
@@ -99,12 +99,12 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     srr, stt = np.empty(r.shape), np.empty(r.shape)
     n = xi < 1.0  # the form with atan; beyond, the hypergeometric form without cancellation
     f = ~n
-    srr[n] = g.stress_hertz_sigma_rr(nu[n], p0[n], xi[n], eta[n], chi[n])
-    stt[n] = g.stress_hertz_sigma_tt(nu[n], p0[n], xi[n], eta[n])
-    srr[f] = g.stress_hertz_sigma_rr_far(nu[f], p0[f], xi[f], eta[f], chi[f])
-    stt[f] = g.stress_hertz_sigma_tt_far(nu[f], p0[f], xi[f], eta[f])
-    szz = g.stress_hertz_sigma_zz(p0, xi, eta)
-    trz = g.stress_hertz_tau_rz(p0, xi, eta, chi)
+    srr[n] = gen.stress_hertz_sigma_rr(nu[n], p0[n], xi[n], eta[n], chi[n])
+    stt[n] = gen.stress_hertz_sigma_tt(nu[n], p0[n], xi[n], eta[n])
+    srr[f] = gen.stress_hertz_sigma_rr_far(nu[f], p0[f], xi[f], eta[f], chi[f])
+    stt[f] = gen.stress_hertz_sigma_tt_far(nu[f], p0[f], xi[f], eta[f])
+    szz = gen.stress_hertz_sigma_zz(p0, xi, eta)
+    trz = gen.stress_hertz_tau_rz(p0, xi, eta, chi)
     return tuple(result(v) for v in (srr, stt, szz, trz))
 
 
@@ -162,14 +162,14 @@ def axis_stresses(z, a, p0, nu):
     """
     z, a, p0, nu = np.broadcast_arrays(nonnegative("z", z), positive("a", a),
                                        nonnegative("p0", p0), poisson("nu", nu))
-    szz = g.stress_axis_sigma_zz(a, p0, z)  # (5.48)
+    szz = gen.stress_axis_sigma_zz(a, p0, z)  # (5.48)
     sxx = np.empty(z.shape)
     shallow = z < a
     s, d = shallow & (z > 0), ~shallow
-    sxx[s] = g.stress_axis_sigma_xx(a[s], nu[s], p0[s], z[s])  # (5.49)
-    sxx[d] = g.stress_axis_sigma_xx_deep(a[d], nu[d], p0[d], z[d])
+    sxx[s] = gen.stress_axis_sigma_xx(a[s], nu[s], p0[s], z[s])  # (5.49)
+    sxx[d] = gen.stress_axis_sigma_xx_deep(a[d], nu[d], p0[d], z[d])
     top = z == 0  # (5.49) at z -> 0: -(1 + 2 nu) p0/2; the spheroidal form is exact there
-    sxx[top] = g.stress_hertz_sigma_rr(nu[top], p0[top], 0.0, 1.0, 0.0)
+    sxx[top] = gen.stress_hertz_sigma_rr(nu[top], p0[top], 0.0, 1.0, 0.0)
     return result(szz), result(sxx)
 
 
@@ -193,15 +193,15 @@ def axis_max_shear(nu):
     from scipy.optimize import brentq
 
     nu = float(poisson("nu", nu))
-    s = brentq(lambda t: g.stress_axis_max_shear_slope(1.0, nu, 1.0, t), 0.05, 2.0,
+    s = brentq(lambda t: gen.stress_axis_max_shear_slope(1.0, nu, 1.0, t), 0.05, 2.0,
                xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
-    return s, float(g.stress_axis_max_shear(1.0, nu, 1.0, s))
+    return s, float(gen.stress_axis_max_shear(1.0, nu, 1.0, s))
 
 
 def von_mises(sigma):
     """von Mises equivalent stress (5.50) [Pa] of stress tensors of shape (..., 3, 3)."""
     s = as_float("sigma", sigma)
-    return result(g.stress_von_mises(s[..., 0, 0], s[..., 1, 1], s[..., 2, 2], s[..., 0, 1],
+    return result(gen.stress_von_mises(s[..., 0, 0], s[..., 1, 1], s[..., 2, 2], s[..., 0, 1],
                                      s[..., 1, 2], s[..., 0, 2]))
 
 
@@ -270,8 +270,8 @@ def _tanh_sinh(level: int):
 
 def _kernels(nu, dx, dy, z):
     """Point-force stresses of a unit force, field minus source = (dx, dy, z)."""
-    return (g.boussinesq_sigma_xx(1.0, nu, dx, dy, z), g.boussinesq_sigma_yy(1.0, nu, dx, dy, z),
-            g.boussinesq_sigma_zz(1.0, nu, dx, dy, z), g.boussinesq_sigma_xz(1.0, nu, dx, dy, z))
+    return tuple(getattr(gen, f"boussinesq_sigma_{c}")(1.0, nu, dx, dy, z)
+                 for c in ("xx", "yy", "zz", "xz"))
 
 
 def _superpose_point(r, z, a, nu, pressure, n_psi, level):

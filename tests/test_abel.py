@@ -24,7 +24,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import abel
 
 from oracle import WORST
@@ -48,14 +48,14 @@ def grid(N, span=1.2):
 
 def powerlaw_pair(n, x):
     """q = E* (d - g(x)) (5.58) with g = kappa c |x|^n, and the closed-form pressure."""
-    kappa = float(g.powerlaw_kappa(n))
+    kappa = float(gen.powerlaw_kappa(n))
     c = D / (kappa * A_CONTACT**n)  # so that g(a) = d (5.55)
-    q = np.where(x < A_CONTACT, E * (D - g.powerlaw_g(c, kappa, n, np.minimum(x, A_CONTACT))),
+    q = np.where(x < A_CONTACT, E * (D - gen.powerlaw_g(c, kappa, n, np.minimum(x, A_CONTACT))),
                  0.0)
     if n >= 1.5:
-        p = g.powerlaw_pressure(E, A_CONTACT, D, n, x)
+        p = gen.powerlaw_pressure(E, A_CONTACT, D, n, x)
     else:
-        p = g.powerlaw_pressure_small_n(E, A_CONTACT, D, n, x)
+        p = gen.powerlaw_pressure_small_n(E, A_CONTACT, D, n, x)
     return q, p
 
 
@@ -73,7 +73,7 @@ def test_hertz_to_rounding(N):
     x, dx = grid(N)
     R = A_CONTACT**2 / D
     q = np.where(x < A_CONTACT, E * (D - x**2 / R), 0.0)
-    p = g.hertz_pressure(E, R, D, x)
+    p = gen.hertz_pressure(E, R, D, x)
     m = inside(x)
     # inverse: the rounding of q (1e-16 q_max) divided by the differences of ~N samples
     _record("abel inverse Hertz", rel_err(abel.pressure_from_line_load(q, dx), p, m), 2e-15 * N)
@@ -177,7 +177,7 @@ def test_worn_paraboloid_against_quadrature():
     1.5, N = 401 ... 1601, largest just inside b: 2.4e-4 at r = 0.288 for N = 1601). For r > b
     those pieces are not in the integral: measured 1e-14 at r = 0.6, 0.9."""
     a, b, Rv = 1.0, 0.3, 1.0
-    d = float(g.worn_depth(Rv, a, b))
+    d = float(gen.worn_depth(Rv, a, b))
     radii = np.array([0.0, 0.15, 0.288, 0.6, 0.9])  # grid points of every N below
     with mp.workdps(30):
         ref = np.array([float(worn_pressure_ref(mp.mpf(r), mp.mpf(a), mp.mpf(b), mp.mpf(Rv),
@@ -186,7 +186,7 @@ def test_worn_paraboloid_against_quadrature():
     Ns = [401, 801, 1601]
     for N in Ns:
         x = np.linspace(0, 1.2, N)
-        q = np.where(x < a, d - g.worn_g(Rv, b, np.minimum(x, a)), 0.0)
+        q = np.where(x < a, d - gen.worn_g(Rv, b, np.minimum(x, a)), 0.0)
         p = abel.pressure_from_line_load(q, x[1])
         idx = np.rint(radii / x[1]).astype(int)
         assert np.allclose(x[idx], radii, rtol=0, atol=1e-12)
@@ -206,21 +206,21 @@ def test_worn_paraboloid_with_the_kink_given():
     1.5e-10, 3.3e-12, 3.4e-13 for N = 201, 401, 801 (order ~5.5, then rounding); asserted
     with a factor 2. p(b) is log-singular: +inf at the sample r = b."""
     a, b, Rv = 1.0, 0.3, 1.0
-    d = float(g.worn_depth(Rv, a, b))
+    d = float(gen.worn_depth(Rv, a, b))
     radii = np.array([0.0, 0.15, 0.288, 0.312, 0.6, 0.9])  # grid points of every N below
     with mp.workdps(30):
         ref = np.array([float(worn_pressure_ref(mp.mpf(r), mp.mpf(a), mp.mpf(b), mp.mpf(Rv),
                                                 mp.mpf(1))) for r in radii])
     for N, tol in ((201, 3e-10), (401, 7e-12), (801, 7e-13)):
         x = np.linspace(0, 1.2, N)
-        q = np.where(x < a, d - g.worn_g(Rv, b, np.minimum(x, a)), 0.0)
+        q = np.where(x < a, d - gen.worn_g(Rv, b, np.minimum(x, a)), 0.0)
         p = abel.pressure_from_line_load(q, x[1], kink=b)
         idx = np.rint(radii / x[1]).astype(int)
         _record(f"abel inverse worn kink=b N={N}", float(np.max(np.abs(p[idx] / ref - 1))), tol)
         assert p[int(np.rint(b / x[1]))] == np.inf
     # b between two samples (N = 203): no infinite sample, the same accuracy
     x = np.linspace(0, 1.2, 203)
-    q = np.where(x < a, d - g.worn_g(Rv, b, np.minimum(x, a)), 0.0)
+    q = np.where(x < a, d - gen.worn_g(Rv, b, np.minimum(x, a)), 0.0)
     p = abel.pressure_from_line_load(q, x[1], kink=b)
     assert np.all(np.isfinite(p))
     j = int(np.searchsorted(x, b))  # the samples either side of b
@@ -414,7 +414,7 @@ def test_matrices_are_the_transforms(N):
     # with a kink between two samples: the worn paraboloid's operator
     a, b = 1.0, 0.3005
     xx = np.linspace(0, 1.2, N)
-    q = np.where(xx < a, 0.1 - g.worn_g(1.0, b, np.minimum(xx, a)), 0.0)
+    q = np.where(xx < a, 0.1 - gen.worn_g(1.0, b, np.minimum(xx, a)), 0.0)
     pk = abel.pressure_from_line_load(q, xx[1], edge=a, kink=b)
     Mk = abel.pressure_matrix(N, xx[1], edge=a, kink=b)
     assert close(Mk, q, pk)

@@ -11,7 +11,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bem, ellipse, hertz
 
 from oracle import assert_close
@@ -100,7 +100,7 @@ def test_flat_circular_punch():
         mask = x**2 + y**2 < 1.0
         k = bem.punch_stiffness(mask, dx, E)
         a = np.sqrt(mask.sum() * dx * dx / np.pi)
-        err = k / g.punch_stiffness(E, a) - 1
+        err = k / gen.punch_stiffness(E, a) - 1
         assert -0.5 * dx < err < 0, f"n = {n}: {err}"
         # the same through the contact solver, depth-controlled (h = 0 on, +inf off the face)
         res = bem.solve(np.where(mask, 0.0, np.inf), dx, E, depth=1e-3)

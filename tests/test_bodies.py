@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bodies, hertz
 
 from kernels import uz_axisymmetric
@@ -48,7 +48,7 @@ def test_effective_modulus_by_two_displacements():
         for E, nu in ((E1, nu1), (E2, nu2)):
             E_i = 1 / (mp.pi * kernel_coefficient(mp.mpf(E), mp.mpf(nu)))
             total += uz_axisymmetric(press, a / 3, a, E_i)
-        Es = g.bodies_effective_modulus(E1, nu1, E2, nu2)
+        Es = gen.bodies_effective_modulus(E1, nu1, E2, nu2)
         one = uz_axisymmetric(press, a / 3, a, mp.mpf(float(Es)))
         # the kernel is linear in 1/E*: the float64 E* reproduces u1 + u2 to its own accuracy
         assert_close(float(one), total, TOL, "u1 + u2 = u(E*)")
@@ -57,13 +57,13 @@ def test_effective_modulus_by_two_displacements():
         return 1 / (mp.pi * (kernel_coefficient(E1, nu1) + kernel_coefficient(E2, nu2)))
 
     doms = {"E1": E_DOM, "nu1": NU_DOM, "E2": E_DOM, "nu2": NU_DOM}
-    assert_mpmath_equal(g.bodies_effective_modulus, ref, doms, rtol=TOL,
+    assert_mpmath_equal(gen.bodies_effective_modulus, ref, doms, rtol=TOL,
                         n=n_points(300, 40), name="bodies_effective_modulus")
 
     def ref_rigid(E, nu):
         return 1 / (mp.pi * kernel_coefficient(E, nu))
 
-    assert_mpmath_equal(g.bodies_effective_modulus_rigid, ref_rigid,
+    assert_mpmath_equal(gen.bodies_effective_modulus_rigid, ref_rigid,
                         {"E": E_DOM, "nu": NU_DOM}, rtol=TOL, n=n_points(300, 40),
                         name="bodies_effective_modulus_rigid")
 
@@ -81,13 +81,13 @@ def sphere_gap_radius(R1, R2):
 
 @pytest.mark.sweep
 def test_effective_radius_by_gap():
-    assert_mpmath_equal(g.bodies_effective_radius, sphere_gap_radius,
+    assert_mpmath_equal(gen.bodies_effective_radius, sphere_gap_radius,
                         {"R1": R_DOM, "R2": R_DOM}, rtol=TOL, n=n_points(300, 40),
                         name="bodies_effective_radius")
 
     # concave R2 with |R2| >= 2 R1: the curvature difference has condition number <= 3
     def concave(R1, ratio):
-        return g.bodies_effective_radius(R1, -ratio * R1)
+        return gen.bodies_effective_radius(R1, -ratio * R1)
 
     assert_mpmath_equal(concave, lambda R1, ratio: sphere_gap_radius(R1, -ratio * R1),
                         {"R1": R_DOM, "ratio": Arg(2.0, 1e6)}, rtol=3 * TOL,
@@ -117,7 +117,7 @@ def hessian_curvatures(R1a, R1b, R2a, R2b, omega):
 def test_principal_curvatures_by_hessian():
     doms = {"R1a": R_DOM, "R1b": R_DOM, "R2a": R_DOM, "R2b": R_DOM, "omega": ANGLE}
     for name, idx in (("bodies_principal_curvature_1", 0), ("bodies_principal_curvature_2", 1)):
-        assert_mpmath_equal(getattr(g, name),
+        assert_mpmath_equal(getattr(gen, name),
                             lambda idx=idx, **kw: hessian_curvatures(**kw)[idx], doms,
                             rtol=TOL, n=n_points(300, 40), dps=40, name=name)
     inf = mp.inf
@@ -125,7 +125,7 @@ def test_principal_curvatures_by_hessian():
     for name, idx in (("bodies_crossed_cylinders_curvature_1", 0),
                       ("bodies_crossed_cylinders_curvature_2", 1)):
         assert_mpmath_equal(
-            getattr(g, name),
+            getattr(gen, name),
             lambda R1, R2, alpha, idx=idx: hessian_curvatures(R1, inf, R2, inf, alpha)[idx],
             cyl, rtol=TOL, n=n_points(300, 40), dps=40, name=name)
 
@@ -133,7 +133,7 @@ def test_principal_curvatures_by_hessian():
         k1, k2 = hessian_curvatures(R1, inf, R2, inf, alpha)
         return 1 / mp.sqrt(k1 * k2)
 
-    assert_mpmath_equal(g.bodies_crossed_cylinders_gaussian_radius, gauss, cyl, rtol=TOL,
+    assert_mpmath_equal(gen.bodies_crossed_cylinders_gaussian_radius, gauss, cyl, rtol=TOL,
                         n=n_points(300, 40), dps=40,
                         name="bodies_crossed_cylinders_gaussian_radius")
     # (5.32)/(5.33): at alpha = pi/2 the principal radii are the two cylinder radii
@@ -171,16 +171,16 @@ def test_problem2():
         H = mp.matrix([[mp.diff(gap, (0, 0), (2, 0)), mp.diff(gap, (0, 0), (1, 1))],
                        [mp.diff(gap, (0, 0), (1, 1)), mp.diff(gap, (0, 0), (0, 2))]])
         k = sorted(mp.eigsy(H, eigvals_only=True))
-        assert_close(g.bodies_problem2_principal_radius_1(R), 1 / k[1], TOL, "R_1")
-        assert_close(g.bodies_problem2_principal_radius_2(R), 1 / k[0], TOL, "R_2")
-        assert_close(g.bodies_problem2_gaussian_radius(R), 1 / mp.sqrt(k[0] * k[1]), TOL, "R~")
-        assert_close(g.bodies_problem2_gaussian_radius(R), s * R, TOL, "sqrt(2) R")
+        assert_close(gen.bodies_problem2_principal_radius_1(R), 1 / k[1], TOL, "R_1")
+        assert_close(gen.bodies_problem2_principal_radius_2(R), 1 / k[0], TOL, "R_2")
+        assert_close(gen.bodies_problem2_gaussian_radius(R), 1 / mp.sqrt(k[0] * k[1]), TOL, "R~")
+        assert_close(gen.bodies_problem2_gaussian_radius(R), s * R, TOL, "sqrt(2) R")
         # the chapter's values are twice (radii) and 2^(1/2) (force) the derived ones
         printed = 2 * R / (1 + 1 / s)
-        assert abs(2 * g.bodies_problem2_principal_radius_1(R) / printed - 1) < TOL
+        assert abs(2 * gen.bodies_problem2_principal_radius_1(R) / printed - 1) < TOL
         Es = 1 / (mp.pi * 2 * kernel_coefficient(mp.mpf(E), mp.mpf(nu)))
         F = 4 * Es * mp.sqrt(1 / mp.sqrt(k[0] * k[1])) * mp.mpf(d) ** 1.5 / 3  # (5.23), R~
-        assert_close(g.bodies_problem2_force(E, nu, R, d), F, TOL, "F")
+        assert_close(gen.bodies_problem2_force(E, nu, R, d), F, TOL, "F")
         # the same through the public API at alpha = pi/4
         Rg = bodies.crossed_cylinders_gaussian_radius(R, R, np.pi / 4)
         assert abs(Rg / float(s * R) - 1) < TOL
@@ -309,16 +309,16 @@ def test_gaussian_approximation_sweep():
 
     cases = {
         "bodies_gaussian_approx_force": (
-            lambda E_star, R1, ratio, strain: g.bodies_gaussian_approx_force(
+            lambda E_star, R1, ratio, strain: gen.bodies_gaussian_approx_force(
                 E_star, R1, R1 * ratio, strain * R1), "F"),
         "bodies_gaussian_approx_max_pressure": (
-            lambda E_star, R1, ratio, strain: g.bodies_gaussian_approx_max_pressure(
+            lambda E_star, R1, ratio, strain: gen.bodies_gaussian_approx_max_pressure(
                 E_star, R1, R1 * ratio, strain * R1), "p0"),
         "bodies_gaussian_approx_area": (
-            lambda E_star, R1, ratio, strain: g.bodies_gaussian_approx_area(
+            lambda E_star, R1, ratio, strain: gen.bodies_gaussian_approx_area(
                 R1, R1 * ratio, strain * R1), "A"),
         "bodies_gaussian_radius": (
-            lambda E_star, R1, ratio, strain: g.bodies_gaussian_radius(R1, R1 * ratio), "R~"),
+            lambda E_star, R1, ratio, strain: gen.bodies_gaussian_radius(R1, R1 * ratio), "R~"),
     }
     # the products R1*ratio and strain*R1 are rounded in float64 before the call and exact in
     # the reference: one more ulp each, inside TOL

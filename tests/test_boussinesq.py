@@ -8,7 +8,7 @@ import sympy as sp
 
 from hertzmdr.derive import boussinesq as b
 from hertzmdr.derive.symbols import E, F, nu
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 
 from oracle import Arg, assert_mpmath_equal, n_points
 
@@ -54,7 +54,7 @@ def test_stress_from_displacement_in_equilibrium():
 def test_surface_displacement_is_the_limit():
     """(5.4)-(5.6) against the 3-D field (5.1)-(5.3) at z = 1e-30 (mpmath, 40 digits)."""
     u = [sp.lambdify((E, F, nu, X, Y, Z), c, "mpmath") for c in b.displacement()]
-    funcs = (g.boussinesq_surface_ux, g.boussinesq_surface_uy, g.boussinesq_surface_uz)
+    funcs = (gen.boussinesq_surface_ux, gen.boussinesq_surface_uy, gen.boussinesq_surface_uz)
     dom = {"E": Arg(1e3, 1e12), "F": Arg(1e-6, 1e6), "nu": Arg(-0.99, 0.5, log=False),
            "x": Arg(1e-9, 1e3), "y": Arg(1e-9, 1e3)}
     for k, fn in enumerate(funcs):
@@ -96,7 +96,7 @@ def test_stress_against_differentiated_displacement():
     dom = {"F": Arg(1e-3, 1e3), "nu": Arg(-0.9, 0.49, log=False), "x": Arg(1e-3, 1e2),
            "y": Arg(1e-3, 1e2), "z": Arg(1e-3, 1e2)}
     for comp in b.COMPONENTS:
-        fn = getattr(g, f"boussinesq_sigma_{comp}")
+        fn = getattr(gen, f"boussinesq_sigma_{comp}")
         # rational expressions with a few cancellations between terms of one sign pattern:
         # 1e-12 covers the worst sampled point where sigma_xx changes sign near the surface
         assert_mpmath_equal(fn, _reference_stress(comp), dom, rtol=1e-12,
@@ -106,7 +106,7 @@ def test_stress_against_differentiated_displacement():
 def test_displacement_generated_equals_given():
     pts = np.array([[0.3, -0.2, 0.7], [1e-3, 2.0, 1e-4]])
     for k, comp in enumerate("xyz"):
-        fn = getattr(g, f"boussinesq_u{comp}")
+        fn = getattr(gen, f"boussinesq_u{comp}")
         f = sp.lambdify((E, F, nu, X, Y, Z), b.displacement()[k], "mpmath")
         for x, y, z in pts:
             with mp.workdps(30):

@@ -18,7 +18,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import cone
 
 from kernels import uz_axisymmetric
@@ -69,15 +69,15 @@ def test_cone_by_kernel():
             # 20 digits (the 2-D tanh-sinh kernel costs ~10 s per point): 1e-17 is below the
             # float64 tolerances this test goes on to check, with 3 digits of margin
             assert abs(u / (d - r * tan) - 1) < 1e-17, s
-            assert_close(g.cone_pressure(E, d, theta, float(r)),
+            assert_close(gen.cone_pressure(E, d, theta, float(r)),
                          E * tan / 2 * mp.acosh(a / r), TOL, "(5.39)")
-        assert_close(g.cone_contact_radius(d, theta), a, TOL, "(5.38)")
-        assert_close(g.cone_depth(float(a), theta), d, TOL, "(5.38)")
-        assert_close(g.cone_force(E, d, theta), F, TOL, "(5.40)")
-        assert_close(g.cone_mean_pressure(E, theta), F / (mp.pi * a**2), TOL, "F/(pi a^2)")
+        assert_close(gen.cone_contact_radius(d, theta), a, TOL, "(5.38)")
+        assert_close(gen.cone_depth(float(a), theta), d, TOL, "(5.38)")
+        assert_close(gen.cone_force(E, d, theta), F, TOL, "(5.40)")
+        assert_close(gen.cone_mean_pressure(E, theta), F / (mp.pi * a**2), TOL, "F/(pi a^2)")
         k = mp.diff(lambda x: reference(mp.mpf(E), x, mp.mpf(theta))[1], mp.mpf(d))
-        assert_close(g.cone_stiffness(E, d, theta), k, TOL, "dF/dd")
-        assert_close(g.cone_stiffness(E, d, theta), 2 * a * E, TOL, "Problem 5: 2 a E*")
+        assert_close(gen.cone_stiffness(E, d, theta), k, TOL, "dF/dd")
+        assert_close(gen.cone_stiffness(E, d, theta), 2 * a * E, TOL, "Problem 5: 2 a E*")
     assert cone.pressure(0.0, d, theta, E) == np.inf
     assert cone.pressure(float(a) * 1.001, d, theta, E) == 0.0
 
@@ -86,15 +86,15 @@ def test_cone_by_kernel():
 def test_cone_sweep():
     doms = {"E_star": E_DOM, "d": D_DOM, "theta": THETA}
     n = n_points(200, 30)
-    assert_mpmath_equal(lambda E_star, d, theta: g.cone_contact_radius(d, theta),
+    assert_mpmath_equal(lambda E_star, d, theta: gen.cone_contact_radius(d, theta),
                         lambda E_star, d, theta: reference(E_star, d, theta)[0], doms,
                         rtol=TOL, n=n, dps=35, name="cone_contact_radius")
-    assert_mpmath_equal(g.cone_force, lambda **kw: reference(**kw)[1], doms, rtol=TOL, n=n,
+    assert_mpmath_equal(gen.cone_force, lambda **kw: reference(**kw)[1], doms, rtol=TOL, n=n,
                         dps=35, name="cone_force")
-    assert_mpmath_equal(g.cone_stiffness,
+    assert_mpmath_equal(gen.cone_stiffness,
                         lambda E_star, d, theta: 2 * reference(E_star, d, theta)[0] * E_star,
                         doms, rtol=TOL, n=n, dps=35, name="cone_stiffness")
-    assert_mpmath_equal(lambda a, theta: g.cone_depth(a, theta),
+    assert_mpmath_equal(lambda a, theta: gen.cone_depth(a, theta),
                         lambda a, theta: mp.tan(theta) * a * U0() / 2,
                         {"a": D_DOM, "theta": THETA}, rtol=TOL, n=n, dps=35, name="cone_depth")
 
@@ -105,7 +105,7 @@ def test_cone_sweep():
         return E_star * mp.tan(theta) / 2 * mp.acosh(1 / frac)
 
     def p_float(E_star, d, theta, frac):
-        return g.cone_pressure(E_star, d, theta, frac * g.cone_contact_radius(d, theta))
+        return gen.cone_pressure(E_star, d, theta, frac * gen.cone_contact_radius(d, theta))
 
     assert_mpmath_equal(p_float, p_ref, {**doms, "frac": Arg(1e-6, 0.9)}, rtol=TOL, n=n,
                         dps=35, name="cone_pressure")
@@ -119,9 +119,9 @@ def test_cone_sweep():
         return ref
 
     fdoms = {"E_star": E_DOM, "F": Arg(1e-12, 1e6), "theta": THETA}
-    assert_mpmath_equal(g.cone_depth_from_force, inverse("d"), fdoms, rtol=TOL,
+    assert_mpmath_equal(gen.cone_depth_from_force, inverse("d"), fdoms, rtol=TOL,
                         n=n_points(60, 10), dps=35, name="cone_depth_from_force")
-    assert_mpmath_equal(g.cone_contact_radius_from_force, inverse("a"), fdoms, rtol=TOL,
+    assert_mpmath_equal(gen.cone_contact_radius_from_force, inverse("a"), fdoms, rtol=TOL,
                         n=n_points(60, 10), dps=35, name="cone_contact_radius_from_force")
 
 
@@ -165,5 +165,5 @@ def test_cone_mean_pressure_sweep():
         a, F = reference(E_star, mp.mpf("1e-3"), theta)  # any depth: the same mean pressure
         return F / (mp.pi * a**2)
 
-    assert_mpmath_equal(g.cone_mean_pressure, ref, {"E_star": E_DOM, "theta": THETA},
+    assert_mpmath_equal(gen.cone_mean_pressure, ref, {"E_star": E_DOM, "theta": THETA},
                         rtol=TOL, n=n_points(100, 15), dps=35, name="cone_mean_pressure")

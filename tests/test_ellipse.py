@@ -17,7 +17,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import ellipse, hertz
 
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
@@ -104,11 +104,11 @@ def test_displacement_by_boussinesq(q, inner, points):
     """
     E, R1, d = 2e11, 0.05, 1e-6
     t = float(ellipse.axis_ratio(q, 1.0))
-    R2 = R1 / float(g.ellipse_radius_ratio(t))
+    R2 = R1 / float(gen.ellipse_radius_ratio(t))
     assert abs(R2 * q / R1 - 1) < 1e-13 * max(1.0, q / 100)
-    a, b = float(g.ellipse_semi_major(R1, d, t)), float(g.ellipse_semi_minor(R1, d, t))
-    p0 = float(g.ellipse_max_pressure(E, R1, d, t))
-    assert_close(g.ellipse_area(R1, d, t), mp.pi * mp.mpf(a) * mp.mpf(b), 1e-15, "pi a b")
+    a, b = float(gen.ellipse_semi_major(R1, d, t)), float(gen.ellipse_semi_minor(R1, d, t))
+    p0 = float(gen.ellipse_max_pressure(E, R1, d, t))
+    assert_close(gen.ellipse_area(R1, d, t), mp.pi * mp.mpf(a) * mp.mpf(b), 1e-15, "pi a b")
     with mp.workdps(30):
         for fx, fy in points:
             x, y = mp.mpf(fx) * a, mp.mpf(fy) * b
@@ -149,7 +149,7 @@ DOMS = {"E_star": Arg(1e3, 1e12), "R1": Arg(1e-6, 1e2), "strain": Arg(1e-10, 1e-
 
 def _sweep(name, ref, n=None):
     def func(E_star, R1, strain, t):
-        fn = getattr(g, name)
+        fn = getattr(gen, name)
         args = {"E_star": E_star, "R1": R1, "d": strain * R1, "t_ba": t}
         return fn(*[args[k] for k in fn.__code__.co_varnames[:fn.__code__.co_argcount]])
 
@@ -190,7 +190,7 @@ def test_stiffness_by_derivative():
             with mp.workdps(30):
                 k = mp.diff(lambda x, t=t: ref_force(E, R1, x, mp.mpf(t)), d)
             # error model: as in _sweep, 1e-12
-            assert_close(g.ellipse_stiffness(E, R1, d, t), k, 1e-12, f"dF/dd, t={t}")
+            assert_close(gen.ellipse_stiffness(E, R1, d, t), k, 1e-12, f"dF/dd, t={t}")
 
 
 @settings(max_examples=40, deadline=None)
@@ -213,8 +213,8 @@ def test_pressure_field():
         for fx, fy in [(0, 0), (0.3, 0.4), (0.9, 0.1)]:
             x, y = float(fx * a), float(fy * b)
             ref = p0 * mp.sqrt(1 - (x / a) ** 2 - (y / b) ** 2)
-            assert_close(g.ellipse_pressure(E, R1, d, t, x, y), ref, 1e-12, "(5.31)")
-    assert g.ellipse_pressure(E, R1, d, t, float(a) * 1.01, 0.0) == 0.0
+            assert_close(gen.ellipse_pressure(E, R1, d, t, x, y), ref, 1e-12, "(5.31)")
+    assert gen.ellipse_pressure(E, R1, d, t, float(a) * 1.01, 0.0) == 0.0
     # the result object: x along R1 whichever radius is larger
     c = ellipse.solve(0.1, 0.3, E, depth=d)
     assert c.b > c.a
@@ -247,7 +247,7 @@ def test_bracket_holds_over_the_range():
     """The bisection's lower bracket (see axis_ratio) is valid for every q in [1, 1e8]."""
     q = np.geomspace(1.0, 1e8, 4000)
     t_lo = (q * (2 + np.log(q))) ** -0.5
-    assert np.all(g.ellipse_radius_ratio(t_lo) > q)
+    assert np.all(gen.ellipse_radius_ratio(t_lo) > q)
 
 
 # Footnote 5 ("even with R1/R2 = 10, (5.23) can be applied ... with a precision of 2.5%") and

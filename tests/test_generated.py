@@ -53,8 +53,8 @@ def test_mpmath_print_agrees_with_numpy_print():
     import mpmath as mp
 
     from hertzmdr.derive import all_relations
-    from hertzmdr.numeric import _generated as g
-    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
 
     for rel in all_relations():
         # a seed per relation: adding a relation moves no other relation's points
@@ -83,8 +83,8 @@ def test_mpmath_print_agrees_with_numpy_print():
                     args[sym.name] = float(val)
                 if continue_outer:
                     continue
-            f64 = float(getattr(g, rel.name)(**args))
+            f64 = float(getattr(gen, rel.name)(**args))
             with mp.workdps(50):
-                ref = getattr(gm, rel.name)(**{k: mp.mpf(v) for k, v in args.items()})
+                ref = getattr(gen_mp, rel.name)(**{k: mp.mpf(v) for k, v in args.items()})
                 assert math.isfinite(f64)
                 assert abs(f64 - ref) <= 1e-13 * abs(ref) + 1e-300, (rel.name, args)

@@ -15,7 +15,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bodies, ellipse, hertz, impact
 
 from kernels import hertz_reference, uz_axisymmetric
@@ -147,7 +147,7 @@ def _worn_force(s, b=1e-3, R=0.1, E=1e9):
             a2 = (bb**2 + mp.sqrt(bb**4 + 4 * RR**2 * dd**2)) / 2
             a = mp.findroot(lambda x: x / RR * mp.sqrt(x**2 - bb**2) - dd, mp.sqrt(a2))
             return 2 * E / (3 * RR) * (2 * a**2 + bb**2) * mp.sqrt((a - bb) * (a + bb))
-    return (lambda: g.worn_force(E, R, b, d)), ref
+    return (lambda: gen.worn_force(E, R, b, d)), ref
 
 
 CASES += [
@@ -240,7 +240,7 @@ def _worn_pressure(r_of, a=0.8, b=0.5):
     from test_worn import pressure_ref
 
     r = r_of(a, b)
-    return (lambda: g.worn_pressure(3.0, 1.0, a, b, r)), \
+    return (lambda: gen.worn_pressure(3.0, 1.0, a, b, r)), \
         (lambda: pressure_ref(mp.mpf(r), mp.mpf(a), mp.mpf(b), mp.mpf(1), mp.mpf(3)))
 
 

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import hertz
 
 from kernels import hertz_reference as reference
@@ -28,24 +28,24 @@ TOL = 1e-14
 def test_matching_by_kernel():
     """(5.19): the pressure with a(R, d), p0(R, d) produces d - r^2/(2R) at every r <= a."""
     E, R, d = 2.1e11, 0.5, 2e-5
-    a = float(g.hertz_contact_radius(R, d))
+    a = float(gen.hertz_contact_radius(R, d))
     with mp.workdps(35):
         ref_a, ref_p0, _ = reference(mp.mpf(E), mp.mpf(R), mp.mpf(d))
         assert_close(a, ref_a, TOL, "(5.21)")
-        assert_close(g.hertz_max_pressure(E, R, d), ref_p0, TOL, "(5.22)")
+        assert_close(gen.hertz_max_pressure(E, R, d), ref_p0, TOL, "(5.22)")
         p0 = ref_p0
         for s in ("0.1", "0.5", "0.9"):  # displacement is exactly quadratic: check in between
             r = mp.mpf(s) * ref_a
             u = uz_axisymmetric(lambda gap: p0 * mp.sqrt(gap) / ref_a, r, ref_a, E)
             assert abs(u / (d - r**2 / (2 * R)) - 1) < 1e-30
-            assert_close(g.hertz_displacement_inside(R, d, float(r)), u, TOL, "(5.18)")
-            assert_close(g.hertz_pressure(E, R, d, float(r)),
+            assert_close(gen.hertz_displacement_inside(R, d, float(r)), u, TOL, "(5.18)")
+            assert_close(gen.hertz_pressure(E, R, d, float(r)),
                          p0 * mp.sqrt(1 - (r / ref_a) ** 2), TOL, "(5.15)")
-    assert g.hertz_pressure(E, R, d, 1.5 * a) == 0.0
+    assert gen.hertz_pressure(E, R, d, 1.5 * a) == 0.0
 
 
 def _sweep(name, index, rtol=TOL, n=None):
-    fn = getattr(g, name)
+    fn = getattr(gen, name)
 
     def func(E_star, R, strain):
         if name == "hertz_contact_radius":  # the only one that does not depend on E*
@@ -69,7 +69,7 @@ def test_force_by_pressure_quadrature():
         a, _, F = reference(E_star, R, strain * R)
         return F / (mp.pi * a**2)
 
-    assert_mpmath_equal(lambda E_star, R, strain: g.hertz_mean_pressure(E_star, R, strain * R),
+    assert_mpmath_equal(lambda E_star, R, strain: gen.hertz_mean_pressure(E_star, R, strain * R),
                         mean, {"E_star": E_DOM, "R": R_DOM, "strain": STRAIN}, rtol=TOL,
                         n=n_points(100, 15), name="hertz_mean_pressure")
 
@@ -83,7 +83,7 @@ def test_force_controlled_roundtrip():
             with mp.workdps(30):
                 F = np.array([float(reference(mp.mpf(e), mp.mpf(rr), mp.mpf(dd))[2])
                               for e, rr, dd in zip(E_star, R, d, strict=True)])
-            return getattr(g, name)(E_star, F, R)
+            return getattr(gen, name)(E_star, F, R)
 
         def ref(E_star, R, strain):
             d = strain * R
@@ -107,7 +107,7 @@ def test_energy_by_work():
     for d in (1e-9, 1e-6, 1e-4):
         with mp.workdps(30):
             U = mp.quad(lambda x: reference(E, R, x)[2], [0, d])
-        assert_close(g.hertz_energy(E, R, d), U, TOL, f"(5.25) at d={d}")
+        assert_close(gen.hertz_energy(E, R, d), U, TOL, f"(5.25) at d={d}")
 
 
 def test_stiffness_by_punch():
@@ -117,8 +117,8 @@ def test_stiffness_by_punch():
         with mp.workdps(30):
             k = mp.diff(lambda x: reference(E, R, x)[2], d)
             a = reference(E, R, d)[0]
-        assert_close(g.hertz_stiffness(E, R, d), k, TOL, "dF/dd")
-        assert_close(g.hertz_stiffness(E, R, d), 2 * a * E, TOL, "2 a E*")
+        assert_close(gen.hertz_stiffness(E, R, d), k, TOL, "dF/dd")
+        assert_close(gen.hertz_stiffness(E, R, d), 2 * a * E, TOL, "2 a E*")
 
 
 @given(st.floats(1e-12, 1e-1), st.floats(1e-9, 1e3), st.floats(1e3, 1e12),

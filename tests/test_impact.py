@@ -19,7 +19,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import hertz, impact
 
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
@@ -92,7 +92,7 @@ NAMES = {"x0": "max_depth", "tau": "contact_time", "p0": "max_pressure", "F": "m
 def test_impact_by_equation_of_motion():
     doms = {"E_star": E_DOM, "R": R_DOM, "m": M_DOM, "v0": V_DOM}
     for key, name in NAMES.items():
-        assert_mpmath_equal(getattr(g, f"impact_{name}"),
+        assert_mpmath_equal(getattr(gen, f"impact_{name}"),
                             lambda key=key, **kw: reference(**kw)[key], doms, rtol=TOL,
                             n=n_points(200, 30), dps=40, name=f"impact_{name}")
 
@@ -104,12 +104,12 @@ def test_impact_by_equation_of_motion():
     for key, name in NAMES.items():
         if key == "p0":
             continue
-        assert_mpmath_equal(getattr(g, f"impact_{name}_density"), ref_rho(key), doms,
+        assert_mpmath_equal(getattr(gen, f"impact_{name}_density"), ref_rho(key), doms,
                             rtol=TOL, n=n_points(200, 30), dps=40,
                             name=f"impact_{name}_density")
     # p0 of a sphere of density rho does not depend on R: any R gives the same reference
     assert_mpmath_equal(
-        g.impact_max_pressure_density,
+        gen.impact_max_pressure_density,
         lambda E_star, rho, v0: ref_rho("p0")(E_star, mp.mpf("0.37"), rho, v0),
         {"E_star": E_DOM, "rho": RHO_DOM, "v0": V_DOM}, rtol=TOL, n=n_points(200, 30),
         dps=40, name="impact_max_pressure_density")
@@ -125,14 +125,14 @@ def test_impact_time_integral_agrees():
             x0_ode, tau_ode = by_equation_of_motion(*(mp.mpf(v) for v in (E, R, m, v0)))
             assert abs(tau / tau_ode - 1) < mp.mpf(10) ** -30
             assert abs(x0 / x0_ode - 1) < mp.mpf(10) ** -30
-            assert_close(g.impact_contact_time(E, R, m, v0), tau, TOL, "tau")
-            assert_close(g.impact_max_depth(E, R, m, v0), x0, TOL, "x0")
+            assert_close(gen.impact_contact_time(E, R, m, v0), tau, TOL, "tau")
+            assert_close(gen.impact_max_depth(E, R, m, v0), x0, TOL, "x0")
 
 
 def test_problem3_constant_294():
     """Problem 3: tau = 2.94 x0/v0; the constant is 2 int_0^1 dxi/sqrt(1 - xi^(5/2))."""
     E, R, m, v0 = 1e11, 0.01, 0.0327, 1.0
-    ratio = g.impact_contact_time(E, R, m, v0) * v0 / g.impact_max_depth(E, R, m, v0)
+    ratio = gen.impact_contact_time(E, R, m, v0) * v0 / gen.impact_max_depth(E, R, m, v0)
     with mp.workdps(50):
         C = 2 * mp.quad(lambda t: 1 / mp.sqrt(1 - t ** (mp.mpf(5) / 2)), [0, 1])
     assert_close(ratio, C, 1e-14, "2 int dxi/sqrt(1 - xi^(5/2))")  # a ratio of two ~1e-15
@@ -179,10 +179,10 @@ def test_sphere_mass_by_quadrature():
     """m = integral of rho over the ball, as shells 4 pi r^2 dr, at 30 digits."""
     import mpmath as mp
 
-    from hertzmdr.numeric import _generated as g
+    from hertzmdr.numeric import _generated as gen
 
     R, rho = 0.01, 7800.0
     with mp.workdps(30):
         ref = mp.quad(lambda r: rho * 4 * mp.pi * r**2, [0, R])
     # one power and three products in float64
-    assert abs(g.impact_sphere_mass(R, rho) / ref - 1) < 1e-15
+    assert abs(gen.impact_sphere_mass(R, rho) / ref - 1) < 1e-15

@@ -7,8 +7,8 @@ strength b s of the branch point is checked against g' of (5.52) evaluated by qu
 
 import mpmath as mp
 
-from hertzmdr.numeric import _generated as g
-from hertzmdr.numeric import _generated_mp as gm
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric import _generated_mp as gen_mp
 
 from oracle import assert_close
 
@@ -56,7 +56,7 @@ def test_kink_gprime_is_the_singular_part_of_52():
 
         for e in ("1e-12", "1e-6", "0.5"):
             x_f = float(b * (1 + mp.mpf(e)))  # the same float x on both sides
-            rest = mp.diff(g_of, mp.mpf(x_f)) - mp.mpf(g.mdr_kink_gprime(B, s, x_f))
+            rest = mp.diff(g_of, mp.mpf(x_f)) - mp.mpf(gen.mdr_kink_gprime(B, s, x_f))
             # bound: the continuous part s acos(b/x) <= s sqrt(2e) (1 + e), plus the float64
             # rounding of the generated term (s/sqrt(2e) times 1e-15)
             e_ = float(e)
@@ -73,7 +73,7 @@ def test_kink_g_by_quadrature():
             bm = mp.mpf(B)
             ref = mp.quad(lambda u, bm=bm: 2 * bm * s / mp.sqrt(2 * bm + u * u),
                           [0, mp.sqrt(mp.mpf(xx) - bm)])
-        assert_close(g.mdr_kink_g(B, s, xx), ref, 1e-14, f"x/b = {ratio}")
+        assert_close(gen.mdr_kink_g(B, s, xx), ref, 1e-14, f"x/b = {ratio}")
 
 
 def test_kink_pressure_by_quadrature():
@@ -85,12 +85,12 @@ def test_kink_pressure_by_quadrature():
         with mp.workdps(30):
             args = [mp.mpf(v) for v in (E, A, B, rho, s)]
             ref = p_ref(args[3], args[1], args[2], args[4], args[0])
-            assert abs(gm.mdr_kink_pressure(*args) / ref - 1) < 1e-25, t
+            assert abs(gen_mp.mdr_kink_pressure(*args) / ref - 1) < 1e-25, t
         L, S = max(rho, B), min(rho, B)
         tol = 8 * 2.2e-16 * (1 + L**2 / ((L - S) * (L + S)) + A / (A - rho))
-        assert_close(g.mdr_kink_pressure(E, A, B, rho, s), ref, tol, f"p({rho})")
-    assert g.mdr_kink_pressure(E, A, B, B, s) == float("inf")
-    assert g.mdr_kink_pressure(E, A, B, 2 * A, s) == 0.0
+        assert_close(gen.mdr_kink_pressure(E, A, B, rho, s), ref, tol, f"p({rho})")
+    assert gen.mdr_kink_pressure(E, A, B, B, s) == float("inf")
+    assert gen.mdr_kink_pressure(E, A, B, 2 * A, s) == 0.0
 
 
 def test_worn_pressure_contains_the_kink_term():
@@ -98,6 +98,6 @@ def test_worn_pressure_contains_the_kink_term():
     r = b and continuous there (the log singularities cancel)."""
     R = 0.05
     near = [B * (1 - 1e-9), B * (1 + 1e-9)]
-    rest = [g.worn_pressure(E, R, A, B, rr) - g.mdr_kink_pressure(E, A, B, rr, B / R)
+    rest = [gen.worn_pressure(E, R, A, B, rr) - gen.mdr_kink_pressure(E, A, B, rr, B / R)
             for rr in near]
     assert abs(rest[0] - rest[1]) < 1e-6 * abs(rest[0])

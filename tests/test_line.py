@@ -17,7 +17,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import line
 
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
@@ -72,23 +72,23 @@ def test_line_by_displacement_gradient():
             grad = -2 / (mp.pi * E) * pv_gradient_integral(
                 lambda t: p0 * mp.sqrt(1 - (t / a) ** 2), x, a)
             assert abs(grad / (-x / R) - 1) < 1e-25, s
-            assert_close(g.line_pressure(E, R, d, float(x)), p0 * mp.sqrt(1 - (x / a) ** 2),
+            assert_close(gen.line_pressure(E, R, d, float(x)), p0 * mp.sqrt(1 - (x / a) ** 2),
                          TOL, "(5.36)")
-        assert_close(g.line_half_width(R, d), a, TOL, "(5.35)")
-        assert_close(g.line_max_pressure_from_half_width(E, R, float(a)), p0, TOL, "p0(a)")
-        assert_close(g.line_force_per_length_from_half_width(E, R, float(a)), F_L, TOL, "F/L")
-        assert_close(g.line_force(E, L, d), L * F_L, TOL, "(5.34)")
-        assert_close(g.line_max_pressure(E, R, d), p0, TOL, "(5.37) second form")
-        assert_close(g.line_max_pressure_depth_width(E, float(a), d), p0, TOL,
+        assert_close(gen.line_half_width(R, d), a, TOL, "(5.35)")
+        assert_close(gen.line_max_pressure_from_half_width(E, R, float(a)), p0, TOL, "p0(a)")
+        assert_close(gen.line_force_per_length_from_half_width(E, R, float(a)), F_L, TOL, "F/L")
+        assert_close(gen.line_force(E, L, d), L * F_L, TOL, "(5.34)")
+        assert_close(gen.line_max_pressure(E, R, d), p0, TOL, "(5.37) second form")
+        assert_close(gen.line_max_pressure_depth_width(E, float(a), d), p0, TOL,
                      "(5.37) first form")
         F = float(L * F_L)
-        assert_close(g.line_max_pressure_from_force(E, F, L, R), p0, TOL, "(5.37) third form")
-        assert_close(g.line_half_width_from_force(E, F, L, R), a, TOL, "a(F)")
-        assert_close(g.line_depth_from_force(E, F, L), d, TOL, "d(F)")
+        assert_close(gen.line_max_pressure_from_force(E, F, L, R), p0, TOL, "(5.37) third form")
+        assert_close(gen.line_half_width_from_force(E, F, L, R), a, TOL, "a(F)")
+        assert_close(gen.line_depth_from_force(E, F, L), d, TOL, "d(F)")
         # the chapter's third form of (5.37) lacks a pi: sqrt(pi) times too large
         printed = mp.sqrt(E * F / (L * R))
         assert abs(printed / p0 - mp.sqrt(mp.pi)) < 1e-13
-    assert g.line_pressure(E, R, d, 2 * float(a)) == 0.0
+    assert gen.line_pressure(E, R, d, 2 * float(a)) == 0.0
 
 
 @pytest.mark.sweep
@@ -102,9 +102,9 @@ def test_line_sweep():
             return p0 if which == "p0" else F_L
         return ref
 
-    assert_mpmath_equal(lambda E_star, R, strain: g.line_max_pressure(E_star, R, strain * R),
+    assert_mpmath_equal(lambda E_star, R, strain: gen.line_max_pressure(E_star, R, strain * R),
                         ref_d("p0"), doms, rtol=TOL, n=n, dps=35, name="line_max_pressure")
-    assert_mpmath_equal(lambda E_star, R, strain: g.line_force(E_star, 1.0, strain * R),
+    assert_mpmath_equal(lambda E_star, R, strain: gen.line_force(E_star, 1.0, strain * R),
                         ref_d("F_L"), doms, rtol=TOL, n=n, dps=35, name="line_force")
 
     def ref_F(which):
@@ -118,11 +118,11 @@ def test_line_sweep():
 
     fdoms = {"E_star": E_DOM, "F": F_DOM, "L": L_DOM, "R": R_DOM}
     m = n_points(60, 10)
-    assert_mpmath_equal(g.line_max_pressure_from_force, ref_F("p0"), fdoms, rtol=TOL, n=m,
+    assert_mpmath_equal(gen.line_max_pressure_from_force, ref_F("p0"), fdoms, rtol=TOL, n=m,
                         dps=35, name="line_max_pressure_from_force")
-    assert_mpmath_equal(g.line_half_width_from_force, ref_F("a"), fdoms, rtol=TOL, n=m,
+    assert_mpmath_equal(gen.line_half_width_from_force, ref_F("a"), fdoms, rtol=TOL, n=m,
                         dps=35, name="line_half_width_from_force")
-    assert_mpmath_equal(lambda E_star, F, L, R: g.line_depth_from_force(E_star, F, L),
+    assert_mpmath_equal(lambda E_star, F, L, R: gen.line_depth_from_force(E_star, F, L),
                         ref_F("d"), fdoms, rtol=TOL, n=m, dps=35, name="line_depth_from_force")
 
 
@@ -134,7 +134,7 @@ def test_line_stiffness_by_derivative():
         with mp.workdps(35):
             k = mp.diff(lambda x: L * reference(mp.mpf(E), mp.mpf(R), mp.sqrt(R * x))[1],
                         mp.mpf(d))
-        assert abs(g.line_stiffness(E, L) / k - 1) < 1e-15
+        assert abs(gen.line_stiffness(E, L) / k - 1) < 1e-15
 
 
 @given(st.floats(1e-9, 1e-1), st.floats(1e-6, 1e2), st.floats(1e3, 1e12),
@@ -167,28 +167,28 @@ def test_line_half_width_forms_sweep():
 
     # a = sqrt(R d) is rounded in float64 before the call (1 ulp), exact in the reference
     assert_mpmath_equal(
-        lambda E_star, R, strain: g.line_max_pressure_from_half_width(
-            E_star, R, g.line_half_width(R, strain * R)),
+        lambda E_star, R, strain: gen.line_max_pressure_from_half_width(
+            E_star, R, gen.line_half_width(R, strain * R)),
         lambda **kw: at(**kw)[1][0], doms, rtol=TOL, n=n, dps=35,
         name="line_max_pressure_from_half_width")
     assert_mpmath_equal(
-        lambda E_star, R, strain: g.line_force_per_length_from_half_width(
-            E_star, R, g.line_half_width(R, strain * R)),
+        lambda E_star, R, strain: gen.line_force_per_length_from_half_width(
+            E_star, R, gen.line_half_width(R, strain * R)),
         lambda **kw: at(**kw)[1][1], doms, rtol=TOL, n=n, dps=35,
         name="line_force_per_length_from_half_width")
     assert_mpmath_equal(
-        lambda E_star, R, strain: g.line_max_pressure_depth_width(
-            E_star, g.line_half_width(R, strain * R), strain * R),
+        lambda E_star, R, strain: gen.line_max_pressure_depth_width(
+            E_star, gen.line_half_width(R, strain * R), strain * R),
         lambda **kw: at(**kw)[1][0], doms, rtol=TOL, n=n, dps=35,
         name="line_max_pressure_depth_width")
     assert_mpmath_equal(
-        lambda E_star, R, strain: g.line_half_width(R, strain * R),
+        lambda E_star, R, strain: gen.line_half_width(R, strain * R),
         lambda **kw: at(**kw)[0], doms, rtol=TOL, n=n, dps=35, name="line_half_width")
 
     # the pressure at x = frac * a, frac in [0, 0.9]: sqrt(1 - frac^2) is well conditioned
     def p_float(E_star, R, strain, frac):
         d = strain * R
-        return g.line_pressure(E_star, R, d, frac * g.line_half_width(R, d))
+        return gen.line_pressure(E_star, R, d, frac * gen.line_half_width(R, d))
 
     def p_ref(E_star, R, strain, frac):
         return at(E_star, R, strain)[1][0] * mp.sqrt(1 - frac**2)

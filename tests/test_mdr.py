@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from hertzmdr.derive import hertz, mdr, powerlaw, pressures
 from hertzmdr.derive.symbols import E_star, R, a, d, p0, r
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import mdr as nmdr
 from hertzmdr.numeric import powerlaw as npl
 
@@ -157,7 +157,7 @@ def test_numeric_worn_with_and_without_breakpoint():
     N = 120
     r_s = np.unique(np.concatenate([np.linspace(0, b, N // 3 + 1), np.linspace(b, 1, N + 1)]))
     f = np.where(r_s < b, 0, (r_s**2 - b**2) / (2 * Rv))
-    ref_F, ref_a = g.worn_force(E, Rv, b, dd), g.worn_contact_radius(Rv, b, dd)
+    ref_F, ref_a = gen.worn_force(E, Rv, b, dd), gen.worn_contact_radius(Rv, b, dd)
     sol = nmdr.Profile.from_samples(r_s, f, breakpoints=[b]).solve(depth=dd, E_star=E)
     assert abs(sol.force / ref_F - 1) < 1e-13  # piecewise polynomial: reproduced exactly
     assert abs(sol.contact_radius / ref_a - 1) < 1e-13
@@ -188,7 +188,7 @@ def test_numeric_noisy_samples():
     prof = nmdr.Profile.from_samples(r_s, f, smoothing="gcv")
     dd = 0.25  # Hertz with R = 1: a = 0.5
     sol = prof.solve(depth=dd, E_star=E)
-    err = abs(sol.force / g.hertz_force(E, 1.0, dd) - 1)
+    err = abs(sol.force / gen.hertz_force(E, 1.0, dd) - 1)
     assert err < 1e-3
     assert sol.rel_error > err / 10 and not sol.converged
 

@@ -11,7 +11,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import powerlaw
 
 from oracle import Arg, assert_mpmath_equal, n_points
@@ -83,7 +83,7 @@ def test_worn_force_sweep():
         return 2 * E * a * d * mp.quad(lambda t: 1 - gq(a * t) / d, [0, b / a, 1])
 
     def func(E, R0, strain):
-        return g.worn_force(E, R0, R0 / 10, strain * R0)
+        return gen.worn_force(E, R0, R0 / 10, strain * R0)
 
     # 60 digits: for the smallest strains a - b ~ 5e-21 b, and asin(b/x) near 1 needs the
     # digits that the difference takes away

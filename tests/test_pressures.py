@@ -12,7 +12,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 
 from kernels import force_axisymmetric, uz_axisymmetric
 from oracle import FULL, Arg, assert_close, assert_mpmath_equal, n_points
@@ -39,7 +39,7 @@ def test_punch_displacement_by_kernel(r_over_a):
     with mp.workdps(DPS):
         u = uz_axisymmetric(punch(mp.mpf(p0), mp.mpf(a)), mp.mpf(r_over_a) * a, a, E)
         # uniform inside (5.10): the value does not depend on r
-        assert_close(g.punch_pressure_displacement(E, a, p0), u, TOL_FLOAT, "(5.10)")
+        assert_close(gen.punch_pressure_displacement(E, a, p0), u, TOL_FLOAT, "(5.10)")
 
 
 @pytest.mark.parametrize("r_over_a", ["0", "0.5", "0.95", "1"])
@@ -48,7 +48,7 @@ def test_hertz_displacement_by_kernel(r_over_a):
     with mp.workdps(DPS):
         r = mp.mpf(r_over_a) * a
         u = uz_axisymmetric(hertzian(mp.mpf(p0), mp.mpf(a)), r, a, E)
-        assert_close(g.hertz_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT, "(5.16)")
+        assert_close(gen.hertz_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT, "(5.16)")
 
 
 @pytest.mark.parametrize("r_over_a", ["1.0001", "1.5", "10", "1e4"])
@@ -59,17 +59,17 @@ def test_outside_displacement_by_kernel(r_over_a):
         u_h = uz_axisymmetric(hertzian(mp.mpf(p0), mp.mpf(a)), r, a, E)
         u_p = uz_axisymmetric(punch(mp.mpf(p0), mp.mpf(a)), r, a, E)
         # the punch form 2 a p0 asin(a/r)/E* has no cancellation: full float64 accuracy
-        assert_close(g.punch_pressure_displacement_outside(E, a, p0, float(r)), u_p,
+        assert_close(gen.punch_pressure_displacement_outside(E, a, p0, float(r)), u_p,
                      TOL_FLOAT, "punch outside")
         # the n = 1/2 textbook form cancels terms of relative size (r/a)^2: allow that many ulps
         tol = TOL_FLOAT * max(1.0, float(r / a) ** 2)
-        assert_close(g.hertz_pressure_displacement_outside(E, a, p0, float(r)), u_h, tol,
+        assert_close(gen.hertz_pressure_displacement_outside(E, a, p0, float(r)), u_h, tol,
                      "Hertz outside, textbook form")
         # the stable form of hertzmdr.derive.hertz (in terms of d and R) keeps full accuracy
         R = a**2 / 1e-6  # any R, with d = a^2/R; p0 = 2 E* sqrt(d/R)/pi fixes the scale below
         d = a**2 / R
         scale = (2 * E * mp.sqrt(mp.mpf(d) / R) / mp.pi) / p0
-        assert_close(g.hertz_displacement_outside(R, d, float(r)), u_h * scale, TOL_FLOAT,
+        assert_close(gen.hertz_displacement_outside(R, d, float(r)), u_h * scale, TOL_FLOAT,
                      "Hertz outside, stable form")
 
 
@@ -78,11 +78,11 @@ def test_force_by_quadrature():
     with mp.workdps(50):
         f_p = force_axisymmetric(lambda r: p0 / mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
         f_h = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
-    assert_close(g.punch_pressure_force(a, p0), f_p, TOL_FLOAT, "(5.11)")
-    assert_close(g.hertz_pressure_force(a, p0), f_h, TOL_FLOAT, "(5.17)")
+    assert_close(gen.punch_pressure_force(a, p0), f_p, TOL_FLOAT, "(5.11)")
+    assert_close(gen.hertz_pressure_force(a, p0), f_h, TOL_FLOAT, "(5.17)")
     with mp.workdps(50):
         f_u = force_axisymmetric(lambda r: mp.mpf(p0), mp.mpf(a))
-    assert_close(g.uniform_pressure_force(a, p0), f_u, TOL_FLOAT, "uniform")
+    assert_close(gen.uniform_pressure_force(a, p0), f_u, TOL_FLOAT, "uniform")
 
 
 def test_punch_stiffness_by_kernel():
@@ -91,7 +91,7 @@ def test_punch_stiffness_by_kernel():
     with mp.workdps(DPS):
         F = force_axisymmetric(lambda r: p0 / mp.sqrt(1 - (r / a) ** 2), mp.mpf(a))
         u = uz_axisymmetric(punch(mp.mpf(p0), mp.mpf(a)), 0, a, E)
-        assert_close(g.punch_stiffness(E, a), F / u, TOL_FLOAT, "(5.12)")
+        assert_close(gen.punch_stiffness(E, a), F / u, TOL_FLOAT, "(5.12)")
 
 
 def test_uniform_by_kernel():
@@ -100,18 +100,18 @@ def test_uniform_by_kernel():
         uniform = lambda gap: mp.mpf(p0)  # noqa: E731
         centre = uz_axisymmetric(uniform, 0, a, E)
         edge = uz_axisymmetric(uniform, a, a, E)
-        assert_close(g.uniform_pressure_displacement_centre(E, a, p0), centre, TOL_FLOAT, "u(0)")
-        assert_close(g.uniform_pressure_displacement_edge(E, a, p0), edge, TOL_FLOAT, "u(a)")
+        assert_close(gen.uniform_pressure_displacement_centre(E, a, p0), centre, TOL_FLOAT, "u(0)")
+        assert_close(gen.uniform_pressure_displacement_edge(E, a, p0), edge, TOL_FLOAT, "u(a)")
         for s in ("0", "0.5", "0.99", "1"):
             r = mp.mpf(s) * a
             u = uz_axisymmetric(uniform, r, a, E)
             # scipy's ellipe is accurate to a few ulps (Cephes): the float64 tolerance holds
-            assert_close(g.uniform_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT,
+            assert_close(gen.uniform_pressure_displacement(E, a, p0, float(r)), u, TOL_FLOAT,
                          f"uniform u({s} a)")
         for s in ("1.0001", "2", "1e4"):  # the stable print keeps full accuracy far away
             r = mp.mpf(s) * a
             u = uz_axisymmetric(uniform, r, a, E)
-            assert_close(g.uniform_pressure_displacement_outside(E, a, p0, float(r)), u,
+            assert_close(gen.uniform_pressure_displacement_outside(E, a, p0, float(r)), u,
                          TOL_FLOAT, f"uniform u({s} a)")
 
 
@@ -136,7 +136,7 @@ def test_derived_expressions_to_30_digits():
 
 def test_arrays_broadcast():
     a = np.array([1e-3, 2e-3, 4e-3])
-    np.testing.assert_allclose(g.punch_stiffness(1e9, a), 2e9 * a, rtol=1e-15)
+    np.testing.assert_allclose(gen.punch_stiffness(1e9, a), 2e9 * a, rtol=1e-15)
 
 
 # -- float64 sweeps over decades -------------------------------------------------------------
@@ -165,7 +165,7 @@ def _unit_displacement(kind, ratio):
     ("uniform_pressure_displacement_outside", "uniform", "outside"),
 ])
 def test_displacement_sweep(name, kind, where):
-    fn = getattr(g, name)
+    fn = getattr(gen, name)
     for ratio in RATIOS[where]:
         U = _unit_displacement(kind, ratio)
 
@@ -189,5 +189,5 @@ def test_force_sweep(name, n):
     def ref(a, p0):
         return force_axisymmetric(lambda r: p0 * (1 - (r / a) ** 2) ** mp.mpf(n), a)
 
-    assert_mpmath_equal(getattr(g, name), ref, {"a": Arg(1e-9, 1e3), "p0": Arg(1e3, 1e12)},
+    assert_mpmath_equal(getattr(gen, name), ref, {"a": Arg(1e-9, 1e3), "p0": Arg(1e3, 1e12)},
                         rtol=TOL_FLOAT, n=n_points(100, 12), dps=50, name=name)

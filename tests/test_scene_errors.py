@@ -142,12 +142,12 @@ def test_worn_pressure_matches_the_numerical_mdr():
     # (Boussinesq's point force summed over rings); QUADPACK split at the log singularity b
     from scipy.integrate import quad
 
-    from hertzmdr.numeric import _generated as g
+    from hertzmdr.numeric import _generated as gen
 
-    a = float(g.worn_contact_radius(R, b, d))
+    a = float(gen.worn_contact_radius(R, b, d))
     err = doc["axis_stresses"]["rel_error"]
     for zi, si in list(zip(ax["z"], szz, strict=True))[::10]:
-        ref = -quad(lambda rho, z=zi: float(g.worn_pressure(E_star, R, a, b, rho)) * 3 * z**3
+        ref = -quad(lambda rho, z=zi: float(gen.worn_pressure(E_star, R, a, b, rho)) * 3 * z**3
                     * rho / (rho**2 + z**2) ** 2.5, 0, a, points=[b], limit=200)[0]
         assert abs(si / ref - 1) <= max(err, 1e-6), (zi, si, ref, err)
 

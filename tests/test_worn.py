@@ -15,8 +15,8 @@ import sympy as sp
 from hertzmdr.derive import worn as dw
 from hertzmdr.derive.mdr import x
 from hertzmdr.derive.symbols import R
-from hertzmdr.numeric import _generated as g
-from hertzmdr.numeric import _generated_mp as gm
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric import _generated_mp as gen_mp
 
 from kernels import uz_rings
 from oracle import WORST, assert_close, n_points
@@ -83,12 +83,12 @@ def test_pressure_by_quadrature_of_59():
     for rho in RHOS:
         with mp.workdps(30):
             ref = pressure_ref(mp.mpf(rho), mp.mpf(a), mp.mpf(b), mp.mpf(Rv), mp.mpf(E))
-            assert abs(gm.worn_pressure(*(mp.mpf(v) for v in (E, Rv, a, b, rho))) / ref - 1) \
+            assert abs(gen_mp.worn_pressure(*(mp.mpf(v) for v in (E, Rv, a, b, rho))) / ref - 1) \
                 < 1e-25, rho
-        assert_close(g.worn_pressure(E, Rv, a, b, rho), ref, _pressure_tol(rho, a, b),
+        assert_close(gen.worn_pressure(E, Rv, a, b, rho), ref, _pressure_tol(rho, a, b),
                      f"p({rho})")
-    assert g.worn_pressure(E, Rv, a, b, b) == float("inf")  # log singularity at the kink
-    assert list(g.worn_pressure(E, Rv, a, b, [a, 2 * a])) == [0.0, 0.0]
+    assert gen.worn_pressure(E, Rv, a, b, b) == float("inf")  # log singularity at the kink
+    assert list(gen.worn_pressure(E, Rv, a, b, [a, 2 * a])) == [0.0, 0.0]
 
 
 def test_pressure_is_hertz_without_wear():
@@ -101,7 +101,7 @@ def test_pressure_is_hertz_without_wear():
         # the flat removes O(b) at the centre, -(E*/(pi R)) b acos(b/a) (relative pi b/(4a)),
         # and O(b^2/r^2) beyond the flat, where the modulus k = b/r of F and E is small
         tol = 1e-14 + (np.pi * b / (4 * a) * 1.01 if rr == 0 else (b / rr) ** 2)
-        assert_close(g.worn_pressure(E, Rv, a, b, rr), h, tol, f"b->0 at r={rr}")
+        assert_close(gen.worn_pressure(E, Rv, a, b, rr), h, tol, f"b->0 at r={rr}")
 
 
 def test_force_by_closed_form_pressure():
@@ -110,8 +110,8 @@ def test_force_by_closed_form_pressure():
     Rv, b, E, a = 1.0, 0.5, 3.0, 0.8
     with mp.workdps(30):
         args = [mp.mpf(v) for v in (E, Rv, a, b)]
-        F = mp.quad(lambda rr: gm.worn_pressure(*args, rr) * 2 * mp.pi * rr, [0, b, a])
-        F_a = gm.worn_force_from_radius(*args)
+        F = mp.quad(lambda rr: gen_mp.worn_pressure(*args, rr) * 2 * mp.pi * rr, [0, b, a])
+        F_a = gen_mp.worn_force_from_radius(*args)
         assert abs(F / F_a - 1) < 1e-25
 
 
@@ -122,8 +122,8 @@ def test_g_by_quadrature():
             xm = mp.mpf(xv)
             ref = xm * mp.quad(lambda rr, xm=xm: rr / Rv / mp.sqrt((xm - rr) * (xm + rr)),
                                [b, xm])
-        assert_close(g.worn_g(Rv, b, xv), ref, TOL_FLOAT, "g(x)")
-    assert g.worn_g(Rv, b, 0.5e-4) == 0.0
+        assert_close(gen.worn_g(Rv, b, xv), ref, TOL_FLOAT, "g(x)")
+    assert gen.worn_g(Rv, b, 0.5e-4) == 0.0
 
 
 def test_force_by_pressure():
@@ -133,15 +133,15 @@ def test_force_by_pressure():
             bm = mp.mpf(b)
             # contact radius from d = g(a) (5.55), solved at 25 digits
             am = mp.findroot(lambda aa, bm=bm, d=d: aa * mp.sqrt((aa - bm) * (aa + bm)) / Rv - d,
-                             mp.mpf(g.worn_contact_radius(Rv, b, d)))
+                             mp.mpf(gen.worn_contact_radius(Rv, b, d)))
             F = mp.quad(lambda rr, am=am, bm=bm: pressure_ref(rr, am, bm, Rv, E) * 2 * mp.pi * rr,
                         [0, bm, am])
-        assert_close(g.worn_contact_radius(Rv, b, d), am, 1e-14, "a(d)")
-        assert_close(g.worn_force(E, Rv, b, d), F, 1e-13, f"F(d) at d={d}")
+        assert_close(gen.worn_contact_radius(Rv, b, d), am, 1e-14, "a(d)")
+        assert_close(gen.worn_force(E, Rv, b, d), F, 1e-13, f"F(d) at d={d}")
         # F(a) near a = b amplifies the rounding of a by a^2/(a^2 - b^2): allow for it
         a = float(am)
         cond = float(am**2 / (am**2 - bm**2))
-        assert_close(g.worn_force_from_radius(E, Rv, a, b), F, 1e-14 * max(cond, 10), "F(a)")
+        assert_close(gen.worn_force_from_radius(E, Rv, a, b), F, 1e-14 * max(cond, 10), "F(a)")
 
 
 def test_stable_force_at_small_depth():
@@ -152,7 +152,7 @@ def test_stable_force_at_small_depth():
         s = 2 * mp.mpf(Rv) * d / mp.mpf(b) ** 2
         root = mp.sqrt(1 + s**2)
         ref = mp.sqrt(2) * E * mp.mpf(b) ** 3 / (3 * Rv) * (2 + root) * mp.sqrt(root - 1)
-    assert_close(g.worn_force(E, Rv, b, d), ref, 1e-14, "stable F(d)")
+    assert_close(gen.worn_force(E, Rv, b, d), ref, 1e-14, "stable F(d)")
 
 
 # field points of the 3-D check: (name, r/a or r/b), on the flat, at the kink, on the parabola,
@@ -172,10 +172,10 @@ def test_against_3d_elasticity():
     Rv, b, E, d = mp.mpf(1), mp.mpf(1) / 2, mp.mpf(3), mp.mpf(1) / 4
     with mp.workdps(30):
         a = mp.sqrt((b**2 + mp.sqrt(b**4 + 4 * Rv**2 * d**2)) / 2)  # (5.55) solved at 30 digits
-        assert abs(gm.worn_depth(Rv, a, b) / d - 1) < 1e-28
+        assert abs(gen_mp.worn_depth(Rv, a, b) / d - 1) < 1e-28
 
         def p(rho):
-            return gm.worn_pressure(E, Rv, a, b, rho)
+            return gen_mp.worn_pressure(E, Rv, a, b, rho)
 
         for name, unit, t in POINTS_3D[:n_points(len(POINTS_3D), 3)]:
             rr = t * (a if unit == "a" else b)
@@ -185,7 +185,7 @@ def test_against_3d_elasticity():
                 from hertzmdr.derive.symbols import r as r_s
                 ref = sp.lambdify((R, a_s, dw.b, r_s), dw.solution()["u_out"], "mpmath")(
                     Rv, a, b, rr)  # the derived (not the stable, printed) form
-                assert_close(g.worn_displacement_outside(*(float(v) for v in (Rv, a, b, rr))),
+                assert_close(gen.worn_displacement_outside(*(float(v) for v in (Rv, a, b, rr))),
                              u, 1e-14, "float64 outside")
             else:
                 ref = d - (max(rr, b) ** 2 - b**2) / (2 * Rv)  # d - f(r)

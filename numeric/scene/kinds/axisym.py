@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
 from hertzmdr.numeric.scene.kinds.stresses import StressEffects, SuperposedStresses
 
@@ -187,22 +187,22 @@ class FlatPunch(Axisymmetric):
         return np.full(np.shape(d), self.a)
 
     def force_of(self, d):
-        return g.powerlaw_punch_force(self.E_star, self.a, np.asarray(d, float))
+        return gen.powerlaw_punch_force(self.E_star, self.a, np.asarray(d, float))
 
     def depth_of(self, F):
-        return np.asarray(F, float) / g.punch_stiffness(self.E_star, self.a)  # (5.12)
+        return np.asarray(F, float) / gen.punch_stiffness(self.E_star, self.a)  # (5.12)
 
     def p(self, r, d):
         r = np.asarray(r, float)
         out = np.zeros(r.shape)
         ins = r < self.a
-        out[ins] = g.powerlaw_punch_pressure(self.E_star, self.a, d, r[ins])
+        out[ins] = gen.powerlaw_punch_pressure(self.E_star, self.a, d, r[ins])
         return out
 
     def u(self, r, d):
         r = np.asarray(r, float)
         out = np.full(r.shape, float(d))
-        out[r > self.a] = g.powerlaw_punch_displacement_outside(self.a, d, r[r > self.a])
+        out[r > self.a] = gen.powerlaw_punch_displacement_outside(self.a, d, r[r > self.a])
         return out
 
     def g(self, x):
@@ -308,10 +308,10 @@ class Worn(Axisymmetric):
         return {**super().info(), "radius": self.R, "flat_radius": self.b}
 
     def radius(self, d):
-        return g.worn_contact_radius(self.R, self.b, np.asarray(d, float))
+        return gen.worn_contact_radius(self.R, self.b, np.asarray(d, float))
 
     def force_of(self, d):
-        return g.worn_force(self.E_star, self.R, self.b, np.asarray(d, float))
+        return gen.worn_force(self.E_star, self.R, self.b, np.asarray(d, float))
 
     def depth_of(self, F):
         """d(F): F(a) is increasing from 0 at a = b; solve it for a (brentq), then d = g(a)."""
@@ -319,19 +319,19 @@ class Worn(Axisymmetric):
 
         out = []
         for Fi in np.atleast_1d(np.asarray(F, float)):
-            f = lambda a, Fi=Fi: float(g.worn_force_from_radius(self.E_star, self.R, a,  # noqa
+            f = lambda a, Fi=Fi: float(gen.worn_force_from_radius(self.E_star, self.R, a,  # noqa
                                                                   self.b)) - Fi
             hi = 2 * max(self.b, 1e-300)
             while f(hi) < 0:
                 hi *= 2
             a = brentq(f, self.b, hi, xtol=1e-15 * hi, rtol=4e-16)
-            out.append(float(g.worn_depth(self.R, a, self.b)))
+            out.append(float(gen.worn_depth(self.R, a, self.b)))
         return np.array(out)
 
     def g(self, x):
         x = np.abs(np.asarray(x, float))
         out = np.zeros(x.shape)
-        out[x > self.b] = g.worn_g(self.R, self.b, x[x > self.b])
+        out[x > self.b] = gen.worn_g(self.R, self.b, x[x > self.b])
         return out
 
     def u(self, r, d):
@@ -340,12 +340,12 @@ class Worn(Axisymmetric):
         out = np.empty(r.shape)
         ins = r <= a
         out[ins] = d - np.where(r[ins] < self.b, 0.0, (r[ins] ** 2 - self.b**2) / (2 * self.R))
-        out[~ins] = g.worn_displacement_outside(self.R, a, self.b, r[~ins])
+        out[~ins] = gen.worn_displacement_outside(self.R, a, self.b, r[~ins])
         return out
 
     def p(self, r, d):
         a = float(self.radius(d))
-        return g.worn_pressure(self.E_star, self.R, a, self.b, np.asarray(r, float))  # (5.59)
+        return gen.worn_pressure(self.E_star, self.R, a, self.b, np.asarray(r, float))  # (5.59)
 
     def effect_pressure_profile(self, st):
         d = self.last(st)

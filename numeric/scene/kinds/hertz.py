@@ -97,14 +97,15 @@ class HertzContact(StressEffects, Contact):
     def node_impact(self, run):
         """Closed forms of Problems 3 and 4, and the equation of motion integrated to check
         them (numeric/motion.py) at the scene's rtol (default 1e-10)."""
-        from hertzmdr.numeric import _generated, impact, motion
+        from hertzmdr.numeric import _generated as gen
+        from hertzmdr.numeric import impact, motion
 
         load = run.spec.load
         if load.kind != "impact":
             return None
         kw = self._mass(load)
         m = load.mass if load.mass is not None else \
-            float(_generated.impact_sphere_mass(self.striker_radius, load.density))
+            float(gen.impact_sphere_mass(self.striker_radius, load.density))
         rtol = self.rtol or 1e-10
         mo = motion.integrate(load.velocity, self.R, self.E_star, m, rtol=rtol)
         closed = {"time": float(impact.contact_time(load.velocity, self.R, self.E_star, **kw)),

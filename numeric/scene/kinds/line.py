@@ -54,9 +54,9 @@ class LineContact(Contact):
         return Value(st.force / (2 * a * self.L), "F/(2 a L)", CLOSED_FORM_RTOL)
 
     def effect_stiffness(self, st):
-        from hertzmdr.numeric import _generated as g
+        from hertzmdr.numeric import _generated as gen
 
-        return Value(np.full(np.shape(st.force), float(g.line_stiffness(self.E_star, self.L))),
+        return Value(np.full(np.shape(st.force), float(gen.line_stiffness(self.E_star, self.L))),
                      "dF/dd of (5.34), under the convention (5.35)", CLOSED_FORM_RTOL)
 
     def effect_pressure_profile(self, st):

@@ -6,19 +6,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as g
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
 
 FIELD_POINTS = 201
 
 # distribution -> (inside u_z(E, a, p0, r), outside u_z(E, a, p0, r), force(a, p0), equation)
 _FORMS = {
-    "uniform": (g.uniform_pressure_displacement, g.uniform_pressure_displacement_outside,
-                g.uniform_pressure_force, "Problem 6"),
-    "hertzian": (g.hertz_pressure_displacement, g.hertz_pressure_displacement_outside,
-                 g.hertz_pressure_force, "(5.16), Fig. 5.2"),
-    "punch": (lambda E, a, p0, r: g.punch_pressure_displacement(E, a, p0) + 0 * r,
-              g.punch_pressure_displacement_outside, g.punch_pressure_force, "(5.10)"),
+    "uniform": (gen.uniform_pressure_displacement, gen.uniform_pressure_displacement_outside,
+                gen.uniform_pressure_force, "Problem 6"),
+    "hertzian": (gen.hertz_pressure_displacement, gen.hertz_pressure_displacement_outside,
+                 gen.hertz_pressure_force, "(5.16), Fig. 5.2"),
+    "punch": (lambda E, a, p0, r: gen.punch_pressure_displacement(E, a, p0) + 0 * r,
+              gen.punch_pressure_displacement_outside, gen.punch_pressure_force, "(5.10)"),
 }
 
 
