@@ -61,11 +61,11 @@ def verification_section() -> str:
          "integrated over the disc at 30 digits",
          "tests/test_mdr.py::test_mdr_force_by_the_pressure"),
         ("every error bound of the numerical MDR of samples (force-depth curve, force, contact "
-         "radius, depth under force control, pressure): a sphere, a sphere on a cone with and "
-         "without its kink as a breakpoint, a cone, issue 12's sphere-cone tip at 10, 50, "
-         "100 nm", "30-digit quadratures of (5.52), (5.57) and (5.59) (order exchanged: an "
-         "incomplete elliptic kernel) of the profile the samples come from; fails when a "
-         "bound is below the actual error", "tests/test_mdr_bounds.py"),
+         "radius, depth under force control, pressure, displacement, g): a sphere, a sphere "
+         "on a cone with and without its kink as a breakpoint, a cone, issue 12's sphere-cone "
+         "tip at 10, 50, 100 nm", "30-digit quadratures of (5.52), (5.57), (5.59) (order "
+         "exchanged: an incomplete elliptic kernel) and (5.60) of the profile the samples come "
+         "from; fails when a bound is below the actual error", "tests/test_mdr_bounds.py"),
         ("`RTOL_RANGE[0]`, what the refinement reaches", "callables of five profiles (smooth, "
          "kinked, sphere-cone with and without its tangent point as a breakpoint) meet it at "
          "two depths", "tests/test_mdr.py::test_rtol_range_lower_end"),

@@ -140,11 +140,12 @@ class Solution:
     why_not_met: str | None
     _rep: Rep = field(repr=False)
     _coarse: Rep = field(repr=False)
+    _d_coarse: float = field(repr=False)
     _a_coarse: float = field(repr=False)
-    def g(self, x):
-        """MDR profile g(x) [m] (5.52) at |x| [m]."""
-        x = nonnegative("x", np.abs(as_float("x", x)))
-        return result(tables.g(self._rep, x.ravel()).reshape(x.shape))
+    def g(self, x, *, return_error=False):
+        """MDR profile g(x) [m] (5.52) at |x| [m]; with ``return_error=True`` also a bound of
+        its absolute error [m] (``Profile.g``)."""
+        return _g(self._rep, self._coarse, x, return_error)
 
     def pressure(self, r, *, return_error=False):
         """Contact pressure p(r) [Pa] (5.59) at r [m] (0 outside the contact).
@@ -171,11 +172,44 @@ class Solution:
         err[np.isinf(p)] = np.inf
         return result(p.reshape(r.shape)), result(err.reshape(r.shape))
 
-    def displacement(self, r):
-        """Surface displacement u_z(r) [m] at r [m], inside and outside the contact (5.60)."""
+    def displacement(self, r, *, return_error=False):
+        """Surface displacement u_z(r) [m] at r [m], inside and outside the contact (5.60).
+
+        With ``return_error=True`` also a bound of the absolute error per point [m]: the
+        envelope of the difference from the coarse representation (at its own depth and
+        contact radius, fewer Gauss points) over half a coarse sample spacing, plus
+        ``rel_error`` times the depth (the error of d and a) and a rounding bound."""
         r = nonnegative("r", r)
-        u = operators.displacement(self._rep, r.ravel(), self.contact_radius, self.depth)
-        return result(u.reshape(r.shape))
+        flat = r.ravel()
+        u = operators.displacement(self._rep, flat, self.contact_radius, self.depth)
+        if not return_error:
+            return result(u.reshape(r.shape))
+
+        def diff(rr):
+            return (operators.displacement(self._rep, rr, self.contact_radius, self.depth)
+                    - operators.displacement(self._coarse, rr, self._a_coarse, self._d_coarse,
+                                             4))
+
+        err = (operators.envelope(diff, flat, self._coarse.knots)
+               + (self.rel_error + 64 * np.finfo(float).eps) * self.depth)
+        return result(u.reshape(r.shape)), result(err.reshape(r.shape))
+
+
+def _g(fine: Rep, coarse: Rep, x, return_error: bool):
+    """g(|x|) [m] from the tables of ``fine``; with ``return_error`` also a bound [m]: the
+    envelope of the difference from ``coarse`` over half a coarse sample spacing plus
+    64 eps |g| of rounding."""
+    x = nonnegative("x", np.abs(as_float("x", x)))
+    flat = x.ravel()
+    g = tables.g(fine, flat)
+    if not return_error:
+        return result(g.reshape(x.shape))
+
+    def diff(xx):
+        return tables.g(fine, xx) - tables.g(coarse, xx)
+
+    err = operators.envelope(diff, flat, coarse.knots) + 64 * np.finfo(float).eps * np.abs(g)
+    return result(g.reshape(x.shape)), result(err.reshape(x.shape))
 
 
 @dataclass
@@ -265,10 +299,13 @@ class Profile:
         return cls(grid, r_max, f"callable, {n} to {n_max} intervals a segment")
 
     # -- evaluation ------------------------------------------------------------------------
-    def g(self, x):
-        """MDR profile g(x) [m] (5.52) (of the finest representation a first solve uses)."""
-        x = np.abs(as_float("x", x))
-        return result(tables.g(self._source.pair(0)[1], x.ravel()).reshape(x.shape))
+    def g(self, x, *, return_error=False):
+        """MDR profile g(x) [m] (5.52) at |x| [m] (from the finest representation a first
+        solve uses); with ``return_error=True`` also a bound of its absolute error [m]: the
+        difference from the coarse representation, its envelope over half a coarse sample
+        spacing (it may pass through 0 at some x), plus rounding."""
+        coarse, fine = self._source.pair(0)
+        return _g(fine, coarse, x, return_error)
 
     def solve(self, *, depth: float | None = None, force: float | None = None,
               E_star: float, rtol: float | None = None) -> Solution:
@@ -310,12 +347,12 @@ class Profile:
             if err <= rtol:
                 break
             level += 1
-        (coarse, fine), lvl, d, a, F, ac, err = best
+        (coarse, fine), lvl, d, a, F, dc, ac, err = best
         met = err <= rtol
         return Solution(depth=d, contact_radius=a, force=F, E_star=E_star, rel_error=err,
                         rtol=rtol, met=met, why_not_met=None if met else
                         self._source.why_not(err, lvl), _rep=fine, _coarse=coarse,
-                        _a_coarse=ac)
+                        _d_coarse=dc, _a_coarse=ac)
 
     def force_depth_curve(self, depths, *, E_star: float,
                           rtol: float | None = None) -> ForceDepthCurve:

@@ -15,8 +15,12 @@ reference is computed from the profile itself (the analytic f the samples are ta
   b_j where f' jumps by s_j), the order of integration exchanged: the inner integral over x is
   an incomplete elliptic integral of the first kind (mpmath's ellipk, ellipf).
 
+- (5.60) u(r) = (2/pi) integral_0^asin(a/r) (d - g(r sin t)) dt outside the contact, d - f(r)
+  inside.
+
 The test fails when any reported bound (``ForceDepthCurve.rel_error``, ``Solution.rel_error``
-for force, contact radius and depth, the pressure's ``return_error``) is below the actual error.
+for force, contact radius and depth, the ``return_error`` of the pressure, the displacement and
+g) is below the actual error.
 ``python tests/test_mdr_bounds.py`` prints the bound-vs-actual table (docs/mdr.md quotes it).
 """
 
@@ -149,6 +153,22 @@ def p_ref(case, a, r):
     return E / mp.pi * out
 
 
+def f_ref(case, r):
+    """f(r) = integral_0^r f'(u) du."""
+    r = mp.mpf(r)
+    return mp.quad(case.fprime, [0] + _breaks(case, r) + [r])
+
+
+def u_ref(case, a, d, r):
+    """(5.60): u(r) = (2/pi) integral_0^asin(min(1, a/r)) (d - g(r sin t)) dt (x = r sin t);
+    inside the contact this is d - f(r), which the test uses there instead (no quadrature)."""
+    a, d, r = mp.mpf(a), mp.mpf(d), mp.mpf(r)
+    if r < a:
+        return d - f_ref(case, r)
+    pts = [0] + [mp.asin(b / r) for b in _breaks(case, a)] + [mp.asin(a / r)]
+    return 2 / mp.pi * mp.quad(lambda t: d - g_ref(case, r * mp.sin(t)), pts)
+
+
 def reference(case, d):
     """(a, F) at depth d: g(a) = d by findroot (Anderson-Bjoerck in a bracket from 16 radii),
     F by (5.57)."""
@@ -170,9 +190,15 @@ def rows():
             sol = prof.solve(depth=d, E_star=E)
             rr = np.array([0.3, 0.8]) * sol.contact_radius
             p, perr = sol.pressure(rr, return_error=True)
+            ru = np.array([0.5, 1.5]) * sol.contact_radius
+            u, uerr = sol.displacement(ru, return_error=True)
+            xg = np.array([0.5, 1.1]) * sol.contact_radius
+            g, gerr = sol.g(xg, return_error=True)
             with mp.workdps(DPS):
                 a, F = reference(case, d)
                 pr = [p_ref(case, sol.contact_radius, x) for x in rr]
+                ur = [u_ref(case, a, d, x) for x in ru]
+                gr = [g_ref(case, x) for x in xg]
                 errs = {
                     "curve F": (curve.rel_error[i], abs(curve.force[i] / F - 1)),
                     "curve a": (curve.rel_error[i], abs(curve.contact_radius[i] / a - 1)),
@@ -182,6 +208,11 @@ def rows():
                     # cover the error of a (that is rel_error's)
                     "p(0.3a)": (perr[0] / p[0], abs(p[0] / pr[0] - 1)),
                     "p(0.8a)": (perr[1] / p[1], abs(p[1] / pr[1] - 1)),
+                    # u and g: absolute bounds, relative to the reference here
+                    "u(0.5a)": (uerr[0] / abs(ur[0]), abs(u[0] / ur[0] - 1)),
+                    "u(1.5a)": (uerr[1] / abs(ur[1]), abs(u[1] / ur[1] - 1)),
+                    "g(0.5a)": (gerr[0] / abs(gr[0]), abs(g[0] / gr[0] - 1)),
+                    "g(1.1a)": (gerr[1] / abs(gr[1]), abs(g[1] / gr[1] - 1)),
                 }
             out.extend((case.name, q, d, float(bd), float(err)) for q, (bd, err) in errs.items())
     return out

@@ -150,16 +150,32 @@ def rounding(rep: Rep, r, p, a: float, E_star: float):
     return out + kinks.rounding(rep, r, a, E_star)
 
 
-def displacement(rep: Rep, r, a: float, d: float):
+def displacement(rep: Rep, r, a: float, d: float, m: int = 6):
     """u_z(r) [m] at r >= 0 [m], inside and outside the contact: (5.60) with x = r sin(theta),
-    u = (2/pi) integral_0^asin(min(1, a/r)) (d - g(r sin theta)) dtheta, on the table of g."""
+    u = (2/pi) integral_0^asin(min(1, a/r)) (d - g(r sin theta)) dtheta, on the table of g;
+    m Gauss points a panel, panels broken at the knots' images and graded towards theta = 0
+    and, from above, towards each breakpoint's asin(b/r) (g ~ sqrt(x - b) past a kink; the
+    knots of a linear spline, where f' jumps too, are not graded: their jumps are of the order
+    of its interpolation error)."""
     th_max = np.arcsin(np.clip(np.divide(a, r, out=np.full(r.shape, 2.0), where=r > 0), 0, 1))
     with np.errstate(divide="ignore", invalid="ignore"):
         kt = np.arcsin(np.clip(np.where(r[:, None] > 0, rep.panel_knots()[None, :]
                                         / r[:, None], 2.0), 0, 1))
-    br = np.concatenate([kt, graded(np.zeros(len(r)), th_max)], axis=1)
-    th, w = panels(np.zeros(len(r)), th_max, br, 6)
+        kb = [np.arcsin(np.clip(np.where(r > 0, b / r, 2.0), 0, 1)) for b in rep.edges[1:-1]]
+    br = [kt, graded(np.zeros(len(r)), th_max)]
+    br += [graded(np.minimum(t, th_max), th_max) for t in kb]
+    th, w = panels(np.zeros(len(r)), th_max, np.concatenate(br, axis=1), m)
     gx = tables.g(rep, (r[:, None] * np.sin(th)).ravel()).reshape(th.shape)
     u = 2 / np.pi * np.sum(w * (d - gx), axis=1)  # (5.60)
     u[r == 0] = d
     return u
+
+
+def envelope(values, x, knots):
+    """The largest |values(y)| for y in {x - h/2, x, x + h/2} (h: the local spacing of the
+    sorted ``knots``, clipped to [0, knots[-1]]): a difference of two representations that
+    passes through 0 at x by accident keeps its size nearby."""
+    i = np.clip(np.searchsorted(knots, x), 1, len(knots) - 1)
+    h = knots[i] - knots[i - 1]
+    return np.max([np.abs(values(np.clip(x + c * h, 0, knots[-1]))) for c in (-0.5, 0, 0.5)],
+                  axis=0)

@@ -87,10 +87,10 @@ def envelope(fine: Rep, coarse: Rep, a: float) -> tuple[float, float]:
 
 
 def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float | None,
-         E_star: float) -> tuple[float, float, float, float, float]:
+         E_star: float) -> tuple[float, float, float, float, float, float]:
     """(d [m], a [m], F [N]) on the fine representation at the ``depth`` [m] or the force
     ``load`` [N],
-    the coarse one's a [m], and the bound of the relative error of d, a, F."""
+    the coarse one's d [m] and a [m], and the bound of the relative error of d, a, F."""
     from scipy.optimize import brentq
 
     out = []
@@ -123,4 +123,4 @@ def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float 
         dev = max(da, (slope * da + Dg) / d)
     # 3. rounding: f' of a spline through N samples loses about log10(N) digits
     floor = (64 + 4 * len(fine.knots)) * _EPS
-    return d, a, F, ac, max(diff, dev) + floor
+    return d, a, F, dc, ac, max(diff, dev) + floor

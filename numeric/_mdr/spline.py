@@ -8,8 +8,12 @@ of the quadrature nodes, the kinks and the tables.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:  # scipy is imported when the first representation is built
+    from scipy.interpolate import BSpline
 
 
 @dataclass
@@ -24,15 +28,18 @@ class Rep:
     tables in sqrt(x - b_j)).
     """
 
-    segments: list  # scipy BSplines, one per segment
+    segments: list[BSpline]  # one per segment
     edges: np.ndarray  # segment edges, edges[0] = 0, edges[-1] = r_max
     m_theta: int  # Gauss points per panel
     knots: np.ndarray  # the sample radii: the spline's pieces
     k: int = 5
     table_nodes: int = 128  # table spacing at most (segment length)/table_nodes
-    tables: list | None = field(default=None, repr=False)  # tables.tables() fills it
-    kinks: tuple | None = field(default=None, repr=False)  # kinks.jumps() fills it
-    ugrid: tuple | None = field(default=None, repr=False)  # quadrature.ugrid() fills it
+    # filled on first use by tables.tables(), kinks.jumps() and quadrature.ugrid()
+    tables: list | None = field(default=None, repr=False)  # list[tables.Seg]
+    kinks: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)  # (b, s)
+    # (piece edges, nodes u, weights * f'(u), weights * (u f')'(u))
+    ugrid: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = field(
+        default=None, repr=False)
 
     def seg_index(self, u):
         """The segment holding each radius u [m]."""

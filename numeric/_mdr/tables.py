@@ -10,8 +10,12 @@ g or a displacement), kept on the representation.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from scipy.interpolate import BSpline
 
 from hertzmdr.numeric._mdr import kinks, quadrature
 from hertzmdr.numeric._mdr.spline import Rep
@@ -60,8 +64,8 @@ class Seg:
     hi: float
     in_t: bool
     nodes: np.ndarray  # in the table variable
-    G: object  # quintic spline of G_s (the remainder of g)
-    q: object  # quintic spline of q (the remainder of g')
+    G: BSpline  # quintic spline of G_s (the remainder of g)
+    q: BSpline  # quintic spline of q (the remainder of g')
 
     def var(self, x):
         """The table variable of x [m]: x, or sqrt(x - lo) past a kink."""
