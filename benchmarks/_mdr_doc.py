@@ -82,7 +82,7 @@ CONTRACT = """### The accuracy contract of the numerical MDR
 accepted in `mdr.RTOL_RANGE` = (1e-11, 1e-2); outside it `Profile.solve` and
 `Profile.force_depth_curve` raise a ValueError naming rtol and the range. The lower end is
 measured: the bound that the grid refinement of a callable reaches (up to 8192 intervals a
-segment) for smooth, kinked and sphere-cone profiles is 1.3e-13 to 1.0e-11. The upper end is
+segment) for smooth, kinked and sphere-cone profiles is 2.5e-13 to 1.0e-11. The upper end is
 where the bound, a linearization of the difference between two resolutions, stops being tested.
 A callable's grid is doubled until the bound meets rtol; a sampled profile cannot be refined
 past its samples, so its quadrature is refined while that lowers the bound. The solution says

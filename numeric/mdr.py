@@ -84,12 +84,13 @@ DEFAULT_RTOL = 1e-8
 #: The targets a solve accepts, (lo, hi) [1]. lo is measured: the bound that the callable
 #: refinement reaches at n_max = 8192 intervals a segment for a set of profiles (smooth r^2.5
 #: and r^1.5, a kinked tip with its breakpoint, a sphere-cone tip with and without its tangent
-#: point as a breakpoint, each at two depths) is 1.3e-13 ... 1.0e-11; the largest, rounded
+#: point as a breakpoint, each at two depths) is 2.5e-13 ... 1.0e-11; the largest, rounded
 #: up, is lo (tests/test_mdr.py::test_rtol_range_lower_end re-measures it). A sampled profile
 #: reaches what its samples allow: its rounding floor alone is (64 + 4 N) eps, 4.5e-12 at
 #: N = 5000. hi: the bound is a linearization of the difference of two resolutions
-#: (da = dg/g'(a)); tests/test_mdr.py::test_bound_against_mpmath checks it on errors up to
-#: about 1e-3, and a target above 1e-2 would rest on it where it is untested.
+#: (da = dg/g'(a)); tests/test_mdr_bounds.py checks it against 30-digit references on
+#: force and contact-radius errors up to 6e-4, and a target above 1e-2 would rest on it where
+#: it is untested.
 RTOL_RANGE = (1e-11, 1e-2)
 
 
