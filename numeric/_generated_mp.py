@@ -50,6 +50,9 @@ __all__ = [
     'cone_mean_pressure',
     'cone_pressure',
     'cone_stiffness',
+    'contact_mean_pressure',
+    'disc_mean_pressure',
+    'disc_pressure',
     'ellipse_area',
     'ellipse_depth_from_force',
     'ellipse_equivalent_radius',
@@ -101,6 +104,7 @@ __all__ = [
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
+    'mdr_stiffness',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -121,6 +125,7 @@ __all__ = [
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
     'powerlaw_punch_pressure',
+    'punch_depth_from_force',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
@@ -140,6 +145,7 @@ __all__ = [
     'stress_spheroidal_u',
     'stress_spheroidal_u_inside',
     'stress_von_mises',
+    'strip_mean_pressure',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -147,11 +153,13 @@ __all__ = [
     'uniform_pressure_force',
     'worn_contact_radius',
     'worn_depth',
+    'worn_displacement_inside',
     'worn_displacement_outside',
     'worn_force',
     'worn_force_from_radius',
     'worn_g',
     'worn_pressure',
+    'worn_profile',
 ]
 
 
@@ -1058,6 +1066,67 @@ def cone_stiffness(E_star, d, theta):
         angle between the cone's surface and the plane [rad]
     """
     return 4*E_star*d/(mpmath.pi*mpmath.tan(theta))
+
+
+def contact_mean_pressure(A, F):
+    """Mean pressure F/A [Pa] over a contact of area A.
+
+    Chapter: (5.17). Derived from: the definition of the mean pressure.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_area``.
+
+    Parameters
+    ----------
+    A : mpmath.mpf
+        contact area [m^2]
+    F : mpmath.mpf
+        normal force [N]
+    """
+    return F/A
+
+
+def disc_mean_pressure(F, a):
+    """Mean pressure F/(pi a^2) [Pa] over a circular contact of radius a.
+
+    Chapter: (5.17). Derived from: the definition of the mean pressure over a disc.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_disc``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return F/(mpmath.pi*a**2)
+
+
+def disc_pressure(a, n_p, p0, r):
+    """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a.
+
+    Chapter: (5.9), (5.15), Problem 6. Derived from: the distributions of section 5.1.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_disc_pressure_force``.
+
+    Printed in a stable form: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r =
+    0.9995 a); (a - r)(a + r)/a^2 does not.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n_p : mpmath.mpf
+        exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1) [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return p0*((a - r)*(a + r)/a**2)**n_p
 
 
 def ellipse_area(R1, d, t_ba):
@@ -2179,6 +2248,24 @@ def mdr_kink_pressure(E_star, a, b, r, slope_jump):
     return E_star*b*slope_jump*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/(mpmath.pi*max(b, r))
 
 
+def mdr_stiffness(E_star, a):
+    """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a.
+
+    Chapter: (5.12), Problem 5. Derived from: dF/dd of (5.57) with d = g(a) (5.55).
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_stiffness_by_differentiation``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -2624,6 +2711,26 @@ def powerlaw_punch_pressure(E_star, a, d, r):
     return E_star*d/(mpmath.pi*mpmath.sqrt(a**2 - r**2))
 
 
+def punch_depth_from_force(E_star, F, a):
+    """Indentation depth d [m] of a flat rigid punch of radius a under the force F.
+
+    Chapter: (5.11), inverted. Derived from: (5.11) F = 2 E* a d solved for d.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_punch_round_trip``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F/(E_star*a)
+
+
 def punch_pressure_displacement(E_star, a, p0):
     """Surface displacement u_z [m] inside a disc loaded by p0*(1 - r^2/a^2)^(-1/2).
 
@@ -3056,6 +3163,26 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
+def strip_mean_pressure(F, L, a):
+    """Mean pressure F/(2 a L) [Pa] over a contact strip of half-width a and length L.
+
+    Chapter: (5.34)-(5.37). Derived from: the definition of the mean pressure over a strip.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_strip``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    L : mpmath.mpf
+        length of a line contact [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F/(L*a)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -3203,6 +3330,29 @@ def worn_depth(R, a, b):
     return a*mpmath.sqrt(a**2 - b**2)/R
 
 
+def worn_displacement_inside(R, b, d, r):
+    """Surface displacement u_z(r) [m] inside the contact (r <= a) of the worn paraboloid.
+
+    Chapter: Problem 8, (5.60). Derived from: (5.60) of u = d - g(x) (5.54) for r <= a,
+    which (5.53) makes d - f(r).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return d - mpmath.mpf(1)/mpmath.mpf(2)*max(0, (-b + r)*(b + r))/R
+
+
 def worn_displacement_outside(R, a, b, r):
     """Surface displacement u_z(r) [m] outside the contact (r > a) of the worn paraboloid.
 
@@ -3321,6 +3471,26 @@ def worn_pressure(E_star, R, a, b, r):
     return E_star*(2*a*mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r))))/mpmath.sqrt((max(b, r) - min(b, r))*(max(b, r) + min(b, r)) + max(0, (a - max(b, r))*(a + max(b, r)))) + (-b**2 + 2*max(b, r)**2)*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/max(b, r) - 2*mpmath.ellipe(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)*max(b, r))/(mpmath.pi*R)
 
 
+def worn_profile(R, b, r):
+    """Height f(r) [m] of the worn paraboloid's surface above its tip (0 for r < b).
+
+    Chapter: Problem 8. Derived from: the paraboloid r^2/(2R) worn flat to the radius b.
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*max(0, (-b + r)*(b + r))/R
+
+
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
 
@@ -3424,6 +3594,28 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
+
+
+def textbook_disc_pressure(a, n_p, p0, r):
+    """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a, in the derived (textbook) form; use disc_pressure: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r = 0.9995 a); (a - r)(a + r)/a^2 does not.
+
+    Chapter: (5.9), (5.15), Problem 6. Derived from: the distributions of section 5.1.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_disc_pressure_force``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n_p : mpmath.mpf
+        exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1) [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return p0*(1 - r**2/a**2)**n_p
 
 
 def textbook_ellipse_area(R1, d, t_ba):
