@@ -54,6 +54,7 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius "
           "of a kink of the profile (derive/kink.py)"),
     "slope_jump": ("1", "jump f'(b+) - f'(b-) of the profile's slope at a kink r = b"),
+    "g_integral": ("m^2", "integral of the MDR profile g(x) over [0, a] (5.57)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

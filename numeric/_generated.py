@@ -101,6 +101,7 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -255,6 +256,7 @@ RELATIONS = (
     ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
     ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
     ('line_stiffness', '(5.34), differentiated', 'line', 'pi*E_star*L/4', ''),
+    ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
@@ -2366,6 +2368,28 @@ def line_stiffness(E_star, L):
         length of a line contact [m]
     """
     return (1/4)*numpy.pi*E_star*L
+
+
+def mdr_force(E_star, a, d, g_integral):
+    """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
+
+    Chapter: (5.57). Derived from: (5.57) with (5.55) for any g(x).
+
+    Derivation: ``hertzmdr.derive.numerical_mdr``. Verified by
+    ``tests/test_mdr.py::test_mdr_force_by_the_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    """
+    return 2*E_star*(a*d - g_integral)
 
 
 def mdr_kink_g(b, slope_jump, x):

@@ -101,6 +101,7 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -2177,6 +2178,28 @@ def line_stiffness(E_star, L):
         length of a line contact [m]
     """
     return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
+
+
+def mdr_force(E_star, a, d, g_integral):
+    """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
+
+    Chapter: (5.57). Derived from: (5.57) with (5.55) for any g(x).
+
+    Derivation: ``hertzmdr.derive.numerical_mdr``. Verified by
+    ``tests/test_mdr.py::test_mdr_force_by_the_pressure``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    """
+    return 2*E_star*(a*d - g_integral)
 
 
 def mdr_kink_g(b, slope_jump, x):

@@ -5,7 +5,8 @@ Usage::
     from hertzmdr.numeric import mdr
     prof = mdr.Profile.from_samples(r_i, f_i, breakpoints=[b])  # or Profile.from_callable(f, r_max)
     res = prof.solve(depth=1e-6, E_star=1e11)            # or force=..., rtol=...
-    res.contact_radius, res.force, res.rel_error
+    res.contact_radius, res.force, res.rel_error     # rel_error: a bound
+    res.rtol, res.met, res.why_not_met               # the target and whether it was met
     res.pressure(r), res.displacement(r), res.g(x)
     p, err = res.pressure(r, return_error=True)
     curve = prof.force_depth_curve(depths, E_star=1e11)  # F(d), a(d), rel_error per depth
@@ -35,15 +36,22 @@ Method (all lengths in m, pressures in Pa, forces in N):
   t = 0) down to the scale of the nearest singularity. p(0) is +inf for a conical tip (f'(0)
   > 0, resolved by both resolutions).
 - (5.60) with x = r sin(theta): u(r) = (2/pi) integral_0^(asin(min(1, a/r))) (d - g(r sin theta)).
-- Error estimate: every result is computed twice, with the full resolution and with every other
-  sample (samples) or half the grid (callables), coarser tables and fewer quadrature points;
-  ``rel_error`` is their relative difference, an upper estimate of the error of the coarse
-  solution (so a conservative estimate for the returned, fine one). The pressure's estimate
-  adds the Abel integral of |q - q_coarse| (the signed difference can vanish at some r while
-  both are in error) and a rounding bound (the spline's derivatives lose about log10(N)
-  digits; a kink term's parameter (r/b)^2 near 1). For callables the grid is doubled until
-  ``rel_error <= rtol``; for samples the resolution is what was measured, and ``converged``
-  says whether ``rtol`` was met.
+- (5.57) F = 2 E* (d a - integral_0^a g) by the generated ``mdr_force``.
+- Error bound and the rtol contract: every result is computed twice, with the full
+  resolution and with every other sample (samples) or half the grid (callables), coarser
+  tables and fewer quadrature points. ``Solution.rel_error`` bounds the relative error of
+  force, contact radius and depth by the larger of (1) their coarse-vs-fine relative
+  differences, an upper estimate of the error of the coarse solution (so a conservative bound
+  for the returned, fine one), and (2) the envelope of the differences of g and of its
+  integral on radii within two coarse sample spacings of a, put through the linearized
+  (5.55) and (5.57) (the differences at a alone can vanish by accident), plus a rounding
+  floor (64 + 4 N) eps (the spline's derivative loses about log10(N) digits). The pressure's
+  bound (``return_error=True``) adds the Abel integral of |q - q_coarse| and a rounding bound
+  (a kink term's parameter (r/b)^2 near 1). ``rtol`` has one meaning: the target of
+  ``rel_error``, in ``RTOL_RANGE`` (default ``DEFAULT_RTOL``). A callable's grid is doubled
+  until the bound meets it; a sampled profile's quadrature is refined while that lowers the
+  bound (its splines cannot be refined). ``Solution.met`` says whether it was met and
+  ``why_not_met`` why not.
 
 Measured convergence orders and timings are in ``docs/mdr.md`` (``benchmarks/bench_mdr.py``).
 """
@@ -51,7 +59,7 @@ Measured convergence orders and timings are in ``docs/mdr.md`` (``benchmarks/ben
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -60,7 +68,20 @@ from hertzmdr.numeric._quadrature import gauss as _gauss
 from hertzmdr.numeric._quadrature import panels as _panels
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
-__all__ = ["Profile", "Solution", "ForceDepthCurve"]
+__all__ = ["Profile", "Solution", "ForceDepthCurve", "DEFAULT_RTOL", "RTOL_RANGE"]
+
+#: The target of the relative error bound of a solve when none is given [1].
+DEFAULT_RTOL = 1e-8
+#: The targets a solve accepts, (lo, hi) [1]. lo is measured: the bound that the callable
+#: refinement reaches at n_max = 8192 intervals a segment for a set of profiles (smooth r^2.5
+#: and r^1.5, a kinked tip with its breakpoint, a sphere-cone tip with and without its tangent
+#: point as a breakpoint, each at two depths) is 1.3e-13 ... 1.0e-11; the largest, rounded
+#: up, is lo (tests/test_mdr.py::test_rtol_range_lower_end re-measures it). A sampled profile
+#: reaches what its samples allow: its rounding floor alone is (64 + 4 N) eps, 4.5e-12 at
+#: N = 5000. hi: the bound is a linearization of the difference of two resolutions
+#: (da = dg/g'(a)); tests/test_mdr.py::test_bound_against_mpmath checks it on errors up to
+#: about 1e-3, and a target above 1e-2 would rest on it where it is untested.
+RTOL_RANGE = (1e-11, 1e-2)
 
 _GRADE = 0.5 ** np.arange(1, 31)  # geometric grading towards an endpoint: 2^-1 ... 2^-30
 
@@ -168,6 +189,11 @@ class _Rep:
 
     def fprime(self, u):
         return self.derivs(u)[0]
+
+    def with_quadrature(self, m_theta: int, table_nodes: int | None = None) -> _Rep:
+        """The same splines with ``m_theta`` Gauss points a panel (and ``table_nodes``)."""
+        return replace(self, m_theta=m_theta, _tables=None, _u=None,
+                       table_nodes=self.table_nodes if table_nodes is None else table_nodes)
 
     def _panel_knots(self):
         """Knots used as panel breaks: all of them for k = 1 (f' jumps there), every few for
@@ -449,6 +475,45 @@ def _build_rep(r, f, breakpoints, k, smoothing, m_theta) -> _Rep:
     return _Rep(segments, edges, m_theta, np.asarray(r, float), k if smoothing is None else 3)
 
 
+_EPS = np.finfo(float).eps
+# Gauss-Legendre points a panel of the (coarse, fine) quadratures, in the order a sampled
+# profile refines them when the error estimate misses rtol (its splines cannot be refined)
+_QUADRATURE_LEVELS = ((6, 8), (10, 12), (14, 16))
+
+
+def _check_rtol(rtol) -> float:
+    """rtol [1] within RTOL_RANGE (None: DEFAULT_RTOL)."""
+    if rtol is None:
+        return DEFAULT_RTOL
+    lo, hi = RTOL_RANGE
+    try:
+        value = float(rtol)
+    except (TypeError, ValueError):
+        value = np.nan
+    if not lo <= value <= hi:  # NaN included
+        raise ValueError(f"rtol = {rtol!r} is out of range; valid: {lo:g} <= rtol <= {hi:g} "
+                         "(what the numerical MDR can deliver: mdr.RTOL_RANGE)")
+    return value
+
+
+def _deviation(fine: _Rep, coarse: _Rep, a: float) -> tuple[float, float]:
+    """The largest |g_fine - g_coarse| [m] and |G_fine - G_coarse| [m^2] (G = integral_0^x g)
+    on 9 radii x within two coarse sample spacings of a (and below r_max).
+
+    The signed differences at a alone can vanish by accident (the coarse error passing
+    through 0 at that radius while both are in error); their envelope over the radii around
+    a cannot. (Integrating |f'_fine - f'_coarse| instead would not do: the interpolating
+    splines' f' errors cancel over every interval between samples, where both splines match
+    f, by construction, and their absolute values overstate the error a thousandfold.)"""
+    kn = coarse.knots
+    i = int(np.clip(np.searchsorted(kn, a), 1, len(kn) - 1))
+    h = kn[i] - kn[i - 1]
+    x = np.clip(a + h * np.linspace(-2, 2, 9), a / 2, kn[-1])
+    gf, _, Gf = fine.direct(x, with_G=True)
+    gc, _, Gc = coarse.direct(x, with_G=True)
+    return float(np.max(np.abs(gf - gc))), float(np.max(np.abs(Gf - Gc)))
+
+
 @dataclass
 class Solution:
     """The MDR solution at one depth. Lengths in m, force in N, pressure in Pa.
@@ -460,9 +525,15 @@ class Solution:
     E_star : float
         Effective modulus [Pa].
     rel_error : float
-        Estimated relative error of ``force`` and ``contact_radius`` (the larger).
-    converged : bool
+        A bound of the relative error of ``depth``, ``contact_radius`` and ``force`` (the
+        largest of the three; see the module docstring for how it is made).
+    rtol : float
+        The target the solve refined towards [1], within ``RTOL_RANGE``.
+    met : bool
         ``rel_error <= rtol``.
+    why_not_met : str or None
+        Why the target was not reached (None when ``met``): the resolution that could not be
+        refined further and its estimate.
     """
 
     depth: float
@@ -470,12 +541,12 @@ class Solution:
     force: float
     E_star: float
     rel_error: float
-    converged: bool
     rtol: float
+    met: bool
+    why_not_met: str | None
     _rep: _Rep = field(repr=False)
     _coarse: _Rep = field(repr=False)
-    _a_coarse: float | None = field(default=None, repr=False)
-
+    _a_coarse: float = field(repr=False)
     def g(self, x):
         """MDR profile g(x) [m] (5.52) at |x| [m]."""
         x = nonnegative("x", np.abs(as_float("x", x)))
@@ -563,14 +634,83 @@ class Solution:
         return result(u.reshape(r.shape))
 
 
+
 @dataclass
 class ForceDepthCurve:
-    """F(d) [N], a(d) [m] and the estimated relative error of each, at the given depths [m]."""
+    """F(d) [N], a(d) [m] at the given depths [m], each with its error bound and target.
+
+    ``rel_error[i]`` bounds the relative error of ``force[i]`` and ``contact_radius[i]``;
+    ``met[i]`` is ``rel_error[i] <= rtol`` and ``why_not_met[i]`` says why not (else None).
+    """
 
     depth: np.ndarray
     force: np.ndarray
     contact_radius: np.ndarray
     rel_error: np.ndarray
+    rtol: float
+    met: np.ndarray
+    why_not_met: list[str | None]
+
+
+class _Samples:
+    """The representations of a sampled profile: all samples (fine) and every other one
+    (coarse), at increasing quadrature resolution (the splines cannot be refined)."""
+
+    def __init__(self, coarse: _Rep, fine: _Rep):
+        self._base = (coarse, fine)
+        self._levels: dict[int, tuple[_Rep, _Rep]] = {}
+
+    def pair(self, level: int) -> tuple[_Rep, _Rep] | None:
+        if level >= len(_QUADRATURE_LEVELS):
+            return None
+        if level not in self._levels:
+            mc, mf = _QUADRATURE_LEVELS[level]
+            c, f = self._base
+            self._levels[level] = (c if c.m_theta == mc else c.with_quadrature(mc),
+                                   f if f.m_theta == mf else f.with_quadrature(mf))
+        return self._levels[level]
+
+    def why_not(self, err: float, level: int) -> str:
+        n = len(self._base[1].knots)
+        return (f"a sampled profile cannot be refined past its {n} samples; its estimate is "
+                f"{err:.1e} with {_QUADRATURE_LEVELS[level][1]} Gauss points a panel")
+
+
+class _Grid:
+    """The representations of a callable profile on grids of m and 2m intervals a segment,
+    m = n, 2n, 4n, ... while 2m <= n_max (built on first use, kept)."""
+
+    def __init__(self, f, r_max: float, breakpoints: np.ndarray, n: int, k: int, n_max: int):
+        self._f, self._bp, self._n, self._k, self._n_max = f, breakpoints, n, k, n_max
+        self._edges = np.concatenate([[0.0], breakpoints, [r_max]])
+        self._reps: dict[int, _Rep] = {}
+        self._coarse: dict[int, _Rep] = {}  # the same grids as the coarse of a pair
+
+    def rep(self, m: int) -> _Rep:
+        if m not in self._reps:
+            parts = [np.linspace(lo, hi, m + 1)[:-1]
+                     for lo, hi in zip(self._edges[:-1], self._edges[1:], strict=True)]
+            rr = np.concatenate(parts + [self._edges[-1:]])
+            ff = np.asarray(self._f(rr), float)
+            if ff.shape != rr.shape or not np.all(np.isfinite(ff)):
+                raise ValueError("f returned a non-finite value (or the wrong shape) on "
+                                 "[0, r_max]; valid: finite values, one per radius")
+            self._reps[m] = _build_rep(rr, ff - ff[0], self._bp, self._k, None, 8)
+        return self._reps[m]
+
+    def pair(self, level: int) -> tuple[_Rep, _Rep] | None:
+        m = self._n * 2**level
+        if level > 0 and 2 * m > self._n_max:
+            return None
+        if m not in self._coarse:  # the coarse one of a pair: coarser tables too
+            fine = self.rep(m)
+            self._coarse[m] = fine.with_quadrature(fine.m_theta, fine.table_nodes // 2)
+        return self._coarse[m], self.rep(2 * m)
+
+    def why_not(self, err: float, level: int) -> str:
+        m = 2 * self._n * 2**level
+        return (f"the callable's grid reached {m} intervals a segment (n_max = {self._n_max}); "
+                f"its estimate is {err:.1e}")
 
 
 class Profile:
@@ -580,11 +720,10 @@ class Profile:
     or force, or :meth:`force_depth_curve`.
     """
 
-    def __init__(self, reps: list[_Rep], r_max: float, source: str):
-        self._reps = reps  # increasing resolution; the last is the finest
-        reps[0].table_nodes = reps[-1].table_nodes // 2  # the coarse one: coarser tables too
+    def __init__(self, source: _Samples | _Grid, r_max: float, description: str):
+        self._source = source
         self.r_max = r_max
-        self.source = source
+        self.source = description
 
     # -- construction -----------------------------------------------------------------------
     @classmethod
@@ -604,7 +743,8 @@ class Profile:
             Spline degree (5: quintic, for smooth profiles; 3 or 1 for rough ones).
         smoothing : None, float or "gcv"
             Fit a cubic smoothing spline instead of interpolating: for noisy samples. "gcv"
-            chooses the smoothing by generalized cross-validation.
+            chooses the smoothing by generalized cross-validation. The error bounds are then
+            those of the MDR of the fitted spline, not of the noise.
         """
         r = nonnegative("r", r)
         f = as_float("f", f)
@@ -620,66 +760,42 @@ class Profile:
         f = f - f[0]
         if not np.isin(k, (1, 3, 5)):
             raise ValueError(f"k = {k} is out of range; valid: 1, 3, 5")
-
-        def coarse_of(seg_r):  # every other sample, keeping 0, the breakpoints and r_max
-            keep = np.zeros(len(seg_r), bool)
-            keep[::2] = True
-            keep[-1] = True
-            keep |= np.isin(seg_r, bp)
-            return keep
-
-        keep = coarse_of(r)
-        reps = [_build_rep(r[keep], f[keep], bp, k, smoothing, 6),
-                _build_rep(r, f, bp, k, smoothing, 8)]
-        return cls(reps, float(r[-1]), f"{len(r)} samples")
+        # the coarse representation: every other sample, keeping 0, the breakpoints and r_max
+        keep = np.zeros(len(r), bool)
+        keep[::2] = True
+        keep[-1] = True
+        keep |= np.isin(r, bp)
+        coarse = _build_rep(r[keep], f[keep], bp, k, smoothing, 6)
+        fine = _build_rep(r, f, bp, k, smoothing, 8)
+        coarse.table_nodes = fine.table_nodes // 2  # the coarse one: coarser tables too
+        return cls(_Samples(coarse, fine), float(r[-1]), f"{len(r)} samples")
 
     @classmethod
     def from_callable(cls, f: Callable[[np.ndarray], np.ndarray], r_max: float, *,
                       breakpoints: Sequence[float] = (), n: int = 64, k: int = 5,
-                      rtol: float = 1e-10, n_max: int = 8192) -> Profile:
+                      n_max: int = 8192) -> Profile:
         """Profile from a vectorized callable f(r) [m] on [0, r_max] [m].
 
-        The callable is sampled on a grid refined (n, 2n, 4n, ... up to ``n_max`` intervals
-        per segment) until the force of a test indentation to r_max/2 changes by less than
-        ``rtol``; ``breakpoints`` are radii of kinks.
+        Each :meth:`solve` samples the callable on grids of n, 2n, 4n, ... intervals per
+        segment (up to ``n_max``; each grid is kept for later solves) until the error
+        estimate meets its ``rtol``; ``breakpoints`` are radii [m] of kinks.
         """
         r_max = float(positive("r_max", r_max))
         bp = np.asarray(sorted(breakpoints), float)
         if np.any((bp <= 0) | (bp >= r_max)):
             raise ValueError(f"breakpoints {list(bp)} must lie in (0, {r_max})")
-        edges = np.concatenate([[0.0], bp, [r_max]])
-
-        def grid(m):
-            parts = [np.linspace(lo, hi, m + 1)[:-1] for lo, hi in zip(edges[:-1], edges[1:],
-                                                                     strict=True)]
-            return np.concatenate(parts + [[r_max]])
-
-        def rep(m):
-            rr = grid(m)
-            ff = np.asarray(f(rr), float)
-            if not np.all(np.isfinite(ff)):
-                raise ValueError("f returned a non-finite value on [0, r_max]")
-            return _build_rep(rr, ff - ff[0], bp, k, None, 8)
-
-        m = n
-        prev = rep(m)
-        while True:
-            cur = rep(2 * m)
-            test = Profile([prev, cur], r_max, "callable")
-            a = r_max / 2
-            F1, F0 = (float(2 * (rp.g_direct(np.array([a]))[0] * a - rp.G(np.array([a]))[0]))
-                      for rp in (cur, prev))
-            if abs(F1 - F0) <= rtol * abs(F1) or 2 * m >= n_max:
-                del test
-                break
-            m, prev = 2 * m, cur
-        return cls([prev, cur], r_max, f"callable, {2 * m} intervals per segment")
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 4 <= n <= n_max:
+            raise ValueError(f"n = {n!r} is out of range; valid: an integer 4 <= n <= n_max = "
+                             f"{n_max}")
+        grid = _Grid(f, r_max, bp, int(n), k, int(n_max))
+        grid.pair(0)  # sample now: a callable that fails should fail here
+        return cls(grid, r_max, f"callable, {n} to {n_max} intervals a segment")
 
     # -- evaluation ------------------------------------------------------------------------
     def g(self, x):
-        """MDR profile g(x) [m] (5.52)."""
+        """MDR profile g(x) [m] (5.52) (of the finest representation a first solve uses)."""
         x = np.abs(as_float("x", x))
-        return result(self._reps[-1].g(x.ravel()).reshape(x.shape))
+        return result(self._source.pair(0)[1].g(x.ravel()).reshape(x.shape))
 
     def _radius(self, rep: _Rep, d: float, guess: float | None = None) -> float:
         """Solve g(a) = d (5.55) by safeguarded Newton on g and g' by quadrature (no tables):
@@ -720,14 +836,51 @@ class Profile:
             a = a_new
         return a
 
-    def _force(self, rep: _Rep, a: float, d: float, E_star: float) -> float:
-        return float(2 * E_star * (d * a - rep.G(np.array([a]))[0]))  # (5.57)
+    @staticmethod
+    def _force(rep: _Rep, a: float, d: float, E_star: float) -> float:
+        return float(gen.mdr_force(E_star, a, d, rep.G(np.array([a]))[0]))  # (5.57)
 
     def _force_of_radius(self, rep, a, E_star):
         return self._force(rep, a, rep.g_direct(np.array([a]))[0], E_star)
 
+    def _solve_pair(self, coarse: _Rep, fine: _Rep, depth, force, E_star):
+        """(d, a, F) on the fine representation and the bound of its relative error."""
+        from scipy.optimize import brentq
+
+        out = []
+        for rep in (fine, coarse):
+            if depth is not None:
+                d = depth
+                a = self._radius(rep, d, out[0][1] if out else None)
+            else:
+                Fmax = self._force_of_radius(rep, self.r_max, E_star)
+                if force > Fmax:
+                    raise ValueError(f"force = {force} exceeds F(r_max) = {Fmax}")
+                a = brentq(lambda aa, rp=rep: self._force_of_radius(rp, aa, E_star) - force,
+                           0.0, self.r_max, xtol=1e-16 * self.r_max, rtol=1e-15)
+                d = float(rep.g_direct(np.array([a]))[0])
+            out.append((d, a, self._force(rep, a, d, E_star)))
+        (d, a, F), (dc, ac, Fc) = out
+        # 1. coarse vs fine: the error of the coarse solution, conservative for the fine one
+        diff = max(abs(F - Fc) / F, abs(a - ac) / a, abs(d - dc) / d)
+        # 2. the same without an accidental cancellation at a: the envelope of the differences
+        # of g and G around a (_deviation), put through the linearized (5.55) and (5.57): F
+        # is stationary in a at a fixed d (dF/da = 2 E* (d - g(a)) = 0), so at a given depth
+        # dF = -2 E* dG and da = dg/g'(a); at a given force F(a) = 2 E* (a g(a) - G(a)) with
+        # dF/da = 2 E* a g'(a), and dd = g' da + dg
+        Dg, DG = _deviation(fine, coarse, a)
+        slope = a * float(fine.gprime_direct(np.array([a]))[0])  # a g'(a) [m]
+        if depth is not None:
+            dev = max(Dg / slope if slope > 0 else np.inf, 2 * E_star * DG / F)
+        else:
+            da = (a * Dg + DG) / (a * slope) if slope > 0 else np.inf
+            dev = max(da, (slope * da + Dg) / d)
+        # 3. rounding: f' of a spline through N samples loses about log10(N) digits
+        floor = (64 + 4 * len(fine.knots)) * _EPS
+        return d, a, F, ac, max(diff, dev) + floor
+
     def solve(self, *, depth: float | None = None, force: float | None = None,
-              E_star: float, rtol: float = 1e-8) -> Solution:
+              E_star: float, rtol: float | None = None) -> Solution:
         """Solve the contact at a given ``depth`` [m] or normal ``force`` [N].
 
         Parameters
@@ -736,39 +889,52 @@ class Profile:
             Exactly one of them, > 0.
         E_star : float
             Effective modulus [Pa] (5.26), > 0.
-        rtol : float
-            Tolerance on the estimated relative error of force and contact radius.
-        """
-        from scipy.optimize import brentq
+        rtol : float, optional
+            Target of the relative error bound of force, contact radius and depth [1], in
+            ``RTOL_RANGE`` (default ``DEFAULT_RTOL``). A callable profile's grid is doubled,
+            a sampled profile's quadrature refined, until the bound meets it; the solution
+            says whether it did (``met``) and, if not, why (``why_not_met``).
 
+        Returns
+        -------
+        Solution
+        """
+        rtol = _check_rtol(rtol)
         E_star = float(positive("E_star", E_star))
         if (depth is None) == (force is None):
             raise ValueError("give exactly one of depth= and force=")
-        coarse, fine = self._reps
-        out = []
-        for rep in (fine, coarse):
-            if depth is not None:
-                d = float(positive("depth", depth))
-                a = self._radius(rep, d, out[0][1] if out else None)
-            else:
-                Ft = float(positive("force", force))
-                Fmax = self._force_of_radius(rep, self.r_max, E_star)
-                if Ft > Fmax:
-                    raise ValueError(f"force = {Ft} exceeds F(r_max) = {Fmax}")
-                a = brentq(lambda aa, rp=rep, ft=Ft: self._force_of_radius(rp, aa, E_star) - ft,
-                           0.0, self.r_max, xtol=1e-16 * self.r_max, rtol=1e-15)
-                d = float(rep.g_direct(np.array([a]))[0])
-            out.append((d, a, self._force(rep, a, d, E_star)))
-        (d, a, F), (dc, ac, Fc) = out
-        err = max(abs(F - Fc) / F, abs(a - ac) / a, abs(d - dc) / d)
+        if depth is not None:
+            depth = float(positive("depth", depth))
+        else:
+            force = float(positive("force", force))
+        level, best = 0, None
+        while True:
+            pair = self._source.pair(level)
+            if pair is None:
+                break
+            *res, err = self._solve_pair(*pair, depth, force, E_star)
+            if best is not None and isinstance(self._source, _Samples) and err > best[-1] / 2:
+                break  # the quadrature is not what limits a sampled profile: keep the last
+            best = (pair, level, *res, err)
+            if err <= rtol:
+                break
+            level += 1
+        (coarse, fine), lvl, d, a, F, ac, err = best
+        met = err <= rtol
         return Solution(depth=d, contact_radius=a, force=F, E_star=E_star, rel_error=err,
-                        converged=err <= rtol, rtol=rtol, _rep=fine, _coarse=coarse,
+                        rtol=rtol, met=met, why_not_met=None if met else
+                        self._source.why_not(err, lvl), _rep=fine, _coarse=coarse,
                         _a_coarse=ac)
 
-    def force_depth_curve(self, depths, *, E_star: float) -> ForceDepthCurve:
-        """F(d) [N] and a(d) [m] at each depth [m] of ``depths`` (monotone in d)."""
+    def force_depth_curve(self, depths, *, E_star: float,
+                          rtol: float | None = None) -> ForceDepthCurve:
+        """F(d) [N] and a(d) [m] at each depth [m] of ``depths`` (monotone in d), each solved
+        as :meth:`solve` with the target ``rtol`` [1] (default ``DEFAULT_RTOL``)."""
+        rtol = _check_rtol(rtol)
         depths = positive("depths", depths).ravel()
-        sols = [self.solve(depth=float(dd), E_star=E_star, rtol=np.inf) for dd in depths]
+        sols = [self.solve(depth=float(dd), E_star=E_star, rtol=rtol) for dd in depths]
         return ForceDepthCurve(depths, np.array([s.force for s in sols]),
                                np.array([s.contact_radius for s in sols]),
-                               np.array([s.rel_error for s in sols]))
+                               np.array([s.rel_error for s in sols]), rtol,
+                               np.array([s.met for s in sols]),
+                               [s.why_not_met for s in sols])

@@ -265,7 +265,7 @@ class NumericalMDR(Axisymmetric):
         super().__init__(materials, interface, rtol)
         from hertzmdr.numeric import mdr
 
-        self.state_range = mdr.RTOL_RANGE if hasattr(mdr, "RTOL_RANGE") else (1e-14, 1.0)
+        self.state_range = mdr.RTOL_RANGE  # the rtol the numerical MDR can refine towards
         self.profile = profile
         self.label = label
         self.method = "numerical MDR"
@@ -284,10 +284,11 @@ class NumericalMDR(Axisymmetric):
                         err, self._label(sols), sols)
 
     def _label(self, sols) -> str:
-        """The method, with the tolerance only when every solution met it."""
-        met = all(s.rel_error <= self.rtol for s in sols)
-        return (f"numerical MDR (rtol {self.rtol:g} met)" if met else
-                f"numerical MDR (rtol {self.rtol:g} not met: the samples limit the accuracy)")
+        """The state's method: the numerical MDR's reason when a solve did not meet rtol (a
+        sampled profile cannot be refined past its samples). It names no tolerance: the
+        effect's ``met_rtol`` says whether its own error met it."""
+        missed = [s.why_not_met for s in sols if not s.met]
+        return "numerical MDR" + (f" (rtol not met: {missed[0]})" if missed else "")
 
     def radius(self, d):
         d = np.atleast_1d(np.asarray(d, float))
