@@ -56,11 +56,6 @@ class Load:
     radius: float | None = None
 
 
-#: prescribed pressures p0 (1 - r^2/a^2)^n of section 5.1 and Problem 6
-DISTRIBUTIONS = {"uniform": "n = 0 (Problem 6)", "hertzian": "n = 1/2 (5.15)",
-                 "punch": "n = -1/2 (5.9)"}
-
-
 @dataclass
 class SceneSpec:
     title: str
@@ -268,11 +263,14 @@ class _Reader:
             for k in ("distribution", "p0", "radius"):
                 if k not in pr:
                     self.fail(f"load.pressure.{k}", "missing")
+            from hertzmdr.numeric.pressures import DISTRIBUTIONS
+
             if pr["distribution"] not in DISTRIBUTIONS:
                 self.fail("load.pressure.distribution",
                           f"unknown distribution {pr['distribution']!r}"
                           f"{suggest(str(pr['distribution']), DISTRIBUTIONS)} (one of: "
-                          + ", ".join(f"{k} ({v})" for k, v in DISTRIBUTIONS.items()) + ")")
+                          + ", ".join(f"{k} (n = {n:g}, {eq})" for k, (n, eq)
+                                      in DISTRIBUTIONS.items()) + ")")
             return Load("pressure", distribution=pr["distribution"],
                         p0=self.positive(pr["p0"], "pressure", "load.pressure.p0"),
                         radius=self.positive(pr["radius"], "length", "load.pressure.radius"))

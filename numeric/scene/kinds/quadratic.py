@@ -37,7 +37,9 @@ def build(setup: Setup) -> Contact:
     if abs(R1 - R2) <= CIRCULAR_RTOL * max(R1, R2):
         from hertzmdr.numeric.scene.kinds.hertz import HertzContact
 
-        return HertzContact(m, i, r, R=math.sqrt(R1 * R2), principal_radii=[R1, R2])
+        # equal radii (a sphere, crossed equal cylinders): R itself; else the Gaussian radius
+        R = R1 if R1 == R2 else float(bodies.gaussian_radius(R1, R2))  # (5.30)
+        return HertzContact(m, i, r, R=R, principal_radii=[R1, R2])
     from hertzmdr.numeric.scene.kinds.elliptic import EllipticContact
 
     return EllipticContact(m, i, r, R1, R2, model=setup.spec.elliptic)
