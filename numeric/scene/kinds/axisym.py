@@ -191,8 +191,9 @@ class ClosedFormContact(Axisymmetric):
         return self.form.g_profile(x)
 
     def effect_max_pressure(self, st):
-        """The largest pressure: at the centre for n <= 2, towards the edge for n > 2 (Fig.
-        5.17); located on a grid of 2001 points and refined by a bounded scalar search."""
+        """The largest pressure over the contact, wherever it lies (at the centre of a power law
+        with n <= 2, towards the edge for n > 2, Fig. 5.17): located on a grid of 2001 points
+        and refined by a bounded scalar search."""
         from scipy.optimize import minimize_scalar
 
         out = []

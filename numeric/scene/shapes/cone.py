@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from functools import partial
 
 from hertzmdr.numeric.scene.shapes.base import Key, Shape
 
@@ -28,7 +27,7 @@ class Cone(Shape):
         return ClosedForm(
             kind="cone", label="rigid cone (5.38)-(5.40)", method="(5.38)-(5.40)",
             params={"angle": th},
-            contact_radius=partial(cone.contact_radius, theta=th),
+            contact_radius=lambda d: cone.contact_radius(d, th),
             force=lambda d, E: cone.force(d, th, E),
             depth_from_force=lambda F, E: cone.depth_from_force(F, th, E),
             pressure=lambda r, d, E: cone.pressure(r, d, th, E),
