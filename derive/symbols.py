@@ -55,6 +55,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
           "of a kink of the profile (derive/kink.py)"),
     "slope_jump": ("1", "jump f'(b+) - f'(b-) of the profile's slope at a kink r = b"),
     "g_integral": ("m^2", "integral of the MDR profile g(x) over [0, a] (5.57)"),
+    "lam": ("1", "atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), "
+            "d = R lam tanh(lam)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

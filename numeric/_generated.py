@@ -131,6 +131,16 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'sphere_depth',
+    'sphere_force_from_radius',
+    'sphere_g',
+    'sphere_lam_contact_radius',
+    'sphere_lam_depth',
+    'sphere_lam_force',
+    'sphere_lam_pressure_pole',
+    'sphere_pressure_atanh_kernel',
+    'sphere_profile',
+    'sphere_stiffness',
     'stress_axis_max_shear',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
@@ -286,6 +296,16 @@ RELATIONS = (
     ('punch_pressure_displacement_outside', 'Fig. 5.2 (n = -1/2), Problem 7(a)', 'pressures', '2*a*p0*asin(a/r)/E_star', ''),
     ('punch_pressure_force', '(5.11)', 'pressures', '2*pi*a**2*p0', ''),
     ('punch_stiffness', '(5.12)', 'pressures', '2*E_star*a', ''),
+    ('sphere_depth', "(5.55), Sneddon's sphere", 'sphere', 'a*atanh(a/R)', ''),
+    ('sphere_force_from_radius', "(5.57), Sneddon's sphere", 'sphere', 'E_star*(R**2*atanh(a/R) - R*a + a**2*atanh(a/R))', ''),
+    ('sphere_g', "(5.52), Sneddon's sphere", 'sphere', 'x*atanh(x/R)', ''),
+    ('sphere_lam_contact_radius', "(5.55), Sneddon's sphere", 'sphere', 'R*tanh(lam)', ''),
+    ('sphere_lam_depth', "(5.55), Sneddon's sphere", 'sphere', 'R*lam*tanh(lam)', ''),
+    ('sphere_lam_force', "(5.57), Sneddon's sphere", 'sphere', 'E_star*R**2*(lam*tanh(lam)**2 + lam - tanh(lam))', ''),
+    ('sphere_lam_pressure_pole', "(5.59), Sneddon's sphere", 'sphere', 'E_star*R*atanh(sqrt(R**2*tanh(lam)**2 - r**2)/sqrt(R**2 - r**2))/(pi*sqrt(R**2 - r**2))', ''),
+    ('sphere_pressure_atanh_kernel', "(5.59), Sneddon's sphere", 'sphere', 'E_star*atanh(x/R)/(pi*x)', ''),
+    ('sphere_profile', "(5.52), Sneddon's sphere", 'sphere', 'R - sqrt(R**2 - r**2)', ''),
+    ('sphere_stiffness', "Problem 5, Sneddon's sphere", 'sphere', '2*E_star*a', ''),
     ('stress_axis_max_shear', 'Fig. 5.8', 'stress', 'p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
     ('stress_axis_max_shear_slope', 'Fig. 5.8', 'stress', '-p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2)**2) + p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*atan(a/z) + 2*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
@@ -3038,6 +3058,226 @@ def punch_stiffness(E_star, a):
     return 2*E_star*a
 
 
+def sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/2)*a*numpy.log1p(2*a/(R - a))
+
+
+def sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R;
+    below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b =
+    a/R, above it with atanh in log1p.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    import scipy.special
+
+    return numpy.select([numpy.less(a, (1/2)*R),True], [E_star*R**2*((1/2)*a**2*numpy.log1p(2*a/(R - a))/R**2 + (1/3)*a**3*scipy.special.hyp2f1(1, 3/2, 5/2, a**2/R**2)/R**3),E_star*(-R*a + (1/2)*(R**2 + a**2)*numpy.log1p(2*a/(R - a)))], default=numpy.nan)
+
+
+def sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*x*numpy.log1p(2*x/(R - x))
+
+
+def sphere_lam_contact_radius(R, lam):
+    """Contact radius a = R tanh(lam) [m] of a rigid spherical cap.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: the definition lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*numpy.tanh(lam)
+
+
+def sphere_lam_depth(R, lam):
+    """Indentation depth d [m] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*lam*numpy.tanh(lam)
+
+
+def sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small
+    lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b =
+    tanh(lam).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    import scipy.special
+
+    return numpy.select([numpy.less(lam, 1/2),True], [E_star*R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),E_star*R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+
+
+def sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as
+    a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (1/2)*E_star*R*numpy.log1p(2*numpy.sqrt(R*numpy.tanh(lam) - r)*numpy.sqrt(R*numpy.tanh(lam) + r)*(numpy.sqrt(R - r)*numpy.sqrt(R + r) + numpy.sqrt(R*numpy.tanh(lam) - r)*numpy.sqrt(R*numpy.tanh(lam) + r))*numpy.cosh(lam)**2/R**2)/(numpy.pi*numpy.sqrt(R - r)*numpy.sqrt(R + r))
+
+
+def sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2).
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*E_star*numpy.log1p(2*x/(R - x))/(numpy.pi*x)
+
+
+def sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R +
+    sqrt((R - r)(R + r))).
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return r**2/(R + numpy.sqrt(R - r)*numpy.sqrt(R + r))
+
+
+def sphere_stiffness(E_star, a):
+    """Differential stiffness dF/dd [N/m] of a rigid spherical cap at contact radius a.
+
+    Chapter: Problem 5, Sneddon's sphere. Derived from: (dF/da)/(dd/da) of (5.57) and
+    (5.55).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_stiffness``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
 def stress_axis_max_shear(a, nu, p0, z):
     """Maximum shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis under the Hertz pressure.
 
@@ -4190,6 +4430,144 @@ def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
         integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
     """
     return E_star*a**(-n)*d*n*numpy.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((1/2)*n - 1)/numpy.pi
+
+
+def textbook_sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_depth: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return a*numpy.arctanh(a/R)
+
+
+def textbook_sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_force_from_radius: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R; below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b = a/R, above it with atanh in log1p.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return E_star*(R**2*numpy.arctanh(a/R) - R*a + a**2*numpy.arctanh(a/R))
+
+
+def textbook_sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R, in the derived (textbook) form; use sphere_g: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return x*numpy.arctanh(x/R)
+
+
+def textbook_sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R), in the derived (textbook) form; use sphere_lam_force: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b = tanh(lam).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return E_star*R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
+
+
+def textbook_sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a, in the derived (textbook) form; use sphere_lam_pressure_pole: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return E_star*R*numpy.arctanh(numpy.sqrt(R**2*numpy.tanh(lam)**2 - r**2)/numpy.sqrt(R**2 - r**2))/(numpy.pi*numpy.sqrt(R**2 - r**2))
+
+
+def textbook_sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2), in the derived (textbook) form; use sphere_pressure_atanh_kernel: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return E_star*numpy.arctanh(x/R)/(numpy.pi*x)
+
+
+def textbook_sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R, in the derived (textbook) form; use sphere_profile: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R + sqrt((R - r)(R + r))).
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return R - numpy.sqrt(R**2 - r**2)
 
 
 def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):

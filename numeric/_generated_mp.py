@@ -131,6 +131,16 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'sphere_depth',
+    'sphere_force_from_radius',
+    'sphere_g',
+    'sphere_lam_contact_radius',
+    'sphere_lam_depth',
+    'sphere_lam_force',
+    'sphere_lam_pressure_pole',
+    'sphere_pressure_atanh_kernel',
+    'sphere_profile',
+    'sphere_stiffness',
     'stress_axis_max_shear',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
@@ -2832,6 +2842,222 @@ def punch_stiffness(E_star, a):
     return 2*E_star*a
 
 
+def sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*a*mpmath.log1p(2*a/(R - a))
+
+
+def sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R;
+    below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b =
+    a/R, above it with atanh in log1p.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return ((E_star*R**2*((mpmath.mpf(1)/mpmath.mpf(2))*a**2*mpmath.log1p(2*a/(R - a))/R**2 + (mpmath.mpf(1)/mpmath.mpf(3))*a**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), a**2/R**2)/R**3)) if (a < (mpmath.mpf(1)/mpmath.mpf(2))*R) else (E_star*(-R*a + (mpmath.mpf(1)/mpmath.mpf(2))*(R**2 + a**2)*mpmath.log1p(2*a/(R - a)))))
+
+
+def sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*x*mpmath.log1p(2*x/(R - x))
+
+
+def sphere_lam_contact_radius(R, lam):
+    """Contact radius a = R tanh(lam) [m] of a rigid spherical cap.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: the definition lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*mpmath.tanh(lam)
+
+
+def sphere_lam_depth(R, lam):
+    """Indentation depth d [m] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*lam*mpmath.tanh(lam)
+
+
+def sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small
+    lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b =
+    tanh(lam).
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return ((E_star*R**2*(lam*mpmath.tanh(lam)**2 + (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.tanh(lam)**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), mpmath.tanh(lam)**2))) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (E_star*R**2*(lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))))
+
+
+def sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as
+    a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*R*mpmath.log1p(2*mpmath.sqrt(R*mpmath.tanh(lam) - r)*mpmath.sqrt(R*mpmath.tanh(lam) + r)*(mpmath.sqrt(R - r)*mpmath.sqrt(R + r) + mpmath.sqrt(R*mpmath.tanh(lam) - r)*mpmath.sqrt(R*mpmath.tanh(lam) + r))*mpmath.cosh(lam)**2/R**2)/(mpmath.pi*mpmath.sqrt(R - r)*mpmath.sqrt(R + r))
+
+
+def sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2).
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.log1p(2*x/(R - x))/(mpmath.pi*x)
+
+
+def sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R +
+    sqrt((R - r)(R + r))).
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return r**2/(R + mpmath.sqrt(R - r)*mpmath.sqrt(R + r))
+
+
+def sphere_stiffness(E_star, a):
+    """Differential stiffness dF/dd [N/m] of a rigid spherical cap at contact radius a.
+
+    Chapter: Problem 5, Sneddon's sphere. Derived from: (dF/da)/(dd/da) of (5.57) and
+    (5.55).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_stiffness``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
 def stress_axis_max_shear(a, nu, p0, z):
     """Maximum shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis under the Hertz pressure.
 
@@ -3940,6 +4166,144 @@ def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
         integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
     """
     return E_star*a**(-n)*d*n*mpmath.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((mpmath.mpf(1)/mpmath.mpf(2))*n - 1)/mpmath.pi
+
+
+def textbook_sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_depth: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*mpmath.atanh(a/R)
+
+
+def textbook_sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_force_from_radius: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R; below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b = a/R, above it with atanh in log1p.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return E_star*(R**2*mpmath.atanh(a/R) - R*a + a**2*mpmath.atanh(a/R))
+
+
+def textbook_sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R, in the derived (textbook) form; use sphere_g: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return x*mpmath.atanh(x/R)
+
+
+def textbook_sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R), in the derived (textbook) form; use sphere_lam_force: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b = tanh(lam).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return E_star*R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam))
+
+
+def textbook_sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a, in the derived (textbook) form; use sphere_lam_pressure_pole: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return E_star*R*mpmath.atanh(mpmath.sqrt(R**2*mpmath.tanh(lam)**2 - r**2)/mpmath.sqrt(R**2 - r**2))/(mpmath.pi*mpmath.sqrt(R**2 - r**2))
+
+
+def textbook_sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2), in the derived (textbook) form; use sphere_pressure_atanh_kernel: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return E_star*mpmath.atanh(x/R)/(mpmath.pi*x)
+
+
+def textbook_sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R, in the derived (textbook) form; use sphere_profile: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R + sqrt((R - r)(R + r))).
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return R - mpmath.sqrt(R**2 - r**2)
 
 
 def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):
