@@ -139,3 +139,31 @@ def test_numerical_mdr_never_claims_an_unmet_rtol(rtol):
     # the samples of the cubic spline carry the profile to ~1e-13 (an interpolating spline of
     # a parabola is exact up to rounding), so the estimate bounds the difference
     assert abs(F["value"] / hertz - 1) <= max(F["rel_error"], 1e-13)
+
+
+def test_exact_sphere_is_one_shape_module():
+    """The exact sphere (shapes/exact_sphere.py, nothing else) at a/R = 0.5 against Sneddon's
+    closed form in the contact radius (1965), F = (E*/2) ((a^2 + R^2) ln((R + a)/(R - a))
+    - 2 a R) at d = (a/2) ln((R + a)/(R - a)), at 30 digits; shallow, it tends to Hertz."""
+    from pathlib import Path
+
+    import mpmath as mp
+
+    examples = Path(__file__).parents[1] / "examples"
+    doc = scene.load(examples / "exact_sphere_deep.toml").run()
+    assert doc["model"]["kind"] == "exact_sphere"
+    R, E = mp.mpf("1e-3"), mp.mpf(10e6) / (1 - mp.mpf(0.5) ** 2)
+    with mp.workdps(30):
+        d = mp.mpf(0.274653e-3)  # the example's depth, as written
+        a = mp.findroot(lambda x: x / 2 * mp.log((R + x) / (R - x)) - d, R / 2)
+        F = E / 2 * ((a * a + R * R) * mp.log((R + a) / (R - a)) - 2 * a * R)
+        # closed forms in float64 (1e-14, the contract of every closed form) against 30 digits
+        assert abs(doc["effects"]["contact_radius"]["value"] / a - 1) < 1e-14
+        assert abs(doc["effects"]["force"]["value"] / F - 1) < 1e-14
+    shallow = scene.load({
+        "effects": ["force", "contact_radius"], "load": {"depth": "1 nm"},
+        "body": [{"shape": "exact_sphere", "radius": "1 mm", "rigid": True},
+                 {"shape": "flat", "E": "10 MPa", "nu": 0.5}]}).run()["effects"]
+    hertz = 4 / 3 * float(E) * 1e-3**0.5 * 1e-9**1.5  # (5.23)
+    # the cap's force is below Hertz's by (a/R)^2/10 = 1e-7 at a/R = 1e-3 (docs/sphere.md)
+    assert 0 < 1 - shallow["force"]["value"] / hertz < 2e-7

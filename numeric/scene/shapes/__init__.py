@@ -12,6 +12,7 @@ from hertzmdr.numeric.scene.shapes.base import Key, Shape
 from hertzmdr.numeric.scene.shapes.cone import Cone
 from hertzmdr.numeric.scene.shapes.cylinder import Cylinder
 from hertzmdr.numeric.scene.shapes.ellipsoid import Ellipsoid
+from hertzmdr.numeric.scene.shapes.exact_sphere import ExactSphere
 from hertzmdr.numeric.scene.shapes.flat import Flat
 from hertzmdr.numeric.scene.shapes.flat_punch import FlatPunch
 from hertzmdr.numeric.scene.shapes.flattened_parabola import FlattenedParabola
@@ -24,7 +25,7 @@ from hertzmdr.numeric.scene.shapes.sphere import Sphere
 #: shape name -> the shape; the order is that of the docs' table
 SHAPES: dict[str, Shape] = {s.name: s for s in (
     Flat(), Sphere(), Cylinder(), Ellipsoid(), Cone(), FlatPunch(), PowerLaw(),
-    FlattenedParabola(), Profile(), PolygonPunch(), HeightMap(),
+    FlattenedParabola(), ExactSphere(), Profile(), PolygonPunch(), HeightMap(),
 )}
 
 __all__ = ["SHAPES", "Key", "Shape"]
