@@ -47,8 +47,12 @@ class Run:
     def effect(self, name: str) -> Result:
         eff = EFFECTS[name]
         t0 = time.perf_counter()
-        args = [self.node(n) for n in eff.needs]
-        v = getattr(self.contact, "effect_" + name)(*args)
+        try:
+            args = [self.node(n) for n in eff.needs]
+            v = getattr(self.contact, "effect_" + name)(*args)
+        except ValueError as exc:  # numeric/'s validators name the input and its valid range
+            raise SceneError(self.spec.source, "effects", f"{name!r} at this load: {exc}") \
+                from exc
         seconds = time.perf_counter() - t0
         self.evaluated.append(name)
         err = float(v.rel_error)
