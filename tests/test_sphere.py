@@ -239,6 +239,16 @@ def test_hard_cases_and_vectors():
     assert p[0] == 0.0 and p[1] > 0 and p[2] == 0.0
     u = sphere.surface_displacement(np.array([0.0, 1.0, 100.0]), 0.0, R)
     assert np.all(u == 0.0)
+    # (5.60) meets d - f(r) at the rim: (5.53) of (5.54) at r = a; a vector mixing depths
+    # a/R from 2e-5 to 1 - 9e-5 (nearer R the (r - a)^(3/2) term, ~f''(a) (r - a)^2 with
+    # f'' ~ (R^2 - a^2)^(-3/2), outgrows the offset below)
+    dd = np.array([1e-9, 0.1, 1.0, 5.0]) * R
+    aa = sphere.contact_radius(dd, R)
+    rr = aa * (1 + 1e-13)
+    rim = sphere.surface_displacement(rr, dd, R)
+    # the displacement of a smooth contact is C^1 at the rim (u' = -f'), so the cap continued
+    # to r = a (1 + 1e-13) < R matches it to O(1e-26 u'')
+    assert np.all(np.abs(rim / (dd - sphere.profile(rr, R)) - 1) < 1e-12)
     # very deep: a rounds to R in float64 for d > 19 R, F stays finite and increasing
     Fd = sphere.force(np.array([20.0, 40.0, 1e6]) * R, R, E)
     assert np.all(np.isfinite(Fd)) and np.all(np.diff(Fd) > 0)
@@ -268,6 +278,8 @@ def test_force_increases_and_inverts(d_over_R, R, factor):
     assert sphere.force(d * factor, R, E) > F
     assert sphere.contact_radius(d, R) <= R
     assert abs(sphere.depth_from_force(F, R, E) / d - 1) < 1e-14
+    # F -> d -> F: dF/F = (2 a E* d/F) dd/d <= 3 dd/d, and d(F) is within 1e-14
+    assert abs(sphere.force(sphere.depth_from_force(F, R, E), R, E) / F - 1) < 3e-14
     if d_over_R < 19:  # a < R in float64
         a = sphere.contact_radius(d, R)
         assert a < R
