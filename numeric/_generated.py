@@ -104,12 +104,14 @@ __all__ = [
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
+    'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
     'powerlaw_force_from_radius',
     'powerlaw_g',
     'powerlaw_kappa',
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
+    'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
@@ -250,12 +252,14 @@ RELATIONS = (
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
+    ('powerlaw_displacement_outside_integrand', 'Problem 7(d), (5.60)', 'powerlaw', '(-2*d*(-r*sin(w_out - asin(a/r))/a)**n + 2*d)/pi', ''),
     ('powerlaw_force', 'Problem 7(d)', 'powerlaw', '2*E_star*d*n*(d/(c_n*kappa_n))**(1/n)/(n + 1)', 'the factor (kappa_n c_n)^(1/n) must be (kappa_n c_n)^(-1/n): with a = (d/(kappa_n c_n))^(1/n), (5.57) gives F = 2n/(n+1) E* a d; for n = 2 (kappa_2 c_2 = 1/R) only the corrected form reproduces (5.23)'),
     ('powerlaw_force_from_radius', 'Problem 7(d), (5.57)', 'powerlaw', '2*E_star*a*d*n/(n + 1)', ''),
     ('powerlaw_g', 'Problem 7(d)', 'powerlaw', 'c_n*kappa_n*x**n', ''),
     ('powerlaw_kappa', 'Problem 7(d)', 'powerlaw', 'sqrt(pi)*gamma(n/2 + 1)/gamma(n/2 + 1/2)', ''),
-    ('powerlaw_kappa_asymptotic', 'Problem 7(d), large n', 'powerlaw', 'sqrt(2)*sqrt(pi)*sqrt(n)*exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + 31/(4608*n**2))/n**2)/n**2)/n**2)/n)/2', ''),
+    ('powerlaw_kappa_asymptotic', 'Problem 7(d), large n', 'powerlaw', 'sqrt(2)*sqrt(pi)*sqrt(n)*exp(2*(4*(4*(4*(31/(4608*n**2.0) - 17/14336)/n**2.0 + 1/640)/n**2.0 - 1/192)/n**2.0 + 1/8)/n**1.0)/2', ''),
     ('powerlaw_mean_pressure', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n/(pi*a*(n + 1))', ''),
+    ('powerlaw_mean_pressure_from_depth', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(pi*(n + 1))', ''),
     ('powerlaw_pressure', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*hyper((1, 1 - n/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a**2)', ''),
     ('powerlaw_pressure_integrand', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**(n/2 - 1)/(pi*a**n)', ''),
     ('powerlaw_pressure_n1', 'Problem 7(d), n = 1', 'powerlaw', 'E_star*d*log((a + sqrt(a**2 - r**2))/r)/(pi*a)', ''),
@@ -2393,6 +2397,11 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     Derivation: ``hertzmdr.derive.powerlaw``. Verified by
     ``tests/test_powerlaw.py::test_force_roundtrip``.
 
+    Printed in a stable form: (kappa_n c_n)^(1/n) of the derived form overflows or
+    underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split
+    into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay
+    within the range of the inputs.
+
     Parameters
     ----------
     E_star : float or ndarray
@@ -2406,7 +2415,7 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return ((1/2)*F*(c_n*kappa_n)**(n**(-1.0))*(n + 1)/(E_star*n))**(n/(n + 1))
+    return (c_n*kappa_n)**((n + 1)**(-1.0))*((1/2)*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
 def powerlaw_displacement_outside(a, d, n, r):
@@ -2431,6 +2440,34 @@ def powerlaw_displacement_outside(a, d, n, r):
     import scipy.special
 
     return 2*d*(-a*scipy.special.hyp2f1(1/2, (1/2)*n + 1/2, (1/2)*n + 3/2, a**2/r**2)/r + (n + 1)*numpy.arcsin(a/r))/(numpy.pi*(n + 1))
+
+
+def powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Printed in a stable form: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold
+    and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r -
+    a) sqrt(r + a) sin(w)/a)).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    w_out : float or ndarray
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return -2*d*numpy.expm1(n*numpy.log1p(-2*numpy.sin((1/2)*w_out)**2 - numpy.sqrt(-a + r)*numpy.sqrt(a + r)*numpy.sin(w_out)/a))/numpy.pi
 
 
 def powerlaw_force(E_star, c_n, d, kappa_n, n):
@@ -2537,7 +2574,7 @@ def powerlaw_kappa_asymptotic(n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(n)*numpy.exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + (31/4608)/n**2)/n**2)/n**2)/n**2)/n)
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(n)*numpy.exp(2*n**(-1.0)*(4*n**(-2.0)*(4*n**(-2.0)*(4*n**(-2.0)*((31/4608)*n**(-2.0) - 17/14336) + 1/640) - 1/192) + 1/8))
 
 
 def powerlaw_mean_pressure(E_star, a, d, n):
@@ -2560,6 +2597,34 @@ def powerlaw_mean_pressure(E_star, a, d, n):
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
     return 2*E_star*d*n/(numpy.pi*a*(n + 1))
+
+
+def powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Printed in a stable form: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0
+    for small n where F/(pi a^2) is still a float (and overflows where it is not): one power
+    of the ratio kappa_n c_n/d, times d.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : float or ndarray
+        indentation depth [m]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(n**(-1.0))/(numpy.pi*(n + 1))
 
 
 def powerlaw_pressure(E_star, a, d, n, r):
@@ -3935,6 +4000,78 @@ def textbook_mdr_kink_g(b, slope_jump, x):
         coordinate [m]
     """
     return 2*b*slope_jump*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b))
+
+
+def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
+
+    Chapter: Problem 7(d), inverted. Derived from: the force of Problem 7(d) solved for d.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((1/2)*F*(c_n*kappa_n)**(n**(-1.0))*(n + 1)/(E_star*n))**(n/(n + 1))
+
+
+def textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n), in the derived (textbook) form; use powerlaw_displacement_outside_integrand: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r - a) sqrt(r + a) sin(w)/a)).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    w_out : float or ndarray
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return (-2*d*(-r*numpy.sin(w_out - numpy.arcsin(a/r))/a)**n + 2*d)/numpy.pi
+
+
+def textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d, in the derived (textbook) form; use powerlaw_mean_pressure_from_depth: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0 for small n where F/(pi a^2) is still a float (and overflows where it is not): one power of the ratio kappa_n c_n/d, times d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : float or ndarray
+        indentation depth [m]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(n**(-1.0))/(numpy.pi*(n + 1))
 
 
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):

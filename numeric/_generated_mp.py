@@ -104,12 +104,14 @@ __all__ = [
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
+    'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
     'powerlaw_force_from_radius',
     'powerlaw_g',
     'powerlaw_kappa',
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
+    'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
@@ -2209,6 +2211,11 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     Derivation: ``hertzmdr.derive.powerlaw``. Verified by
     ``tests/test_powerlaw.py::test_force_roundtrip``.
 
+    Printed in a stable form: (kappa_n c_n)^(1/n) of the derived form overflows or
+    underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split
+    into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay
+    within the range of the inputs.
+
     Parameters
     ----------
     E_star : mpmath.mpf
@@ -2222,7 +2229,7 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : mpmath.mpf
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return ((mpmath.mpf(1)/mpmath.mpf(2))*F*(c_n*kappa_n)**(1/n)*(n + 1)/(E_star*n))**(n/(n + 1))
+    return (c_n*kappa_n)**(1/(n + 1))*((mpmath.mpf(1)/mpmath.mpf(2))*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
 def powerlaw_displacement_outside(a, d, n, r):
@@ -2245,6 +2252,34 @@ def powerlaw_displacement_outside(a, d, n, r):
         radial coordinate on the surface [m]
     """
     return 2*d*(-a*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), (mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(1)/mpmath.mpf(2)), ((mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(3)/mpmath.mpf(2),), a**2/r**2)/r + (n + 1)*mpmath.asin(a/r))/(mpmath.pi*(n + 1))
+
+
+def powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Printed in a stable form: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold
+    and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r -
+    a) sqrt(r + a) sin(w)/a)).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_out : mpmath.mpf
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return -2*d*mpmath.expm1(n*mpmath.log1p(-2*mpmath.sin((mpmath.mpf(1)/mpmath.mpf(2))*w_out)**2 - mpmath.sqrt(-a + r)*mpmath.sqrt(a + r)*mpmath.sin(w_out)/a))/mpmath.pi
 
 
 def powerlaw_force(E_star, c_n, d, kappa_n, n):
@@ -2349,7 +2384,7 @@ def powerlaw_kappa_asymptotic(n):
     n : mpmath.mpf
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(n)*mpmath.exp(2*(mpmath.mpf(1)/mpmath.mpf(8) + 4*(mpmath.mpf(-1)/mpmath.mpf(192) + 4*(mpmath.mpf(1)/mpmath.mpf(640) + 4*(mpmath.mpf(-17)/mpmath.mpf(14336) + (mpmath.mpf(31)/mpmath.mpf(4608))/n**2)/n**2)/n**2)/n**2)/n)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(n)*mpmath.exp(2*n**(mpmath.mpf((1, 1, 0, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*((mpmath.mpf(31)/mpmath.mpf(4608))*n**(mpmath.mpf((1, 1, 1, 1))) + mpmath.mpf(-17)/mpmath.mpf(14336)) + mpmath.mpf(1)/mpmath.mpf(640)) + mpmath.mpf(-1)/mpmath.mpf(192)) + mpmath.mpf(1)/mpmath.mpf(8)))
 
 
 def powerlaw_mean_pressure(E_star, a, d, n):
@@ -2372,6 +2407,34 @@ def powerlaw_mean_pressure(E_star, a, d, n):
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
     return 2*E_star*d*n/(mpmath.pi*a*(n + 1))
+
+
+def powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Printed in a stable form: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0
+    for small n where F/(pi a^2) is still a float (and overflows where it is not): one power
+    of the ratio kappa_n c_n/d, times d.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : mpmath.mpf
+        indentation depth [m]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(mpmath.pi*(n + 1))
 
 
 def powerlaw_pressure(E_star, a, d, n, r):
@@ -3698,6 +3761,78 @@ def textbook_mdr_kink_g(b, slope_jump, x):
         coordinate [m]
     """
     return 2*b*slope_jump*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b))
+
+
+def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
+
+    Chapter: Problem 7(d), inverted. Derived from: the force of Problem 7(d) solved for d.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((mpmath.mpf(1)/mpmath.mpf(2))*F*(c_n*kappa_n)**(1/n)*(n + 1)/(E_star*n))**(n/(n + 1))
+
+
+def textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n), in the derived (textbook) form; use powerlaw_displacement_outside_integrand: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r - a) sqrt(r + a) sin(w)/a)).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_out : mpmath.mpf
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return (-2*d*(-r*mpmath.sin(w_out - mpmath.asin(a/r))/a)**n + 2*d)/mpmath.pi
+
+
+def textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d, in the derived (textbook) form; use powerlaw_mean_pressure_from_depth: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0 for small n where F/(pi a^2) is still a float (and overflows where it is not): one power of the ratio kappa_n c_n/d, times d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : mpmath.mpf
+        indentation depth [m]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(mpmath.pi*(n + 1))
 
 
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):

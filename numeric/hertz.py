@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import nonnegative, positive, result
+from hertzmdr.numeric._validate import nonnegative, positive, pow2_scale, representable, result
 
 __all__ = [
     "contact_radius", "max_pressure", "mean_pressure", "force", "energy", "stiffness",
@@ -21,6 +21,7 @@ __all__ = [
 ]
 
 
+@representable
 def contact_radius(d, R):
     """Contact radius a = sqrt(R d) [m], (5.21).
 
@@ -34,6 +35,7 @@ def contact_radius(d, R):
     return result(gen.hertz_contact_radius(positive("R", R), nonnegative("d", d)))
 
 
+@representable
 def max_pressure(d, R, E_star):
     """Maximum pressure p0 = (2/pi) E* sqrt(d/R) [Pa] at the centre, (5.22).
 
@@ -50,18 +52,21 @@ def max_pressure(d, R, E_star):
                                        nonnegative("d", d)))
 
 
+@representable
 def mean_pressure(d, R, E_star):
     """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`."""
     return result(gen.hertz_mean_pressure(positive("E_star", E_star), positive("R", R),
                                         nonnegative("d", d)))
 
 
+@representable
 def force(d, R, E_star):
     """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`."""
     return result(gen.hertz_force(positive("E_star", E_star), positive("R", R),
                                 nonnegative("d", d)))
 
 
+@representable
 def energy(d, R, E_star):
     """Elastic energy U = (8/15) E* R^(1/2) d^(5/2) [J], (5.25).
 
@@ -71,6 +76,7 @@ def energy(d, R, E_star):
                                  nonnegative("d", d)))
 
 
+@representable
 def stiffness(d, R, E_star):
     """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5).
 
@@ -80,6 +86,7 @@ def stiffness(d, R, E_star):
                                     nonnegative("d", d)))
 
 
+@representable
 def depth_from_force(F, R, E_star):
     """Indentation depth d [m] under the normal force F, (5.23) inverted.
 
@@ -96,6 +103,7 @@ def depth_from_force(F, R, E_star):
                                            positive("R", R)))
 
 
+@representable
 def contact_radius_from_force(F, R, E_star):
     """Contact radius a = (3 F R / (4 E*))^(1/3) [m], (5.24).
 
@@ -105,6 +113,7 @@ def contact_radius_from_force(F, R, E_star):
                                                     nonnegative("F", F), positive("R", R)))
 
 
+@representable
 def max_pressure_from_force(F, R, E_star):
     """Maximum pressure p0 = (6 F E*^2 / (pi^3 R^2))^(1/3) [Pa], (5.24).
 
@@ -114,6 +123,7 @@ def max_pressure_from_force(F, R, E_star):
                                                   nonnegative("F", F), positive("R", R)))
 
 
+@representable
 def pressure(r, d, R, E_star):
     """Pressure p(r) = p0 sqrt(1 - r^2/a^2) [Pa] inside the contact and 0 outside, (5.15).
 
@@ -126,10 +136,17 @@ def pressure(r, d, R, E_star):
     R, E_star
         As in :func:`max_pressure`.
     """
-    return result(gen.hertz_pressure(positive("E_star", E_star), positive("R", R),
-                                   positive("d", d), nonnegative("r", r)))
+    r, d, R, E_star = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R),
+                                          positive("E_star", E_star))
+    # in or out on the rounded a = sqrt(R) sqrt(d) of the generated form; outside it is 0,
+    # and r is not squared there (r = 1e155 m would overflow)
+    a = gen.hertz_contact_radius(R, d)  # (5.21)
+    inside = r < a
+    return result(np.where(inside, gen.hertz_pressure(E_star, R, d, np.where(inside, r, 0.0)),
+                           0.0))  # (5.15)
 
 
+@representable
 def surface_displacement(r, d, R):
     """Surface displacement u_z(r) [m] inside (5.18) and outside (Fig. 5.2) the contact.
 
@@ -147,8 +164,12 @@ def surface_displacement(r, d, R):
         Effective radius [m], R > 0.
     """
     r, d, R = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R))
-    inside = r * r <= R * d  # r <= a, (5.21)
+    # in or out on the same rounded a = sqrt(R) sqrt(d) as the outside form's asin(a/r), so
+    # that a/r <= 1 there (r*r <= R*d disagreed with it at r = nextafter(a, 0): NaN)
+    inside = r <= gen.hertz_contact_radius(R, d)  # (5.21)
     out = np.empty(r.shape)
     out[inside] = gen.hertz_displacement_inside(R[inside], d[inside], r[inside])
-    out[~inside] = gen.hertz_displacement_outside(R[~inside], d[~inside], r[~inside])
+    o = ~inside  # u is homogeneous of degree 1 in (r, d, R): lengths in units of s ~ r, a
+    s = pow2_scale(r[o])  # power of 2 (exact), so that the form's (a/r)^2 = R d/r^2 never
+    out[o] = s * gen.hertz_displacement_outside(R[o] / s, d[o] / s, r[o] / s)  # squares r
     return result(out)

@@ -7,7 +7,7 @@ import random
 import mpmath as mp
 import pytest
 import sympy as sp
-from sympy.codegen.cfunctions import log1p
+from sympy.codegen.cfunctions import expm1, log1p
 
 from hertzmdr.derive import all_relations
 
@@ -51,6 +51,28 @@ def _equal(rel, x, y):
     diff = _in_domain(rel, x - y)
     if diff.has(sp.acosh, sp.asinh) and sp.simplify(diff.rewrite(sp.log)) == 0:
         return True  # inverse hyperbolic identities: simplify proves them in logarithms
+    ratio = sp.powsimp(sp.expand_power_base(_in_domain(rel, x / y), force=True), force=True)
+    if sp.simplify(ratio) == 1:
+        return True  # products of powers regrouped (positive factors; the 50-digit check below
+        # catches a sign or a branch)
+    if x.has(expm1) or y.has(expm1):
+        # 1 - exp(k log1p(q)) against 1 - B^k: write exp(k log(1 + q)) as (1 + q)^k with the
+        # base simplified (B > 0 on the domain; the 50-digit check below catches a sign)
+        def powers(e):
+            e = _in_domain(rel, e).replace(expm1, lambda z: sp.exp(z) - 1)
+            e = e.replace(log1p, lambda z: sp.log(1 + z))
+
+            def is_power(q):
+                return (isinstance(q, sp.exp) and isinstance(q.args[0], sp.Mul)
+                        and any(isinstance(f, sp.log) for f in q.args[0].args))
+
+            def as_power(q):
+                (lg,) = [f for f in q.args[0].args if isinstance(f, sp.log)]
+                base = sp.simplify(sp.expand_trig(lg.args[0]))
+                return sp.Pow(base, q.args[0] / lg)
+            return e.replace(is_power, as_power)
+
+        return sp.simplify(sp.expand_trig(powers(x) - powers(y))) == 0
     if x.has(log1p) or y.has(log1p):
         # exp(k log1p(-q)) against (1 - q)^k: simplify does not know 1 - q > 0. Both sides
         # are positive on the domain (the 50-digit check below catches a sign), so compare
