@@ -128,6 +128,7 @@ __all__ = [
     'punch_pressure_force',
     'punch_stiffness',
     'stress_axis_max_shear',
+    'stress_axis_max_shear_bracket',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
@@ -276,6 +277,7 @@ RELATIONS = (
     ('punch_pressure_force', '(5.11)', 'pressures', '2*pi*a**2*p0', ''),
     ('punch_stiffness', '(5.12)', 'pressures', '2*E_star*a', ''),
     ('stress_axis_max_shear', 'Fig. 5.8', 'stress', 'p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
+    ('stress_axis_max_shear_bracket', 'Fig. 5.8', 'stress', 'pi*a*(nu + 1)/(8*nu + 20)', ''),
     ('stress_axis_max_shear_slope', 'Fig. 5.8', 'stress', '-p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2)**2) + p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*atan(a/z) + 2*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx_deep', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
@@ -2986,6 +2988,25 @@ def stress_axis_max_shear(a, nu, p0, z):
     return (1/4)*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
 
 
+def stress_axis_max_shear_bracket(a, nu):
+    """Depth z_lo [m] on the axis where d(tau_1)/dz > 0 for -1 < nu <= 1/2: the lower end of the bracket [z_lo, 2a] of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: lower bounds of the terms of d(tau_1)/dz
+    (stress_axis_max_shear_slope).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear_bracket``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return numpy.pi*a*(nu + 1)/(8*nu + 20)
+
+
 def stress_axis_max_shear_slope(a, nu, p0, z):
     """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
 
@@ -3115,7 +3136,8 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3132,7 +3154,7 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     """
     import scipy.special
 
-    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - 2/15*eta*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**(-2.0)/((xi**(-2.0) + 1)*(eta**2*xi**(-2.0) + 1)) - 2/15*eta*xi**(-4.0)*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -xi**(-2.0))/(xi**(-2.0) + 1) + xi**(-2.0)*(1 - 2*nu)/((3*eta + 3)*(xi**(-2.0) + 1)))
 
 
 def stress_hertz_sigma_tt(nu, p0, xi, eta):
@@ -3168,7 +3190,8 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3183,7 +3206,7 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     """
     import scipy.special
 
-    return p0*(-2/15*eta*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-2/15*eta*xi**(-4.0)*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -xi**(-2.0))/(xi**(-2.0) + 1) + xi**(-2.0)*(1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**(-2.0) + 1)))
 
 
 def stress_hertz_sigma_zz(p0, xi, eta):
@@ -4144,7 +4167,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4169,7 +4192,7 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
 
 
 def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.

@@ -128,6 +128,7 @@ __all__ = [
     'punch_pressure_force',
     'punch_stiffness',
     'stress_axis_max_shear',
+    'stress_axis_max_shear_bracket',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
@@ -2787,6 +2788,25 @@ def stress_axis_max_shear(a, nu, p0, z):
     return (mpmath.mpf(1)/mpmath.mpf(4))*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
 
 
+def stress_axis_max_shear_bracket(a, nu):
+    """Depth z_lo [m] on the axis where d(tau_1)/dz > 0 for -1 < nu <= 1/2: the lower end of the bracket [z_lo, 2a] of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: lower bounds of the terms of d(tau_1)/dz
+    (stress_axis_max_shear_slope).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear_bracket``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return mpmath.pi*a*(nu + 1)/(8*nu + 20)
+
+
 def stress_axis_max_shear_slope(a, nu, p0, z):
     """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
 
@@ -2914,7 +2934,8 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -2929,7 +2950,7 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     chi : mpmath.mpf
         sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**(mpmath.mpf((1, 1, 1, 1)))/((xi**(mpmath.mpf((1, 1, 1, 1))) + 1)*(eta**2*xi**(mpmath.mpf((1, 1, 1, 1))) + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*xi**(mpmath.mpf((1, 1, 2, 1)))*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -xi**(mpmath.mpf((1, 1, 1, 1))))/(xi**(mpmath.mpf((1, 1, 1, 1))) + 1) + xi**(mpmath.mpf((1, 1, 1, 1)))*(1 - 2*nu)/((3*eta + 3)*(xi**(mpmath.mpf((1, 1, 1, 1))) + 1)))
 
 
 def stress_hertz_sigma_tt(nu, p0, xi, eta):
@@ -2965,7 +2986,8 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -2978,7 +3000,7 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     eta : mpmath.mpf
         cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*xi**(mpmath.mpf((1, 1, 2, 1)))*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -xi**(mpmath.mpf((1, 1, 1, 1))))/(xi**(mpmath.mpf((1, 1, 1, 1))) + 1) + xi**(mpmath.mpf((1, 1, 1, 1)))*(1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**(mpmath.mpf((1, 1, 1, 1))) + 1)))
 
 
 def stress_hertz_sigma_zz(p0, xi, eta):
@@ -3905,7 +3927,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -3930,7 +3952,7 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
 
 
 def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.

@@ -13,13 +13,25 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
+from hertzmdr.numeric._validate import (
+    as_float,
+    nonnegative,
+    poisson,
+    positive,
+    pow2_scale,
+    result,
+)
 
 __all__ = [
     "spheroidal", "hertz_stress_cylindrical", "hertz_stress", "axis_stresses",
     "axis_max_shear", "von_mises", "tresca", "max_shear", "hertz_maximum",
-    "superposed_stress",
+    "superposed_stress", "MAX_DISTANCE",
 ]
+
+
+#: :func:`hertz_stress_cylindrical` and :func:`hertz_stress` accept max(r, z) up to this
+#: many contact radii (their xi^2 stays below 1e300; the stresses there are ~1e-300 p0)
+MAX_DISTANCE = 1e150
 
 
 def spheroidal(r, z, a):
@@ -49,6 +61,10 @@ def spheroidal(r, z, a):
     """
     r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
     r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
+    # far away (r or z > 1e154 a) q^2 would overflow: outside the sphere r^2 + z^2 = a^2
+    # the lengths are taken in units of s, the power of 2 below max(r, z) (exact), with the
+    # contact radius 1/s; inside it s = 1
+    s = np.maximum(pow2_scale(np.maximum(r, z)), 1.0)
     q = (r - 1) * (r + 1) + z * z
     edge = (q == 0) & (z * z == 0)  # the edge circle (to within z^2 underflow, z < 1e-154 a)
     i = (q <= 0) & ~edge
@@ -58,13 +74,19 @@ def spheroidal(r, z, a):
     one = np.ones(r.shape)
     u[i] = gen.stress_spheroidal_u_inside(one[i], r[i], z[i])
     cos_b[i] = gen.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
-    u[o] = gen.stress_spheroidal_u(one[o], r[o], z[o])
-    cos_b[o] = z[o] / np.sqrt(u[o])  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
+    so = s[o]  # u/s^2 in units of s (the contact radius 1/s): u = s^2 u', sqrt(u) = s sqrt(u')
+    uo = gen.stress_spheroidal_u(1.0 / so, r[o] / so, z[o] / so)
+    cos_b[o] = (z[o] / so) / np.sqrt(uo)  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
+    xi = np.empty(r.shape)
+    xi[...] = np.sqrt(u)
+    xi[o] = so * np.sqrt(uo)
+    sin_b = np.empty(r.shape)
+    sin_b[~o] = r[~o] / np.sqrt(1 + u[~o])
+    sin_b[o] = (r[o] / so) / np.sqrt(1.0 / so**2 + uo)  # 1/s^2 underflows harmlessly
     # on the edge circle the field is the limit beta -> pi/2, xi = 0, which every generated
     # form reaches continuously; 1e-100 keeps eta^3/(xi^2 + eta^2) from being 0/0
     cos_b[edge] = 1e-100
-    sin_b = r / np.sqrt(1 + u)
-    return result(np.sqrt(u)), result(cos_b), result(sin_b)
+    return result(xi), result(cos_b), result(sin_b)
 
 
 def hertz_stress_cylindrical(r, z, a, p0, nu):
@@ -72,7 +94,9 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
 
     Huber's closed form (Huber 1904; Johnson 1985, eqs. (3.44)) in spheroidal coordinates,
     printed without the cancellations of the textbook form on the axis, at depth and at the
-    contact edge (see :mod:`hertzmdr.derive.stress`). Finite everywhere in the closed body.
+    contact edge (see :mod:`hertzmdr.derive.stress`). Guaranteed finite and accurate for
+    max(r, z) <= MAX_DISTANCE a (1e150 a), every -1 < nu <= 0.5 and any finite p0; beyond
+    that distance a ValueError.
 
     Parameters
     ----------
@@ -95,6 +119,12 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     r, z, a, p0, nu = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z),
                                           positive("a", a), nonnegative("p0", p0),
                                           poisson("nu", nu))
+    far = np.maximum(r, z) > MAX_DISTANCE * a
+    if far.any():
+        i = np.unravel_index(np.argmax(far), far.shape) if far.ndim else ()
+        raise ValueError(f"r = {r[i]!r}, z = {z[i]!r}, a = {a[i]!r}: max(r, z) is out of range;"
+                         f" valid: max(r, z) <= {MAX_DISTANCE:g} a (the stresses there are "
+                         f"below 1e-300 p0)")
     xi, eta, chi = (np.asarray(v) for v in spheroidal(r, z, a))
     srr, stt = np.empty(r.shape), np.empty(r.shape)
     n = xi < 1.0  # the form with atan; beyond, the hypergeometric form without cancellation
@@ -178,12 +208,15 @@ def axis_max_shear(nu):
     axis under the Hertz pressure (Fig. 5.8); the von Mises stress there is 2 tau_1.
 
     The root of d(tau_1)/dz (generated from the derivation) by Brent's method on
-    0.05 a <= z <= 2 a, to full double precision.
+    z_lo <= z <= 2 a, to full double precision (relative: the maximum approaches the surface
+    like z = pi (1 + nu) a/6 as nu -> -1). z_lo (``stress_axis_max_shear_bracket``) is derived
+    from lower bounds of the slope's terms, so that the bracket holds for every nu.
 
     Parameters
     ----------
     nu : float
-        Poisson's ratio, -1 < nu <= 0.5.
+        Poisson's ratio, -1 < nu <= 0.5: the whole range is guaranteed (finite, z/a to a few
+        ulp).
 
     Returns
     -------
@@ -193,8 +226,9 @@ def axis_max_shear(nu):
     from scipy.optimize import brentq
 
     nu = float(poisson("nu", nu))
-    s = brentq(lambda t: gen.stress_axis_max_shear_slope(1.0, nu, 1.0, t), 0.05, 2.0,
-               xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+    lo = float(gen.stress_axis_max_shear_bracket(1.0, nu))  # slope > 0 there, < 0 at 2a
+    s = brentq(lambda t: gen.stress_axis_max_shear_slope(1.0, nu, 1.0, t), lo, 2.0,
+               xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=200)
     return s, float(gen.stress_axis_max_shear(1.0, nu, 1.0, s))
 
 

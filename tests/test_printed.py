@@ -36,7 +36,7 @@ def _points(rel, x, y, n=5, seed=1):
 
 
 def _numeric_diffs(rel, x, y):
-    x, y = _in_domain(rel, x), _in_domain(rel, y)
+    x, y = _in_domain(rel, _exact(x)), _in_domain(rel, _exact(y))
     out = []
     with mp.workdps(50):
         for pt in _points(rel, x, y):
@@ -45,7 +45,14 @@ def _numeric_diffs(rel, x, y):
     return out
 
 
+def _exact(e):
+    """Integer-valued float exponents (xi**(-1.0), printed so to keep powers from overflowing)
+    as the exact integers they are."""
+    return e.xreplace({f: sp.Integer(int(f)) for f in e.atoms(sp.Float) if float(f).is_integer()})
+
+
 def _equal(rel, x, y):
+    x, y = _exact(x), _exact(y)
     if sp.simplify(sp.hyperexpand(_in_domain(rel, x - y))) == 0:
         return True
     diff = _in_domain(rel, x - y)
