@@ -1176,6 +1176,10 @@ def cone_pressure(E_star, d, theta, r):
     Derivation: ``hertzmdr.derive.cone``. Verified by
     ``tests/test_cone.py::test_cone_by_kernel``.
 
+    Printed in a stable form: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for
+    a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of
+    1 + (a - r)/r loses the digits of a - r next to the rim.
+
     Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
     pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
     nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
@@ -1191,7 +1195,7 @@ def cone_pressure(E_star, d, theta, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
-    return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
+    return E_star*numpy.tan(theta)*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(2*d/(numpy.pi*numpy.tan(theta)) - r)/numpy.sqrt(r))
 
 
 def cone_stiffness(E_star, d, theta):
@@ -3726,6 +3730,32 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def textbook_cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0), in the derived (textbook) form; use cone_pressure: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of 1 + (a - r)/r loses the digits of a - r next to the rim.
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
 
 
 def textbook_ellipse_area(R1, d, t_ba):

@@ -1025,6 +1025,10 @@ def cone_pressure(E_star, d, theta, r):
     Derivation: ``hertzmdr.derive.cone``. Verified by
     ``tests/test_cone.py::test_cone_by_kernel``.
 
+    Printed in a stable form: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for
+    a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of
+    1 + (a - r)/r loses the digits of a - r next to the rim.
+
     Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
     pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
     nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
@@ -1040,7 +1044,7 @@ def cone_pressure(E_star, d, theta, r):
     r : mpmath.mpf
         radial coordinate on the surface [m]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
+    return E_star*mpmath.tan(theta)*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(2*d/(mpmath.pi*mpmath.tan(theta)) - r)/mpmath.sqrt(r))
 
 
 def cone_stiffness(E_star, d, theta):
@@ -3509,6 +3513,32 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
+
+
+def textbook_cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0), in the derived (textbook) form; use cone_pressure: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of 1 + (a - r)/r loses the digits of a - r next to the rim.
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
 
 
 def textbook_ellipse_area(R1, d, t_ba):

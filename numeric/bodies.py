@@ -23,6 +23,7 @@ from hertzmdr.numeric._validate import (
     nonzero,
     poisson,
     positive,
+    representable,
     result,
 )
 
@@ -34,6 +35,7 @@ __all__ = [
 ]
 
 
+@representable
 def effective_modulus(E1, nu1, E2=None, nu2=None):
     """Effective modulus E* [Pa] of two elastic bodies, (5.26); of one body on a rigid one, (5.8).
 
@@ -68,6 +70,7 @@ def effective_modulus(E1, nu1, E2=None, nu2=None):
     return result(gen.bodies_effective_modulus(E1, nu1, E2, nu2))  # (5.26)
 
 
+@representable
 def effective_radius(R1, R2=np.inf):
     """Effective radius R [m] of two spheres (or any two axisymmetric quadratic surfaces), (5.27).
 
@@ -97,8 +100,16 @@ def effective_radius(R1, R2=np.inf):
     return result(gen.bodies_effective_radius(R1, R2))  # (5.27)
 
 
-def _radii_from_curvatures(k1, k2, names):
-    k1, k2 = np.broadcast_arrays(np.asarray(k1, float), np.asarray(k2, float))
+def _radii_from_curvatures(curvature_1, curvature_2, args, names):
+    """(R_1, R_2) from the generated principal curvatures k1 >= k2 of ``args``.
+
+    k2 is printed as 2 det/(trace + root) = det/k1: it is evaluated only where k1 > 0 (a gap
+    with k1 <= 0 is refused below, before 0/0 can give a warning)."""
+    args = np.broadcast_arrays(*args)
+    k1 = np.asarray(curvature_1(*args), dtype=float).reshape(args[0].shape)
+    k2 = np.zeros(k1.shape)
+    ok = k1 > 0
+    k2[ok] = curvature_2(*(v[ok] for v in args))
     bad = ~(k2 >= 0) | ~(k1 > 0)
     if bad.any():
         raise ValueError(f"{names}: the gap is not convex (principal curvatures "
@@ -142,9 +153,8 @@ def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
     w = as_float("omega", omega)
     if not np.isfinite(w).all():
         raise ValueError(f"omega = {omega!r}: must be finite")
-    k1 = gen.bodies_principal_curvature_1(*args, w)
-    k2 = gen.bodies_principal_curvature_2(*args, w)
-    return _radii_from_curvatures(k1, k2, "principal_radii")
+    return _radii_from_curvatures(gen.bodies_principal_curvature_1,
+                                  gen.bodies_principal_curvature_2, (*args, w), "principal_radii")
 
 
 def crossed_cylinder_radii(R1, R2, alpha):
@@ -167,11 +177,12 @@ def crossed_cylinder_radii(R1, R2, alpha):
     """
     R1, R2 = positive("R1", R1, allow_inf=True), positive("R2", R2, allow_inf=True)
     alpha = between("alpha", alpha, 0.0, np.pi, lo_open=False, hi_open=False)
-    k1 = gen.bodies_crossed_cylinders_curvature_1(R1, R2, alpha)
-    k2 = gen.bodies_crossed_cylinders_curvature_2(R1, R2, alpha)
-    return _radii_from_curvatures(k1, k2, "crossed_cylinder_radii")
+    return _radii_from_curvatures(gen.bodies_crossed_cylinders_curvature_1,
+                                  gen.bodies_crossed_cylinders_curvature_2, (R1, R2, alpha),
+                                  "crossed_cylinder_radii")
 
 
+@representable
 def crossed_cylinders_gaussian_radius(R1, R2, alpha):
     """Gaussian radius sqrt(R_1 R_2) = sqrt(R1 R2)/sin(alpha) [m] of two crossed cylinders, (5.33).
 
@@ -186,6 +197,7 @@ def crossed_cylinders_gaussian_radius(R1, R2, alpha):
         positive("R1", R1), positive("R2", R2), between("alpha", alpha, 0.0, np.pi)))
 
 
+@representable
 def gaussian_radius(R1, R2):
     """Gaussian radius R~ = sqrt(R1 R2) [m] of a gap with the principal radii R1, R2, (5.30).
 
@@ -215,6 +227,7 @@ def gaussian_approx_semi_axes(d, R1, R2):
             result(gen.bodies_gaussian_approx_semi_axis_2(R2, d)))
 
 
+@representable
 def gaussian_approx_area(d, R1, R2):
     """Contact area A = pi sqrt(R1 R2) d [m^2] of the elliptic contact, (5.29) (approximation).
 
@@ -224,6 +237,7 @@ def gaussian_approx_area(d, R1, R2):
                                                 nonnegative("d", d)))
 
 
+@representable
 def gaussian_approx_max_pressure(d, R1, R2, E_star):
     """Maximum pressure p0 [Pa] of the elliptic contact: (5.22) with R = R~ (approximation).
 
@@ -241,6 +255,7 @@ def gaussian_approx_max_pressure(d, R1, R2, E_star):
         nonnegative("d", d)))
 
 
+@representable
 def gaussian_approx_force(d, R1, R2, E_star):
     """Normal force F [N] of the elliptic contact: (5.23) with R = R~ (approximation).
 
@@ -252,6 +267,7 @@ def gaussian_approx_force(d, R1, R2, E_star):
         nonnegative("d", d)))
 
 
+@representable
 def gaussian_approx_depth_from_force(F, R1, R2, E_star):
     """Indentation depth d [m] of the elliptic contact under the force F [N]: (5.24) with
     R = R~ (approximation), the inverse of :func:`gaussian_approx_force`.
@@ -270,6 +286,7 @@ def gaussian_approx_depth_from_force(F, R1, R2, E_star):
         positive("R2", R2)))
 
 
+@representable
 def gaussian_approx_pressure(x, y, d, R1, R2, E_star):
     """Pressure p(x, y) = p0 sqrt(1 - x^2/a^2 - y^2/b^2) [Pa] of the elliptic contact, (5.31).
 
@@ -289,6 +306,13 @@ def gaussian_approx_pressure(x, y, d, R1, R2, E_star):
     for name, v in (("x", x), ("y", y)):
         if not np.isfinite(v).all():
             raise ValueError(f"{name} must be finite")
-    return result(gen.bodies_gaussian_approx_pressure(
-        positive("E_star", E_star), positive("R1", R1), positive("R2", R2), positive("d", d),
-        x, y))
+    x, y, d, R1, R2, E_star = np.broadcast_arrays(x, y, positive("d", d), positive("R1", R1),
+                                                  positive("R2", R2), positive("E_star", E_star))
+    # the generated form decides in or out (its Max(0, 1 - x^2/a^2 - y^2/b^2)); it is called
+    # only inside the box |x| < 2a, |y| < 2b (5.28), so that no coordinate far outside is
+    # squared (y = 1e200 m would overflow); 0 elsewhere
+    box = ((np.abs(x) < 2 * gen.bodies_gaussian_approx_semi_axis_1(R1, d))
+           & (np.abs(y) < 2 * gen.bodies_gaussian_approx_semi_axis_2(R2, d)))
+    p = gen.bodies_gaussian_approx_pressure(E_star, R1, R2, d, np.where(box, x, 0.0),
+                                            np.where(box, y, 0.0))  # (5.31)
+    return result(np.where(box, p, 0.0))

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import between, nonnegative, positive, result
+from hertzmdr.numeric._validate import between, nonnegative, positive, representable, result
 
 __all__ = ["contact_radius", "depth", "force", "pressure", "mean_pressure", "stiffness",
            "depth_from_force", "contact_radius_from_force"]
@@ -22,6 +22,7 @@ def _theta(theta):
     return between("theta", theta, 0.0, np.pi / 2)
 
 
+@representable
 def contact_radius(d, theta):
     """Contact radius a = 2 d/(pi tan(theta)) [m], (5.38).
 
@@ -35,6 +36,7 @@ def contact_radius(d, theta):
     return result(gen.cone_contact_radius(nonnegative("d", d), _theta(theta)))
 
 
+@representable
 def depth(a, theta):
     """Indentation depth d = (pi/2) a tan(theta) [m] at the contact radius a, (5.38).
 
@@ -48,6 +50,7 @@ def depth(a, theta):
     return result(gen.cone_depth(nonnegative("a", a), _theta(theta)))
 
 
+@representable
 def force(d, theta, E_star):
     """Normal force F = (2/pi) E* d^2/tan(theta) [N], (5.40).
 
@@ -91,6 +94,7 @@ def pressure(r, d, theta, E_star):
     return result(out)
 
 
+@representable
 def mean_pressure(theta, E_star):
     """Mean pressure F/(pi a^2) = (E*/2) tan(theta) [Pa], the same at every depth.
 
@@ -104,12 +108,14 @@ def mean_pressure(theta, E_star):
     return result(gen.cone_mean_pressure(positive("E_star", E_star), _theta(theta)))
 
 
+@representable
 def stiffness(d, theta, E_star):
     """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`."""
     return result(gen.cone_stiffness(positive("E_star", E_star), nonnegative("d", d),
                                    _theta(theta)))
 
 
+@representable
 def depth_from_force(F, theta, E_star):
     """Indentation depth d = (pi F tan(theta)/(2 E*))^(1/2) [m], (5.40) inverted.
 
@@ -124,6 +130,7 @@ def depth_from_force(F, theta, E_star):
                                           _theta(theta)))
 
 
+@representable
 def contact_radius_from_force(F, theta, E_star):
     """Contact radius a = (2 F/(pi E* tan(theta)))^(1/2) [m], (5.38) with (5.40) inverted.
 

@@ -137,14 +137,22 @@ class EllipticContact:
             against the contact's arrays.
         """
         x, y = as_float("x", x), as_float("y", y)
+        x, y, a, b = np.broadcast_arrays(x, y, self.a, self.b)
+        # the generated forms decide in or out (their Max(0, 1 - x^2/a^2 - y^2/b^2)); they are
+        # called only inside the box |x| < 2a, |y| < 2b, so that no coordinate far outside is
+        # squared (y = 1e200 m would overflow); 0 elsewhere
+        box = (np.abs(x) < 2 * a) & (np.abs(y) < 2 * b)
+        x, y = np.where(box, x, 0.0), np.where(box, y, 0.0)
         if self.model == "gaussian":  # (5.31) with (5.28), (5.22) and R~ (5.30)
-            return result(gen.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2,
-                                                            self.depth, x, y))
+            p = gen.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2, self.depth,
+                                                    x, y)
+            return result(np.where(box, p, 0.0))
         major_x = np.asarray(self.R1 >= self.R2)  # the generated form has x along the major axis
         xm, ym = np.where(major_x, x, y), np.where(major_x, y, x)
         Rmaj = np.maximum(self.R1, self.R2)
         t = np.minimum(self.a, self.b) / np.maximum(self.a, self.b)
-        return result(gen.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym))  # (5.31)
+        p = gen.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym)  # (5.31)
+        return result(np.where(box, p, 0.0))
 
 
 def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> EllipticContact:

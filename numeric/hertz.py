@@ -138,10 +138,9 @@ def pressure(r, d, R, E_star):
     """
     r, d, R, E_star = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R),
                                           positive("E_star", E_star))
-    # in or out on the rounded a = sqrt(R) sqrt(d) of the generated form; outside it is 0,
-    # and r is not squared there (r = 1e155 m would overflow)
-    a = gen.hertz_contact_radius(R, d)  # (5.21)
-    inside = r < a
+    # the generated form decides in or out (its Max(0, 1 - r^2/a^2)); it is called only for
+    # r < 2a, so that r is never squared far outside (r = 1e155 m would overflow)
+    inside = r < 2 * gen.hertz_contact_radius(R, d)  # (5.21)
     return result(np.where(inside, gen.hertz_pressure(E_star, R, d, np.where(inside, r, 0.0)),
                            0.0))  # (5.15)
 

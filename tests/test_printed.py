@@ -58,6 +58,16 @@ def _equal(rel, x, y):
     diff = _in_domain(rel, x - y)
     if diff.has(sp.acosh, sp.asinh) and sp.simplify(diff.rewrite(sp.log)) == 0:
         return True  # inverse hyperbolic identities: simplify proves them in logarithms
+    fx, fy = ([e for e in v.atoms(sp.Function) if isinstance(e, (sp.asinh, sp.acosh))]
+              for v in (x, y))
+    if len(fx) == 1 and len(fy) == 1:
+        # x = c F, y = c' G with F, G >= 0 inverse hyperbolic: x = y iff G = m F, m = c/c', iff
+        # cosh(m F) = cosh(G) (cosh is one-to-one on [0, inf)); expand_trig writes cosh(m F)
+        # as a polynomial in sinh(F) or cosh(F), which cancels against asinh or acosh
+        m = sp.simplify((x / fx[0]) / (y / fy[0]))
+        if m.is_Rational and m > 0:
+            lhs = sp.expand_trig(sp.cosh(m * fx[0]))
+            return sp.simplify(_in_domain(rel, lhs - sp.cosh(fy[0]))) == 0
     ratio = sp.powsimp(sp.expand_power_base(_in_domain(rel, x / y), force=True), force=True)
     if sp.simplify(ratio) == 1:
         return True  # products of powers regrouped (positive factors; the 50-digit check below
