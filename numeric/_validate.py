@@ -85,10 +85,11 @@ def result(value):
 
 
 def pow2_scale(x) -> np.ndarray:
-    """The power of 2 nearest below |x| (1 for x = 0): dividing by it is exact, so a
-    homogeneous formula can be evaluated in units of it without overflow in its squares."""
+    """An even power of 2 within a factor 4 of |x| (1 for x = 0): dividing by it is exact,
+    and so is the square root of the quotient, so a homogeneous formula can be evaluated in
+    units of it, unchanged to the last bit, without overflow in its squares."""
     _, e = np.frexp(np.asarray(x, dtype=float))
-    return np.ldexp(1.0, e - 1)
+    return np.ldexp(1.0, 2 * ((e - 1) // 2))
 
 
 def _first_bad(value: np.ndarray, bound: dict) -> tuple[str, str]:

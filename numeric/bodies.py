@@ -112,8 +112,10 @@ def _radii_from_curvatures(curvature_1, curvature_2, args, names):
     k2[ok] = curvature_2(*(v[ok] for v in args))
     bad = ~(k2 >= 0) | ~(k1 > 0)
     if bad.any():
-        raise ValueError(f"{names}: the gap is not convex (principal curvatures "
-                         f"{k1[bad].flat[0]!r}, {k2[bad].flat[0]!r} [1/m]); both must be >= 0 "
+        i = tuple(int(j) for j in np.argwhere(bad)[0]) if bad.ndim else ()
+        given = ", ".join(f"{n} = {float(v[i])!r}" for n, v in zip(names[1], args, strict=True))
+        raise ValueError(f"{names[0]}: {given}: the gap is not convex (principal curvatures "
+                         f"{float(k1[i])!r}, {float(k2[i])!r} [1/m]); both must be >= 0 "
                          "and the larger > 0 for the bodies to touch in a point or a line")
     R_1 = 1 / k1
     R_2 = np.full(k2.shape, np.inf)
@@ -154,7 +156,8 @@ def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
     if not np.isfinite(w).all():
         raise ValueError(f"omega = {omega!r}: must be finite")
     return _radii_from_curvatures(gen.bodies_principal_curvature_1,
-                                  gen.bodies_principal_curvature_2, (*args, w), "principal_radii")
+                                  gen.bodies_principal_curvature_2, (*args, w),
+                                  ("principal_radii", ("R1a", "R1b", "R2a", "R2b", "omega")))
 
 
 def crossed_cylinder_radii(R1, R2, alpha):
@@ -179,7 +182,7 @@ def crossed_cylinder_radii(R1, R2, alpha):
     alpha = between("alpha", alpha, 0.0, np.pi, lo_open=False, hi_open=False)
     return _radii_from_curvatures(gen.bodies_crossed_cylinders_curvature_1,
                                   gen.bodies_crossed_cylinders_curvature_2, (R1, R2, alpha),
-                                  "crossed_cylinder_radii")
+                                  ("crossed_cylinder_radii", ("R1", "R2", "alpha")))
 
 
 @representable

@@ -165,10 +165,16 @@ def surface_displacement(r, d, R):
     r, d, R = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R))
     # in or out on the same rounded a = sqrt(R) sqrt(d) as the outside form's asin(a/r), so
     # that a/r <= 1 there (r*r <= R*d disagreed with it at r = nextafter(a, 0): NaN)
-    inside = r <= gen.hertz_contact_radius(R, d)  # (5.21)
+    # u is homogeneous of degree 1 in (r, d, R): lengths in units of s ~ r, an even power of
+    # 2 (exact, square roots too), so that the outside form's R d/r^2 never squares a huge r;
+    # outside only where both its asin(sqrt(R d)/r) and its 2F1(..., R d/r^2) see < 1
+    inside = np.array(r <= gen.hertz_contact_radius(R, d))  # (5.21)
+    o = np.flatnonzero(~inside)
+    s = pow2_scale(r.flat[o])  # s > a/4 there: (R/s)(d/s) <= 16
+    rs, ds, Rs = r.flat[o] / s, d.flat[o] / s, R.flat[o] / s
+    far = Rs * ds < rs * rs
+    inside.flat[o[~far]] = True
     out = np.empty(r.shape)
     out[inside] = gen.hertz_displacement_inside(R[inside], d[inside], r[inside])
-    o = ~inside  # u is homogeneous of degree 1 in (r, d, R): lengths in units of s ~ r, a
-    s = pow2_scale(r[o])  # power of 2 (exact), so that the form's (a/r)^2 = R d/r^2 never
-    out[o] = s * gen.hertz_displacement_outside(R[o] / s, d[o] / s, r[o] / s)  # squares r
+    out.flat[o[far]] = s[far] * gen.hertz_displacement_outside(Rs[far], ds[far], rs[far])
     return result(out)

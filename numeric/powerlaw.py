@@ -202,7 +202,9 @@ def _displacement_quadrature(r, a, d, n, m=16):
     """
     from hertzmdr.numeric._quadrature import panels
 
-    top = np.arcsin(a / r)  # a/r <= 1: r > a in the same rounding
+    # W = asin(a/r) as atan2 of the same sqrt(r - a) sqrt(r + a) that the integrand's base
+    # uses: asin of the rounded a/r next to 1 would put W past the zero of the base
+    top = np.arctan2(a, np.sqrt(r - a) * np.sqrt(r + a))
     cot = np.sqrt(r - a) * np.sqrt(r + a) / a
     lam = n * cot + np.sqrt(n)
     j = 2.0 ** np.arange(-6, 64)

@@ -29,9 +29,20 @@ __all__ = [
 ]
 
 
-#: :func:`hertz_stress_cylindrical` and :func:`hertz_stress` accept max(r, z) up to this
-#: many contact radii (their xi^2 stays below 1e300; the stresses there are ~1e-300 p0)
-MAX_DISTANCE = 1e150
+#: :func:`spheroidal`, :func:`hertz_stress_cylindrical`, :func:`hertz_stress` and
+#: :func:`axis_stresses` accept max(r, z) up to this many contact radii (xi^3 stays below
+#: 1e300; the stresses there are ~1e-200 p0)
+MAX_DISTANCE = 1e100
+
+
+def _within_reach(r, z, a):
+    """ValueError naming the point if max(r, z) > MAX_DISTANCE a."""
+    far = np.maximum(r, z) > MAX_DISTANCE * a
+    if far.any():
+        i = np.unravel_index(np.argmax(far), far.shape) if far.ndim else ()
+        raise ValueError(f"r = {float(r[i])!r}, z = {float(z[i])!r}, a = {float(a[i])!r}: "
+                         f"max(r, z) is out of range; valid: max(r, z) <= {MAX_DISTANCE:g} a "
+                         "(the stresses there are below 1e-200 p0)")
 
 
 def spheroidal(r, z, a):
@@ -42,6 +53,9 @@ def spheroidal(r, z, a):
     cancellation-free forms are used; at the contact edge (r = a, z = 0) the limit xi = 0,
     beta = pi/2 is returned. cos(beta) and sin(beta) are returned rather than beta, which
     would lose the relative accuracy of cos(beta) near the surface outside the contact.
+
+    Guaranteed finite and accurate for max(r, z) <= MAX_DISTANCE a (1e100 a), a ValueError
+    beyond; next to the edge circle xi keeps ~sqrt(eps) absolute (r/a is rounded).
 
     Parameters
     ----------
@@ -60,6 +74,7 @@ def spheroidal(r, z, a):
         cos(beta), sin(beta) [1], 0 <= beta <= pi/2.
     """
     r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
+    _within_reach(r, z, a)
     r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
     # far away (r or z > 1e154 a) q^2 would overflow: outside the sphere r^2 + z^2 = a^2
     # the lengths are taken in units of s, the power of 2 below max(r, z) (exact), with the
@@ -95,7 +110,7 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     Huber's closed form (Huber 1904; Johnson 1985, eqs. (3.44)) in spheroidal coordinates,
     printed without the cancellations of the textbook form on the axis, at depth and at the
     contact edge (see :mod:`hertzmdr.derive.stress`). Guaranteed finite and accurate for
-    max(r, z) <= MAX_DISTANCE a (1e150 a), every -1 < nu <= 0.5 and any finite p0; beyond
+    max(r, z) <= MAX_DISTANCE a (1e100 a), every -1 < nu <= 0.5 and any finite p0; beyond
     that distance a ValueError.
 
     Parameters
@@ -119,12 +134,7 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     r, z, a, p0, nu = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z),
                                           positive("a", a), nonnegative("p0", p0),
                                           poisson("nu", nu))
-    far = np.maximum(r, z) > MAX_DISTANCE * a
-    if far.any():
-        i = np.unravel_index(np.argmax(far), far.shape) if far.ndim else ()
-        raise ValueError(f"r = {r[i]!r}, z = {z[i]!r}, a = {a[i]!r}: max(r, z) is out of range;"
-                         f" valid: max(r, z) <= {MAX_DISTANCE:g} a (the stresses there are "
-                         f"below 1e-300 p0)")
+    _within_reach(r, z, a)
     xi, eta, chi = (np.asarray(v) for v in spheroidal(r, z, a))
     srr, stt = np.empty(r.shape), np.empty(r.shape)
     n = xi < 1.0  # the form with atan; beyond, the hypergeometric form without cancellation
@@ -192,6 +202,9 @@ def axis_stresses(z, a, p0, nu):
     """
     z, a, p0, nu = np.broadcast_arrays(nonnegative("z", z), positive("a", a),
                                        nonnegative("p0", p0), poisson("nu", nu))
+    _within_reach(z, z, a)
+    s_ = pow2_scale(np.maximum(a, z))  # homogeneous of degree 0 in (z, a): in units of a
+    z, a = z / s_, a / s_  # power of 2 near max(a, z) (exact): z^4 of the deep form <= 16
     szz = gen.stress_axis_sigma_zz(a, p0, z)  # (5.48)
     sxx = np.empty(z.shape)
     shallow = z < a

@@ -94,3 +94,28 @@ def test_finite_and_monotone(row, data):
     assert sign * (other - value) >= -8 * EPS * max(abs(value), abs(other)), \
         f"{name} not {'increasing' if sign > 0 else 'decreasing'} in {mono}: {args} -> {value}, " \
         f"{moved} -> {other}"
+
+
+# -- the documented-domain search (issue 19): every public function of the closed-form modules,
+# each parameter over its documented range, the neighbours of every branch boundary, mpmath
+# references that also say where the true value is no float64, round trips; see
+# tests/domain_search.py. CI runs a few points per function, the sweep the bulk.
+
+import domain_search  # noqa: E402
+
+from oracle import n_points  # noqa: E402
+
+SEARCH_ROWS = domain_search.rows()
+
+
+@pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
+def test_documented_domain(row):
+    failures, _ = domain_search.run([row], 3)  # the corners, the edges, 3 random points
+    assert not failures, "\n".join(failures)
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
+def test_documented_domain_sweep(row):
+    failures, _ = domain_search.run([row], n_points(full=400, ci=8), seed=1)
+    assert not failures, "\n".join(failures)
