@@ -80,6 +80,7 @@ NU = P(np.nextafter(-1.0, 0.0), 0.5, "lin")
 N = P(1e-3, 1e8)  # power-law exponent
 ANGLE = P(1e-300, 1.5)  # cone angle with the plane: guaranteed for 0 < theta <= 1.5
 RATIO = P(1.0, 1e8)  # ratios of principal radii
+MAX_DISTANCE = 1e100  # the stresses' documented reach, stress.MAX_DISTANCE (tested there)
 
 
 @dataclass
@@ -553,9 +554,9 @@ def _ellipse_rows() -> list[Row]:
 def _stress_rows() -> list[Row]:
     Z = P(1e-300, 1e110, zero=True)  # up to and past the documented max(r, z) <= 1e100 a
 
-    def far(p):  # documented: max(r, z) <= 1e150 a
+    def far(p):  # documented: max(r, z) <= MAX_DISTANCE a
         return max(math.hypot(p.get("r", 0.0), p.get("x", 0.0), p.get("y", 0.0)),
-                   p["z"]) > stress.MAX_DISTANCE * p["a"]
+                   p["z"]) > MAX_DISTANCE * p["a"]
 
     def eta_ref(r, z, a):
         if z > 0:

@@ -119,3 +119,9 @@ def test_documented_domain(row):
 def test_documented_domain_sweep(row):
     failures, _ = domain_search.run([row], n_points(full=400, ci=8), seed=1)
     assert not failures, "\n".join(failures)
+
+
+def test_search_uses_the_documented_reach():
+    from hertzmdr.numeric import stress
+
+    assert domain_search.MAX_DISTANCE == stress.MAX_DISTANCE
