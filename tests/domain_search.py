@@ -209,8 +209,8 @@ def cases(row: Row, n: int, seed: int = 0):
             yield from row.near(pt)
 
 
-def run(rows: list[Row], n: int, seed: int = 0) -> tuple[list[str], dict]:
-    """Run the search; the failures (first 3 per row) and the counts."""
+def run(rows: list[Row], n: int, seed: int = 0, keep: int = 3) -> tuple[list[str], dict]:
+    """Run the search; the failures (the first ``keep`` per row) and the counts."""
     failures: list[str] = []
     counts = {"functions": len(rows), "parameters": sum(len(r.params) for r in rows),
               "cases": 0}
@@ -222,10 +222,10 @@ def run(rows: list[Row], n: int, seed: int = 0) -> tuple[list[str], dict]:
             msg = check(row, pt)
             if msg is not None:
                 bad += 1
-                if bad <= 3:
+                if bad <= keep:
                     failures.append(msg)
-        if bad > 3:
-            failures.append(f"{row.name}: {bad - 3} more failing cases")
+        if bad > keep:
+            failures.append(f"{row.name}: {bad - keep} more failing cases")
     counts["seconds"] = round(time.perf_counter() - t0, 1)
     return failures, counts
 
@@ -625,9 +625,10 @@ def main(argv=None) -> int:
     parser.add_argument("--points", type=int, default=400, help="random points per row")
     parser.add_argument("--record", metavar="JSON", help="write the counts to this file")
     parser.add_argument("--only", help="rows whose name contains this")
+    parser.add_argument("--keep", type=int, default=3, help="failures shown per row")
     args = parser.parse_args(argv)
     selected = [r for r in rows() if not args.only or args.only in r.name]
-    failures, counts = run(selected, args.points)
+    failures, counts = run(selected, args.points, keep=args.keep)
     for f in failures:
         print(f)
     print(json.dumps(counts))
