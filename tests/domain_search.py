@@ -233,13 +233,15 @@ def run(rows: list[Row], n: int, seed: int = 0, keep: int = 3) -> tuple[list[str
 # -- the rows ---------------------------------------------------------------------------------
 
 def _edge(key: str, radius: Callable[[dict], float]):
-    """The points next to the edge r = a of every case: nextafter both ways, a (1 +- k eps)."""
+    """The points next to the edge r = a of every case: nextafter both ways, a (1 +- k eps),
+    a (1 +- h) for h = 1e-9 ... 0.1 (just inside and just outside)."""
     def near(pt):
         a = radius(pt)
         if not (0 < a < 1e300):
             return []
         rs = [np.nextafter(a, 0.0), a, np.nextafter(a, np.inf)]
-        rs += [a * (1 + k * EPS) for k in (-4, -2, 2, 4)] + [a * (1 - 1e-9), a * (1 + 1e-9)]
+        rs += [a * (1 + k * EPS) for k in (-4, -2, 2, 4)]
+        rs += [a * (1 + s * h) for h in (1e-9, 1e-6, 1e-3, 0.1) for s in (-1, 1)]
         return [{**pt, key: float(r)} for r in rs]
     return near
 
@@ -299,8 +301,13 @@ def _powerlaw_rows() -> list[Row]:
     def with_c(p, keep_d=True):
         """c_n = d/(kappa_n a^n) for a drawn contact radius a (the physical parametrization:
         the depth and the contact radius in their ranges); None if c_n is no float."""
+        # a^n must leave c_n a float: for large n, a is drawn within exp(+-600/n) of 1 m
+        # (the same log-uniform position in that band as in its own range)
+        a, n = p.pop("a"), p["n"]
+        band = min(1.0, 600.0 / n / math.log(1e3))
+        a = math.exp(math.log(a) * band)
         with mp.workdps(DPS):
-            c = mp.mpf(p["d"]) / (kappa_mp(mp.mpf(p["n"])) * mp.mpf(p.pop("a")) ** p["n"])
+            c = mp.mpf(p["d"]) / (kappa_mp(mp.mpf(n)) * mp.mpf(a) ** n)
         if not (TINY < c < BIG):
             return None
         if not keep_d:
