@@ -39,6 +39,10 @@ __all__ = [
 def effective_modulus(E1, nu1, E2=None, nu2=None):
     """Effective modulus E* [Pa] of two elastic bodies, (5.26); of one body on a rigid one, (5.8).
 
+    Guaranteed finite and accurate for E1 in [0.001, 1e+15], nu1 in (-1, 0.5], E2 in [0.001, 1e+15],
+    nu2 in (-1, 0.5] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     .. math:: 1/E^* = (1 - \\nu_1^2)/E_1 + (1 - \\nu_2^2)/E_2
 
     Parameters
@@ -73,6 +77,10 @@ def effective_modulus(E1, nu1, E2=None, nu2=None):
 @representable
 def effective_radius(R1, R2=np.inf):
     """Effective radius R [m] of two spheres (or any two axisymmetric quadratic surfaces), (5.27).
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     .. math:: 1/R = 1/R_1 + 1/R_2
 
@@ -128,6 +136,11 @@ def _radii_from_curvatures(curvature_1, curvature_2, args, names):
 def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
     """Principal radii (R_1, R_2) [m] of the gap between two bodies, R_1 <= R_2.
 
+    Guaranteed finite and accurate for R1a in [1e-06, 1e+06], R1b in [1e-06, 1e+06], R2a in [1e-06,
+    1e+06], R2b in [1e-06, 1e+06], omega in [-10, 10] (each radius of either sign, or inf;
+    ValueError for a gap that is not convex) (SI units; searched by tests/domain_search.py). Beyond
+    float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     Body i has the principal radii R_ia, R_ib; the first principal directions of the two
     bodies enclose the angle omega. The gap is h = (x, y) H (x, y)^T / 2 with
     H = diag(1/R1a, 1/R1b) + Q(omega) diag(1/R2a, 1/R2b) Q(omega)^T, and its principal
@@ -163,6 +176,10 @@ def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
 def crossed_cylinder_radii(R1, R2, alpha):
     """Principal radii (R_1, R_2) [m] of the gap of two cylinders crossed at the angle alpha.
 
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150], alpha in [0,
+    3.14159] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+
     (5.32) for alpha = pi/2 (R_1, R_2 = the two cylinder radii); Problem 2 for alpha = pi/4;
     parallel cylinders (alpha = 0 or pi) give R_2 = inf (line contact, (5.34)-(5.37)).
 
@@ -189,6 +206,10 @@ def crossed_cylinder_radii(R1, R2, alpha):
 def crossed_cylinders_gaussian_radius(R1, R2, alpha):
     """Gaussian radius sqrt(R_1 R_2) = sqrt(R1 R2)/sin(alpha) [m] of two crossed cylinders, (5.33).
 
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150], alpha in
+    [1e-300, 3.14159] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     R1, R2 : float or array_like
@@ -204,6 +225,10 @@ def crossed_cylinders_gaussian_radius(R1, R2, alpha):
 def gaussian_radius(R1, R2):
     """Gaussian radius R~ = sqrt(R1 R2) [m] of a gap with the principal radii R1, R2, (5.30).
 
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
+
     Parameters
     ----------
     R1, R2 : float or array_like
@@ -214,6 +239,10 @@ def gaussian_radius(R1, R2):
 
 def gaussian_approx_semi_axes(d, R1, R2):
     """Semi-axes (a, b) = (sqrt(R1 d), sqrt(R2 d)) [m] of the elliptic contact, (5.28).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     The chapter's rough estimate (its footnote 4): the exact semi-axes follow from elliptic
     integrals and are closer together than these.
@@ -234,6 +263,10 @@ def gaussian_approx_semi_axes(d, R1, R2):
 def gaussian_approx_area(d, R1, R2):
     """Contact area A = pi sqrt(R1 R2) d [m^2] of the elliptic contact, (5.29) (approximation).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+
     Parameters as :func:`gaussian_approx_semi_axes`.
     """
     return result(gen.bodies_gaussian_approx_area(positive("R1", R1), positive("R2", R2),
@@ -243,6 +276,10 @@ def gaussian_approx_area(d, R1, R2):
 @representable
 def gaussian_approx_max_pressure(d, R1, R2, E_star):
     """Maximum pressure p0 [Pa] of the elliptic contact: (5.22) with R = R~ (approximation).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -262,6 +299,10 @@ def gaussian_approx_max_pressure(d, R1, R2, E_star):
 def gaussian_approx_force(d, R1, R2, E_star):
     """Normal force F [N] of the elliptic contact: (5.23) with R = R~ (approximation).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
+
     The chapter (footnote 5) quotes 2.5 % accuracy up to R1/R2 = 10. Parameters as
     :func:`gaussian_approx_max_pressure`.
     """
@@ -274,6 +315,10 @@ def gaussian_approx_force(d, R1, R2, E_star):
 def gaussian_approx_depth_from_force(F, R1, R2, E_star):
     """Indentation depth d [m] of the elliptic contact under the force F [N]: (5.24) with
     R = R~ (approximation), the inverse of :func:`gaussian_approx_force`.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R1 in [1e-12, 1e+06], R2 in
+    [1e-12, 1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond
+    float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -292,6 +337,11 @@ def gaussian_approx_depth_from_force(F, R1, R2, E_star):
 @representable
 def gaussian_approx_pressure(x, y, d, R1, R2, E_star):
     """Pressure p(x, y) = p0 sqrt(1 - x^2/a^2 - y^2/b^2) [Pa] of the elliptic contact, (5.31).
+
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+300], y in {0} U [1e-300, 1e+300], d
+    in [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12, 1e+06], E_star in [0.001, 1e+15] (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
 
     With the semi-axes (5.28) and the p0 of :func:`gaussian_approx_max_pressure`; 0 outside
     the ellipse. x runs along the principal direction of R1.

@@ -26,6 +26,10 @@ def _theta(theta):
 def contact_radius(d, theta):
     """Contact radius a = 2 d/(pi tan(theta)) [m], (5.38).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], theta in [1e-300, 1.5] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
+
     Parameters
     ----------
     d : float or array_like
@@ -40,6 +44,10 @@ def contact_radius(d, theta):
 def depth(a, theta):
     """Indentation depth d = (pi/2) a tan(theta) [m] at the contact radius a, (5.38).
 
+    Guaranteed finite and accurate for a in [1e-12, 1e+06], theta in [1e-300, 1.5] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
+
     Parameters
     ----------
     a : float or array_like
@@ -53,6 +61,10 @@ def depth(a, theta):
 @representable
 def force(d, theta, E_star):
     """Normal force F = (2/pi) E* d^2/tan(theta) [N], (5.40).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -70,6 +82,10 @@ def force(d, theta, E_star):
 def pressure(r, d, theta, E_star):
     """Contact pressure p(r) = (E*/2) tan(theta) arccosh(a/r) [Pa], (5.39) with its sign
     corrected (positive in compression; see docs/errata.md).
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in {0} U [1e-15, 1000], theta
+    in [1e-300, 1.5], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py).
+    Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     The pressure has a logarithmic singularity at the tip: at r = 0 exactly this returns
     ``inf`` (no warning); it is 0 for r >= a.
@@ -98,6 +114,10 @@ def pressure(r, d, theta, E_star):
 def mean_pressure(theta, E_star):
     """Mean pressure F/(pi a^2) = (E*/2) tan(theta) [Pa], the same at every depth.
 
+    Guaranteed finite and accurate for theta in [1e-300, 1.5], E_star in [0.001, 1e+15] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
+
     Parameters
     ----------
     theta : float or array_like
@@ -110,7 +130,12 @@ def mean_pressure(theta, E_star):
 
 @representable
 def stiffness(d, theta, E_star):
-    """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`."""
+    """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`.
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     return result(gen.cone_stiffness(positive("E_star", E_star), nonnegative("d", d),
                                    _theta(theta)))
 
@@ -118,6 +143,10 @@ def stiffness(d, theta, E_star):
 @representable
 def depth_from_force(F, theta, E_star):
     """Indentation depth d = (pi F tan(theta)/(2 E*))^(1/2) [m], (5.40) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -133,6 +162,10 @@ def depth_from_force(F, theta, E_star):
 @representable
 def contact_radius_from_force(F, theta, E_star):
     """Contact radius a = (2 F/(pi E* tan(theta)))^(1/2) [m], (5.38) with (5.40) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`depth_from_force`.
     """

@@ -25,6 +25,10 @@ __all__ = [
 def contact_radius(d, R):
     """Contact radius a = sqrt(R d) [m], (5.21).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
+
     Parameters
     ----------
     d : float or array_like
@@ -38,6 +42,10 @@ def contact_radius(d, R):
 @representable
 def max_pressure(d, R, E_star):
     """Maximum pressure p0 = (2/pi) E* sqrt(d/R) [Pa] at the centre, (5.22).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -54,14 +62,24 @@ def max_pressure(d, R, E_star):
 
 @representable
 def mean_pressure(d, R, E_star):
-    """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`."""
+    """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`.
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     return result(gen.hertz_mean_pressure(positive("E_star", E_star), positive("R", R),
                                         nonnegative("d", d)))
 
 
 @representable
 def force(d, R, E_star):
-    """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`."""
+    """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`.
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     return result(gen.hertz_force(positive("E_star", E_star), positive("R", R),
                                 nonnegative("d", d)))
 
@@ -69,6 +87,10 @@ def force(d, R, E_star):
 @representable
 def energy(d, R, E_star):
     """Elastic energy U = (8/15) E* R^(1/2) d^(5/2) [J], (5.25).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`max_pressure`.
     """
@@ -80,6 +102,10 @@ def energy(d, R, E_star):
 def stiffness(d, R, E_star):
     """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Parameters as :func:`max_pressure`.
     """
     return result(gen.hertz_stiffness(positive("E_star", E_star), positive("R", R),
@@ -89,6 +115,10 @@ def stiffness(d, R, E_star):
 @representable
 def depth_from_force(F, R, E_star):
     """Indentation depth d [m] under the normal force F, (5.23) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -107,6 +137,10 @@ def depth_from_force(F, R, E_star):
 def contact_radius_from_force(F, R, E_star):
     """Contact radius a = (3 F R / (4 E*))^(1/3) [m], (5.24).
 
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Parameters as :func:`depth_from_force`.
     """
     return result(gen.hertz_contact_radius_from_force(positive("E_star", E_star),
@@ -117,6 +151,10 @@ def contact_radius_from_force(F, R, E_star):
 def max_pressure_from_force(F, R, E_star):
     """Maximum pressure p0 = (6 F E*^2 / (pi^3 R^2))^(1/3) [Pa], (5.24).
 
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Parameters as :func:`depth_from_force`.
     """
     return result(gen.hertz_max_pressure_from_force(positive("E_star", E_star),
@@ -126,6 +164,10 @@ def max_pressure_from_force(F, R, E_star):
 @representable
 def pressure(r, d, R, E_star):
     """Pressure p(r) = p0 sqrt(1 - r^2/a^2) [Pa] inside the contact and 0 outside, (5.15).
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -148,6 +190,10 @@ def pressure(r, d, R, E_star):
 @representable
 def surface_displacement(r, d, R):
     """Surface displacement u_z(r) [m] inside (5.18) and outside (Fig. 5.2) the contact.
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], R in [1e-12,
+    1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     Inside, u_z = d - r^2/(2R); outside, the displacement of the Hertz pressure, printed in a
     form that keeps full accuracy for r >> a, where it decays like the point-load field

@@ -23,6 +23,10 @@ __all__ = ["half_width", "force", "depth_from_force", "half_width_from_force",
 def half_width(d, R):
     """Half-width a = sqrt(R d) [m] of the contact strip, (5.35) (the definition of d).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
+
     Parameters
     ----------
     d : float or array_like
@@ -36,6 +40,10 @@ def half_width(d, R):
 @representable
 def force(d, L, E_star):
     """Normal force F = (pi/4) E* L d [N], (5.34), with d in the sense of (5.35).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], L in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -54,6 +62,10 @@ def force(d, L, E_star):
 def depth_from_force(F, L, E_star):
     """Depth d = 4 F/(pi E* L) [m] (in the sense of (5.35)) under the force F, (5.34).
 
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], L in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     F : float or array_like
@@ -68,6 +80,10 @@ def depth_from_force(F, L, E_star):
 @representable
 def half_width_from_force(F, L, R, E_star):
     """Half-width a = 2 (F R/(pi E* L))^(1/2) [m] of the strip under the force F.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], L in [1e-12, 1e+06], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -88,6 +104,10 @@ def half_width_from_force(F, L, R, E_star):
 def max_pressure(d, R, E_star):
     """Maximum pressure p0 = (E*/2) (d/R)^(1/2) [Pa], (5.37), d in the sense of (5.35).
 
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     d : float or array_like
@@ -105,6 +125,10 @@ def max_pressure(d, R, E_star):
 def max_pressure_from_force(F, L, R, E_star):
     """Maximum pressure p0 = (E* F/(pi L R))^(1/2) [Pa] under the force F, (5.37).
 
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], L in [1e-12, 1e+06], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
+
     The chapter prints this without the pi (see docs/errata.md). Parameters as
     :func:`half_width_from_force`.
     """
@@ -116,6 +140,10 @@ def max_pressure_from_force(F, L, R, E_star):
 @representable
 def pressure(x, d, R, E_star):
     """Pressure p(x) = p0 (1 - x^2/a^2)^(1/2) [Pa] across the strip, 0 outside, (5.36).
+
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+300], d in [1e-15, 1000], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------

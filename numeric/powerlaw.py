@@ -37,6 +37,9 @@ N_ASYMPTOTIC = 40.0
 def kappa(n):
     """MDR factor kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2) [1], Problem 7(d).
 
+    Guaranteed finite and accurate for n in [0.001, 1e+300] (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     g(x) = kappa_n c_n |x|^n is the MDR profile (5.52) of f = c_n r^n. kappa_n ~ sqrt(pi n/2)
     for large n; kappa_1 = pi/2, kappa_2 = 2.
 
@@ -56,6 +59,11 @@ def kappa(n):
 def g_profile(x, c_n, n):
     """MDR profile g(x) = kappa_n c_n |x|^n [m] (5.52), Problem 7(d).
 
+    Guaranteed finite and accurate for x in {0} U [1e-12, 1000], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [0.001, 1e+08], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for
+    n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     x : float or array_like
@@ -74,6 +82,11 @@ def g_profile(x, c_n, n):
 def contact_radius(d, c_n, n):
     """Contact radius a = (d/(kappa_n c_n))^(1/n) [m], (5.55).
 
+    Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
+    with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 87 within exp(+-600/n)
+    of 1 m, so that c_n is a float) (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     d : float or array_like
@@ -88,6 +101,11 @@ def contact_radius(d, c_n, n):
 @representable
 def force(d, c_n, n, E_star):
     """Normal force F = 2n/(n+1) E* a d [N], (5.57) (the print of Problem 7(d) has an erratum).
+
+    Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
+    E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n
+    > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -104,6 +122,10 @@ def force(d, c_n, n, E_star):
 @representable
 def force_from_radius(a, d, n, E_star):
     """F = 2n/(n+1) E* a d [N] for a contact of radius a at depth d, (5.57).
+
+    Guaranteed finite and accurate for a in [1e-12, 1e+06], d in {0} U [1e-15, 1000], n in [0.001,
+    1e+08], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -123,6 +145,12 @@ def force_from_radius(a, d, n, E_star):
 def depth_from_force(F, c_n, n, E_star):
     """Indentation depth d [m] under the normal force F, Problem 7(d) inverted.
 
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [0.001, 1e+08], E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact
+    radius a in that range (for n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
+
     Parameters
     ----------
     F : float or array_like
@@ -137,7 +165,13 @@ def depth_from_force(F, c_n, n, E_star):
 
 @representable
 def mean_pressure(d, c_n, n, E_star):
-    """Mean pressure F/(pi a^2) [Pa] (Fig. 5.17). Parameters as :func:`force`."""
+    """Mean pressure F/(pi a^2) [Pa] (Fig. 5.17). Parameters as :func:`force`.
+
+    Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
+    E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n
+    > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+    """
     c_n, n = positive("c_n", c_n), positive("n", n)
     return result(gen.powerlaw_mean_pressure_from_depth(positive("E_star", E_star), c_n,
                                                       positive("d", d), kappa(n), n))
@@ -223,6 +257,12 @@ def _displacement_quadrature(r, a, d, n, m=16):
 def pressure(r, d, c_n, n, E_star):
     """Contact pressure p(r) [Pa] of a power-law indenter, 0 outside the contact, (5.59).
 
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [1.5, 1e+08], E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact
+    radius a in that range (for n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
+
     n = inf is the flat punch of radius a = ``c_n`` (pass the punch radius as c_n then):
     p = E* d/(pi sqrt(a^2 - r^2)). At the centre p is +inf for n <= 1 (the cone's logarithmic
     and the r^(n-1) singularities); at the rim of the punch p is +inf.
@@ -262,6 +302,10 @@ def pressure(r, d, c_n, n, E_star):
 def pressure_normalized(r_tilde, n):
     """p/p_mean [1] at r_tilde = r/a (Fig. 5.17), 0 for r_tilde >= 1.
 
+    Guaranteed finite and accurate for r_tilde in {0} U [1e-12, 1e+300], n in [1.5, 1e+08] (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
+
     Parameters
     ----------
     r_tilde : float or array_like
@@ -282,6 +326,11 @@ def pressure_normalized(r_tilde, n):
 @representable
 def surface_displacement(r, d, c_n, n):
     """Surface displacement u_z(r) [m]: d - c_n r^n inside, (5.60) outside the contact.
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [0.001, 1e+08], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for
+    n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     n = inf is the flat punch of radius ``c_n`` (inside: u_z = d).
 

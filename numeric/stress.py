@@ -48,6 +48,10 @@ def _within_reach(r, z, a):
 def spheroidal(r, z, a):
     """Oblate spheroidal coordinates (xi, cos(beta), sin(beta)) of the contact disc at (r, z).
 
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+110], z in {0} U [1e-300, 1e+110], a
+    in [1e-12, 1e+06], max(r, z) <= 1e100 a (a ValueError beyond) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta); xi^2 = u/a^2 with Johnson's u, the
     positive root of r^2/(a^2 + u) + z^2/u = 1. Inside the sphere r^2 + z^2 < a^2 the
     cancellation-free forms are used; at the contact edge (r = a, z = 0) the limit xi = 0,
@@ -106,6 +110,11 @@ def spheroidal(r, z, a):
 
 def hertz_stress_cylindrical(r, z, a, p0, nu):
     """Stresses (sigma_rr, sigma_theta, sigma_zz, tau_rz) [Pa] under the Hertz pressure.
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+110], z in {0} U [1e-300, 1e+110], a
+    in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5], max(r, z) <= 1e100 a (a ValueError
+    beyond) (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     Huber's closed form (Huber 1904; Johnson 1985, eqs. (3.44)) in spheroidal coordinates,
     printed without the cancellations of the textbook form on the axis, at depth and at the
@@ -167,6 +176,11 @@ def _rotate(x, y, srr, stt, szz, trz):
 def hertz_stress(x, y, z, a, p0, nu):
     """Stress tensor [Pa] at (x, y, z) under the Hertz pressure p0 (1 - r^2/a^2)^(1/2) (5.15).
 
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+110], y in {0} U [1e-300, 1e+110], z
+    in {0} U [1e-300, 1e+110], a in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5],
+    max(sqrt(x^2 + y^2), z) <= 1e100 a (a ValueError beyond) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     x, y : float or array_like
@@ -190,6 +204,10 @@ def hertz_stress(x, y, z, a, p0, nu):
 
 def axis_stresses(z, a, p0, nu):
     """sigma_zz (5.48) and sigma_xx = sigma_yy (5.49) [Pa] on the axis under the Hertz pressure.
+
+    Guaranteed finite and accurate for z in {0} U [1e-300, 1e+110], a in [1e-12, 1e+06], p0 in
+    [0.001, 1e+15], nu in (-1, 0.5], z <= 1e100 a (a ValueError beyond) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     (5.49) is used for z < a; for z >= a a form without its cancellation (exact at nu = 1/2).
 
@@ -220,6 +238,9 @@ def axis_max_shear(nu):
     """Depth z/a and value tau_1/p0 of the maximum of tau_1 = (sigma_xx - sigma_zz)/2 on the
     axis under the Hertz pressure (Fig. 5.8); the von Mises stress there is 2 tau_1.
 
+    Guaranteed finite and accurate for nu in (-1, 0.5] (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     The root of d(tau_1)/dz (generated from the derivation) by Brent's method on
     z_lo <= z <= 2 a, to full double precision (relative: the maximum approaches the surface
     like z = pi (1 + nu) a/6 as nu -> -1). z_lo (``stress_axis_max_shear_bracket``) is derived
@@ -246,25 +267,43 @@ def axis_max_shear(nu):
 
 
 def von_mises(sigma):
-    """von Mises equivalent stress (5.50) [Pa] of stress tensors of shape (..., 3, 3)."""
+    """von Mises equivalent stress (5.50) [Pa] of stress tensors of shape (..., 3, 3).
+
+    Guaranteed finite and accurate for s in [1e-100, 1e+100] (s: the size of the stress components)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+    """
     s = as_float("sigma", sigma)
     return result(gen.stress_von_mises(s[..., 0, 0], s[..., 1, 1], s[..., 2, 2], s[..., 0, 1],
                                      s[..., 1, 2], s[..., 0, 2]))
 
 
 def tresca(sigma):
-    """Tresca equivalent stress sigma_1 - sigma_3 [Pa] (largest minus smallest principal)."""
+    """Tresca equivalent stress sigma_1 - sigma_3 [Pa] (largest minus smallest principal).
+
+    Guaranteed finite and accurate for s in [1e-100, 1e+100] (s: the size of the stress components)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+    """
     ev = np.linalg.eigvalsh(as_float("sigma", sigma))
     return result(ev[..., -1] - ev[..., 0])
 
 
 def max_shear(sigma):
-    """Maximum shear stress (sigma_1 - sigma_3)/2 [Pa]; on the axis it is tau_1 of Fig. 5.8."""
+    """Maximum shear stress (sigma_1 - sigma_3)/2 [Pa]; on the axis it is tau_1 of Fig. 5.8.
+
+    Guaranteed finite and accurate for s in [1e-100, 1e+100] (s: the size of the stress components)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+    """
     return result(0.5 * np.asarray(tresca(sigma)))
 
 
 def hertz_maximum(nu, criterion: str = "von_mises"):
     """Maximum of an equivalent stress in the body under the Hertz pressure, over p0.
+
+    Guaranteed finite and accurate for nu in (-1, 0.5] (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     A 60 x 60 grid over 0 <= r <= 2a, 0 <= z <= 2a locates the peak; Nelder-Mead refines it
     (for the Hertz pressure the peak lies on the axis; it is searched for, not assumed).
@@ -366,6 +405,10 @@ def _superpose_point(r, z, a, nu, pressure, n_psi, level):
 def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int = 5):
     """Stress tensor [Pa] under an axisymmetric pressure p(r) on r < a, by superposing the
     point-force field (5.41)-(5.46) over the pressure (5.47), with an error estimate.
+
+    Guaranteed finite and accurate for x in [0.001, 10], z in [0.001, 10], a in [0.1, 10], nu in
+    (-1, 0.5] (x, z: the field point, for a uniform pressure on r < a) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Quadrature on rays from the field point's projection (so the kernel's scale z is resolved
     however close to the surface): in the distance s, tanh-sinh on s = z sinh(v), which copes

@@ -32,7 +32,7 @@ import sys
 import time
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import mpmath as mp
 import numpy as np
@@ -100,7 +100,21 @@ class Row:
     pick: int | None = None  # component of a tuple result
     rtol: float = 1e-8
     cost: int = 1  # relative cost of one case (fewer cases for slow rows)
-    extra: dict = field(default_factory=dict)
+    target: Callable | None = None  # the public function whose docstring states the domain
+    note: str = ""  # what the ranges stand for, when a parameter is drawn through another
+
+
+def _range(name: str, p: P) -> str:
+    if p.lo == np.nextafter(-1.0, 0.0):
+        return f"{name} in (-1, {p.hi:g}]"
+    return f"{name} in {'{0} U ' if p.zero else ''}[{p.lo:g}, {p.hi:g}]"
+
+
+def guarantee(row: Row) -> str:
+    """The sentence of the docstring that states the searched domain, as the search has it."""
+    ranges = ", ".join(_range(k, v) for k, v in row.params.items())
+    return (f"Guaranteed finite and accurate for {ranges}{row.note} (SI units; searched by "
+            "tests/domain_search.py).")
 
 
 def _mp(args: dict) -> dict:
@@ -330,17 +344,19 @@ def _powerlaw_rows() -> list[Row]:
         return 2 * d / mp.pi * mp.quad(f, pts)
 
     dcn = {"d": P(1e-15, 1e3), "a": P(1e-9, 1e3), "n": N}
+    cn = (", with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 87 "
+          "within exp(+-600/n) of 1 m, so that c_n is a float)")
     rows = [
         Row("powerlaw.kappa", powerlaw.kappa, {"n": P(1e-3, 1e300)},
             lambda n: kappa_mp(n) if n < 1e6 else mp.sqrt(mp.pi * n / 2) * mp.exp(1 / (4 * n)),
             mono=("n", 1)),
         Row("powerlaw.g_profile", powerlaw.g_profile, {"x": P(1e-12, 1e3, zero=True), **dcn},
-            lambda x, c_n, n: kappa_mp(n) * c_n * x**n, derive=without_d, mono=("x", 1)),
-        Row("powerlaw.contact_radius", powerlaw.contact_radius, dcn, a_ref, derive=with_c,
+            lambda x, c_n, n: kappa_mp(n) * c_n * x**n, note=cn, derive=without_d, mono=("x", 1)),
+        Row("powerlaw.contact_radius", powerlaw.contact_radius, dcn, a_ref, note=cn, derive=with_c,
             mono=("d", 1)),
         Row("powerlaw.force", powerlaw.force, {**dcn, "E_star": MOD},
             lambda d, c_n, n, E_star: 2 * n / (n + 1) * E_star * a_ref(d, c_n, n) * d,
-            derive=with_c, mono=("d", 1),
+            note=cn, derive=with_c, mono=("d", 1),
             inverse=("d", lambda p, v: powerlaw.depth_from_force(v, p["c_n"], p["n"],
                                                                  p["E_star"]), FORCE)),
         Row("powerlaw.force_from_radius", powerlaw.force_from_radius,
@@ -350,15 +366,15 @@ def _powerlaw_rows() -> list[Row]:
             {"F": FORCE, "d": P(1e-15, 1e3), "a": P(1e-9, 1e3), "n": N, "E_star": MOD},
             lambda F, c_n, n, E_star: (F * (n + 1) / (2 * E_star * n)) ** (n / (n + 1))
             * (kappa_mp(n) * c_n) ** (1 / (n + 1)),
-            derive=without_d, mono=("F", 1),
+            note=cn, derive=without_d, mono=("F", 1),
             inverse=("F", lambda p, v: powerlaw.force(v, p["c_n"], p["n"], p["E_star"]),
                      DEPTH)),
         Row("powerlaw.mean_pressure", powerlaw.mean_pressure, {**dcn, "E_star": MOD},
             lambda d, c_n, n, E_star: 2 * n * E_star * d / (mp.pi * (n + 1) * a_ref(d, c_n, n)),
-            derive=with_c),
+            note=cn, derive=with_c),
         Row("powerlaw.pressure", powerlaw.pressure,
             {"r": POS, "d": P(1e-15, 1e3), "a": P(1e-9, 1e3), "n": P(1.5, 1e8),
-             "E_star": MOD}, None, derive=with_c, cost=4,  # rises to the rim for large n
+             "E_star": MOD}, None, note=cn, derive=with_c, cost=4,  # rises to the rim for large n
             near=_edge("r", lambda p: float(powerlaw.contact_radius(p["d"], p["c_n"],
                                                                     p["n"])))),
         Row("powerlaw.pressure_normalized", powerlaw.pressure_normalized,
@@ -366,7 +382,7 @@ def _powerlaw_rows() -> list[Row]:
             cost=4, near=_edge("r_tilde", lambda p: 1.0)),
         Row("powerlaw.surface_displacement", powerlaw.surface_displacement,
             {"r": POS, "d": P(1e-15, 1e3), "a": P(1e-9, 1e3), "n": N}, disp_ref,
-            derive=with_c, mono=("r", -1), cost=8,
+            note=cn, derive=with_c, mono=("r", -1), cost=8,
             near=_edge("r", lambda p: float(powerlaw.contact_radius(p["d"], p["c_n"],
                                                                     p["n"]))),
             # next to the edge the 2F1 form keeps ~sqrt(eps) of u(a) (measured 1e-8 at a(1 + eps))
@@ -487,7 +503,9 @@ def _bodies_rows() -> list[Row]:
             lambda R1, R2: 1 / (1 / R1 + 1 / R2), mono=("R1", 1)),
         Row("bodies.principal_radii", bodies.principal_radii,
             {"R1a": signed, "R1b": signed, "R2a": signed, "R2b": signed,
-             "omega": P(-10.0, 10.0, "lin")}, derive=signs, refused=nonconvex, pick=0,
+             "omega": P(-10.0, 10.0, "lin")}, derive=signs,
+            note=" (each radius of either sign, or inf; ValueError for a gap that is not "
+            "convex)", refused=nonconvex, pick=0,
             near=lambda p: [{**p, "R2a": -p["R1a"], "R2b": -p["R1b"]}, {**p, "omega": 0.0}]),
         Row("bodies.crossed_cylinder_radii", bodies.crossed_cylinder_radii,
             {"R1": R, "R2": R, "alpha": P(0.0, np.pi, "lin")},
@@ -544,14 +562,18 @@ def _ellipse_rows() -> list[Row]:
 
     return [
         Row("ellipse.axis_ratio", lambda R1, q: ellipse.axis_ratio(R1, R1 / q),
-            {"R1": LEN, "q": RATIO}, mono=("q", -1)),
+            {"R1": LEN, "q": RATIO}, mono=("q", -1), target=ellipse.axis_ratio,
+            note=", q = max(R1, R2)/min(R1, R2)"),
         Row("ellipse.eccentricity", lambda R1, q: ellipse.eccentricity(R1, R1 / q),
-            {"R1": LEN, "q": RATIO}, mono=("q", 1)),
+            {"R1": LEN, "q": RATIO}, mono=("q", 1), target=ellipse.eccentricity,
+            note=", q = max(R1, R2)/min(R1, R2)"),
         Row("ellipse.solve(...).force", solve_force,
-            {"R1": LEN, "q": RATIO, "E_star": MOD, "depth": DEPTH}, mono=("depth", 1)),
+            {"R1": LEN, "q": RATIO, "E_star": MOD, "depth": DEPTH}, mono=("depth", 1),
+            target=ellipse.solve, note=", q = max(R1, R2)/min(R1, R2)"),
         Row("ellipse.solve(...).pressure", pressure,
             {"R1": LEN, "q": RATIO, "E_star": MOD, "depth": P(1e-15, 1e3), "x": POS,
-             "y": POS}, p_ref,
+             "y": POS}, p_ref, target=ellipse.EllipticContact.pressure,
+            note=", q = max(R1, R2)/min(R1, R2), for the contact of solve(..., depth=depth)",
             scale=lambda R1, q, E_star, depth, x, y: mp.mpf(float(ellipse.solve(
                 float(R1), float(R1 / q), float(E_star), depth=float(depth)).max_pressure))
             * 1e-7),
@@ -591,7 +613,7 @@ def _stress_rows() -> list[Row]:
 
     return [
         Row("stress.spheroidal", stress.spheroidal, {"r": Z, "z": Z, "a": LEN}, xi_ref, pick=0,
-            refused=far,
+            refused=far, note=", max(r, z) <= 1e100 a (a ValueError beyond)",
             near=_edge("r", lambda p: p["a"]), scale=lambda r, z, a: mp.mpf(1e-7)),
         Row("stress.hertz_stress_cylindrical (sigma_zz)",
             stress.hertz_stress_cylindrical,
@@ -599,32 +621,46 @@ def _stress_rows() -> list[Row]:
             lambda r, z, a, p0, nu: gm.stress_hertz_sigma_zz(
                 p0=p0, xi=xi_ref(r, z, a), eta=eta_ref(r, z, a)) if z > 0
             else -p0 * mp.sqrt(max(0, 1 - (r / a) ** 2)),  # on the surface: -p (5.15)
-            pick=2, near=_edge("r", lambda p: p["a"]), refused=far,
+            pick=2, near=_edge("r", lambda p: p["a"]), refused=far, note=", max(r, z) <= 1e100 a (a ValueError beyond)",
             scale=lambda r, z, a, p0, nu: p0 * 1e-7),
         Row("stress.hertz_stress", stress.hertz_stress,
-            {"x": Z, "y": Z, "z": Z, "a": LEN, "p0": MOD, "nu": NU}, refused=far),
+            {"x": Z, "y": Z, "z": Z, "a": LEN, "p0": MOD, "nu": NU}, refused=far,
+            note=", max(sqrt(x^2 + y^2), z) <= 1e100 a (a ValueError beyond)"),
         Row("stress.axis_stresses (sigma_zz)", stress.axis_stresses,
             {"z": Z, "a": LEN, "p0": MOD, "nu": NU},
-            lambda z, a, p0, nu: -p0 / (1 + (z / a) ** 2), pick=0, mono=("z", 1), refused=far),
+            lambda z, a, p0, nu: -p0 / (1 + (z / a) ** 2), pick=0, mono=("z", 1), refused=far,
+            note=", z <= 1e100 a (a ValueError beyond)"),
         Row("stress.axis_max_shear", stress.axis_max_shear, {"nu": NU}, tau_max_ref, pick=0,
             near=lambda p: [{"nu": v} for v in (-0.9, -0.8985, -0.99, -1 + 1e-10)]),
         Row("stress.von_mises", lambda s: stress.von_mises(s), {"s": P(1e-100, 1e100)},
+            target=stress.von_mises, note=" (s: the size of the stress components)",
             derive=lambda p: {"s": np.diag([p["s"], -p["s"], 0.5 * p["s"]])}),
         Row("stress.tresca", lambda s: stress.tresca(s), {"s": P(1e-100, 1e100)},
+            target=stress.tresca, note=" (s: the size of the stress components)",
             derive=lambda p: {"s": np.diag([p["s"], -p["s"], 0.5 * p["s"]])}),
         Row("stress.max_shear", lambda s: stress.max_shear(s), {"s": P(1e-100, 1e100)},
+            target=stress.max_shear, note=" (s: the size of the stress components)",
             derive=lambda p: {"s": np.diag([p["s"], -p["s"], 0.5 * p["s"]])}),
         Row("stress.hertz_maximum", stress.hertz_maximum, {"nu": NU}, pick=0, cost=200),
         Row("stress.superposed_stress",
             lambda x, z, a, nu: stress.superposed_stress(x, 0.0, z, lambda r: 1.0 - 0 * r, a,
                                                          nu)[0],
-            {"x": P(1e-3, 10.0), "z": P(1e-3, 10.0), "a": P(0.1, 10.0), "nu": NU}, cost=200),
+            {"x": P(1e-3, 10.0), "z": P(1e-3, 10.0), "a": P(0.1, 10.0), "nu": NU}, cost=200,
+            target=stress.superposed_stress, note=" (x, z: the field point, for a uniform "
+            "pressure on r < a)"),
     ]
 
 
 def rows() -> list[Row]:
-    return (_hertz_rows() + _powerlaw_rows() + _cone_rows() + _line_rows() + _bodies_rows()
-            + _ellipse_rows() + _stress_rows())
+    out = (_hertz_rows() + _powerlaw_rows() + _cone_rows() + _line_rows() + _bodies_rows()
+           + _ellipse_rows() + _stress_rows())
+    modules = {"hertz": hertz, "powerlaw": powerlaw, "cone": cone, "line": line,
+               "bodies": bodies, "stress": stress}
+    for row in out:
+        if row.target is None:  # "module.function" or "module.function (component)"
+            mod, fn = row.name.split(" ")[0].split(".")
+            row.target = getattr(modules[mod], fn)
+    return out
 
 
 def main(argv=None) -> int:
@@ -642,6 +678,8 @@ def main(argv=None) -> int:
     if args.record:
         counts["failures"] = len(failures)
         counts["points_per_row"] = args.points
+        counts["command"] = ("python tests/domain_search.py --points "
+                             f"{args.points} --record {args.record}")
         with open(args.record, "w") as fh:
             json.dump(counts, fh, indent=1, sort_keys=True)
             fh.write("\n")

@@ -125,3 +125,26 @@ def test_search_uses_the_documented_reach():
     from hertzmdr.numeric import stress
 
     assert domain_search.MAX_DISTANCE == stress.MAX_DISTANCE
+
+
+@pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
+def test_docstring_states_the_searched_domain(row):
+    """Each public function's docstring states the domain the search tests, word for word."""
+    import inspect
+
+    doc = " ".join(inspect.getdoc(row.target).split())
+    assert " ".join(domain_search.guarantee(row).split()) in doc, row.target.__qualname__
+
+
+def test_accuracy_report_has_the_search_counts(tmp_path):
+    import json
+
+    from hertzmdr.numeric import accuracy
+
+    record = tmp_path / "search.json"
+    record.write_text(json.dumps({"functions": 62, "parameters": 198, "cases": 1000,
+                                  "failures": 0, "seconds": 12.5, "points_per_row": 400,
+                                  "command": "python tests/domain_search.py"}))
+    text = accuracy.domain_search_section(record)
+    assert "| 62 | 198 | 1000 | 0 | 12.5 |" in text
+    assert accuracy.domain_search_section(tmp_path / "missing.json") == ""
