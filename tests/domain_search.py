@@ -621,7 +621,8 @@ def _stress_rows() -> list[Row]:
             lambda r, z, a, p0, nu: gm.stress_hertz_sigma_zz(
                 p0=p0, xi=xi_ref(r, z, a), eta=eta_ref(r, z, a)) if z > 0
             else -p0 * mp.sqrt(max(0, 1 - (r / a) ** 2)),  # on the surface: -p (5.15)
-            pick=2, near=_edge("r", lambda p: p["a"]), refused=far, note=", max(r, z) <= 1e100 a (a ValueError beyond)",
+            pick=2, near=_edge("r", lambda p: p["a"]), refused=far,
+            note=", max(r, z) <= 1e100 a (a ValueError beyond)",
             scale=lambda r, z, a, p0, nu: p0 * 1e-7),
         Row("stress.hertz_stress", stress.hertz_stress,
             {"x": Z, "y": Z, "z": Z, "a": LEN, "p0": MOD, "nu": NU}, refused=far,
