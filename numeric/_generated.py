@@ -109,12 +109,14 @@ __all__ = [
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
+    'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
     'powerlaw_force_from_radius',
     'powerlaw_g',
     'powerlaw_kappa',
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
+    'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
@@ -142,6 +144,7 @@ __all__ = [
     'sphere_profile',
     'sphere_stiffness',
     'stress_axis_max_shear',
+    'stress_axis_max_shear_bracket',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
@@ -274,12 +277,14 @@ RELATIONS = (
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
+    ('powerlaw_displacement_outside_integrand', 'Problem 7(d), (5.60)', 'powerlaw', '(-2*d*(-r*sin(w_out - asin(a/r))/a)**n + 2*d)/pi', ''),
     ('powerlaw_force', 'Problem 7(d)', 'powerlaw', '2*E_star*d*n*(d/(c_n*kappa_n))**(1/n)/(n + 1)', 'the factor (kappa_n c_n)^(1/n) must be (kappa_n c_n)^(-1/n): with a = (d/(kappa_n c_n))^(1/n), (5.57) gives F = 2n/(n+1) E* a d; for n = 2 (kappa_2 c_2 = 1/R) only the corrected form reproduces (5.23)'),
     ('powerlaw_force_from_radius', 'Problem 7(d), (5.57)', 'powerlaw', '2*E_star*a*d*n/(n + 1)', ''),
     ('powerlaw_g', 'Problem 7(d)', 'powerlaw', 'c_n*kappa_n*x**n', ''),
     ('powerlaw_kappa', 'Problem 7(d)', 'powerlaw', 'sqrt(pi)*gamma(n/2 + 1)/gamma(n/2 + 1/2)', ''),
-    ('powerlaw_kappa_asymptotic', 'Problem 7(d), large n', 'powerlaw', 'sqrt(2)*sqrt(pi)*sqrt(n)*exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + 31/(4608*n**2))/n**2)/n**2)/n**2)/n)/2', ''),
+    ('powerlaw_kappa_asymptotic', 'Problem 7(d), large n', 'powerlaw', 'sqrt(2)*sqrt(pi)*sqrt(n)*exp(2*(4*(4*(4*(31/(4608*n**2.0) - 17/14336)/n**2.0 + 1/640)/n**2.0 - 1/192)/n**2.0 + 1/8)/n**1.0)/2', ''),
     ('powerlaw_mean_pressure', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n/(pi*a*(n + 1))', ''),
+    ('powerlaw_mean_pressure_from_depth', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(pi*(n + 1))', ''),
     ('powerlaw_pressure', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*hyper((1, 1 - n/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a**2)', ''),
     ('powerlaw_pressure_integrand', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**(n/2 - 1)/(pi*a**n)', ''),
     ('powerlaw_pressure_n1', 'Problem 7(d), n = 1', 'powerlaw', 'E_star*d*log((a + sqrt(a**2 - r**2))/r)/(pi*a)', ''),
@@ -307,6 +312,7 @@ RELATIONS = (
     ('sphere_profile', "(5.52), Sneddon's sphere", 'sphere', 'R - sqrt(R**2 - r**2)', ''),
     ('sphere_stiffness', "Problem 5, Sneddon's sphere", 'sphere', '2*E_star*a', ''),
     ('stress_axis_max_shear', 'Fig. 5.8', 'stress', 'p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
+    ('stress_axis_max_shear_bracket', 'Fig. 5.8', 'stress', 'pi*a*(nu + 1)/(8*nu + 20)', ''),
     ('stress_axis_max_shear_slope', 'Fig. 5.8', 'stress', '-p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2)**2) + p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*atan(a/z) + 2*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx_deep', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
@@ -1208,6 +1214,10 @@ def cone_pressure(E_star, d, theta, r):
     Derivation: ``hertzmdr.derive.cone``. Verified by
     ``tests/test_cone.py::test_cone_by_kernel``.
 
+    Printed in a stable form: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for
+    a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of
+    1 + (a - r)/r loses the digits of a - r next to the rim.
+
     Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
     pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
     nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
@@ -1223,7 +1233,7 @@ def cone_pressure(E_star, d, theta, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
-    return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
+    return E_star*numpy.tan(theta)*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(2*d/(numpy.pi*numpy.tan(theta)) - r)/numpy.sqrt(r))
 
 
 def cone_stiffness(E_star, d, theta):
@@ -2532,6 +2542,11 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     Derivation: ``hertzmdr.derive.powerlaw``. Verified by
     ``tests/test_powerlaw.py::test_force_roundtrip``.
 
+    Printed in a stable form: (kappa_n c_n)^(1/n) of the derived form overflows or
+    underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split
+    into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay
+    within the range of the inputs.
+
     Parameters
     ----------
     E_star : float or ndarray
@@ -2545,7 +2560,7 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return ((1/2)*F*(c_n*kappa_n)**(n**(-1.0))*(n + 1)/(E_star*n))**(n/(n + 1))
+    return (c_n*kappa_n)**((n + 1)**(-1.0))*((1/2)*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
 def powerlaw_displacement_outside(a, d, n, r):
@@ -2570,6 +2585,34 @@ def powerlaw_displacement_outside(a, d, n, r):
     import scipy.special
 
     return 2*d*(-a*scipy.special.hyp2f1(1/2, (1/2)*n + 1/2, (1/2)*n + 3/2, a**2/r**2)/r + (n + 1)*numpy.arcsin(a/r))/(numpy.pi*(n + 1))
+
+
+def powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Printed in a stable form: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold
+    and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r -
+    a) sqrt(r + a) sin(w)/a)).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    w_out : float or ndarray
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return -2*d*numpy.expm1(n*numpy.log1p(-2*numpy.sin((1/2)*w_out)**2 - numpy.sqrt(-a + r)*numpy.sqrt(a + r)*numpy.sin(w_out)/a))/numpy.pi
 
 
 def powerlaw_force(E_star, c_n, d, kappa_n, n):
@@ -2676,7 +2719,7 @@ def powerlaw_kappa_asymptotic(n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(n)*numpy.exp(2*(1/8 + 4*(-1/192 + 4*(1/640 + 4*(-17/14336 + (31/4608)/n**2)/n**2)/n**2)/n**2)/n)
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(n)*numpy.exp(2*n**(-1.0)*(4*n**(-2.0)*(4*n**(-2.0)*(4*n**(-2.0)*((31/4608)*n**(-2.0) - 17/14336) + 1/640) - 1/192) + 1/8))
 
 
 def powerlaw_mean_pressure(E_star, a, d, n):
@@ -2699,6 +2742,34 @@ def powerlaw_mean_pressure(E_star, a, d, n):
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
     return 2*E_star*d*n/(numpy.pi*a*(n + 1))
+
+
+def powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Printed in a stable form: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0
+    for small n where F/(pi a^2) is still a float (and overflows where it is not): one power
+    of the ratio kappa_n c_n/d, times d.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : float or ndarray
+        indentation depth [m]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(n**(-1.0))/(numpy.pi*(n + 1))
 
 
 def powerlaw_pressure(E_star, a, d, n, r):
@@ -3300,6 +3371,25 @@ def stress_axis_max_shear(a, nu, p0, z):
     return (1/4)*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
 
 
+def stress_axis_max_shear_bracket(a, nu):
+    """Depth z_lo [m] on the axis where d(tau_1)/dz > 0 for -1 < nu <= 1/2: the lower end of the bracket [z_lo, 2a] of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: lower bounds of the terms of d(tau_1)/dz
+    (stress_axis_max_shear_slope).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear_bracket``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return numpy.pi*a*(nu + 1)/(8*nu + 20)
+
+
 def stress_axis_max_shear_slope(a, nu, p0, z):
     """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
 
@@ -3429,7 +3519,8 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3446,7 +3537,7 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     """
     import scipy.special
 
-    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - 2/15*eta*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**(-2.0)/((xi**(-2.0) + 1)*(eta**2*xi**(-2.0) + 1)) - 2/15*eta*xi**(-4.0)*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -xi**(-2.0))/(xi**(-2.0) + 1) + xi**(-2.0)*(1 - 2*nu)/((3*eta + 3)*(xi**(-2.0) + 1)))
 
 
 def stress_hertz_sigma_tt(nu, p0, xi, eta):
@@ -3482,7 +3573,8 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3497,7 +3589,7 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     """
     import scipy.special
 
-    return p0*(-2/15*eta*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-2/15*eta*xi**(-4.0)*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -xi**(-2.0))/(xi**(-2.0) + 1) + xi**(-2.0)*(1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**(-2.0) + 1)))
 
 
 def stress_hertz_sigma_zz(p0, xi, eta):
@@ -3620,6 +3712,10 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     Derivation: ``hertzmdr.derive.stress``. Verified by
     ``tests/test_stress.py::test_von_mises_invariant``.
 
+    Printed in a stable form: the expanded 3 J2 subtracts products of the stresses and
+    rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the centre of a Hertz
+    contact with nu = 1/2); (5.50) is a sum of squares.
+
     Parameters
     ----------
     sigma_xx : float or ndarray
@@ -3635,7 +3731,7 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
-    return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+    return (1/2)*numpy.sqrt(2)*numpy.sqrt(6*tau_xy**2 + 6*tau_xz**2 + 6*tau_yz**2 + (sigma_xx - sigma_yy)**2 + (sigma_xx - sigma_zz)**2 + (-sigma_yy + sigma_zz)**2)
 
 
 def strip_mean_pressure(F, L, a):
@@ -4086,6 +4182,32 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
     return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
 
 
+def textbook_cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0), in the derived (textbook) form; use cone_pressure: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of 1 + (a - r)/r loses the digits of a - r next to the rim.
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
+
+
 def textbook_disc_pressure(a, n_p, p0, r):
     """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a, in the derived (textbook) form; use disc_pressure: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r = 0.9995 a); (a - r)(a + r)/a^2 does not.
 
@@ -4405,6 +4527,78 @@ def textbook_mdr_kink_g(b, slope_jump, x):
     return 2*b*slope_jump*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b))
 
 
+def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
+
+    Chapter: Problem 7(d), inverted. Derived from: the force of Problem 7(d) solved for d.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((1/2)*F*(c_n*kappa_n)**(n**(-1.0))*(n + 1)/(E_star*n))**(n/(n + 1))
+
+
+def textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n), in the derived (textbook) form; use powerlaw_displacement_outside_integrand: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r - a) sqrt(r + a) sin(w)/a)).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    w_out : float or ndarray
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return (-2*d*(-r*numpy.sin(w_out - numpy.arcsin(a/r))/a)**n + 2*d)/numpy.pi
+
+
+def textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d, in the derived (textbook) form; use powerlaw_mean_pressure_from_depth: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0 for small n where F/(pi a^2) is still a float (and overflows where it is not): one power of the ratio kappa_n c_n/d, times d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : float or ndarray
+        indentation depth [m]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(n**(-1.0))/(numpy.pi*(n + 1))
+
+
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
     """Integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n), in the derived (textbook) form; use powerlaw_pressure_integrand: (x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding n-fold and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2))) with 1 - x^2/a^2 factored.
 
@@ -4613,7 +4807,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4638,7 +4832,7 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
 
 
 def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4698,6 +4892,33 @@ def textbook_stress_spheroidal_u_inside(a, r, z):
         depth below the surface [m]
     """
     return -1/2*a**2 + (1/2)*r**2 + (1/2)*z**2 + (1/2)*numpy.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
+
+
+def textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """Von Mises equivalent stress [Pa] of the stress tensor, in the derived (textbook) form; use stress_von_mises: the expanded 3 J2 subtracts products of the stresses and rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the centre of a Hertz contact with nu = 1/2); (5.50) is a sum of squares.
+
+    Chapter: (5.50). Derived from: sqrt(3 J2), J2 the second invariant of the stress
+    deviator.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_von_mises_invariant``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_yy : float or ndarray
+        normal stress component sigma_yy [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xy : float or ndarray
+        shear stress component tau_xy [Pa]
+    tau_yz : float or ndarray
+        shear stress component tau_yz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
 def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):

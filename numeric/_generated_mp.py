@@ -109,12 +109,14 @@ __all__ = [
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
+    'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
     'powerlaw_force_from_radius',
     'powerlaw_g',
     'powerlaw_kappa',
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
+    'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
@@ -142,6 +144,7 @@ __all__ = [
     'sphere_profile',
     'sphere_stiffness',
     'stress_axis_max_shear',
+    'stress_axis_max_shear_bracket',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
@@ -1041,6 +1044,10 @@ def cone_pressure(E_star, d, theta, r):
     Derivation: ``hertzmdr.derive.cone``. Verified by
     ``tests/test_cone.py::test_cone_by_kernel``.
 
+    Printed in a stable form: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for
+    a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of
+    1 + (a - r)/r loses the digits of a - r next to the rim.
+
     Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
     pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
     nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
@@ -1056,7 +1063,7 @@ def cone_pressure(E_star, d, theta, r):
     r : mpmath.mpf
         radial coordinate on the surface [m]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
+    return E_star*mpmath.tan(theta)*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(2*d/(mpmath.pi*mpmath.tan(theta)) - r)/mpmath.sqrt(r))
 
 
 def cone_stiffness(E_star, d, theta):
@@ -2329,6 +2336,11 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     Derivation: ``hertzmdr.derive.powerlaw``. Verified by
     ``tests/test_powerlaw.py::test_force_roundtrip``.
 
+    Printed in a stable form: (kappa_n c_n)^(1/n) of the derived form overflows or
+    underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split
+    into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay
+    within the range of the inputs.
+
     Parameters
     ----------
     E_star : mpmath.mpf
@@ -2342,7 +2354,7 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : mpmath.mpf
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return ((mpmath.mpf(1)/mpmath.mpf(2))*F*(c_n*kappa_n)**(1/n)*(n + 1)/(E_star*n))**(n/(n + 1))
+    return (c_n*kappa_n)**(1/(n + 1))*((mpmath.mpf(1)/mpmath.mpf(2))*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
 def powerlaw_displacement_outside(a, d, n, r):
@@ -2365,6 +2377,34 @@ def powerlaw_displacement_outside(a, d, n, r):
         radial coordinate on the surface [m]
     """
     return 2*d*(-a*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), (mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(1)/mpmath.mpf(2)), ((mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(3)/mpmath.mpf(2),), a**2/r**2)/r + (n + 1)*mpmath.asin(a/r))/(mpmath.pi*(n + 1))
+
+
+def powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Printed in a stable form: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold
+    and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r -
+    a) sqrt(r + a) sin(w)/a)).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_out : mpmath.mpf
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return -2*d*mpmath.expm1(n*mpmath.log1p(-2*mpmath.sin((mpmath.mpf(1)/mpmath.mpf(2))*w_out)**2 - mpmath.sqrt(-a + r)*mpmath.sqrt(a + r)*mpmath.sin(w_out)/a))/mpmath.pi
 
 
 def powerlaw_force(E_star, c_n, d, kappa_n, n):
@@ -2469,7 +2509,7 @@ def powerlaw_kappa_asymptotic(n):
     n : mpmath.mpf
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(n)*mpmath.exp(2*(mpmath.mpf(1)/mpmath.mpf(8) + 4*(mpmath.mpf(-1)/mpmath.mpf(192) + 4*(mpmath.mpf(1)/mpmath.mpf(640) + 4*(mpmath.mpf(-17)/mpmath.mpf(14336) + (mpmath.mpf(31)/mpmath.mpf(4608))/n**2)/n**2)/n**2)/n**2)/n)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(n)*mpmath.exp(2*n**(mpmath.mpf((1, 1, 0, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*((mpmath.mpf(31)/mpmath.mpf(4608))*n**(mpmath.mpf((1, 1, 1, 1))) + mpmath.mpf(-17)/mpmath.mpf(14336)) + mpmath.mpf(1)/mpmath.mpf(640)) + mpmath.mpf(-1)/mpmath.mpf(192)) + mpmath.mpf(1)/mpmath.mpf(8)))
 
 
 def powerlaw_mean_pressure(E_star, a, d, n):
@@ -2492,6 +2532,34 @@ def powerlaw_mean_pressure(E_star, a, d, n):
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
     return 2*E_star*d*n/(mpmath.pi*a*(n + 1))
+
+
+def powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Printed in a stable form: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0
+    for small n where F/(pi a^2) is still a float (and overflows where it is not): one power
+    of the ratio kappa_n c_n/d, times d.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : mpmath.mpf
+        indentation depth [m]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(mpmath.pi*(n + 1))
 
 
 def powerlaw_pressure(E_star, a, d, n, r):
@@ -3080,6 +3148,25 @@ def stress_axis_max_shear(a, nu, p0, z):
     return (mpmath.mpf(1)/mpmath.mpf(4))*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
 
 
+def stress_axis_max_shear_bracket(a, nu):
+    """Depth z_lo [m] on the axis where d(tau_1)/dz > 0 for -1 < nu <= 1/2: the lower end of the bracket [z_lo, 2a] of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: lower bounds of the terms of d(tau_1)/dz
+    (stress_axis_max_shear_slope).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear_bracket``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return mpmath.pi*a*(nu + 1)/(8*nu + 20)
+
+
 def stress_axis_max_shear_slope(a, nu, p0, z):
     """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
 
@@ -3207,7 +3294,8 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3222,7 +3310,7 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     chi : mpmath.mpf
         sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**(mpmath.mpf((1, 1, 1, 1)))/((xi**(mpmath.mpf((1, 1, 1, 1))) + 1)*(eta**2*xi**(mpmath.mpf((1, 1, 1, 1))) + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*xi**(mpmath.mpf((1, 1, 2, 1)))*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -xi**(mpmath.mpf((1, 1, 1, 1))))/(xi**(mpmath.mpf((1, 1, 1, 1))) + 1) + xi**(mpmath.mpf((1, 1, 1, 1)))*(1 - 2*nu)/((3*eta + 3)*(xi**(mpmath.mpf((1, 1, 1, 1))) + 1)))
 
 
 def stress_hertz_sigma_tt(nu, p0, xi, eta):
@@ -3258,7 +3346,8 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3271,7 +3360,7 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     eta : mpmath.mpf
         cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*xi**(mpmath.mpf((1, 1, 2, 1)))*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -xi**(mpmath.mpf((1, 1, 1, 1))))/(xi**(mpmath.mpf((1, 1, 1, 1))) + 1) + xi**(mpmath.mpf((1, 1, 1, 1)))*(1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**(mpmath.mpf((1, 1, 1, 1))) + 1)))
 
 
 def stress_hertz_sigma_zz(p0, xi, eta):
@@ -3394,6 +3483,10 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     Derivation: ``hertzmdr.derive.stress``. Verified by
     ``tests/test_stress.py::test_von_mises_invariant``.
 
+    Printed in a stable form: the expanded 3 J2 subtracts products of the stresses and
+    rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the centre of a Hertz
+    contact with nu = 1/2); (5.50) is a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -3409,7 +3502,7 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(6*tau_xy**2 + 6*tau_xz**2 + 6*tau_yz**2 + (sigma_xx - sigma_yy)**2 + (sigma_xx - sigma_zz)**2 + (-sigma_yy + sigma_zz)**2)
 
 
 def strip_mean_pressure(F, L, a):
@@ -3845,6 +3938,32 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
     return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
 
 
+def textbook_cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0), in the derived (textbook) form; use cone_pressure: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of 1 + (a - r)/r loses the digits of a - r next to the rim.
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
+
+
 def textbook_disc_pressure(a, n_p, p0, r):
     """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a, in the derived (textbook) form; use disc_pressure: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r = 0.9995 a); (a - r)(a + r)/a^2 does not.
 
@@ -4141,6 +4260,78 @@ def textbook_mdr_kink_g(b, slope_jump, x):
     return 2*b*slope_jump*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b))
 
 
+def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
+
+    Chapter: Problem 7(d), inverted. Derived from: the force of Problem 7(d) solved for d.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((mpmath.mpf(1)/mpmath.mpf(2))*F*(c_n*kappa_n)**(1/n)*(n + 1)/(E_star*n))**(n/(n + 1))
+
+
+def textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n), in the derived (textbook) form; use powerlaw_displacement_outside_integrand: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r - a) sqrt(r + a) sin(w)/a)).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_out : mpmath.mpf
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return (-2*d*(-r*mpmath.sin(w_out - mpmath.asin(a/r))/a)**n + 2*d)/mpmath.pi
+
+
+def textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d, in the derived (textbook) form; use powerlaw_mean_pressure_from_depth: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0 for small n where F/(pi a^2) is still a float (and overflows where it is not): one power of the ratio kappa_n c_n/d, times d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : mpmath.mpf
+        indentation depth [m]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(mpmath.pi*(n + 1))
+
+
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
     """Integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a boundary layer of width ~1/(n (1 - r^2/a^2)) at w = 0 for large n), in the derived (textbook) form; use powerlaw_pressure_integrand: (x/a)^(n-2) with x/a = 1 - O(1/n) amplifies its rounding n-fold and overflows/underflows in parts; written exp((n/2 - 1) log1p(-(1 - x^2/a^2))) with 1 - x^2/a^2 factored.
 
@@ -4349,7 +4540,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4374,7 +4565,7 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
 
 
 def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4434,6 +4625,33 @@ def textbook_stress_spheroidal_u_inside(a, r, z):
         depth below the surface [m]
     """
     return -mpmath.mpf(1)/mpmath.mpf(2)*a**2 + (mpmath.mpf(1)/mpmath.mpf(2))*r**2 + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
+
+
+def textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """Von Mises equivalent stress [Pa] of the stress tensor, in the derived (textbook) form; use stress_von_mises: the expanded 3 J2 subtracts products of the stresses and rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the centre of a Hertz contact with nu = 1/2); (5.50) is a sum of squares.
+
+    Chapter: (5.50). Derived from: sqrt(3 J2), J2 the second invariant of the stress
+    deviator.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_von_mises_invariant``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_yy : mpmath.mpf
+        normal stress component sigma_yy [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xy : mpmath.mpf
+        shear stress component tau_xy [Pa]
+    tau_yz : mpmath.mpf
+        shear stress component tau_yz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
 def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):
