@@ -132,6 +132,17 @@ def axis_von_mises_stable() -> sp.Expr:
     return sp.sqrt((1 - 2 * nu) ** 2 * c**2 + 3 * axis_max_shear() ** 2)
 
 
+def von_mises_plane_strain() -> tuple[sp.Expr, sp.Expr]:
+    """(5.50) with tau_xy = tau_yz = 0 and sigma_yy = nu (sigma_xx + sigma_zz), and its form
+    ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2: a sum of squares."""
+    vm, _ = ds.von_mises()
+    zero = symbol("tau_xy", real=True), symbol("tau_yz", real=True)
+    derived = vm.subs({syy: plane_strain_sigma_yy(), **dict.fromkeys(zero, 0)})
+    c = (sxx + szz) / 2
+    stable = sp.sqrt((1 - 2 * nu) ** 2 * c**2 + 3 * ((sxx - szz) ** 2 / 4 + sxz**2))
+    return derived, stable
+
+
 def principal_in_plane() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """Largest, smallest principal stress in the x-z plane and tau_1 = their half-difference."""
     ev = list(sp.Matrix([[sxx, sxz], [sxz, szz]]).eigenvals())
@@ -223,6 +234,7 @@ def relations() -> list[Relation]:
     tau = axis_max_shear()
     vm = axis_von_mises()
     vm_st = axis_von_mises_stable()
+    vm_ps = von_mises_plane_strain()
     hi, lo, tau1 = principal_in_plane()
     gx, gz = tau_xz_gradient()
     origin_fl = "the Airy function phi = -(P/pi) x atan(x/z) of a line load"
@@ -268,6 +280,15 @@ def relations() -> list[Relation]:
                  (nu, sxx, szz), "out-of-plane stress sigma_yy [Pa] in plane strain",
                  "eps_yy = (sigma_yy - nu (sigma_xx + sigma_zz))/E = 0",
                  f"{TEST}::test_plane_strain_and_principal_stresses"),
+        Relation("line_stress_von_mises", "(5.50), plane strain", vm_ps[0],
+                 (nu, sxx, szz, sxz), "von Mises stress [Pa] of a plane-strain state "
+                 "(sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0)",
+                 "(5.50) with the plane-strain sigma_yy",
+                 f"{TEST}::test_plane_strain_and_principal_stresses", stable=vm_ps[1],
+                 stable_why="(5.50) expanded subtracts products of size p0^2 (it goes "
+                 "negative at the surface for nu = 1/2, where it is 0); "
+                 "((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has "
+                 "only squares"),
         Relation("line_stress_principal_max", "plane stress state x-z", hi, (sxx, szz, sxz),
                  "largest principal stress [Pa] in the x-z plane",
                  "eigenvalues of the 2x2 stress tensor",

@@ -122,6 +122,7 @@ __all__ = [
     'line_stress_tau_xz_side',
     'line_stress_tau_xz_slope_x',
     'line_stress_tau_xz_slope_z',
+    'line_stress_von_mises',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -292,6 +293,7 @@ RELATIONS = (
     ('line_stress_tau_xz_side', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_tau_xz_slope_x', '(5.36), Flamant', 'line_stress', '-a*p0*z*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(-3*x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3', ''),
     ('line_stress_tau_xz_slope_z', '(5.36), Flamant', 'line_stress', '(pi*a*p0*x*z**2*(-x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + 3*z**2/2 + 3*(a - x)*(a + x)/2 + 3*sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3) - pi*p0*(-x*z**2/sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + x*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))/(a*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)))/pi', ''),
+    ('line_stress_von_mises', '(5.50), plane strain', 'line_stress', 'sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
@@ -2870,6 +2872,32 @@ def line_stress_tau_xz_slope_z(a, p0, x, z):
     return (numpy.pi*a*p0*x*z**2*(-x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (3/2)*z**2 + (3/2)*(a - x)*(a + x) + (3/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3) - numpy.pi*p0*(-x*z**2/numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + x*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/(a*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/numpy.pi
 
 
+def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0).
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Printed in a stable form: (5.50) expanded subtracts products of size p0^2 (it goes
+    negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3
+    tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return numpy.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((1/2)*sigma_xx + (1/2)*sigma_zz)**2 + (3/4)*(sigma_xx - sigma_zz)**2)
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -4538,6 +4566,28 @@ def textbook_line_stress_axis_von_mises(a, nu, p0, z):
         depth below the surface [m]
     """
     return numpy.sqrt(a**6*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/numpy.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0), in the derived (textbook) form; use line_stress_von_mises: (5.50) expanded subtracts products of size p0^2 (it goes negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return numpy.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
 def textbook_mdr_kink_g(b, slope_jump, x):

@@ -122,6 +122,7 @@ __all__ = [
     'line_stress_tau_xz_side',
     'line_stress_tau_xz_slope_x',
     'line_stress_tau_xz_slope_z',
+    'line_stress_von_mises',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -2665,6 +2666,32 @@ def line_stress_tau_xz_slope_z(a, p0, x, z):
     return (mpmath.pi*a*p0*x*z**2*(-x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(3)/mpmath.mpf(2))*z**2 + (mpmath.mpf(3)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3) - mpmath.pi*p0*(-x*z**2/mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + x*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/(a*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/mpmath.pi
 
 
+def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0).
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Printed in a stable form: (5.50) expanded subtracts products of size p0^2 (it goes
+    negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3
+    tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz)**2 + (mpmath.mpf(3)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -4277,6 +4304,28 @@ def textbook_line_stress_axis_von_mises(a, nu, p0, z):
         depth below the surface [m]
     """
     return mpmath.sqrt(a**6*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/mpmath.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0), in the derived (textbook) form; use line_stress_von_mises: (5.50) expanded subtracts products of size p0^2 (it goes negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
 def textbook_mdr_kink_g(b, slope_jump, x):

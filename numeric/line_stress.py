@@ -115,9 +115,8 @@ def von_mises(x, z, b, p0, nu):
     """
     x, z, b, p0, nu = _inputs(x, z, b, p0, nu)
     sxx, szz, txz = _in_plane(x, z, b, p0)
-    syy = gen.line_stress_sigma_yy(nu, sxx, szz)
-    zero = np.zeros(np.shape(sxx))
-    return result(gen.stress_von_mises(sxx, syy, szz, zero, zero, txz))  # (5.50)
+    # (5.50) with sigma_yy = nu (sigma_xx + sigma_zz), printed as a sum of squares
+    return result(gen.line_stress_von_mises(nu, sxx, szz, txz))
 
 
 def axis_stresses(z, b, p0, nu):
