@@ -26,7 +26,7 @@ Starting points:
   load/zeta, which fix it; ``tests/test_line_stress.py`` checks it against the quadrature
   of the Cauchy integral at 50 digits). Writing (zeta^2 - a^2)^(1/2) = n + i m gives McEwen's
   (1949) m, n (m^2 - n^2 = a^2 - x^2 + z^2, m n = x z, m >= 0, sign n = sign x), and SymPy
-  turns Im F, Re F', Im F' into Johnson's (Contact Mechanics, 1985, eqs. 4.49/4.50) forms,
+  turns Im F, Re F', Im F' into the forms Johnson (Contact Mechanics, 1985, ch. 4) prints,
   which the tests compare with this module's forms at 50 digits.
 - Stable printing: with D = m^2 + n^2 = ((a^2 - x^2 + z^2)^2 + 4 x^2 z^2)^(1/2),
   g = m^2 - z^2 and h = g/(m + z) = m - z (all >= 0), the field is
@@ -188,7 +188,7 @@ def field_stable_mn() -> dict[str, sp.Expr]:
 
 
 def johnson_mn() -> dict[str, sp.Expr]:
-    """Johnson (1985), eqs. (4.49)/(4.50) (McEwen 1949), in this module's sign of tau_xz."""
+    """Johnson (1985, ch. 4; McEwen 1949) as printed there, in this module's sign of tau_xz."""
     k = (_z**2 + _n**2) / (_m**2 + _n**2)
     return {"xx": -p0 / a * (_m * (1 + k) - 2 * _z), "zz": -p0 / a * _m * (1 - k),
             "xz": -p0 / a * _n * (_m**2 - _z**2) / (_m**2 + _n**2)}
