@@ -64,6 +64,9 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'flamant_sigma_xx',
+    'flamant_sigma_zz',
+    'flamant_tau_xz',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -101,6 +104,28 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'line_stress_axis_max_shear',
+    'line_stress_axis_max_shear_slope',
+    'line_stress_axis_sigma_xx',
+    'line_stress_axis_sigma_zz',
+    'line_stress_axis_von_mises',
+    'line_stress_axis_von_mises_slope',
+    'line_stress_principal_max',
+    'line_stress_principal_min',
+    'line_stress_principal_shear',
+    'line_stress_sigma_xx_core',
+    'line_stress_sigma_xx_deep',
+    'line_stress_sigma_xx_side',
+    'line_stress_sigma_yy',
+    'line_stress_sigma_zz_core',
+    'line_stress_sigma_zz_deep',
+    'line_stress_sigma_zz_side',
+    'line_stress_tau_xz_core',
+    'line_stress_tau_xz_deep',
+    'line_stress_tau_xz_side',
+    'line_stress_tau_xz_slope_x',
+    'line_stress_tau_xz_slope_z',
+    'line_stress_von_mises',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
@@ -232,6 +257,9 @@ RELATIONS = (
     ('ellipse_semi_major', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
     ('ellipse_semi_minor', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
     ('ellipse_stiffness', '(5.13), exact', 'ellipse', 'sqrt(2)*pi*E_star*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(3/2)', ''),
+    ('flamant_sigma_xx', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x**2*z/(pi*(x**2 + z**2)**2)', ''),
+    ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
+    ('flamant_tau_xz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x*z**2/(pi*(x**2 + z**2)**2)', ''),
     ('hertz_contact_radius', '(5.21)', 'hertz', 'sqrt(R)*sqrt(d)', ''),
     ('hertz_contact_radius_from_force', '(5.24)', 'hertz', '6**(1/3)*F**(1/3)*R**(1/3)/(2*E_star**(1/3))', ''),
     ('hertz_depth_from_force', '(5.23), inverted', 'hertz', '6**(2/3)*F**(2/3)/(4*E_star**(2/3)*R**(1/3))', ''),
@@ -269,6 +297,28 @@ RELATIONS = (
     ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
     ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
     ('line_stiffness', '(5.34), differentiated', 'line', 'pi*E_star*L/4', ''),
+    ('line_stress_axis_max_shear', '(5.36), Flamant', 'line_stress', 'a*p0*z/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2)))', ''),
+    ('line_stress_axis_max_shear_slope', '(5.36), Flamant', 'line_stress', '-a*p0*z**2/((a**2 + z**2)**(3/2)*(z + sqrt(a**2 + z**2))) + a*p0*z*(-z/sqrt(a**2 + z**2) - 1)/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) + a*p0/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2)))', ''),
+    ('line_stress_axis_sigma_xx', '(5.36), Flamant', 'line_stress', 'p0*(2*a**2*z - a**2*sqrt(a**2 + z**2) + 2*z**3 - 2*z**2*sqrt(a**2 + z**2))/(a*(a**2 + z**2))', ''),
+    ('line_stress_axis_sigma_zz', '(5.36), Flamant', 'line_stress', '-a*p0/sqrt(a**2 + z**2)', ''),
+    ('line_stress_axis_von_mises', '(5.50), (5.36)', 'line_stress', 'sqrt(a**6*p0**2/((a**2 + z**2)*(z + sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) - a*p0/sqrt(a**2 + z**2))/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) - a*p0/sqrt(a**2 + z**2))/sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) - a*p0/sqrt(a**2 + z**2))**2)', ''),
+    ('line_stress_axis_von_mises_slope', '(5.50), (5.36)', 'line_stress', '(-3*a**2*p0**2*z**3/((a**2 + z**2)**2*(z + sqrt(a**2 + z**2))**2) + 3*a**2*p0**2*z**2*(-2*z/sqrt(a**2 + z**2) - 2)/(2*(a**2 + z**2)*(z + sqrt(a**2 + z**2))**3) + 3*a**2*p0**2*z/((a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-a**3*p0/(2*sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) - a*p0/(2*sqrt(a**2 + z**2)))*(a**3*p0*z/((a**2 + z**2)**(3/2)*(z + sqrt(a**2 + z**2))**2) - a**3*p0*(-2*z/sqrt(a**2 + z**2) - 2)/(sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**3) + a*p0*z/(a**2 + z**2)**(3/2))/2)/sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-a**3*p0/(2*sqrt(a**2 + z**2)*(z + sqrt(a**2 + z**2))**2) - a*p0/(2*sqrt(a**2 + z**2)))**2)', ''),
+    ('line_stress_principal_max', 'plane stress state x-z', 'line_stress', 'sigma_xx/2 + sigma_zz/2 + sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)/2', ''),
+    ('line_stress_principal_min', 'plane stress state x-z', 'line_stress', 'sigma_xx/2 + sigma_zz/2 - sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)/2', ''),
+    ('line_stress_principal_shear', 'plane stress state x-z', 'line_stress', 'sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)/2', ''),
+    ('line_stress_sigma_xx_core', '(5.36), Flamant', 'line_stress', '-p0*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))*(2*x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(z + sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)))/(a*(z + sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_sigma_xx_deep', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*(2*a**2*z**2*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((z + sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) + 2*x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))/((z + sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_sigma_xx_side', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*(2*a**2*x*z**3/((x*z/sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z)*sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) - z**2 - (a - x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_sigma_yy', 'plane strain', 'line_stress', 'nu*(sigma_xx + sigma_zz)', ''),
+    ('line_stress_sigma_zz_core', '(5.36), Flamant', 'line_stress', '-p0*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(a*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_sigma_zz_deep', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_sigma_zz_side', '(5.36), Flamant', 'line_stress', '-2*a*p0*x*z**3/(sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_xz_core', '(5.36), Flamant', 'line_stress', '-p0*x*z*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))/(a*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_xz_deep', '(5.36), Flamant', 'line_stress', '-2*a*p0*x*z**3/(sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_xz_side', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_xz_slope_x', '(5.36), Flamant', 'line_stress', '-a*p0*z*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(-3*x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3', ''),
+    ('line_stress_tau_xz_slope_z', '(5.36), Flamant', 'line_stress', '(pi*a*p0*x*z**2*(-x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + 3*z**2/2 + 3*(a - x)*(a + x)/2 + 3*sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3) - pi*p0*(-x*z**2/sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + x*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))/(a*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)))/pi', ''),
+    ('line_stress_von_mises', '(5.50), plane strain', 'line_stress', 'sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)', ''),
     ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
@@ -1617,6 +1667,69 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
     return (1/2)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
 
 
+def flamant_sigma_xx(F_L, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : float or ndarray
+        normal force per unit length of a line contact [N/m]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*F_L*x**2*z/(numpy.pi*(x**2 + z**2)**2)
+
+
+def flamant_sigma_zz(F_L, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : float or ndarray
+        normal force per unit length of a line contact [N/m]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*F_L*z**3/(numpy.pi*(x**2 + z**2)**2)
+
+
+def flamant_tau_xz(F_L, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : float or ndarray
+        normal force per unit length of a line contact [N/m]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*F_L*x*z**2/(numpy.pi*(x**2 + z**2)**2)
+
+
 def hertz_contact_radius(R, d):
     """Contact radius a [m] of a Hertz contact at depth d.
 
@@ -2398,6 +2511,500 @@ def line_stiffness(E_star, L):
         length of a line contact [m]
     """
     return (1/4)*numpy.pi*E_star*L
+
+
+def line_stress_axis_max_shear(a, p0, z):
+    """Principal shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis of a line contact.
+
+    Chapter: (5.36), Flamant. Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return a*p0*z/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2)))
+
+
+def line_stress_axis_max_shear_slope(a, p0, z):
+    """D(tau_1)/dz [Pa/m] on the axis of a line contact; its root is the depth of the largest tau_1.
+
+    Chapter: (5.36), Flamant. Derived from: the derivative of tau_1.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a*p0*z**2/((a**2 + z**2)**(3/2)*(z + numpy.sqrt(a**2 + z**2))) + a*p0*z*(-z/numpy.sqrt(a**2 + z**2) - 1)/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2)))
+
+
+def line_stress_axis_sigma_xx(a, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis of a line contact of half-width a.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: the derived form subtracts terms of size z/a to leave one of
+    size (a/z)^3; -p0 a^3/(s (s + z)^2), s = (a^2 + z^2)^(1/2), has none.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis of a line contact of half-width a.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a*p0/numpy.sqrt(a**2 + z**2)
+
+
+def line_stress_axis_von_mises(a, nu, p0, z):
+    """Von Mises stress [Pa] on the axis of a line contact (plane strain).
+
+    Chapter: (5.50), (5.36). Derived from: (5.50) with the axis stresses and sigma_yy = nu
+    (sigma_xx + sigma_zz).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Printed in a stable form: (5.50) expanded subtracts squares of size p0^2; with c =
+    (sigma_xx + sigma_zz)/2 it is ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return numpy.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-1/2*a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - 1/2*a*p0/numpy.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_axis_von_mises_slope(a, nu, p0, z):
+    """D(sigma_vM)/dz [Pa/m] on the axis of a line contact; its root is the depth of the largest von Mises stress.
+
+    Chapter: (5.50), (5.36). Derived from: the derivative.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (-3*a**2*p0**2*z**3/((a**2 + z**2)**2*(z + numpy.sqrt(a**2 + z**2))**2) + (3/2)*a**2*p0**2*z**2*(-2*z/numpy.sqrt(a**2 + z**2) - 2)/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**3) + 3*a**2*p0**2*z/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + (1/2)*(1 - 2*nu)**2*(-1/2*a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - 1/2*a*p0/numpy.sqrt(a**2 + z**2))*(a**3*p0*z/((a**2 + z**2)**(3/2)*(z + numpy.sqrt(a**2 + z**2))**2) - a**3*p0*(-2*z/numpy.sqrt(a**2 + z**2) - 2)/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**3) + a*p0*z/(a**2 + z**2)**(3/2)))/numpy.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-1/2*a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - 1/2*a*p0/numpy.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """Largest principal stress [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return (1/2)*sigma_xx + (1/2)*sigma_zz + (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """Smallest principal stress [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return (1/2)*sigma_xx + (1/2)*sigma_zz - 1/2*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """Principal shear stress tau_1 [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: half the difference of the principal
+    stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_sigma_xx_core(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -p0*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*(2*x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/(a*(z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_xx_deep(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*(2*a**2*z**2*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) + 2*x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/((z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_xx_side(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*(2*a**2*x*z**3/((x*z/numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) - z**2 - (a - x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_yy(nu, sigma_xx, sigma_zz):
+    """Out-of-plane stress sigma_yy [Pa] in plane strain.
+
+    Chapter: plane strain. Derived from: eps_yy = (sigma_yy - nu (sigma_xx + sigma_zz))/E =
+    0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    """
+    return nu*(sigma_xx + sigma_zz)
+
+
+def line_stress_sigma_zz_core(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -p0*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(a*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_zz_deep(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_zz_side(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*a*p0*x*z**3/(numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_core(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -p0*x*z*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_deep(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*a*p0*x*z**3/(numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_side(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_slope_x(a, p0, x, z):
+    """D(tau_xz)/dx [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: -(z/pi) Im F'' of the Cauchy integral F of the
+    pressure.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_orthogonal_shear_maximum``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a*p0*z*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(-3*x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3
+
+
+def line_stress_tau_xz_slope_z(a, p0, x, z):
+    """D(tau_xz)/dz [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: -(Im F' + z Re F'')/pi of the Cauchy integral F
+    of the pressure.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_orthogonal_shear_maximum``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (numpy.pi*a*p0*x*z**2*(-x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (3/2)*z**2 + (3/2)*(a - x)*(a + x) + (3/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3) - numpy.pi*p0*(-x*z**2/numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + x*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/(a*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/numpy.pi
+
+
+def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0).
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Printed in a stable form: (5.50) expanded subtracts products of size p0^2 (it goes
+    negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3
+    tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return numpy.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((1/2)*sigma_xx + (1/2)*sigma_zz)**2 + (3/4)*(sigma_xx - sigma_zz)**2)
 
 
 def mdr_force(E_star, a, d, g_integral):
@@ -4505,6 +5112,72 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
+
+
+def textbook_line_stress_axis_sigma_xx(a, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis of a line contact of half-width a, in the derived (textbook) form; use line_stress_axis_sigma_xx: the derived form subtracts terms of size z/a to leave one of size (a/z)^3; -p0 a^3/(s (s + z)^2), s = (a^2 + z^2)^(1/2), has none.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return p0*(2*a**2*z - a**2*numpy.sqrt(a**2 + z**2) + 2*z**3 - 2*z**2*numpy.sqrt(a**2 + z**2))/(a*(a**2 + z**2))
+
+
+def textbook_line_stress_axis_von_mises(a, nu, p0, z):
+    """Von Mises stress [Pa] on the axis of a line contact (plane strain), in the derived (textbook) form; use line_stress_axis_von_mises: (5.50) expanded subtracts squares of size p0^2; with c = (sigma_xx + sigma_zz)/2 it is ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2).
+
+    Chapter: (5.50), (5.36). Derived from: (5.50) with the axis stresses and sigma_yy = nu
+    (sigma_xx + sigma_zz).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return numpy.sqrt(a**6*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/numpy.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0), in the derived (textbook) form; use line_stress_von_mises: (5.50) expanded subtracts products of size p0^2 (it goes negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return numpy.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
 def textbook_mdr_kink_g(b, slope_jump, x):

@@ -64,6 +64,9 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'flamant_sigma_xx',
+    'flamant_sigma_zz',
+    'flamant_tau_xz',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -101,6 +104,28 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'line_stress_axis_max_shear',
+    'line_stress_axis_max_shear_slope',
+    'line_stress_axis_sigma_xx',
+    'line_stress_axis_sigma_zz',
+    'line_stress_axis_von_mises',
+    'line_stress_axis_von_mises_slope',
+    'line_stress_principal_max',
+    'line_stress_principal_min',
+    'line_stress_principal_shear',
+    'line_stress_sigma_xx_core',
+    'line_stress_sigma_xx_deep',
+    'line_stress_sigma_xx_side',
+    'line_stress_sigma_yy',
+    'line_stress_sigma_zz_core',
+    'line_stress_sigma_zz_deep',
+    'line_stress_sigma_zz_side',
+    'line_stress_tau_xz_core',
+    'line_stress_tau_xz_deep',
+    'line_stress_tau_xz_side',
+    'line_stress_tau_xz_slope_x',
+    'line_stress_tau_xz_slope_z',
+    'line_stress_von_mises',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
@@ -1424,6 +1449,69 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
     return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*E_star*mpmath.sqrt(R1)*mpmath.sqrt(d)*mpmath.sqrt(mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))/((mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(1)/mpmath.mpf(2)), (2,), 1 - t_ba**2) + (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
 
 
+def flamant_sigma_xx(F_L, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : mpmath.mpf
+        normal force per unit length of a line contact [N/m]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*F_L*x**2*z/(mpmath.pi*(x**2 + z**2)**2)
+
+
+def flamant_sigma_zz(F_L, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : mpmath.mpf
+        normal force per unit length of a line contact [N/m]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*F_L*z**3/(mpmath.pi*(x**2 + z**2)**2)
+
+
+def flamant_tau_xz(F_L, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : mpmath.mpf
+        normal force per unit length of a line contact [N/m]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*F_L*x*z**2/(mpmath.pi*(x**2 + z**2)**2)
+
+
 def hertz_contact_radius(R, d):
     """Contact radius a [m] of a Hertz contact at depth d.
 
@@ -2195,6 +2283,500 @@ def line_stiffness(E_star, L):
         length of a line contact [m]
     """
     return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
+
+
+def line_stress_axis_max_shear(a, p0, z):
+    """Principal shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis of a line contact.
+
+    Chapter: (5.36), Flamant. Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return a*p0*z/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2)))
+
+
+def line_stress_axis_max_shear_slope(a, p0, z):
+    """D(tau_1)/dz [Pa/m] on the axis of a line contact; its root is the depth of the largest tau_1.
+
+    Chapter: (5.36), Flamant. Derived from: the derivative of tau_1.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*p0*z**2/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(z + mpmath.sqrt(a**2 + z**2))) + a*p0*z*(-z/mpmath.sqrt(a**2 + z**2) - 1)/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2)))
+
+
+def line_stress_axis_sigma_xx(a, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis of a line contact of half-width a.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: the derived form subtracts terms of size z/a to leave one of
+    size (a/z)^3; -p0 a^3/(s (s + z)^2), s = (a^2 + z^2)^(1/2), has none.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis of a line contact of half-width a.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*p0/mpmath.sqrt(a**2 + z**2)
+
+
+def line_stress_axis_von_mises(a, nu, p0, z):
+    """Von Mises stress [Pa] on the axis of a line contact (plane strain).
+
+    Chapter: (5.50), (5.36). Derived from: (5.50) with the axis stresses and sigma_yy = nu
+    (sigma_xx + sigma_zz).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Printed in a stable form: (5.50) expanded subtracts squares of size p0^2; with c =
+    (sigma_xx + sigma_zz)/2 it is ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return mpmath.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-mpmath.mpf(1)/mpmath.mpf(2)*a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_axis_von_mises_slope(a, nu, p0, z):
+    """D(sigma_vM)/dz [Pa/m] on the axis of a line contact; its root is the depth of the largest von Mises stress.
+
+    Chapter: (5.50), (5.36). Derived from: the derivative.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (-3*a**2*p0**2*z**3/((a**2 + z**2)**2*(z + mpmath.sqrt(a**2 + z**2))**2) + (mpmath.mpf(3)/mpmath.mpf(2))*a**2*p0**2*z**2*(-2*z/mpmath.sqrt(a**2 + z**2) - 2)/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**3) + 3*a**2*p0**2*z/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + (mpmath.mpf(1)/mpmath.mpf(2))*(1 - 2*nu)**2*(-mpmath.mpf(1)/mpmath.mpf(2)*a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*p0/mpmath.sqrt(a**2 + z**2))*(a**3*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(z + mpmath.sqrt(a**2 + z**2))**2) - a**3*p0*(-2*z/mpmath.sqrt(a**2 + z**2) - 2)/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**3) + a*p0*z/(a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))))/mpmath.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-mpmath.mpf(1)/mpmath.mpf(2)*a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """Largest principal stress [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """Smallest principal stress [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """Principal shear stress tau_1 [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: half the difference of the principal
+    stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_sigma_xx_core(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -p0*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*(2*x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/(a*(z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_xx_deep(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*(2*a**2*z**2*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) + 2*x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/((z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_xx_side(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*(2*a**2*x*z**3/((x*z/mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) - z**2 - (a - x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_yy(nu, sigma_xx, sigma_zz):
+    """Out-of-plane stress sigma_yy [Pa] in plane strain.
+
+    Chapter: plane strain. Derived from: eps_yy = (sigma_yy - nu (sigma_xx + sigma_zz))/E =
+    0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    """
+    return nu*(sigma_xx + sigma_zz)
+
+
+def line_stress_sigma_zz_core(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -p0*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(a*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_zz_deep(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_zz_side(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*x*z**3/(mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_core(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -p0*x*z*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_deep(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*x*z**3/(mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_side(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_slope_x(a, p0, x, z):
+    """D(tau_xz)/dx [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: -(z/pi) Im F'' of the Cauchy integral F of the
+    pressure.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_orthogonal_shear_maximum``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*p0*z*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(-3*x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3
+
+
+def line_stress_tau_xz_slope_z(a, p0, x, z):
+    """D(tau_xz)/dz [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: -(Im F' + z Re F'')/pi of the Cauchy integral F
+    of the pressure.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_orthogonal_shear_maximum``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.pi*a*p0*x*z**2*(-x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(3)/mpmath.mpf(2))*z**2 + (mpmath.mpf(3)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3) - mpmath.pi*p0*(-x*z**2/mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + x*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/(a*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/mpmath.pi
+
+
+def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0).
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Printed in a stable form: (5.50) expanded subtracts products of size p0^2 (it goes
+    negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3
+    tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz)**2 + (mpmath.mpf(3)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def mdr_force(E_star, a, d, g_integral):
@@ -4238,6 +4820,72 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
+
+
+def textbook_line_stress_axis_sigma_xx(a, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis of a line contact of half-width a, in the derived (textbook) form; use line_stress_axis_sigma_xx: the derived form subtracts terms of size z/a to leave one of size (a/z)^3; -p0 a^3/(s (s + z)^2), s = (a^2 + z^2)^(1/2), has none.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return p0*(2*a**2*z - a**2*mpmath.sqrt(a**2 + z**2) + 2*z**3 - 2*z**2*mpmath.sqrt(a**2 + z**2))/(a*(a**2 + z**2))
+
+
+def textbook_line_stress_axis_von_mises(a, nu, p0, z):
+    """Von Mises stress [Pa] on the axis of a line contact (plane strain), in the derived (textbook) form; use line_stress_axis_von_mises: (5.50) expanded subtracts squares of size p0^2; with c = (sigma_xx + sigma_zz)/2 it is ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2).
+
+    Chapter: (5.50), (5.36). Derived from: (5.50) with the axis stresses and sigma_yy = nu
+    (sigma_xx + sigma_zz).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return mpmath.sqrt(a**6*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/mpmath.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0), in the derived (textbook) form; use line_stress_von_mises: (5.50) expanded subtracts products of size p0^2 (it goes negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
 def textbook_mdr_kink_g(b, slope_jump, x):
