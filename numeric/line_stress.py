@@ -24,10 +24,23 @@ __all__ = ["stresses", "principal_shear", "von_mises", "axis_stresses", "max_she
 _Z_SURFACE = 1e-140
 
 
+#: the largest distance from the strip, in half-widths, the field is evaluated at: the forms
+#: raise x/b and z/b to powers up to the fourth and overflow above about 1e60; the
+#: far field is tested against the superposition to 1e6, the limit by tests/test_line_stress.py
+MAX_DISTANCE = 1e50
+
+
 def _inputs(x, z, b, p0, nu):
     x = as_float("x", x)
-    return np.broadcast_arrays(x, nonnegative("z", z), positive("b", b),
-                               nonnegative("p0", p0), poisson("nu", nu))
+    x, z, b, p0, nu = np.broadcast_arrays(x, nonnegative("z", z), positive("b", b),
+                                          nonnegative("p0", p0), poisson("nu", nu))
+    far = np.maximum(np.abs(x), z) > MAX_DISTANCE * b
+    if far.any():
+        i = np.unravel_index(np.argmax(far), far.shape)
+        raise ValueError(f"(x, z) = ({float(x[i]):g}, {float(z[i]):g}) m with b = "
+                         f"{float(b[i]):g} m: the line-contact field is evaluated within "
+                         f"{MAX_DISTANCE:g} half-widths of the strip")
+    return x, z, b, p0, nu
 
 
 def _in_plane(x, z, b, p0):
@@ -54,7 +67,8 @@ def stresses(x, z, b, p0, nu):
 
     Flamant's line load superposed over the pressure (derived in
     :mod:`hertzmdr.derive.line_stress`), in forms that keep full relative accuracy near the
-    surface, at the contact edge and far away (tested to z/b = 1e6).
+    surface, at the contact edge and far away (tested to z/b = 1e6); beyond
+    :data:`MAX_DISTANCE` half-widths from the strip a ValueError.
 
     Parameters
     ----------

@@ -333,3 +333,16 @@ def test_bad_input_is_named():
         ls.axis_stresses(1.0, 0.0, 1.0, 0.3)
     with pytest.raises(ValueError, match="nu = -1.0"):
         ls.max_von_mises(-1.0)
+
+
+def test_far_field_limit():
+    """Up to MAX_DISTANCE half-widths the field is finite and decays as the line load's
+    (sigma ~ 1/rho: every component times rho stays below p0 b); beyond it, the documented
+    ValueError instead of an overflow into NaN."""
+    D = ls.MAX_DISTANCE
+    for x, z in ((D, 1.0), (1.0, D), (D, D), (D, 1e-300)):
+        out = ls.stresses(x, z, 1.0, 1.0, 0.3)
+        assert all(np.isfinite(v) and abs(v) * max(x, z) <= 1.0 for v in out)
+    for x, z in ((2 * D, 1.0), (1.0, 2 * D), (1e300, 1e300)):
+        with pytest.raises(ValueError, match="half-widths"):
+            ls.stresses(x, z, 1.0, 1.0, 0.3)
