@@ -286,14 +286,13 @@ class PowerLaw(MDR):
         return self.n * self.g1 * mp.mpf(x) ** (self.n - 1)
 
 
-class Hertz(MDR):
+class Hertz(PowerLaw):
     """A paraboloid f = r^2/(2R): a, p0 and F from the Boussinesq kernel alone
-    (tests/kernels.py), the fields and stresses from the MDR integrals."""
+    (tests/kernels.py), the fields and stresses from the MDR integrals (the power law n = 2)."""
 
     def __init__(self, E, R):
         self.R = mp.mpf(R)
-        super().__init__(E, lambda r: r * r / (2 * self.R), lambda r: r / self.R,
-                         lambda r: 1 / self.R)
+        super().__init__(E, 1 / (2 * self.R), 2)
 
     @cache  # noqa: B019
     def state(self, d):
@@ -663,9 +662,10 @@ def check_contact_radius(case, route, eff, name, ds):
 
 
 def check_max_pressure(case, route, eff, name, ds):
-    if isinstance(route, PowerLaw):  # the largest of (5.59) over r: golden section
+    if isinstance(route, PowerLaw) and not isinstance(route, Hertz):  # interior maximum
+        # 45 steps locate r to 0.618^45 = 4e-10 of a: p is flat there, its value to 1e-19
         refs = [golden_max(lambda r, d=d: route.pressure(r, d), 0, route.radius(d),
-                           iters=60)[0] for d in ds]
+                           iters=45)[0] for d in ds]
     elif isinstance(route, (Elliptic, Gaussian)):
         refs = [route.state(d)[2] for d in ds]
     else:
@@ -1037,6 +1037,11 @@ BUGS = {
     "to scipy.optimize.brentq, below its minimum 4 eps = 8.9e-16: every force-controlled "
     "flattened_parabola scene raises ValueError",
     ("worn_force", "force"): "as worn_force-depth: brentq rtol below 4 eps raises ValueError",
+    **{("profile", e): "numeric/scene/kinds/stresses.py SuperposedStresses reports the "
+       "quadrature's error estimate only (3.3e-16 here, while sigma_zz and sigma_rr are off by "
+       "8e-15), not the error of the numerical MDR pressure it integrates, nor, for the "
+       "maxima, the grid's (13 x 12 points: the Hertz maximum at z = 0.48 a is missed)"
+       for e in ("axis_stresses", *STRESS_GRID)},
     ("profile", "force_depth_curve"): "NumericalMDR inherits Axisymmetric."
     "effect_force_depth_curve, which reports CLOSED_FORM_RTOL (1e-14) for values of the "
     "numerical MDR (measured 1.14e-14 here; the state itself reports 1.4e-13)",
