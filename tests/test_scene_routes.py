@@ -41,12 +41,12 @@ import numpy as np
 import pytest
 
 from hertzmdr.numeric import scene
-from hertzmdr.numeric.scene.effects import EFFECTS
 
 from kernels import hertz_reference, uz_axisymmetric
 from oracle import FULL
 from test_ellipse import ref_force, ref_state, ref_t
 
+EFFECTS = scene.EFFECTS  # the public registry (hertzmdr.numeric.scene.__all__)
 DPS = 30
 EXAMPLES = Path(__file__).parents[1] / "examples"
 #: the route's own error: 30-digit quadrature (< 1e-20) plus the float64 rounding of the inputs
