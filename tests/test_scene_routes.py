@@ -1033,10 +1033,6 @@ _SINGULAR_MAX = ("the stress under a singular pressure is unbounded at the surfa
 BUGS = {
     **{(k, e): _SINGULAR_MAX for k in ("cone", "flat_punch", "worn")
        for e in ("max_shear", "max_von_mises")},
-    ("worn_force", "depth"): "numeric/scene/kinds/axisym.py Worn.depth_of passes rtol=4e-16 "
-    "to scipy.optimize.brentq, below its minimum 4 eps = 8.9e-16: every force-controlled "
-    "flattened_parabola scene raises ValueError",
-    ("worn_force", "force"): "as worn_force-depth: brentq rtol below 4 eps raises ValueError",
     **{("profile", e): "numeric/scene/kinds/stresses.py SuperposedStresses reports the "
        "quadrature's error estimate only (3.3e-16 here, while sigma_zz and sigma_rr are off by "
        "8e-15), not the error of the numerical MDR pressure it integrates, nor, for the "
