@@ -18,6 +18,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bodies, hertz
 
 from kernels import uz_axisymmetric
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -325,3 +326,27 @@ def test_gaussian_approximation_sweep():
     for name, (func, key) in cases.items():
         assert_mpmath_equal(func, lambda key=key, **kw: parts(**kw)[key], doms, rtol=TOL,
                             n=n_points(200, 20), dps=30, name=name)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N, rad)
+PUBLIC = [
+    (bodies.effective_modulus, dict(E1=2e11, nu1=0.3, E2=7e10, nu2=0.33)),
+    (bodies.effective_modulus, dict(E1=2e11, nu1=0.3)),
+    (bodies.effective_radius, dict(R1=0.01, R2=0.02)),
+    (bodies.principal_radii, dict(R1a=0.01, R1b=0.02, R2a=0.03, R2b=0.05, omega=0.3)),
+    (bodies.crossed_cylinder_radii, dict(R1=0.01, R2=0.02, alpha=0.7)),
+    (bodies.crossed_cylinders_gaussian_radius, dict(R1=0.01, R2=0.02, alpha=0.7)),
+    (bodies.gaussian_radius, dict(R1=0.01, R2=0.02)),
+    (bodies.gaussian_approx_semi_axes, dict(d=1e-6, R1=0.01, R2=0.02)),
+    (bodies.gaussian_approx_area, dict(d=1e-6, R1=0.01, R2=0.02)),
+    (bodies.gaussian_approx_max_pressure, dict(d=1e-6, R1=0.01, R2=0.02, E_star=1e11)),
+    (bodies.gaussian_approx_force, dict(d=1e-6, R1=0.01, R2=0.02, E_star=1e11)),
+    (bodies.gaussian_approx_depth_from_force, dict(F=1.0, R1=0.01, R2=0.02, E_star=1e11)),
+    (bodies.gaussian_approx_pressure, dict(x=1e-5, y=2e-5, d=1e-6, R1=0.01, R2=0.02,
+                                           E_star=1e11)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)

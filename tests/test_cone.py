@@ -22,6 +22,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import cone
 
 from kernels import uz_axisymmetric
+from named import assert_inputs_named
 from oracle import FULL, Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -167,3 +168,21 @@ def test_cone_mean_pressure_sweep():
 
     assert_mpmath_equal(gen.cone_mean_pressure, ref, {"E_star": E_DOM, "theta": THETA},
                         rtol=TOL, n=n_points(100, 15), dps=35, name="cone_mean_pressure")
+
+
+# the public functions with one valid set of inputs each (SI: m, rad, Pa, N)
+PUBLIC = [
+    (cone.contact_radius, dict(d=1e-6, theta=0.1)),
+    (cone.depth, dict(a=1e-5, theta=0.1)),
+    (cone.force, dict(d=1e-6, theta=0.1, E_star=1e11)),
+    (cone.pressure, dict(r=1e-6, d=1e-6, theta=0.1, E_star=1e11)),
+    (cone.mean_pressure, dict(theta=0.1, E_star=1e11)),
+    (cone.stiffness, dict(d=1e-6, theta=0.1, E_star=1e11)),
+    (cone.depth_from_force, dict(F=1.0, theta=0.1, E_star=1e11)),
+    (cone.contact_radius_from_force, dict(F=1.0, theta=0.1, E_star=1e11)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)

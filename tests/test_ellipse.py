@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import ellipse, hertz
 
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 
@@ -294,3 +295,21 @@ def test_gaussian_approximation():
 def test_bad_input_is_named(bad, message):
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace("[", r"\[")):
         ellipse.solve(**bad)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (ellipse.axis_ratio, dict(R1=0.01, R2=0.03)),
+    (ellipse.eccentricity, dict(R1=0.01, R2=0.03)),
+    (ellipse.gaussian_radius, dict(R1=0.01, R2=0.03)),
+    (ellipse.solve, dict(R1=0.01, R2=0.03, E_star=1e11, depth=1e-6)),
+    (ellipse.solve, dict(R1=0.01, R2=0.03, E_star=1e11, force=1.0)),
+    (lambda x, y: ellipse.solve(0.01, 0.03, 1e11, depth=1e-6).pressure(x, y),
+     dict(x=1e-5, y=2e-5)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[
+    "axis_ratio", "eccentricity", "gaussian_radius", "solve_depth", "solve_force", "pressure"])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)

@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import hertz, impact
 
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -186,3 +187,14 @@ def test_sphere_mass_by_quadrature():
         ref = mp.quad(lambda r: rho * 4 * mp.pi * r**2, [0, R])
     # one power and three products in float64
     assert abs(gen.impact_sphere_mass(R, rho) / ref - 1) < 1e-15
+
+
+# the public functions with one valid set of inputs each, by mass and by density (SI)
+_BY = [dict(v0=1.0, R=0.01, E_star=1e11, m=0.03), dict(v0=1.0, R=0.01, E_star=1e11, rho=7800.0)]
+PUBLIC = [(f, by) for f in (impact.max_depth, impact.contact_time, impact.max_pressure,
+                            impact.max_force, impact.max_contact_radius) for by in _BY]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)

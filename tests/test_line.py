@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import line
 
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -195,3 +196,20 @@ def test_line_half_width_forms_sweep():
 
     assert_mpmath_equal(p_float, p_ref, {**doms, "frac": Arg(0.0, 0.9, log=False)}, rtol=TOL,
                         n=n, dps=35, name="line_pressure")
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (line.half_width, dict(d=1e-6, R=0.01)),
+    (line.force, dict(d=1e-6, L=0.02, E_star=1e11)),
+    (line.depth_from_force, dict(F=10.0, L=0.02, E_star=1e11)),
+    (line.half_width_from_force, dict(F=10.0, L=0.02, R=0.01, E_star=1e11)),
+    (line.max_pressure, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (line.max_pressure_from_force, dict(F=10.0, L=0.02, R=0.01, E_star=1e11)),
+    (line.pressure, dict(x=1e-5, d=1e-6, R=0.01, E_star=1e11)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)

@@ -24,6 +24,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import powerlaw
 
 from kernels import force_axisymmetric, uz_axisymmetric
+from named import assert_inputs_named
 from oracle import FULL, WORST, Arg, assert_close, assert_mpmath_equal, n_points
 
 DPS = 30
@@ -261,3 +262,23 @@ def test_bad_input_is_named():
         powerlaw.kappa(-1.0)
     with pytest.raises(ValueError, match="d = -1.0 is out of range"):
         powerlaw.force(-1.0, 1.0, 2.0, 1e9)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N; c_n in m^(1-n))
+PUBLIC = [
+    (powerlaw.kappa, dict(n=3.0)),
+    (powerlaw.g_profile, dict(x=1e-4, c_n=10.0, n=3.0)),
+    (powerlaw.contact_radius, dict(d=1e-6, c_n=10.0, n=3.0)),
+    (powerlaw.force, dict(d=1e-6, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.force_from_radius, dict(a=1e-3, d=1e-6, n=3.0, E_star=1e11)),
+    (powerlaw.depth_from_force, dict(F=1.0, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.mean_pressure, dict(d=1e-6, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.pressure, dict(r=1e-4, d=1e-6, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.pressure_normalized, dict(r_tilde=0.5, n=3.0)),
+    (powerlaw.surface_displacement, dict(r=1e-4, d=1e-6, c_n=10.0, n=3.0)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)

@@ -21,6 +21,7 @@ from hertzmdr.derive.symbols import F, a, nu, p0, r, z
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import stress
 
+from named import assert_inputs_named
 from oracle import WORST, Arg, assert_close, assert_mpmath_equal, n_points
 
 
@@ -343,3 +344,18 @@ def test_bad_input_is_named():
         stress.superposed_stress(0.0, 0.0, 0.0, lambda r: r, 1.0, 0.3)
     with pytest.raises(ValueError, match="pressure"):
         stress.superposed_stress(0.0, 0.0, 1.0, 3.0, 1.0, 0.3)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa; nu dimensionless)
+PUBLIC = [
+    (stress.spheroidal, dict(r=0.5, z=0.3, a=1.0)),
+    (stress.hertz_stress_cylindrical, dict(r=0.5, z=0.3, a=1.0, p0=1e9, nu=0.3)),
+    (stress.hertz_stress, dict(x=0.5, y=0.2, z=0.3, a=1.0, p0=1e9, nu=0.3)),
+    (stress.axis_stresses, dict(z=0.3, a=1.0, p0=1e9, nu=0.3)),
+    (stress.axis_max_shear, dict(nu=0.3)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
