@@ -186,3 +186,21 @@ PUBLIC = [
 @pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
 def test_each_input_named_in_its_error(func, valid):
     assert_inputs_named(func, valid)
+
+
+def test_public_functions_against_the_kernel_reference():
+    """The validated wrappers (the tests above check the generated functions), at inputs of
+    distinct magnitudes so that an input passed in the wrong place changes the value: a and F
+    from the kernel constant and the quadrature of the pressure, F/(pi a^2), 2 a E*."""
+    E, d, theta = 3e9, 2e-6, 0.3
+    with mp.workdps(30):
+        a, F = reference(mp.mpf(E), mp.mpf(d), mp.mpf(theta))
+        p_half = E * mp.tan(mp.mpf(theta)) / 2 * mp.acosh(2)  # (5.39) at r = a/2
+    assert_close(cone.contact_radius(d, theta), a, TOL, "(5.38)")
+    assert_close(cone.depth(float(a), theta), d, TOL, "(5.38) inverted")
+    assert_close(cone.force(d, theta, E), F, TOL, "(5.40)")
+    assert_close(cone.mean_pressure(theta, E), F / (mp.pi * a**2), TOL, "F/(pi a^2)")
+    assert_close(cone.stiffness(d, theta, E), 2 * a * E, TOL, "Problem 5: 2 a E*")
+    assert_close(cone.depth_from_force(float(F), theta, E), d, TOL, "(5.40) inverted")
+    assert_close(cone.contact_radius_from_force(float(F), theta, E), a, TOL, "a(F)")
+    assert_close(cone.pressure(float(a) / 2, d, theta, E), p_half, TOL, "(5.39)")

@@ -13,6 +13,7 @@ a = sqrt(R d) (5.35).
 from functools import cache
 
 import mpmath as mp
+import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -213,3 +214,26 @@ PUBLIC = [
 @pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
 def test_each_input_named_in_its_error(func, valid):
     assert_inputs_named(func, valid)
+
+
+def test_public_functions_against_the_gradient_reference():
+    """The validated wrappers (the tests above check the generated functions), at inputs of
+    distinct magnitudes so that an input in the wrong place changes the value, against p0 and
+    F/L of the pressure that reproduces du/dx = -x/R (reference above), a = sqrt(R d) (5.35)."""
+    E, R, d, L = 2.1e11, 0.05, 1e-6, 0.02
+    with mp.workdps(30):
+        a = mp.sqrt(mp.mpf(R) * d)
+        p0, F_L = reference(mp.mpf(E), mp.mpf(R), a)
+        F = F_L * L
+        x = a / 3
+        p_x = p0 * mp.sqrt(1 - (x / a) ** 2)
+    assert_close(line.half_width(d, R), a, TOL, "(5.35)")
+    assert_close(line.force(d, L, E), F, TOL, "(5.37)")
+    assert_close(line.max_pressure(d, R, E), p0, TOL, "p0")
+    assert_close(line.depth_from_force(float(F), L, E), d, TOL, "(5.37) inverted")
+    assert_close(line.half_width_from_force(float(F), L, R, E), a, TOL, "a(F)")
+    assert_close(line.max_pressure_from_force(float(F), L, R, E), p0, TOL, "p0(F)")
+    assert_close(line.pressure(float(x), d, R, E), p_x, TOL, "(5.36)")
+    assert line.pressure(float(a) * 1.001, d, R, E) == 0.0
+    with pytest.raises(ValueError, match="x = .*must be finite"):
+        line.pressure(np.inf, d, R, E)
