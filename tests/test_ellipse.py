@@ -313,3 +313,28 @@ PUBLIC = [
     "axis_ratio", "eccentricity", "gaussian_radius", "solve_depth", "solve_force", "pressure"])
 def test_each_input_named_in_its_error(func, valid):
     assert_inputs_named(func, valid)
+
+
+def test_public_solve_against_the_mpmath_state():
+    """The validated ellipse.solve (the sweeps above check the generated functions) against
+    Johnson's state at t = b/a = 0.3: the radii R1 (major) and R2 = R1 t^2 D/B of that state,
+    given in both orders (x along R1 either way), depth- and force-controlled; F by quadrature
+    of the pressure, the mean pressure F/(pi a b), the area pi a b, the stiffness dF/dd by
+    differentiation, the eccentricity sqrt(1 - t^2). Error model as in _sweep (1e-12), with
+    R2 rounded to float64 (t moves by about an ulp)."""
+    E, Rmaj, d = 2e11, 0.3, 1e-6
+    with mp.workdps(30):
+        t = mp.mpf("0.3")
+        a, b, p0, Rmin = ref_state(mp.mpf(E), mp.mpf(Rmaj), mp.mpf(d), t)
+        F = ref_force(mp.mpf(E), mp.mpf(Rmaj), mp.mpf(d), t)
+        k = mp.diff(lambda x: ref_force(mp.mpf(E), mp.mpf(Rmaj), x, t), mp.mpf(d))
+        ref = {"depth": mp.mpf(d), "force": F, "max_pressure": p0,
+               "mean_pressure": F / (mp.pi * a * b), "area": mp.pi * a * b, "stiffness": k}
+    Rmin = float(Rmin)
+    for R1, R2, ax, by in ((Rmaj, Rmin, a, b), (Rmin, Rmaj, b, a)):
+        for c in (ellipse.solve(R1, R2, E, depth=d), ellipse.solve(R1, R2, E, force=float(F))):
+            for name, value in {**ref, "a": ax, "b": by}.items():
+                assert_close(getattr(c, name), value, 1e-12, f"{name}, R1={R1}")
+            assert (c.R1, c.R2, c.E_star, c.model) == (R1, R2, E, "exact")
+        assert_close(ellipse.eccentricity(R1, R2), mp.sqrt(1 - t**2), 1e-12, "e")
+        assert_close(ellipse.axis_ratio(R1, R2), t, 1e-12, "b/a")
