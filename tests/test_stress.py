@@ -359,3 +359,17 @@ PUBLIC = [
 @pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
 def test_each_input_named_in_its_error(func, valid):
     assert_inputs_named(func, valid)
+
+
+def test_max_shear_of_known_principal_stresses():
+    """max_shear is half the spread of the principal stresses: a tensor built from chosen
+    principal values (1, -2, 3) Pa in a rotated frame has (3 - (-2))/2 = 2.5 Pa; tresca 5 Pa.
+    Rotation and eigenvalues in float64: a few ulps of 5 (1e-14)."""
+    c, s = np.cos(0.7), np.sin(0.7)
+    Q = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) @ np.array(
+        [[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    sig = Q @ np.diag([1.0, -2.0, 3.0]) @ Q.T
+    assert abs(stress.max_shear(sig) - 2.5) < 1e-14
+    assert abs(stress.tresca(sig) - 5.0) < 1e-14
+    both = stress.max_shear(np.stack([sig, 2 * sig]))
+    assert np.allclose(both, [2.5, 5.0], rtol=1e-14, atol=0)
