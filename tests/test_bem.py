@@ -14,6 +14,7 @@ import pytest
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bem, ellipse, hertz
 
+from named import assert_inputs_named
 from oracle import assert_close
 
 
@@ -182,3 +183,24 @@ def test_numeric_modules_do_not_import_scipy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == ""
+
+
+_H = np.array([[1e-6, 0.0, 1e-6], [0.0, 0.0, 0.0], [1e-6, 0.0, 1e-6]])  # a 3 x 3 dimple [m]
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (bem.influence_kernel, dict(x=1e-5, y=2e-5, dx=1e-5, dy=2e-5, E_star=1e11)),
+    (lambda height, dx, E_star, depth: bem.solve(height, dx, E_star, depth=depth),
+     dict(height=_H, dx=1e-5, E_star=1e11, depth=2e-6)),
+    (lambda height, dx, E_star, force, dy: bem.solve(height, dx, E_star, force=force, dy=dy),
+     dict(height=_H, dx=1e-5, E_star=1e11, force=1e-3, dy=2e-5)),
+    (lambda dx, E_star, dy: bem.punch_stiffness(_H == 0, dx, E_star, dy=dy),
+     dict(dx=1e-5, E_star=1e11, dy=2e-5)),
+    (lambda vertices, margin: bem.polygon_punch(vertices, 8, margin=margin),
+     dict(vertices=[(0.0, 0.0), (1e-3, 0.0), (0.0, 1e-3)], margin=0.1)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[
+    "influence_kernel", "solve_depth", "solve_force", "punch_stiffness", "polygon_punch"])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
