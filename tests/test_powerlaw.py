@@ -282,3 +282,35 @@ PUBLIC = [
 @pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
 def test_each_input_named_in_its_error(func, valid):
     assert_inputs_named(func, valid)
+
+
+def test_pressure_large_n_at_si_scale_in_one_call():
+    """The quadrature branch (n > 40) at SI scale, a = 0.2 mm, d = 1 um, E* = 100 GPa (the
+    test above has a = 1.5: a factor a^2 misplaced in the panel layout goes unseen there), with
+    several radii and exponents in one call (each row its own integral); against the 30-digit
+    (5.59) reference. Called with a, as above: c_n = d/(kappa a^n) underflows at this scale.
+    Tolerance as above, 1e-14."""
+    E, aa, dd = 1e11, 2e-4, 1e-6
+    rt = np.array([0.0, 0.3, 0.9, 0.999, 1 - 1e-7])
+    n = np.array([100.0, 1e4])
+    R, N = np.meshgrid(rt * aa, n)
+    got = powerlaw._pressure_at(R.ravel(), np.full(R.size, aa), np.full(R.size, dd), N.ravel(),
+                                np.full(R.size, E))
+    for rr, nn, g in zip(R.ravel(), N.ravel(), got, strict=True):
+        assert_close(g, _abel_reference(E, aa, dd, nn, rr), 1e-14, f"n={nn}, r/a={rr / aa}")
+
+
+def test_normalized_pressure_of_the_punch():
+    """n = inf is the flat punch: p/p_mean = 1/(2 sqrt(1 - r~^2)) (p = F/(2 pi a sqrt(a^2 -
+    r^2)), p_mean = F/(pi a^2)); alongside a finite n in the same call, whose value is the
+    quadrature of Fig. 5.17 (as in test_normalized_pressure_by_quadrature)."""
+    rt = np.array([0.0, 0.5, 0.9])
+    got = powerlaw.pressure_normalized(rt, np.inf)
+    for x, g in zip(rt, got, strict=True):
+        with mp.workdps(30):
+            assert_close(g, 1 / (2 * mp.sqrt(1 - mp.mpf(x) ** 2)), 1e-14, f"punch r~={x}")
+    mixed = powerlaw.pressure_normalized(0.5, np.array([np.inf, 3.0]))
+    with mp.workdps(30):
+        ref3 = 2 * mp.quad(lambda s: (mp.mpf("0.5") * mp.cosh(s)) ** 2, [0, mp.acosh(2)])
+    assert_close(mixed[0], 1 / (2 * mp.sqrt(mp.mpf("0.75"))), 1e-14, "punch")
+    assert_close(mixed[1], ref3, 1e-13, "n = 3")
