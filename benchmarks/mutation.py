@@ -126,10 +126,12 @@ def function_lines(path: Path) -> dict[str, int]:
     return out
 
 
-def load_notes() -> list[dict]:
+def load_notes(kind: str = "equivalent") -> list[dict]:
+    """The notes of benchmarks/mutation_notes.toml: "equivalent" (survivors that cannot be
+    killed, with the reason) or "killed" (survivors of earlier runs and the tests added)."""
     if not NOTES.exists():
         return []
-    return tomllib.loads(NOTES.read_text()).get("equivalent", [])
+    return tomllib.loads(NOTES.read_text()).get(kind, [])
 
 
 def squash(s: str) -> str:
@@ -260,6 +262,13 @@ def report(runs: list[Run], argv: list[str], total: float) -> str:
         lines.append("")
     if not any_left:
         lines += ["None: every mutant was killed.", ""]
+    modules = {r.module for r in runs}
+    killed = [k for k in load_notes("killed") if k["module"] in modules]
+    if killed:
+        lines += ["## Survivors of earlier runs, killed by the tests added for them", "",
+                  "| module | the mutants | killed by |", "|---|---|---|"]
+        lines += [f"| `{k['module']}` | {k['mutants']} | {k['tests']} |" for k in killed]
+        lines.append("")
     return "\n".join(lines)
 
 
