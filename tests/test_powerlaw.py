@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from hertzmdr.derive import powerlaw as dp
 from hertzmdr.derive.symbols import E_star, a, d, r
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric import powerlaw
+from hertzmdr.numeric import cone, hertz, powerlaw
 
 from kernels import force_axisymmetric, uz_axisymmetric
 from named import assert_inputs_named
@@ -314,3 +314,42 @@ def test_normalized_pressure_of_the_punch():
         ref3 = 2 * mp.quad(lambda s: (mp.mpf("0.5") * mp.cosh(s)) ** 2, [0, mp.acosh(2)])
     assert_close(mixed[0], 1 / (2 * mp.sqrt(mp.mpf("0.75"))), 1e-14, "punch")
     assert_close(mixed[1], ref3, 1e-13, "n = 3")
+
+
+def test_special_cases_are_hertz_cone_and_punch():
+    """Fast cross-checks with the other modules, inside and outside the contact in one call:
+    n = 2 is the Hertz paraboloid with R = 1/(2 c) (hertz.py), n = 1 the cone with
+    tan(theta) = c (cone.py), n = inf the flat punch of radius c: u = d inside and
+    (2 d/pi) asin(a/r) outside (Problem 7(a)). Different generated forms, so a few ulps apart
+    (1e-14); 1e-13 for the 2F1 forms near the rim."""
+    E, d = 1e11, 1e-6
+    c2 = 25.0  # [1/m]: R = 0.02 m
+    R = 1 / (2 * c2)
+    a2 = float(hertz.contact_radius(d, R))
+    r = a2 * np.array([0.0, 0.3, 0.9, 1.5, 40.0])
+    assert np.allclose(powerlaw.surface_displacement(r, d, c2, 2.0),
+                       hertz.surface_displacement(r, d, R), rtol=1e-14, atol=0)
+    assert np.allclose(powerlaw.pressure(r, d, c2, 2.0, E), hertz.pressure(r, d, R, E),
+                       rtol=1e-13, atol=0)
+    assert_close(powerlaw.force(d, c2, 2.0, E), hertz.force(d, R, E), 1e-14, "F, n = 2")
+    assert_close(powerlaw.contact_radius(d, c2, 2.0), a2, 1e-14, "a, n = 2")
+    assert_close(powerlaw.mean_pressure(d, c2, 2.0, E), hertz.mean_pressure(d, R, E), 1e-14,
+                 "mean pressure, n = 2")
+    assert_close(powerlaw.depth_from_force(float(hertz.force(d, R, E)), c2, 2.0, E), d, 1e-14,
+                 "d(F), n = 2")
+    theta = 0.2
+    c1 = float(np.tan(theta))
+    a1 = float(cone.contact_radius(d, theta))
+    r = a1 * np.array([0.3, 0.9, 1.5])
+    assert np.allclose(powerlaw.pressure(r, d, c1, 1.0, E), cone.pressure(r, d, theta, E),
+                       rtol=1e-14, atol=0)
+    assert_close(powerlaw.force(d, c1, 1.0, E), cone.force(d, theta, E), 1e-14, "F, n = 1")
+    assert_close(powerlaw.mean_pressure(d, c1, 1.0, E), cone.mean_pressure(theta, E), 1e-14,
+                 "mean pressure, n = 1")
+    a = 1e-3  # the punch radius, passed as c_n
+    r = np.array([0.0, 0.5e-3, 1e-3, 2e-3, 10e-3])
+    u = powerlaw.surface_displacement(r, d, a, np.inf)
+    assert np.all(u[:3] == d)
+    with mp.workdps(30):
+        for rr, uu in zip(r[3:], u[3:], strict=True):
+            assert_close(uu, 2 * d / mp.pi * mp.asin(a / mp.mpf(rr)), 1e-14, f"punch u({rr})")
