@@ -338,3 +338,33 @@ def test_public_solve_against_the_mpmath_state():
             assert (c.R1, c.R2, c.E_star, c.model) == (R1, R2, E, "exact")
         assert_close(ellipse.eccentricity(R1, R2), mp.sqrt(1 - t**2), 1e-12, "e")
         assert_close(ellipse.axis_ratio(R1, R2), t, 1e-12, "b/a")
+
+
+def test_pressure_of_the_result_in_both_orientations_and_models():
+    """EllipticContact.pressure with x along R1 whichever radius is larger (the generated form
+    has x along the major axis) against p0 sqrt(1 - x^2/a^2 - y^2/b^2) of Johnson's mpmath
+    state; and the Gaussian model's, whose semi-axes are sqrt(R1 d), sqrt(R2 d) (5.28) and p0
+    Hertz's (5.22) with R~ = sqrt(R1 R2) (5.30), from hertz.py. Error model as in _sweep."""
+    E, Rmaj, d = 2e11, 0.3, 1e-6
+    with mp.workdps(30):
+        t = mp.mpf("0.3")
+        a, b, p0, Rmin = ref_state(mp.mpf(E), mp.mpf(Rmaj), mp.mpf(d), t)
+    Rmin = float(Rmin)
+    pts = [(0.3, 0.4), (0.9, 0.1), (0.1, 0.9)]  # fractions of the semi-axes along x and y
+    for R1, R2, ax, by in ((Rmaj, Rmin, a, b), (Rmin, Rmaj, b, a)):
+        c = ellipse.solve(R1, R2, E, depth=d)
+        x = np.array([fx * float(ax) for fx, _ in pts])
+        y = np.array([fy * float(by) for _, fy in pts])
+        got = c.pressure(x, y)
+        for (fx, fy), g in zip(pts, got, strict=True):
+            with mp.workdps(30):
+                ref = p0 * mp.sqrt(1 - mp.mpf(fx) ** 2 - mp.mpf(fy) ** 2)
+            assert_close(g, ref, 1e-12, f"R1={R1}: p at ({fx} a, {fy} b)")
+    R1, R2 = 0.01, 0.04
+    g = ellipse.solve(R1, R2, E, depth=d, model="gaussian")
+    ag, bg = np.sqrt(R1 * d), np.sqrt(R2 * d)
+    p0g = hertz.max_pressure(d, np.sqrt(R1 * R2), E)
+    for fx, fy in pts:
+        ref = p0g * np.sqrt(1 - fx**2 - fy**2)
+        assert abs(g.pressure(fx * ag, fy * bg) / ref - 1) < 1e-14, (fx, fy)
+    assert g.pressure(1.01 * ag, 0.0) == 0.0 and g.pressure(0.0, 1.01 * bg) == 0.0
