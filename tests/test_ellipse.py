@@ -368,3 +368,19 @@ def test_pressure_of_the_result_in_both_orientations_and_models():
         ref = p0g * np.sqrt(1 - fx**2 - fy**2)
         assert abs(g.pressure(fx * ag, fy * bg) / ref - 1) < 1e-14, (fx, fy)
     assert g.pressure(1.01 * ag, 0.0) == 0.0 and g.pressure(0.0, 1.01 * bg) == 0.0
+
+
+@pytest.mark.parametrize("arg", ["R1", "R2", "E_star", "depth"])
+def test_solve_broadcasts_each_input(arg):
+    """Any one input an array: every attribute has its shape and each element is the scalar
+    solution for that element (so an input left out of the broadcast shape fails)."""
+    base = dict(R1=0.01, R2=0.03, E_star=1e11, depth=1e-6)
+    values = [0.5 * base[arg], base[arg], 3 * base[arg]]
+    c = ellipse.solve(**{**base, arg: np.array(values)})
+    for name in ("a", "b", "depth", "force", "max_pressure", "stiffness", "area", "R1", "R2",
+                 "E_star"):
+        got = getattr(c, name)
+        assert np.shape(got) == (3,), name
+        for v, g in zip(values, got, strict=True):
+            one = getattr(ellipse.solve(**{**base, arg: v}), name)
+            assert abs(g / one - 1) < 1e-15, (name, v)  # the same operations, elementwise
