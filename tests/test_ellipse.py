@@ -384,3 +384,9 @@ def test_solve_broadcasts_each_input(arg):
         for v, g in zip(values, got, strict=True):
             one = getattr(ellipse.solve(**{**base, arg: v}), name)
             assert abs(g / one - 1) < 1e-15, (name, v)  # the same operations, elementwise
+
+
+def test_radius_ratio_out_of_range_names_the_first_bad_ratio():
+    with pytest.raises(ValueError, match=r"^R1/R2 = .*99999999.* \(or its inverse\) is out of "
+                                         r"range; valid: 1/1e\+08 <= R1/R2 <= 1e\+08$"):
+        ellipse.axis_ratio(1.0, np.array([1.0, 1e-9, 1e-10]))
