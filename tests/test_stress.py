@@ -373,3 +373,9 @@ def test_max_shear_of_known_principal_stresses():
     assert abs(stress.tresca(sig) - 5.0) < 1e-14
     both = stress.max_shear(np.stack([sig, 2 * sig]))
     assert np.allclose(both, [2.5, 5.0], rtol=1e-14, atol=0)
+
+
+def test_hertz_maximum_refuses_an_unknown_criterion():
+    with pytest.raises(ValueError, match=r"^criterion = 'rankine'; valid: \['max_shear', "
+                                         r"'tresca', 'von_mises'\]$"):
+        stress.hertz_maximum(0.3, "rankine")
