@@ -204,3 +204,58 @@ PUBLIC = [
     "influence_kernel", "solve_depth", "solve_force", "punch_stiffness", "polygon_punch"])
 def test_each_input_named_in_its_error(func, valid):
     assert_inputs_named(func, valid)
+
+
+def _dense(shape, dx, dy, E):
+    """The influence matrix of the pixel grid, entry by entry from the pixel kernel."""
+    nx, ny = shape
+    i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
+    i, j = i.ravel(), j.ravel()
+    return bem.influence_kernel((i[:, None] - i[None, :]) * dx, (j[:, None] - j[None, :]) * dy,
+                                dx, dy, E)
+
+
+def _contact_by_nnls(A, b):
+    """The discrete contact problem (A p = b where p > 0, A p >= b elsewhere, p >= 0) is the
+    quadratic program min p.A p/2 - p.b over p >= 0; with A = L L^T it is the nonnegative
+    least-squares problem min |L^T p - L^-1 b|, solved by SciPy's active-set NNLS: a route
+    sharing nothing with bem.solve's projected conjugate gradients but the kernel."""
+    from scipy.linalg import cholesky, solve_triangular
+    from scipy.optimize import nnls
+
+    L = cholesky(A, lower=True)
+    p, _ = nnls(L.T, solve_triangular(L, b, lower=True), maxiter=50 * len(b))
+    return p
+
+
+@pytest.mark.parametrize("control", ["depth", "force"])
+def test_solver_against_the_discrete_problem_solved_by_nnls(control):
+    """An ellipsoidal dimple plus a tilt on a 12 x 10 grid of non-square pixels: bem.solve
+    (tol 1e-12) against the same discrete problem solved by NNLS; the punch stiffness of the
+    contact area against a dense solve of A p = 1 on it. The two routes' difference is the
+    conditioning of A (~1e3 here) times the tolerance: 1e-8 relative."""
+    nx, ny, dx, dy, E = 12, 10, 0.1, 0.13, 3.0
+    x = (np.arange(nx) - 5.3)[:, None] * dx
+    y = (np.arange(ny) - 4.1)[None, :] * dy
+    h = x**2 / 6 + y**2 / 10 + 0.003 * x
+    A = _dense((nx, ny), dx, dy, E)
+    if control == "depth":
+        res = bem.solve(h, dx, E, depth=0.03, dy=dy, tol=1e-12)
+        d = 0.03
+    else:
+        res = bem.solve(h, dx, E, force=0.04, dy=dy, tol=1e-12)
+        d = res.depth
+    p = _contact_by_nnls(A, d - h.ravel()).reshape(nx, ny)
+    assert np.count_nonzero(p) > 10 and np.count_nonzero(p == 0) > 10  # a partial contact
+    scale = p.max()
+    assert np.max(np.abs(res.pressure - p)) < 1e-8 * scale
+    assert np.array_equal(res.contact, p > 1e-9 * scale)
+    assert abs(res.force / (p.sum() * dx * dy) - 1) < 1e-8
+    assert res.area == np.count_nonzero(res.contact) * dx * dy and res.depth == d
+    u = (A @ res.pressure.ravel()).reshape(nx, ny)
+    assert np.max(np.abs(res.displacement - u)) < 1e-12 * np.max(np.abs(u))
+    assert np.max(np.abs(res.gap - (h - d + u))) < 1e-8 * d
+    assert res.residual < 1e-12 and res.iterations > 1 and (res.dx, res.dy) == (dx, dy)
+    S = res.contact.ravel()
+    k = np.linalg.solve(A[np.ix_(S, S)], np.ones(S.sum())).sum() * dx * dy
+    assert abs(res.stiffness / k - 1) < 1e-8
