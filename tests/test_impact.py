@@ -11,6 +11,7 @@ Route 2, the time integral 2 int_0^x0 dx / v(x) by tanh-sinh quadrature, with x0
 the energy balance found by findroot.
 """
 
+import re
 from functools import cache
 
 import mpmath as mp
@@ -238,3 +239,14 @@ def test_motion_integrator_against_the_equation_of_motion(rtol):
 def test_motion_refuses_rtol_outside_its_range(rtol):
     with pytest.raises(ValueError, match="1e-13 <= rtol <= 1e-3"):
         motion.integrate(2.0, 0.02, 3e10, 0.5, rtol=rtol)
+
+
+@pytest.mark.parametrize("name", list(NAMES.values()))
+def test_give_exactly_one_of_mass_and_density(name):
+    msg = ("m = {m}, rho = {rho}: give exactly one of the mass m [kg] and the density rho "
+           "[kg/m^3]")
+    func = getattr(impact, name)
+    with pytest.raises(ValueError, match="^" + re.escape(msg.format(m=0.1, rho=7800.0)) + "$"):
+        func(1.0, 0.01, 1e11, m=0.1, rho=7800.0)
+    with pytest.raises(ValueError, match="^" + re.escape(msg.format(m=None, rho=None)) + "$"):
+        func(1.0, 0.01, 1e11)
