@@ -101,3 +101,22 @@ def test_result():
     assert result(arr) is arr
     one = result(np.array([3.0]))
     assert isinstance(one, np.ndarray) and one.shape == (1,)
+
+
+def test_array_messages_and_defaults():
+    """The first offending element of an array is named with its index for every check; a
+    positive value below 1 passes with allow_inf too; between's bounds are open by default."""
+    assert positive("R", TINY, allow_inf=True) == TINY
+    raises("R1[1] = 0.0 is out of range; valid: R1 != 0 (negative: concave, inf: flat)",
+           nonzero, "R1", [1.0, 0.0, 0.0])
+    raises("nu[1] = -1.0 is out of range; valid: -1 < nu <= 0.5", poisson, "nu", [0.3, -1.0])
+    raises("t[1] = 0.0 is out of range; valid: 0.0 < t < 2.0", between, "t", [1.0, 0.0, 3.0],
+           0.0, 2.0)
+    raises("t = 2.0 is out of range; valid: 0.0 < t < 2.0", between, "t", 2.0, 0.0, 2.0)
+
+
+@pytest.mark.parametrize("check", [positive, nonnegative, nonzero, poisson,
+                                   lambda name, v: between(name, v, 0.0, 1.0)])
+def test_every_check_names_nan_and_non_numbers(check):
+    raises("q = nan is out of range; valid: a number, not NaN", check, "q", float("nan"))
+    raises("q = 'abc' is not a number or an array of numbers", check, "q", "abc")
