@@ -11,13 +11,14 @@ from math import factorial
 import numpy as np
 import pytest
 
-from hertzmdr.numeric._quadrature import gauss, panels
+from hertzmdr.numeric._quadrature import _GL_CACHE, gauss, panels
 
 TOL = 1e-14
 
 
 @pytest.mark.parametrize("m", [1, 2, 5, 16])
 def test_gauss_degree(m):
+    _GL_CACHE.pop(m, None)  # other modules may have filled it: compute this rule here
     t, w = gauss(m)
     assert t.shape == w.shape == (m,)
     for k in range(2 * m):  # exact up to degree 2m - 1: int_-1^1 x^k = 2/(k+1) for even k
@@ -32,16 +33,17 @@ def test_gauss_degree(m):
 
 
 def test_panels_integrate_piecewise_polynomials_exactly():
-    """f(x) = |x - b1| (x - b2)^2 + 3 on [lo, hi], breaks at b1, b2 (given in any order, one of
-    them outside [lo, hi] in the second row, clipped) and with a repeated break: with m = 2 each
-    panel sees a cubic, integrated exactly."""
+    """f(x) = |x - b1| (x - b2)^2 + 3 on [lo, hi], breaks at b1, b2, b3 (given in any order,
+    some outside [lo, hi], clipped) and with a repeated break: each panel sees a cubic, which
+    m = 3 points integrate exactly (m = 3: unequal weights, unlike m = 2)."""
     lo = np.array([0.0, -1.0, 2.0])
     hi = np.array([3.0, 0.5, 5.0])
     b1 = np.array([1.0, -0.25, 4.0])
     b2 = np.array([2.5, 7.0, 4.0])  # 7 is outside [-1, 0.5]; 4.0 coincides with b1
-    breaks = np.stack([b2, b1], axis=1)  # b2 first: the order must not matter
-    x, w = panels(lo, hi, breaks, 2)
-    assert x.shape == w.shape == (3, 6)
+    b3 = np.array([-3.0, -9.0, 1.0])  # below lo: clipped to it, an empty panel
+    breaks = np.stack([b2, b1, b3], axis=1)  # b2 first: the order must not matter
+    x, w = panels(lo, hi, breaks, 3)
+    assert x.shape == w.shape == (3, 12)
     f = np.abs(x - b1[:, None]) * (x - b2[:, None]) ** 2 + 3
 
     def P(s, b1, b2):
@@ -60,4 +62,5 @@ def test_panels_integrate_piecewise_polynomials_exactly():
         assert abs(np.sum(w[i] * f[i]) / ref - 1) < TOL, i
         assert np.all(w[i] >= 0) and np.all((x[i] >= lo[i]) & (x[i] <= hi[i]))
         assert abs(np.sum(w[i]) - (hi[i] - lo[i])) < TOL * (hi[i] - lo[i])
-    assert np.count_nonzero(w[2] == 0) == 2  # the empty panel between the coinciding breaks
+    # the empty panels: below lo (rows 0, 1, 2: b3 < lo) and between the coinciding breaks (row 2)
+    assert [np.count_nonzero(wi == 0) for wi in w] == [3, 6, 6]
