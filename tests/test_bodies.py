@@ -369,6 +369,10 @@ def test_effective_radius_refuses_gaps_that_open():
         bodies.effective_radius([1.0, 2.0, 1.0], [-2.0, -1.0, -1.0])
     with pytest.raises(ValueError, match=first):
         bodies.effective_radius(np.array([0.5, 2.0]), -1.0)  # R2 broadcast
+    # a sum of exactly 0 is the first bad pair here (the bound itself is refused)
+    with pytest.raises(ValueError, match=r"^R1 = (np\.float64\()?1\.0\)?, R2 = "
+                                         r"(np\.float64\()?-1\.0\)?: " + msg):
+        bodies.effective_radius([1.0, 1.0, 2.0], [-2.0, -1.0, -1.0])
     with mp.workdps(30):
         for R1, R2 in ((1.0, -1.5), (2.0, -4.0), (0.5, 1.0)):
             ref = 1 / (1 / mp.mpf(R1) + 1 / mp.mpf(R2))
