@@ -206,14 +206,15 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> 
     return run
 
 
-def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run:
-    """The result of an earlier run of ``module`` (``--report-only``), its notes read anew."""
+def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run | None:
+    """The result of an earlier run of ``module`` (``--report-only``), its notes read anew;
+    None if there is none with these test files."""
     path = base / module.replace("/", "_").removesuffix(".py") / "result.json"
     if not path.exists():
-        raise SystemExit(f"--report-only: no earlier run of {module} ({path})")
+        return None
     data = json.loads(path.read_text())
     if data["tests"] != list(tests):
-        raise SystemExit(f"--report-only: {module} was run with {data['tests']}, not {tests}")
+        return None
     run = Run(**{**data, "survivors": [Survivor(**x) for x in data["survivors"]]})
     for s in run.survivors:
         s.note = find_note(module, s, notes)
@@ -300,16 +301,25 @@ def main(argv: list[str] | None = None) -> int:
     notes = load_notes()
     t0 = time.perf_counter()
     runs = []
+    missing = []
     for m, tests in jobs:
         if args.report_only:
-            runs.append(load_run(m, tests, args.work.resolve(), notes))
+            run = load_run(m, tests, args.work.resolve(), notes)
+            if run is None:
+                missing.append(m)
+            else:
+                runs.append(run)
             continue
         print(f"mutating numeric/{m} with {' '.join(tests)} ...", flush=True)
         runs.append(run_module(m, tests, args.work.resolve(), notes))
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
-    args.out.write_text(report(runs, [a for a in argv if a != "--report-only"], total) + "\n")
+    text = report(runs, [a for a in argv if a != "--report-only"], total)
+    if missing:
+        text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)
+                 + " with these test files yet.\n")
+    args.out.write_text(text + "\n")
     print(f"wrote {args.out}")
     return 0
 
