@@ -266,3 +266,7 @@ def test_motion_integrator_at_any_scale(E, R, m, v0):
     assert_close(res.max_depth, ref["x0"], 1e-9, "x0")
     assert_close(res.contact_time, ref["tau"], 1e-9, "tau")
     assert_close(res.max_force, ref["F"], 1e-9, "F")
+
+
+def test_motion_names_each_input_in_its_error():
+    assert_inputs_named(motion.integrate, dict(v0=2.0, R=0.02, E_star=3e10, m=0.5))
