@@ -128,7 +128,8 @@ def function_lines(path: Path) -> dict[str, int]:
 
 def load_notes(kind: str = "equivalent") -> list[dict]:
     """The notes of benchmarks/mutation_notes.toml: "equivalent" (survivors that cannot be
-    killed, with the reason) or "killed" (survivors of earlier runs and the tests added)."""
+    killed, with the reason), "killed" (survivors of earlier runs and the tests added) or
+    "finding" (defects seen while writing those tests)."""
     if not NOTES.exists():
         return []
     return tomllib.loads(NOTES.read_text()).get(kind, [])
@@ -279,6 +280,12 @@ def report(runs: list[Run], argv: list[str], total: float) -> str:
     if not any_left:
         lines += ["None: every mutant was killed.", ""]
     modules = {r.module for r in runs}
+    found = [f for f in load_notes("finding") if f["module"] in modules]
+    if found:
+        lines += ["## Defects found on the way (not fixed here: their modules are being changed "
+                  "on other branches)", ""]
+        lines += [f"- `{f['module']}`: {f['text']}" for f in found]
+        lines.append("")
     killed = [k for k in load_notes("killed") if k["module"] in modules]
     if killed:
         lines += ["## Survivors of earlier runs, killed by the tests added for them", "",
