@@ -393,3 +393,19 @@ def test_radius_ratio_out_of_range_names_the_first_bad_ratio():
                                          r"<= 1e\+08$"):
         ellipse.axis_ratio(np.array([1.0, 1e8, 1e9, 1e10]), 1.0)
     assert ellipse.axis_ratio(1e8, 1.0) > 0
+
+
+def test_solve_messages_in_both_models():
+    """The errors of solve in full (anchored): the control, and each input named in the
+    Gaussian model too; an array of R2 with R1 a scalar names its bad ratio."""
+    for model in ("exact", "gaussian"):
+        with pytest.raises(ValueError, match="^give exactly one of depth= and force=$"):
+            ellipse.solve(0.01, 0.03, 1e11, model=model)
+        for by in (dict(depth=1e-6), dict(force=1.0)):
+            assert_inputs_named(lambda R1, R2, E_star, by=by, model=model: ellipse.solve(
+                R1, R2, E_star, model=model, **by), dict(R1=0.01, R2=0.03, E_star=1e11))
+            name = next(iter(by))
+            with pytest.raises(ValueError, match=f"^{name} = nan is out of range"):
+                ellipse.solve(0.01, 0.03, 1e11, model=model, **{name: np.nan})
+    with pytest.raises(ValueError, match=r"^R1/R2 = .* \(or its inverse\) is out of range"):
+        ellipse.axis_ratio(1.0, np.array([1.0, 1e-10]))
