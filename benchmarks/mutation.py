@@ -235,7 +235,7 @@ def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Ru
     return run
 
 
-def report(runs: list[Run], argv: list[str], total: float) -> str:
+def report(runs: list[Run], argv: list[str], total: float, assembled: bool = False) -> str:
     import mutmut
 
     columns = COLUMNS + (["not checked"] if any(r.counts.get("not checked") for r in runs)
@@ -245,7 +245,9 @@ def report(runs: list[Run], argv: list[str], total: float) -> str:
         "",
         f"Made by `{' '.join(['python', 'benchmarks/mutation.py', *argv])}` (or `make mutation`)"
         f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of runs on a shared 2-core "
-        "machine (each module's date below).",
+        "machine (each module's date below"
+        + ("; this page was assembled by `--report-only` from the last run of each module, "
+           "each made with the tests of that date)." if assembled else ")."),
         "Each module is mutated alone and tested with its own test files only (a mutant killed "
         "elsewhere in the suite counts as a survivor here). For each mutant, mutmut runs the tests "
         "of those files that reach the mutated function, with `-x`; the command below runs in "
@@ -337,7 +339,7 @@ def main(argv: list[str] | None = None) -> int:
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
-    text = report(runs, [a for a in argv if a != "--report-only"], total)
+    text = report(runs, [a for a in argv if a != "--report-only"], total, args.report_only)
     if missing:
         text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)
                  + " with these test files yet.\n")
