@@ -353,3 +353,11 @@ def test_special_cases_are_hertz_cone_and_punch():
     with mp.workdps(30):
         for rr, uu in zip(r[3:], u[3:], strict=True):
             assert_close(uu, 2 * d / mp.pi * mp.asin(a / mp.mpf(rr)), 1e-14, f"punch u({rr})")
+
+
+def test_mean_pressure_needs_a_positive_depth():
+    """At d = 0 there is no contact and no mean pressure: refused, naming d (contact_radius
+    alone accepts d = 0)."""
+    assert powerlaw.contact_radius(0.0, 10.0, 3.0) == 0.0
+    with pytest.raises(ValueError, match=r"^d = 0\.0 is out of range; valid: d > 0 and finite$"):
+        powerlaw.mean_pressure(0.0, 10.0, 3.0, 1e11)
