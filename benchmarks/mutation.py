@@ -128,8 +128,9 @@ def function_lines(path: Path) -> dict[str, int]:
 
 def load_notes(kind: str = "equivalent") -> list[dict]:
     """The notes of benchmarks/mutation_notes.toml: "equivalent" (survivors that cannot be
-    killed, with the reason), "killed" (survivors of earlier runs and the tests added) or
-    "finding" (defects seen while writing those tests)."""
+    killed, with the reason), "since" (survivors of a module's last run killed by a test added
+    after it), "killed" (survivors of earlier runs and the tests added) or "finding" (defects
+    seen while writing those tests)."""
     if not NOTES.exists():
         return []
     return tomllib.loads(NOTES.read_text()).get(kind, [])
@@ -140,7 +141,10 @@ def squash(s: str) -> str:
 
 
 def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
-    for n in notes:
+    """The reason a survivor cannot be killed, or the test added since its run that kills it
+    ("since" notes, for a module not run again since the test was added)."""
+    for n in notes + [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
+                      for k in load_notes("since")]:
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
             return n["reason"]
