@@ -397,3 +397,22 @@ def test_superposition_fills_both_rules_and_its_estimate_is_tight():
     assert np.abs(sig - ref).max() < 1e-12
     assert np.all(np.abs(sig - ref) <= err + 1e-14)
     assert err.max() < 1e-12
+
+
+def test_more_inputs_named_and_the_criteria_by_name():
+    """Inputs of the tensor criteria, hertz_maximum and superposed_stress named in their errors;
+    hertz_maximum's default criterion is von Mises, and "max_shear" is half of Tresca (the
+    maximum of sigma_1 - sigma_3 over the body, by the same search)."""
+    sig = np.diag([1.0, -2.0, 3.0])
+    assert_inputs_named(stress.von_mises, dict(sigma=sig))
+    assert_inputs_named(stress.tresca, dict(sigma=sig))
+    assert_inputs_named(lambda nu: stress.hertz_maximum(nu, "tresca"), dict(nu=0.3))
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    assert_inputs_named(lambda x, y, z, a, nu: stress.superposed_stress(x, y, z, hp, a, nu,
+                                                                        n_psi=8, level=2),
+                        dict(x=0.2, y=0.1, z=0.3, a=1.0, nu=0.3))
+    assert stress.hertz_maximum(0.3) == stress.hertz_maximum(0.3, "von_mises")
+    shear, r_s, z_s = stress.hertz_maximum(0.3, "max_shear")
+    tres, r_t, z_t = stress.hertz_maximum(0.3, "tresca")
+    # the same peak found twice by Nelder-Mead (flat there: 1e-13 in value, as above)
+    assert abs(2 * shear / tres - 1) < 1e-13
