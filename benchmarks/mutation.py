@@ -248,8 +248,9 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "# Mutation testing of numeric/",
         "",
         f"Made by `{' '.join(['python', 'benchmarks/mutation.py', *argv])}` (or `make mutation`)"
-        f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of runs on a shared 2-core "
-        "machine (each module's date below"
+        f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of "
+        + ("complete " if any(not r.seconds for r in runs) else "")
+        + "runs on a shared 2-core machine (each module's date below"
         + ("; this page was assembled by `--report-only` from the last run of each module, "
            "each made with the tests of that date)." if assembled else ")."),
         "Each module is mutated alone and tested with its own test files only (a mutant killed "
