@@ -259,3 +259,75 @@ def test_solver_against_the_discrete_problem_solved_by_nnls(control):
     S = res.contact.ravel()
     k = np.linalg.solve(A[np.ix_(S, S)], np.ones(S.sum())).sum() * dx * dy
     assert abs(res.stiffness / k - 1) < 1e-8
+
+
+def test_polygon_area_and_footprint():
+    """The shoelace area of polygons away from the origin in both orientations against their
+    areas by hand; polygon_punch's footprint against the polygon: the pixel area within the
+    boundary pixels (perimeter times dx), the grid over the bounding box widened by the margin
+    on each side, square pixels, n pixels along the longer side; its errors."""
+    L = [(1.0, 1.0), (4.0, 1.0), (4.0, 2.0), (2.0, 2.0), (2.0, 3.0), (1.0, 3.0)]  # area 3 + 1
+    tri = [(1.0, 2.0), (3.0, 2.0), (1.0, 5.0)]  # area 3
+    for poly, area in ((L, 4.0), (tri, 3.0)):
+        assert abs(bem.polygon_area(poly) - area) < 1e-15 * area
+        assert abs(bem.polygon_area(poly[::-1]) - area) < 1e-15 * area
+    for margin in (0.0, 0.25):
+        h, dx = bem.polygon_punch(L, 60, margin=margin)
+        assert abs(dx - 3.0 * (1 + 2 * margin) / 60) < 1e-15
+        nx, ny = h.shape
+        # 3 x 2 box [m], widened by 2 margin of its sides, in pixels of dx
+        assert (nx, ny) == (60, int(np.ceil(2.0 * (1 + 2 * margin) / dx - 1e-9)))
+        inside = np.isfinite(h)
+        assert np.all(h[inside] == 0.0)
+        perimeter = 10.0
+        assert abs(inside.sum() * dx * dx - 4.0) < perimeter * dx
+        # pixel centres: the footprint's centre of mass is the L's, (2.25, 1.75) [m]
+        xc = 2.5 + (np.arange(nx) - (nx - 1) / 2) * dx
+        yc = 2.0 + (np.arange(ny) - (ny - 1) / 2) * dx
+        X, Y = np.meshgrid(xc, yc, indexing="ij")
+        assert abs(X[inside].mean() - 2.25) < 2 * dx and abs(Y[inside].mean() - 1.75) < 2 * dx
+        # points well inside and well outside the L, by hand
+        for (px, py), want in (((1.5, 2.5), True), ((3.5, 1.5), True), ((3.0, 2.6), False),
+                               ((3.5, 2.9), False)):
+            i, j = int(np.argmin(abs(xc - px))), int(np.argmin(abs(yc - py)))
+            assert inside[i, j] == want, (px, py, margin)
+    h, dx = bem.polygon_punch(L, 2)
+    assert h.shape == (2, 2) and dx == 1.5  # n = 2 is the smallest grid; no margin by default
+    # the triangle (a slanted edge, unequal minima in x and y): its footprint's area and centre
+    h, dx = bem.polygon_punch(tri, 90)
+    inside = np.isfinite(h)
+    assert abs(inside.sum() * dx * dx - 3.0) < (5.0 + np.sqrt(13.0)) * dx
+    xc = 2.0 + (np.arange(h.shape[0]) - (h.shape[0] - 1) / 2) * dx
+    yc = 3.5 + (np.arange(h.shape[1]) - (h.shape[1] - 1) / 2) * dx
+    X, Y = np.meshgrid(xc, yc, indexing="ij")
+    assert abs(X[inside].mean() - 5 / 3) < 2 * dx and abs(Y[inside].mean() - 3.0) < 2 * dx
+    with pytest.raises(ValueError, match=r"^n = 1 is out of range; valid: n >= 2$"):
+        bem.polygon_punch(L, 1)
+    for bad in ([(0.0, 0.0), (1.0, 0.0)], [0.0, 1.0, 2.0], [(0, 0, 0), (1, 0, 0), (0, 1, 0)]):
+        with pytest.raises(ValueError, match=r"^vertices has shape .*; valid: \(k, 2\) with "
+                                             r"k >= 3$"):
+            bem.polygon_punch(bad, 8)
+
+
+def test_grid_and_height_map_files(tmp_path):
+    """grid: n x ny pixel centres symmetric about 0 with pitch length/n, width/ny;
+    read_height_map: the smallest grid (2 x 2) read, a single row refused with its 2-D shape,
+    a pickled (object) .npy refused."""
+    x, y, dx, dy = bem.grid(4, 1.0, ny=6, width=3.0)
+    assert x.shape == (4, 1) and y.shape == (1, 6) and (dx, dy) == (0.25, 0.5)
+    assert np.allclose(x.ravel(), [-0.375, -0.125, 0.125, 0.375], rtol=0, atol=1e-16)
+    assert np.allclose(y.ravel(), [-1.25, -0.75, -0.25, 0.25, 0.75, 1.25], rtol=0, atol=1e-16)
+    (tmp_path / "two.txt").write_text("0 1\n2 nan\n")
+    assert np.array_equal(bem.read_height_map(tmp_path / "two.txt"), [[0.0, 1.0], [2.0, np.inf]])
+    (tmp_path / "row.csv").write_text("0,1,2\n")
+    with pytest.raises(ValueError, match=r"heights of shape \(1, 3\); valid: a 2-D grid"):
+        bem.read_height_map(tmp_path / "row.csv")
+    np.save(tmp_path / "obj.npy", np.array([[0.0, {}], [1.0, 2.0]], dtype=object),
+            allow_pickle=True)
+    with pytest.raises(ValueError, match="allow_pickle"):
+        bem.read_height_map(tmp_path / "obj.npy")
+
+
+def test_punch_stiffness_refuses_an_empty_footprint():
+    with pytest.raises(ValueError, match=r"^mask has no pixel; valid: at least one True pixel$"):
+        bem.punch_stiffness(np.zeros((3, 3), dtype=bool), 1e-5, 1e11)
