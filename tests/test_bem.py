@@ -281,6 +281,8 @@ def test_polygon_area_and_footprint():
         assert np.all(h[inside] == 0.0)
         perimeter = 10.0
         assert abs(inside.sum() * dx * dx - 4.0) < perimeter * dx
+        if margin == 0.0:  # pixels of 0.05 m centred on the box: no centre on an edge, and the
+            assert inside.sum() == 1600  # L's 4 m^2 is exactly 1600 pixels
         # pixel centres: the footprint's centre of mass is the L's, (2.25, 1.75) [m]
         xc = 2.5 + (np.arange(nx) - (nx - 1) / 2) * dx
         yc = 2.0 + (np.arange(ny) - (ny - 1) / 2) * dx
