@@ -7,6 +7,8 @@ Grids are small here (<= 64 x 64, under a second each); the convergence study wi
 grids is benchmarks/bench_bem.py, its results docs/non_axisymmetric.md.
 """
 
+import re
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -341,3 +343,22 @@ def test_punch_stiffness_reports_its_residual_when_not_converged():
     with pytest.raises(RuntimeError, match=r"^punch_stiffness: residual 0\.0[1-9]\d* > tol = "
                                            r"1e-14$"):
         bem.punch_stiffness(np.ones((6, 6), dtype=bool), 1.0, 1.0, tol=1e-14, max_iter=1)
+
+
+def test_solve_messages():
+    """solve's refusals in full: -inf heights, no control or both, no pixel that can touch,
+    and a depth that does not reach below the lowest height (the bound itself refused)."""
+    h = np.array([[1e-6, 2e-6], [3e-6, 4e-6]])
+    for kw, msg in (
+            (dict(height=np.where(h > 3e-6, -np.inf, h), depth=1e-6),
+             "height contains -inf; valid: finite values, or +inf off a footprint"),
+            (dict(height=h), "give exactly one of depth= and force="),
+            (dict(height=h, depth=1e-6, force=1.0), "give exactly one of depth= and force="),
+            (dict(height=np.full((2, 2), np.inf), force=1.0),
+             "height is +inf everywhere: no pixel can touch")):
+        with pytest.raises(ValueError, match="^" + re.escape(msg) + "$"):
+            bem.solve(dx=1e-5, E_star=1e11, **kw)
+    with pytest.raises(ValueError, match=r"^depth = 1e-06 is out of range; valid: depth > "
+                                         r"min\(height\) = (np\.float64\()?1e-06\)? \(the "
+                                         r"indenter must touch\)$"):
+        bem.solve(h, 1e-5, 1e11, depth=1e-6)
