@@ -362,3 +362,16 @@ def test_solve_messages():
                                          r"min\(height\) = (np\.float64\()?1e-06\)? \(the "
                                          r"indenter must touch\)$"):
         bem.solve(h, 1e-5, 1e11, depth=1e-6)
+
+
+def test_solve_result_fields_and_non_convergence():
+    """Pixels off the footprint have an infinite gap; stiffness=False leaves it None; max_iter
+    reached raises with the residual and the tolerance."""
+    h, dx = bem.polygon_punch([(0.0, 0.0), (1e-3, 0.0), (0.0, 1e-3)], 12)
+    res = bem.solve(h, dx, 1e11, depth=1e-6, stiffness=False)
+    off = ~np.isfinite(h)
+    assert off.any() and np.all(res.gap[off] == np.inf) and np.all(np.isfinite(res.gap[~off]))
+    assert res.stiffness is None
+    with pytest.raises(RuntimeError, match=r"^bem\.solve: residual \S+ > tol = 1e-14 after "
+                                           r"max_iter = 1 iterations$"):
+        bem.solve(_sphere(16)[0], _sphere(16)[1], 1.0, depth=0.05, tol=1e-14, max_iter=1)
