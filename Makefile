@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 EXTRAS := test,plot,units,report
 
-.PHONY: demo test lint generate check accuracy benchmark clean
+.PHONY: demo test lint generate check accuracy benchmark mutation clean
 
 $(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -30,6 +30,14 @@ test: lint
 
 accuracy: $(STAMP)
 	$(VENV)/bin/hertzmdr accuracy --out docs/accuracy.md
+
+# mutation testing of numeric/ (mutmut, module by module, one worker, nice 19): docs/mutation.md
+$(VENV)/.mutation: $(STAMP)
+	$(PY) -m pip install --quiet -c constraints.txt -e ".[$(EXTRAS),mutation]"
+	touch $@
+
+mutation: $(VENV)/.mutation
+	$(PY) benchmarks/mutation.py
 
 generate: $(STAMP)
 	$(PY) -m hertzmdr.derive

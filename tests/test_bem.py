@@ -7,6 +7,8 @@ Grids are small here (<= 64 x 64, under a second each); the convergence study wi
 grids is benchmarks/bench_bem.py, its results docs/non_axisymmetric.md.
 """
 
+import re
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -14,6 +16,7 @@ import pytest
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bem, ellipse, hertz
 
+from named import assert_inputs_named
 from oracle import assert_close
 
 
@@ -182,3 +185,193 @@ def test_numeric_modules_do_not_import_scipy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == ""
+
+
+_H = np.array([[1e-6, 0.0, 1e-6], [0.0, 0.0, 0.0], [1e-6, 0.0, 1e-6]])  # a 3 x 3 dimple [m]
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (bem.influence_kernel, dict(x=1e-5, y=2e-5, dx=1e-5, dy=2e-5, E_star=1e11)),
+    (lambda height, dx, E_star, depth: bem.solve(height, dx, E_star, depth=depth),
+     dict(height=_H, dx=1e-5, E_star=1e11, depth=2e-6)),
+    (lambda height, dx, E_star, force, dy: bem.solve(height, dx, E_star, force=force, dy=dy),
+     dict(height=_H, dx=1e-5, E_star=1e11, force=1e-3, dy=2e-5)),
+    (lambda dx, E_star, dy: bem.punch_stiffness(_H == 0, dx, E_star, dy=dy),
+     dict(dx=1e-5, E_star=1e11, dy=2e-5)),
+    (lambda vertices, margin: bem.polygon_punch(vertices, 8, margin=margin),
+     dict(vertices=[(0.0, 0.0), (1e-3, 0.0), (0.0, 1e-3)], margin=0.1)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[
+    "influence_kernel", "solve_depth", "solve_force", "punch_stiffness", "polygon_punch"])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def _dense(shape, dx, dy, E):
+    """The influence matrix of the pixel grid, entry by entry from the pixel kernel."""
+    nx, ny = shape
+    i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
+    i, j = i.ravel(), j.ravel()
+    return bem.influence_kernel((i[:, None] - i[None, :]) * dx, (j[:, None] - j[None, :]) * dy,
+                                dx, dy, E)
+
+
+def _contact_by_nnls(A, b):
+    """The discrete contact problem (A p = b where p > 0, A p >= b elsewhere, p >= 0) is the
+    quadratic program min p.A p/2 - p.b over p >= 0; with A = L L^T it is the nonnegative
+    least-squares problem min |L^T p - L^-1 b|, solved by SciPy's active-set NNLS: a route
+    sharing nothing with bem.solve's projected conjugate gradients but the kernel."""
+    from scipy.linalg import cholesky, solve_triangular
+    from scipy.optimize import nnls
+
+    L = cholesky(A, lower=True)
+    p, _ = nnls(L.T, solve_triangular(L, b, lower=True), maxiter=50 * len(b))
+    return p
+
+
+@pytest.mark.parametrize("control", ["depth", "force"])
+def test_solver_against_the_discrete_problem_solved_by_nnls(control):
+    """An ellipsoidal dimple plus a tilt on a 12 x 10 grid of non-square pixels: bem.solve
+    (tol 1e-12) against the same discrete problem solved by NNLS; the punch stiffness of the
+    contact area against a dense solve of A p = 1 on it. The two routes' difference is the
+    conditioning of A (~1e3 here) times the tolerance: 1e-8 relative."""
+    nx, ny, dx, dy, E = 12, 10, 0.1, 0.13, 3.0
+    x = (np.arange(nx) - 5.3)[:, None] * dx
+    y = (np.arange(ny) - 4.1)[None, :] * dy
+    h = x**2 / 6 + y**2 / 10 + 0.003 * x
+    A = _dense((nx, ny), dx, dy, E)
+    if control == "depth":
+        res = bem.solve(h, dx, E, depth=0.03, dy=dy, tol=1e-12)
+        d = 0.03
+    else:
+        res = bem.solve(h, dx, E, force=0.04, dy=dy, tol=1e-12)
+        d = res.depth
+    p = _contact_by_nnls(A, d - h.ravel()).reshape(nx, ny)
+    assert np.count_nonzero(p) > 10 and np.count_nonzero(p == 0) > 10  # a partial contact
+    scale = p.max()
+    assert np.max(np.abs(res.pressure - p)) < 1e-8 * scale
+    assert np.array_equal(res.contact, p > 1e-9 * scale)
+    assert abs(res.force / (p.sum() * dx * dy) - 1) < 1e-8
+    assert res.area == np.count_nonzero(res.contact) * dx * dy and res.depth == d
+    u = (A @ res.pressure.ravel()).reshape(nx, ny)
+    assert np.max(np.abs(res.displacement - u)) < 1e-12 * np.max(np.abs(u))
+    assert np.max(np.abs(res.gap - (h - d + u))) < 1e-8 * d
+    assert res.residual < 1e-12 and res.iterations > 1 and (res.dx, res.dy) == (dx, dy)
+    S = res.contact.ravel()
+    k = np.linalg.solve(A[np.ix_(S, S)], np.ones(S.sum())).sum() * dx * dy
+    assert abs(res.stiffness / k - 1) < 1e-8
+
+
+def test_polygon_area_and_footprint():
+    """The shoelace area of polygons away from the origin in both orientations against their
+    areas by hand; polygon_punch's footprint against the polygon: the pixel area within the
+    boundary pixels (perimeter times dx), the grid over the bounding box widened by the margin
+    on each side, square pixels, n pixels along the longer side; its errors."""
+    L = [(1.0, 1.0), (4.0, 1.0), (4.0, 2.0), (2.0, 2.0), (2.0, 3.0), (1.0, 3.0)]  # area 3 + 1
+    tri = [(1.0, 2.0), (3.0, 2.0), (1.0, 5.0)]  # area 3
+    for poly, area in ((L, 4.0), (tri, 3.0)):
+        assert abs(bem.polygon_area(poly) - area) < 1e-15 * area
+        assert abs(bem.polygon_area(poly[::-1]) - area) < 1e-15 * area
+    for margin in (0.0, 0.25):
+        h, dx = bem.polygon_punch(L, 60, margin=margin)
+        assert abs(dx - 3.0 * (1 + 2 * margin) / 60) < 1e-15
+        nx, ny = h.shape
+        # 3 x 2 box [m], widened by 2 margin of its sides, in pixels of dx
+        assert (nx, ny) == (60, int(np.ceil(2.0 * (1 + 2 * margin) / dx - 1e-9)))
+        inside = np.isfinite(h)
+        assert np.all(h[inside] == 0.0)
+        perimeter = 10.0
+        assert abs(inside.sum() * dx * dx - 4.0) < perimeter * dx
+        if margin == 0.0:  # pixels of 0.05 m centred on the box: no centre on an edge, and the
+            assert inside.sum() == 1600  # L's 4 m^2 is exactly 1600 pixels
+        # pixel centres: the footprint's centre of mass is the L's, (2.25, 1.75) [m]
+        xc = 2.5 + (np.arange(nx) - (nx - 1) / 2) * dx
+        yc = 2.0 + (np.arange(ny) - (ny - 1) / 2) * dx
+        X, Y = np.meshgrid(xc, yc, indexing="ij")
+        assert abs(X[inside].mean() - 2.25) < 2 * dx and abs(Y[inside].mean() - 1.75) < 2 * dx
+        # points well inside and well outside the L, by hand
+        for (px, py), want in (((1.5, 2.5), True), ((3.5, 1.5), True), ((3.0, 2.6), False),
+                               ((3.5, 2.9), False)):
+            i, j = int(np.argmin(abs(xc - px))), int(np.argmin(abs(yc - py)))
+            assert inside[i, j] == want, (px, py, margin)
+    h, dx = bem.polygon_punch(L, 2)
+    assert h.shape == (2, 2) and dx == 1.5  # n = 2 is the smallest grid; no margin by default
+    # the triangle (a slanted edge, unequal minima in x and y): its footprint's area and centre
+    h, dx = bem.polygon_punch(tri, 90)
+    inside = np.isfinite(h)
+    assert abs(inside.sum() * dx * dx - 3.0) < (5.0 + np.sqrt(13.0)) * dx
+    xc = 2.0 + (np.arange(h.shape[0]) - (h.shape[0] - 1) / 2) * dx
+    yc = 3.5 + (np.arange(h.shape[1]) - (h.shape[1] - 1) / 2) * dx
+    X, Y = np.meshgrid(xc, yc, indexing="ij")
+    assert abs(X[inside].mean() - 5 / 3) < 2 * dx and abs(Y[inside].mean() - 3.0) < 2 * dx
+    with pytest.raises(ValueError, match=r"^n = 1 is out of range; valid: n >= 2$"):
+        bem.polygon_punch(L, 1)
+    for bad in ([(0.0, 0.0), (1.0, 0.0)], [0.0, 1.0, 2.0], [(0, 0, 0), (1, 0, 0), (0, 1, 0)]):
+        with pytest.raises(ValueError, match=r"^vertices has shape .*; valid: \(k, 2\) with "
+                                             r"k >= 3$"):
+            bem.polygon_punch(bad, 8)
+
+
+def test_grid_and_height_map_files(tmp_path):
+    """grid: n x ny pixel centres symmetric about 0 with pitch length/n, width/ny;
+    read_height_map: the smallest grid (2 x 2) read, a single row refused with its 2-D shape,
+    a pickled (object) .npy refused."""
+    x, y, dx, dy = bem.grid(4, 1.0, ny=6, width=3.0)
+    assert x.shape == (4, 1) and y.shape == (1, 6) and (dx, dy) == (0.25, 0.5)
+    assert np.allclose(x.ravel(), [-0.375, -0.125, 0.125, 0.375], rtol=0, atol=1e-16)
+    assert np.allclose(y.ravel(), [-1.25, -0.75, -0.25, 0.25, 0.75, 1.25], rtol=0, atol=1e-16)
+    (tmp_path / "two.txt").write_text("0 1\n2 nan\n")
+    assert np.array_equal(bem.read_height_map(tmp_path / "two.txt"), [[0.0, 1.0], [2.0, np.inf]])
+    (tmp_path / "row.csv").write_text("0,1,2\n")
+    with pytest.raises(ValueError, match=r"heights of shape \(1, 3\); valid: a 2-D grid"):
+        bem.read_height_map(tmp_path / "row.csv")
+    np.save(tmp_path / "obj.npy", np.array([[0.0, {}], [1.0, 2.0]], dtype=object),
+            allow_pickle=True)
+    with pytest.raises(ValueError, match="allow_pickle"):
+        bem.read_height_map(tmp_path / "obj.npy")
+
+
+def test_punch_stiffness_refuses_an_empty_footprint():
+    with pytest.raises(ValueError, match=r"^mask has no pixel; valid: at least one True pixel$"):
+        bem.punch_stiffness(np.zeros((3, 3), dtype=bool), 1e-5, 1e11)
+
+
+def test_punch_stiffness_reports_its_residual_when_not_converged():
+    """One conjugate-gradient step on a 6 x 6 punch leaves a relative residual of a few percent
+    (measured 0.0395): reported, with the tolerance, when max_iter stops the iteration."""
+    with pytest.raises(RuntimeError, match=r"^punch_stiffness: residual 0\.0[1-9]\d* > tol = "
+                                           r"1e-14$"):
+        bem.punch_stiffness(np.ones((6, 6), dtype=bool), 1.0, 1.0, tol=1e-14, max_iter=1)
+
+
+def test_solve_messages():
+    """solve's refusals in full: -inf heights, no control or both, no pixel that can touch,
+    and a depth that does not reach below the lowest height (the bound itself refused)."""
+    h = np.array([[1e-6, 2e-6], [3e-6, 4e-6]])
+    for kw, msg in (
+            (dict(height=np.where(h > 3e-6, -np.inf, h), depth=1e-6),
+             "height contains -inf; valid: finite values, or +inf off a footprint"),
+            (dict(height=h), "give exactly one of depth= and force="),
+            (dict(height=h, depth=1e-6, force=1.0), "give exactly one of depth= and force="),
+            (dict(height=np.full((2, 2), np.inf), force=1.0),
+             "height is +inf everywhere: no pixel can touch")):
+        with pytest.raises(ValueError, match="^" + re.escape(msg) + "$"):
+            bem.solve(dx=1e-5, E_star=1e11, **kw)
+    with pytest.raises(ValueError, match=r"^depth = 1e-06 is out of range; valid: depth > "
+                                         r"min\(height\) = (np\.float64\()?1e-06\)? \(the "
+                                         r"indenter must touch\)$"):
+        bem.solve(h, 1e-5, 1e11, depth=1e-6)
+
+
+def test_solve_result_fields_and_non_convergence():
+    """Pixels off the footprint have an infinite gap; stiffness=False leaves it None; max_iter
+    reached raises with the residual and the tolerance."""
+    h, dx = bem.polygon_punch([(0.0, 0.0), (1e-3, 0.0), (0.0, 1e-3)], 12)
+    res = bem.solve(h, dx, 1e11, depth=1e-6, stiffness=False)
+    off = ~np.isfinite(h)
+    assert off.any() and np.all(res.gap[off] == np.inf) and np.all(np.isfinite(res.gap[~off]))
+    assert res.stiffness is None
+    with pytest.raises(RuntimeError, match=r"^bem\.solve: residual \S+ > tol = 1e-14 after "
+                                           r"max_iter = 1 iterations$"):
+        bem.solve(_sphere(16)[0], _sphere(16)[1], 1.0, depth=0.05, tol=1e-14, max_iter=1)

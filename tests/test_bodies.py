@@ -8,6 +8,8 @@
 - the Gaussian approximation: its force by 2-D quadrature of the pressure (5.31).
 """
 
+import re
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -18,6 +20,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import bodies, hertz
 
 from kernels import uz_axisymmetric
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -325,3 +328,101 @@ def test_gaussian_approximation_sweep():
     for name, (func, key) in cases.items():
         assert_mpmath_equal(func, lambda key=key, **kw: parts(**kw)[key], doms, rtol=TOL,
                             n=n_points(200, 20), dps=30, name=name)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N, rad)
+PUBLIC = [
+    (bodies.effective_modulus, dict(E1=2e11, nu1=0.3, E2=7e10, nu2=0.33)),
+    (bodies.effective_modulus, dict(E1=2e11, nu1=0.3)),
+    (bodies.effective_radius, dict(R1=0.01, R2=0.02)),
+    (bodies.principal_radii, dict(R1a=0.01, R1b=0.02, R2a=0.03, R2b=0.05, omega=0.3)),
+    (bodies.crossed_cylinder_radii, dict(R1=0.01, R2=0.02, alpha=0.7)),
+    (bodies.crossed_cylinders_gaussian_radius, dict(R1=0.01, R2=0.02, alpha=0.7)),
+    (bodies.gaussian_radius, dict(R1=0.01, R2=0.02)),
+    (bodies.gaussian_approx_semi_axes, dict(d=1e-6, R1=0.01, R2=0.02)),
+    (bodies.gaussian_approx_area, dict(d=1e-6, R1=0.01, R2=0.02)),
+    (bodies.gaussian_approx_max_pressure, dict(d=1e-6, R1=0.01, R2=0.02, E_star=1e11)),
+    (bodies.gaussian_approx_force, dict(d=1e-6, R1=0.01, R2=0.02, E_star=1e11)),
+    (bodies.gaussian_approx_depth_from_force, dict(F=1.0, R1=0.01, R2=0.02, E_star=1e11)),
+    (bodies.gaussian_approx_pressure, dict(x=1e-5, y=2e-5, d=1e-6, R1=0.01, R2=0.02,
+                                           E_star=1e11)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_effective_radius_refuses_gaps_that_open():
+    """1/R1 + 1/R2 <= 0 (a concave surface as curved as the convex one, or more) is refused,
+    naming the first offending pair; just inside the bound the radius is 1/(1/R1 + 1/R2), here
+    against mpmath (the bound itself and the values near it, not the formula, are the test)."""
+    msg = r"the sum of the curvatures 1/R1 \+ 1/R2 must be > 0 \(a concave surface must be " \
+          r"flatter than the convex one\)"
+    for R1, R2 in ((1.0, -1.0), (2.0, -1.0), (2.0, -1.5), (1.0, -0.5)):
+        with pytest.raises(ValueError, match=msg):
+            bodies.effective_radius(R1, R2)
+    # the first bad pair of an array, values shown (index 0 is fine, 1 and 2 are not)
+    first = r"^R1 = (np\.float64\()?2\.0\)?, R2 = (np\.float64\()?-1\.0\)?: " + msg
+    with pytest.raises(ValueError, match=first):
+        bodies.effective_radius([1.0, 2.0, 1.0], [-2.0, -1.0, -1.0])
+    with pytest.raises(ValueError, match=first):
+        bodies.effective_radius(np.array([0.5, 2.0]), -1.0)  # R2 broadcast
+    # a sum of exactly 0 is the first bad pair here (the bound itself is refused)
+    with pytest.raises(ValueError, match=r"^R1 = (np\.float64\()?1\.0\)?, R2 = "
+                                         r"(np\.float64\()?-1\.0\)?: " + msg):
+        bodies.effective_radius([1.0, 1.0, 2.0], [-2.0, -1.0, -1.0])
+    with mp.workdps(30):
+        for R1, R2 in ((1.0, -1.5), (2.0, -4.0), (0.5, 1.0)):
+            ref = 1 / (1 / mp.mpf(R1) + 1 / mp.mpf(R2))
+            # two divisions and a sum without cancellation (curvatures 1 and -2/3 at worst:
+            # a factor 3 on the rounding): 1e-15
+            assert_close(bodies.effective_radius(R1, R2), ref, 1e-15, f"R({R1}, {R2})")
+
+
+def test_effective_modulus_needs_nu2_unless_rigid():
+    msg = ("nu2 = None: give Poisson's ratio of body 2 (-1 < nu2 <= 0.5) unless body 2 is "
+           "rigid (E2 = None or inf)")
+    with pytest.raises(ValueError, match=f"^{re.escape(msg)}$"):
+        bodies.effective_modulus(1e9, 0.3, [np.inf, 1e9])  # one finite E2 is enough
+    assert bodies.effective_modulus(1e9, 0.3, np.inf) == bodies.effective_modulus(1e9, 0.3)
+
+
+def test_gap_radii_refuse_an_open_gap_and_take_planes_and_parallel_axes():
+    """A concave second body more curved than the first along one direction: the gap opens
+    (principal curvatures 1 - 1/0.5 < 0); planes (inf) and parallel or antiparallel axes
+    (alpha = 0, pi: a line contact) are in the domain. Radii by (5.32) and by hand."""
+    not_convex = (r"the gap is not convex \(principal curvatures .*0\.5.*, .*-1\.0.* \[1/m\]\); "
+                  r"both must be >= 0 and the larger > 0 for the bodies to touch in a point or "
+                  r"a line")
+    # (the message may also list the inputs before the reason)
+    with pytest.raises(ValueError, match="^principal_radii: (.*: )?" + not_convex):
+        bodies.principal_radii(1.0, 1.0, -2.0, -0.5)
+    with pytest.raises(ValueError, match="^omega = inf: must be finite$"):
+        bodies.principal_radii(1.0, 1.0, 1.0, 1.0, omega=np.inf)
+    # omega defaults to 0: aligned principal directions, 1/R_i = 1/R1x + 1/R2x (5.32)
+    R_1, R_2 = bodies.principal_radii(0.01, 0.02, 0.03, 0.05)
+    assert_close(R_1, 1 / (1 / mp.mpf("0.01") + 1 / mp.mpf("0.03")), 1e-15, "R_1")
+    assert_close(R_2, 1 / (1 / mp.mpf("0.02") + 1 / mp.mpf("0.05")), 1e-15, "R_2")
+    # a cylinder on a plane (either one given as inf): R_1 = the cylinder's, R_2 = inf
+    assert bodies.crossed_cylinder_radii(np.inf, 0.02, 0.7) == (0.02, np.inf)
+    assert bodies.crossed_cylinder_radii(0.02, np.inf, 0.7) == (0.02, np.inf)
+    # parallel and antiparallel axes: R_1 = R1 R2/(R1 + R2), R_2 = inf or huge (sin(pi) != 0)
+    for alpha in (0.0, np.pi):
+        R_1, R_2 = bodies.crossed_cylinder_radii(0.01, 0.02, alpha)
+        assert_close(R_1, mp.mpf("0.01") * mp.mpf("0.02") / mp.mpf("0.03"), 1e-15, "R_1")
+        assert R_2 > 1e29
+
+
+def test_cylinders_crossed_at_a_vanishing_angle():
+    """k2 ~ alpha^2 below 1/DBL_MAX: R_2 = inf (the line-contact limit) without an overflow
+    warning (pytest turns warnings into errors); R_1 = R/2 for equal cylinders."""
+    R_1, R_2 = bodies.crossed_cylinder_radii(1.0, 1.0, 1e-155)
+    assert R_2 == np.inf and abs(R_1 - 0.5) < 1e-15
+
+
+def test_gaussian_pressure_refuses_infinite_coordinates():
+    for name, args in (("x", (np.inf, 0.0)), ("y", (0.0, -np.inf))):
+        with pytest.raises(ValueError, match=f"^{name} must be finite$"):
+            bodies.gaussian_approx_pressure(*args, 1e-6, 0.01, 0.02, 1e11)

@@ -22,6 +22,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import cone
 
 from kernels import uz_axisymmetric
+from named import assert_inputs_named
 from oracle import FULL, Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -167,3 +168,39 @@ def test_cone_mean_pressure_sweep():
 
     assert_mpmath_equal(gen.cone_mean_pressure, ref, {"E_star": E_DOM, "theta": THETA},
                         rtol=TOL, n=n_points(100, 15), dps=35, name="cone_mean_pressure")
+
+
+# the public functions with one valid set of inputs each (SI: m, rad, Pa, N)
+PUBLIC = [
+    (cone.contact_radius, dict(d=1e-6, theta=0.1)),
+    (cone.depth, dict(a=1e-5, theta=0.1)),
+    (cone.force, dict(d=1e-6, theta=0.1, E_star=1e11)),
+    (cone.pressure, dict(r=1e-6, d=1e-6, theta=0.1, E_star=1e11)),
+    (cone.mean_pressure, dict(theta=0.1, E_star=1e11)),
+    (cone.stiffness, dict(d=1e-6, theta=0.1, E_star=1e11)),
+    (cone.depth_from_force, dict(F=1.0, theta=0.1, E_star=1e11)),
+    (cone.contact_radius_from_force, dict(F=1.0, theta=0.1, E_star=1e11)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_public_functions_against_the_kernel_reference():
+    """The validated wrappers (the tests above check the generated functions), at inputs of
+    distinct magnitudes so that an input passed in the wrong place changes the value: a and F
+    from the kernel constant and the quadrature of the pressure, F/(pi a^2), 2 a E*."""
+    E, d, theta = 3e9, 2e-6, 0.3
+    with mp.workdps(30):
+        a, F = reference(mp.mpf(E), mp.mpf(d), mp.mpf(theta))
+        p_half = E * mp.tan(mp.mpf(theta)) / 2 * mp.acosh(2)  # (5.39) at r = a/2
+    assert_close(cone.contact_radius(d, theta), a, TOL, "(5.38)")
+    assert_close(cone.depth(float(a), theta), d, TOL, "(5.38) inverted")
+    assert_close(cone.force(d, theta, E), F, TOL, "(5.40)")
+    assert_close(cone.mean_pressure(theta, E), F / (mp.pi * a**2), TOL, "F/(pi a^2)")
+    assert_close(cone.stiffness(d, theta, E), 2 * a * E, TOL, "Problem 5: 2 a E*")
+    assert_close(cone.depth_from_force(float(F), theta, E), d, TOL, "(5.40) inverted")
+    assert_close(cone.contact_radius_from_force(float(F), theta, E), a, TOL, "a(F)")
+    assert_close(cone.pressure(float(a) / 2, d, theta, E), p_half, TOL, "(5.39)")

@@ -21,6 +21,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import ellipse, hertz
 
 from kernels import hertz_reference
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 
@@ -309,3 +310,117 @@ def test_gaussian_approximation():
 def test_bad_input_is_named(bad, message):
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace("[", r"\[")):
         ellipse.solve(**bad)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (ellipse.axis_ratio, dict(R1=0.01, R2=0.03)),
+    (ellipse.eccentricity, dict(R1=0.01, R2=0.03)),
+    (ellipse.gaussian_radius, dict(R1=0.01, R2=0.03)),
+    (ellipse.solve, dict(R1=0.01, R2=0.03, E_star=1e11, depth=1e-6)),
+    (ellipse.solve, dict(R1=0.01, R2=0.03, E_star=1e11, force=1.0)),
+    (lambda x, y: ellipse.solve(0.01, 0.03, 1e11, depth=1e-6).pressure(x, y),
+     dict(x=1e-5, y=2e-5)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[
+    "axis_ratio", "eccentricity", "gaussian_radius", "solve_depth", "solve_force", "pressure"])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_public_solve_against_the_mpmath_state():
+    """The validated ellipse.solve (the sweeps above check the generated functions) against
+    Johnson's state at t = b/a = 0.3: the radii R1 (major) and R2 = R1 t^2 D/B of that state,
+    given in both orders (x along R1 either way), depth- and force-controlled; F by quadrature
+    of the pressure, the mean pressure F/(pi a b), the area pi a b, the stiffness dF/dd by
+    differentiation, the eccentricity sqrt(1 - t^2). Error model as in _sweep (1e-12), with
+    R2 rounded to float64 (t moves by about an ulp)."""
+    E, Rmaj, d = 2e11, 0.3, 1e-6
+    with mp.workdps(30):
+        t = mp.mpf("0.3")
+        a, b, p0, Rmin = ref_state(mp.mpf(E), mp.mpf(Rmaj), mp.mpf(d), t)
+        F = ref_force(mp.mpf(E), mp.mpf(Rmaj), mp.mpf(d), t)
+        k = mp.diff(lambda x: ref_force(mp.mpf(E), mp.mpf(Rmaj), x, t), mp.mpf(d))
+        ref = {"depth": mp.mpf(d), "force": F, "max_pressure": p0,
+               "mean_pressure": F / (mp.pi * a * b), "area": mp.pi * a * b, "stiffness": k}
+    Rmin = float(Rmin)
+    for R1, R2, ax, by in ((Rmaj, Rmin, a, b), (Rmin, Rmaj, b, a)):
+        for c in (ellipse.solve(R1, R2, E, depth=d), ellipse.solve(R1, R2, E, force=float(F))):
+            for name, value in {**ref, "a": ax, "b": by}.items():
+                assert_close(getattr(c, name), value, 1e-12, f"{name}, R1={R1}")
+            assert (c.R1, c.R2, c.E_star, c.model) == (R1, R2, E, "exact")
+        assert_close(ellipse.eccentricity(R1, R2), mp.sqrt(1 - t**2), 1e-12, "e")
+        assert_close(ellipse.axis_ratio(R1, R2), t, 1e-12, "b/a")
+
+
+def test_pressure_of_the_result_in_both_orientations_and_models():
+    """EllipticContact.pressure with x along R1 whichever radius is larger (the generated form
+    has x along the major axis) against p0 sqrt(1 - x^2/a^2 - y^2/b^2) of Johnson's mpmath
+    state; and the Gaussian model's, whose semi-axes are sqrt(R1 d), sqrt(R2 d) (5.28) and p0
+    Hertz's (5.22) with R~ = sqrt(R1 R2) (5.30), from hertz.py. Error model as in _sweep."""
+    E, Rmaj, d = 2e11, 0.3, 1e-6
+    with mp.workdps(30):
+        t = mp.mpf("0.3")
+        a, b, p0, Rmin = ref_state(mp.mpf(E), mp.mpf(Rmaj), mp.mpf(d), t)
+    Rmin = float(Rmin)
+    pts = [(0.3, 0.4), (0.9, 0.1), (0.1, 0.9)]  # fractions of the semi-axes along x and y
+    for R1, R2, ax, by in ((Rmaj, Rmin, a, b), (Rmin, Rmaj, b, a)):
+        c = ellipse.solve(R1, R2, E, depth=d)
+        x = np.array([fx * float(ax) for fx, _ in pts])
+        y = np.array([fy * float(by) for _, fy in pts])
+        got = c.pressure(x, y)
+        for (fx, fy), g in zip(pts, got, strict=True):
+            with mp.workdps(30):
+                ref = p0 * mp.sqrt(1 - mp.mpf(fx) ** 2 - mp.mpf(fy) ** 2)
+            assert_close(g, ref, 1e-12, f"R1={R1}: p at ({fx} a, {fy} b)")
+    R1, R2 = 0.01, 0.04
+    g = ellipse.solve(R1, R2, E, depth=d, model="gaussian")
+    ag, bg = np.sqrt(R1 * d), np.sqrt(R2 * d)
+    p0g = hertz.max_pressure(d, np.sqrt(R1 * R2), E)
+    for fx, fy in pts:
+        ref = p0g * np.sqrt(1 - fx**2 - fy**2)
+        assert abs(g.pressure(fx * ag, fy * bg) / ref - 1) < 1e-14, (fx, fy)
+    assert g.pressure(1.01 * ag, 0.0) == 0.0 and g.pressure(0.0, 1.01 * bg) == 0.0
+
+
+@pytest.mark.parametrize("arg", ["R1", "R2", "E_star", "depth"])
+def test_solve_broadcasts_each_input(arg):
+    """Any one input an array: every attribute has its shape and each element is the scalar
+    solution for that element (so an input left out of the broadcast shape fails)."""
+    base = dict(R1=0.01, R2=0.03, E_star=1e11, depth=1e-6)
+    values = [0.5 * base[arg], base[arg], 3 * base[arg]]
+    c = ellipse.solve(**{**base, arg: np.array(values)})
+    for name in ("a", "b", "depth", "force", "max_pressure", "stiffness", "area", "R1", "R2",
+                 "E_star"):
+        got = getattr(c, name)
+        assert np.shape(got) == (3,), name
+        for v, g in zip(values, got, strict=True):
+            one = getattr(ellipse.solve(**{**base, arg: v}), name)
+            assert abs(g / one - 1) < 1e-15, (name, v)  # the same operations, elementwise
+
+
+def test_radius_ratio_out_of_range_names_the_first_bad_ratio():
+    """The bound itself (1e8) is valid; the first ratio beyond it is named."""
+    with pytest.raises(ValueError, match=r"^R1/R2 = (np\.float64\()?1000000000\.0\)? \(or its "
+                                         r"inverse\) is out of range; valid: 1/1e\+08 <= R1/R2 "
+                                         r"<= 1e\+08$"):
+        ellipse.axis_ratio(np.array([1.0, 1e8, 1e9, 1e10]), 1.0)
+    assert ellipse.axis_ratio(1e8, 1.0) > 0
+
+
+def test_solve_messages_in_both_models():
+    """The errors of solve in full (anchored): the control, and each input named in the
+    Gaussian model too; an array of R2 with R1 a scalar names its bad ratio."""
+    for model in ("exact", "gaussian"):
+        with pytest.raises(ValueError, match="^give exactly one of depth= and force=$"):
+            ellipse.solve(0.01, 0.03, 1e11, model=model)
+        for by in (dict(depth=1e-6), dict(force=1.0)):
+            assert_inputs_named(lambda R1, R2, E_star, by=by, model=model: ellipse.solve(
+                R1, R2, E_star, model=model, **by), dict(R1=0.01, R2=0.03, E_star=1e11))
+            name = next(iter(by))
+            with pytest.raises(ValueError, match=f"^{name} = nan is out of range"):
+                ellipse.solve(0.01, 0.03, 1e11, model=model, **{name: np.nan})
+    with pytest.raises(ValueError, match=r"^R1/R2 = .* \(or its inverse\) is out of range"):
+        ellipse.axis_ratio(1.0, np.array([1.0, 1e-10]))

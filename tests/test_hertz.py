@@ -15,6 +15,7 @@ from hertzmdr.numeric import hertz
 
 from kernels import hertz_reference as reference
 from kernels import uz_axisymmetric
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 # Domains spanning the decades the issue asks for; d/R <= 0.1 keeps the half-space assumption.
@@ -157,3 +158,44 @@ def test_surface_displacement_continuous_and_far_field():
 def test_bad_input_is_named(bad, message):
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace("[", r"\[")):
         hertz.force(**bad)
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (hertz.contact_radius, dict(d=1e-6, R=0.01)),
+    (hertz.max_pressure, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (hertz.mean_pressure, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (hertz.force, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (hertz.energy, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (hertz.stiffness, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (hertz.depth_from_force, dict(F=10.0, R=0.01, E_star=1e11)),
+    (hertz.contact_radius_from_force, dict(F=10.0, R=0.01, E_star=1e11)),
+    (hertz.max_pressure_from_force, dict(F=10.0, R=0.01, E_star=1e11)),
+    (hertz.pressure, dict(r=1e-5, d=1e-6, R=0.01, E_star=1e11)),
+    (hertz.surface_displacement, dict(r=1e-5, d=1e-6, R=0.01)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_public_functions_against_the_kernel_reference():
+    """The validated wrappers (not the generated functions) at inputs of distinct magnitudes,
+    so an input passed in the wrong place changes the value: mean pressure against F/(pi a^2),
+    energy against the work of F, stiffness against the punch 2 a E*, all from the Boussinesq
+    kernel reference; the pressure against p0 sqrt(1 - r^2/a^2) of that reference."""
+    E, R = 2e11, 0.01
+    for d in (1e-9, 1e-6, 1e-4):
+        with mp.workdps(30):
+            a, p0, F = reference(E, R, d)
+            U = mp.quad(lambda x: reference(E, R, x)[2], [0, d])
+            r = a / 3
+            p_r = p0 * mp.sqrt(1 - (r / a) ** 2)
+        assert_close(hertz.mean_pressure(d, R, E), F / (mp.pi * a**2), TOL, "F/(pi a^2)")
+        assert_close(hertz.energy(d, R, E), U, TOL, "(5.25) by work")
+        assert_close(hertz.stiffness(d, R, E), 2 * a * E, TOL, "2 a E*")
+        assert_close(hertz.pressure(float(r), d, R, E), p_r, TOL, "(5.15)")
+        assert_close(hertz.max_pressure(d, R, E), p0, TOL, "(5.22)")
+

@@ -13,6 +13,7 @@ a = sqrt(R d) (5.35).
 from functools import cache
 
 import mpmath as mp
+import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -20,6 +21,7 @@ from hypothesis import strategies as st
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import line
 
+from named import assert_inputs_named
 from oracle import Arg, assert_close, assert_mpmath_equal, n_points
 
 E_DOM = Arg(1e3, 1e12)
@@ -195,3 +197,43 @@ def test_line_half_width_forms_sweep():
 
     assert_mpmath_equal(p_float, p_ref, {**doms, "frac": Arg(0.0, 0.9, log=False)}, rtol=TOL,
                         n=n, dps=35, name="line_pressure")
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N)
+PUBLIC = [
+    (line.half_width, dict(d=1e-6, R=0.01)),
+    (line.force, dict(d=1e-6, L=0.02, E_star=1e11)),
+    (line.depth_from_force, dict(F=10.0, L=0.02, E_star=1e11)),
+    (line.half_width_from_force, dict(F=10.0, L=0.02, R=0.01, E_star=1e11)),
+    (line.max_pressure, dict(d=1e-6, R=0.01, E_star=1e11)),
+    (line.max_pressure_from_force, dict(F=10.0, L=0.02, R=0.01, E_star=1e11)),
+    (line.pressure, dict(x=1e-5, d=1e-6, R=0.01, E_star=1e11)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_public_functions_against_the_gradient_reference():
+    """The validated wrappers (the tests above check the generated functions), at inputs of
+    distinct magnitudes so that an input in the wrong place changes the value, against p0 and
+    F/L of the pressure that reproduces du/dx = -x/R (reference above), a = sqrt(R d) (5.35)."""
+    E, R, d, L = 2.1e11, 0.05, 1e-6, 0.02
+    with mp.workdps(30):
+        a = mp.sqrt(mp.mpf(R) * d)
+        p0, F_L = reference(mp.mpf(E), mp.mpf(R), a)
+        F = F_L * L
+        x = a / 3
+        p_x = p0 * mp.sqrt(1 - (x / a) ** 2)
+    assert_close(line.half_width(d, R), a, TOL, "(5.35)")
+    assert_close(line.force(d, L, E), F, TOL, "(5.37)")
+    assert_close(line.max_pressure(d, R, E), p0, TOL, "p0")
+    assert_close(line.depth_from_force(float(F), L, E), d, TOL, "(5.37) inverted")
+    assert_close(line.half_width_from_force(float(F), L, R, E), a, TOL, "a(F)")
+    assert_close(line.max_pressure_from_force(float(F), L, R, E), p0, TOL, "p0(F)")
+    assert_close(line.pressure(float(x), d, R, E), p_x, TOL, "(5.36)")
+    assert line.pressure(float(a) * 1.001, d, R, E) == 0.0
+    with pytest.raises(ValueError, match="x = .*must be finite"):
+        line.pressure(np.inf, d, R, E)

@@ -21,9 +21,10 @@ from hypothesis import strategies as st
 from hertzmdr.derive import powerlaw as dp
 from hertzmdr.derive.symbols import E_star, a, d, r
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric import powerlaw
+from hertzmdr.numeric import cone, hertz, powerlaw
 
 from kernels import force_axisymmetric, uz_axisymmetric
+from named import assert_inputs_named
 from oracle import FULL, WORST, Arg, assert_close, assert_mpmath_equal, n_points
 
 DPS = 30
@@ -290,3 +291,102 @@ def test_displacement_outside_large_n(n):
         # cancel to a part n/(n + 1) of each: ~1e-12 for n = 2.5 measured, 1e-13 elsewhere
         assert_close(got, displacement_outside_reference(r, d, a, n), 2e-11,
                      f"u_z(r = a(1 + {k:g})), n = {n:g}")
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa, N; c_n in m^(1-n))
+PUBLIC = [
+    (powerlaw.kappa, dict(n=3.0)),
+    (powerlaw.g_profile, dict(x=1e-4, c_n=10.0, n=3.0)),
+    (powerlaw.contact_radius, dict(d=1e-6, c_n=10.0, n=3.0)),
+    (powerlaw.force, dict(d=1e-6, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.force_from_radius, dict(a=1e-3, d=1e-6, n=3.0, E_star=1e11)),
+    (powerlaw.depth_from_force, dict(F=1.0, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.mean_pressure, dict(d=1e-6, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.pressure, dict(r=1e-4, d=1e-6, c_n=10.0, n=3.0, E_star=1e11)),
+    (powerlaw.pressure_normalized, dict(r_tilde=0.5, n=3.0)),
+    (powerlaw.surface_displacement, dict(r=1e-4, d=1e-6, c_n=10.0, n=3.0)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_pressure_large_n_at_si_scale_in_one_call():
+    """The quadrature branch (n > 40) at SI scale, a = 0.2 mm, d = 1 um, E* = 100 GPa (the
+    test above has a = 1.5: a factor a^2 misplaced in the panel layout goes unseen there), with
+    several radii and exponents in one call (each row its own integral); against the 30-digit
+    (5.59) reference. Called with a, as above: c_n = d/(kappa a^n) underflows at this scale.
+    Tolerance as above, 1e-14."""
+    E, aa, dd = 1e11, 2e-4, 1e-6
+    rt = np.array([0.0, 0.3, 0.9, 0.999, 1 - 1e-7])
+    n = np.array([100.0, 1e4])
+    R, N = np.meshgrid(rt * aa, n)
+    got = powerlaw._pressure_at(R.ravel(), np.full(R.size, aa), np.full(R.size, dd), N.ravel(),
+                                np.full(R.size, E))
+    for rr, nn, g in zip(R.ravel(), N.ravel(), got, strict=True):
+        assert_close(g, _abel_reference(E, aa, dd, nn, rr), 1e-14, f"n={nn}, r/a={rr / aa}")
+
+
+def test_normalized_pressure_of_the_punch():
+    """n = inf is the flat punch: p/p_mean = 1/(2 sqrt(1 - r~^2)) (p = F/(2 pi a sqrt(a^2 -
+    r^2)), p_mean = F/(pi a^2)); alongside a finite n in the same call, whose value is the
+    quadrature of Fig. 5.17 (as in test_normalized_pressure_by_quadrature)."""
+    rt = np.array([0.0, 0.5, 0.9])
+    got = powerlaw.pressure_normalized(rt, np.inf)
+    for x, g in zip(rt, got, strict=True):
+        with mp.workdps(30):
+            assert_close(g, 1 / (2 * mp.sqrt(1 - mp.mpf(x) ** 2)), 1e-14, f"punch r~={x}")
+    mixed = powerlaw.pressure_normalized(0.5, np.array([np.inf, 3.0]))
+    with mp.workdps(30):
+        ref3 = 2 * mp.quad(lambda s: (mp.mpf("0.5") * mp.cosh(s)) ** 2, [0, mp.acosh(2)])
+    assert_close(mixed[0], 1 / (2 * mp.sqrt(mp.mpf("0.75"))), 1e-14, "punch")
+    assert_close(mixed[1], ref3, 1e-13, "n = 3")
+
+
+def test_special_cases_are_hertz_cone_and_punch():
+    """Fast cross-checks with the other modules, inside and outside the contact in one call:
+    n = 2 is the Hertz paraboloid with R = 1/(2 c) (hertz.py), n = 1 the cone with
+    tan(theta) = c (cone.py), n = inf the flat punch of radius c: u = d inside and
+    (2 d/pi) asin(a/r) outside (Problem 7(a)). Different generated forms, so a few ulps apart
+    (1e-14); 1e-13 for the 2F1 forms near the rim."""
+    E, d = 1e11, 1e-6
+    c2 = 25.0  # [1/m]: R = 0.02 m
+    R = 1 / (2 * c2)
+    a2 = float(hertz.contact_radius(d, R))
+    r = a2 * np.array([0.0, 0.3, 0.9, 1.5, 40.0])
+    assert np.allclose(powerlaw.surface_displacement(r, d, c2, 2.0),
+                       hertz.surface_displacement(r, d, R), rtol=1e-14, atol=0)
+    assert np.allclose(powerlaw.pressure(r, d, c2, 2.0, E), hertz.pressure(r, d, R, E),
+                       rtol=1e-13, atol=0)
+    assert_close(powerlaw.force(d, c2, 2.0, E), hertz.force(d, R, E), 1e-14, "F, n = 2")
+    assert_close(powerlaw.contact_radius(d, c2, 2.0), a2, 1e-14, "a, n = 2")
+    assert_close(powerlaw.mean_pressure(d, c2, 2.0, E), hertz.mean_pressure(d, R, E), 1e-14,
+                 "mean pressure, n = 2")
+    assert_close(powerlaw.depth_from_force(float(hertz.force(d, R, E)), c2, 2.0, E), d, 1e-14,
+                 "d(F), n = 2")
+    theta = 0.2
+    c1 = float(np.tan(theta))
+    a1 = float(cone.contact_radius(d, theta))
+    r = a1 * np.array([0.3, 0.9, 1.5])
+    assert np.allclose(powerlaw.pressure(r, d, c1, 1.0, E), cone.pressure(r, d, theta, E),
+                       rtol=1e-14, atol=0)
+    assert_close(powerlaw.force(d, c1, 1.0, E), cone.force(d, theta, E), 1e-14, "F, n = 1")
+    assert_close(powerlaw.mean_pressure(d, c1, 1.0, E), cone.mean_pressure(theta, E), 1e-14,
+                 "mean pressure, n = 1")
+    a = 1e-3  # the punch radius, passed as c_n
+    r = np.array([0.0, 0.5e-3, 1e-3, 2e-3, 10e-3])
+    u = powerlaw.surface_displacement(r, d, a, np.inf)
+    assert np.all(u[:3] == d)
+    with mp.workdps(30):
+        for rr, uu in zip(r[3:], u[3:], strict=True):
+            assert_close(uu, 2 * d / mp.pi * mp.asin(a / mp.mpf(rr)), 1e-14, f"punch u({rr})")
+
+
+def test_mean_pressure_needs_a_positive_depth():
+    """At d = 0 there is no contact and no mean pressure: refused, naming d (contact_radius
+    alone accepts d = 0)."""
+    assert powerlaw.contact_radius(0.0, 10.0, 3.0) == 0.0
+    with pytest.raises(ValueError, match=r"^d = 0\.0 is out of range; valid: d > 0 and finite$"):
+        powerlaw.mean_pressure(0.0, 10.0, 3.0, 1e11)

@@ -21,6 +21,7 @@ from hertzmdr.derive.symbols import F, a, nu, p0, r, z
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import stress
 
+from named import assert_inputs_named
 from oracle import WORST, Arg, assert_close, assert_mpmath_equal, n_points
 
 
@@ -362,3 +363,75 @@ def test_axis_maximum_shear_bracket():
         zf, _ = stress.axis_max_shear(nu_)
         # a simple root to 4 ulp of the slope by Brent, with a relative tolerance: ~1e-15
         assert_close(zf, root, 1e-14, f"z/a at nu = {nu_!r}")
+
+
+# the public functions with one valid set of inputs each (SI: m, Pa; nu dimensionless)
+PUBLIC = [
+    (stress.spheroidal, dict(r=0.5, z=0.3, a=1.0)),
+    (stress.hertz_stress_cylindrical, dict(r=0.5, z=0.3, a=1.0, p0=1e9, nu=0.3)),
+    (stress.hertz_stress, dict(x=0.5, y=0.2, z=0.3, a=1.0, p0=1e9, nu=0.3)),
+    (stress.axis_stresses, dict(z=0.3, a=1.0, p0=1e9, nu=0.3)),
+    (stress.axis_max_shear, dict(nu=0.3)),
+]
+
+
+@pytest.mark.parametrize("func, valid", PUBLIC, ids=[f.__name__ for f, _ in PUBLIC])
+def test_each_input_named_in_its_error(func, valid):
+    assert_inputs_named(func, valid)
+
+
+def test_max_shear_of_known_principal_stresses():
+    """max_shear is half the spread of the principal stresses: a tensor built from chosen
+    principal values (1, -2, 3) Pa in a rotated frame has (3 - (-2))/2 = 2.5 Pa; tresca 5 Pa.
+    Rotation and eigenvalues in float64: a few ulps of 5 (1e-14)."""
+    c, s = np.cos(0.7), np.sin(0.7)
+    Q = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) @ np.array(
+        [[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    sig = Q @ np.diag([1.0, -2.0, 3.0]) @ Q.T
+    assert abs(stress.max_shear(sig) - 2.5) < 1e-14
+    assert abs(stress.tresca(sig) - 5.0) < 1e-14
+    both = stress.max_shear(np.stack([sig, 2 * sig]))
+    assert np.allclose(both, [2.5, 5.0], rtol=1e-14, atol=0)
+
+
+def test_hertz_maximum_refuses_an_unknown_criterion():
+    with pytest.raises(ValueError, match=r"^criterion = 'rankine'; valid: \['max_shear', "
+                                         r"'tresca', 'von_mises'\]$"):
+        stress.hertz_maximum(0.3, "rankine")
+
+
+def test_superposition_fills_both_rules_and_its_estimate_is_tight():
+    """Three field points not used elsewhere, right after freeing an array of NaN of the size
+    of the routine's work array (NumPy's allocator tends to hand that memory back, so a rule
+    never written shows up as NaN instead of a stale result). Against the closed form; the
+    error estimate (the change from the coarse rule) is not only an upper bound but small:
+    both rules are converged here (measured 8e-16 p0), so below 1e-12 p0 as the test above."""
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    pts = np.array([[0.6, 0.2, 0.3], [0.1, 0.0, 0.5], [1.2, -0.4, 0.25]])
+    junk = np.full((3, 2, 4), np.nan)
+    del junk
+    sig, err = stress.superposed_stress(pts[:, 0], pts[:, 1], pts[:, 2], hp, 1.0, 0.3)
+    ref = stress.hertz_stress(pts[:, 0], pts[:, 1], pts[:, 2], 1.0, 1.0, 0.3)
+    assert np.all(np.isfinite(sig)) and np.all(np.isfinite(err))
+    assert np.abs(sig - ref).max() < 1e-12
+    assert np.all(np.abs(sig - ref) <= err + 1e-14)
+    assert err.max() < 1e-12
+
+
+def test_more_inputs_named_and_the_criteria_by_name():
+    """Inputs of the tensor criteria, hertz_maximum and superposed_stress named in their errors;
+    hertz_maximum's default criterion is von Mises, and "max_shear" is half of Tresca (the
+    maximum of sigma_1 - sigma_3 over the body, by the same search)."""
+    sig = np.diag([1.0, -2.0, 3.0])
+    assert_inputs_named(stress.von_mises, dict(sigma=sig))
+    assert_inputs_named(stress.tresca, dict(sigma=sig))
+    assert_inputs_named(lambda nu: stress.hertz_maximum(nu, "tresca"), dict(nu=0.3))
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    assert_inputs_named(lambda x, y, z, a, nu: stress.superposed_stress(x, y, z, hp, a, nu,
+                                                                        n_psi=8, level=2),
+                        dict(x=0.2, y=0.1, z=0.3, a=1.0, nu=0.3))
+    assert stress.hertz_maximum(0.3) == stress.hertz_maximum(0.3, "von_mises")
+    shear, r_s, z_s = stress.hertz_maximum(0.3, "max_shear")
+    tres, r_t, z_t = stress.hertz_maximum(0.3, "tresca")
+    # the same peak found twice by Nelder-Mead (flat there: 1e-13 in value, as above)
+    assert abs(2 * shear / tres - 1) < 1e-13
