@@ -77,12 +77,15 @@ class HertzStresses:
 
 class SuperposedStresses:
     """Any axisymmetric pressure p(r) on r < a by superposition of (5.41)-(5.46); its error is
-    its own estimate (tanh-sinh), whatever rtol asks (``met_rtol`` says whether it met it)."""
+    its own estimate (tanh-sinh), whatever rtol asks (``met_rtol`` says whether it met it),
+    plus ``pressure_error``, the relative error of p itself (0 for a closed form's p, exact to
+    rounding; a numerical MDR's bound relative to its largest p)."""
 
     ranges: dict[str, float] = {}
 
-    def __init__(self, pressure, a, nu):
+    def __init__(self, pressure, a, nu, pressure_error=0.0):
         self.p, self.a, self.nu = pressure, a, nu
+        self.pressure_error = pressure_error
         self.method = "superposition of the point-force field (5.47), tanh-sinh"
 
     def _stress(self, x, z):
@@ -95,7 +98,7 @@ class SuperposedStresses:
         s, e = self._stress(0.0 * z, z)
         szz, srr = s[..., 2, 2], s[..., 0, 0]
         scale = float(np.max(np.abs(szz)))
-        err = float(np.max(e[..., 2, 2] + e[..., 0, 0])) / scale
+        err = float(np.max(e[..., 2, 2] + e[..., 0, 0])) / scale + self.pressure_error
         return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": _tau_1(szz, srr)},
                      self.method, err)
 
@@ -108,7 +111,7 @@ class SuperposedStresses:
         s, e = self._stress(X, Z)
         sv = stress.von_mises(s)
         tau = stress.max_shear(s)
-        err = float(np.max(np.abs(e))) / float(np.max(np.abs(s)))
+        err = float(np.max(np.abs(e))) / float(np.max(np.abs(s))) + self.pressure_error
         return x, z, sv, tau, err
 
     def max_shear(self):
