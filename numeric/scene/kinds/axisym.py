@@ -40,8 +40,18 @@ class Axisymmetric(StressEffects, Contact):
     off_axis = True
     #: a radius where p is log-infinite (a kink of the profile), kept off the profile's grid
     kink: float | None = None
-    #: whether the force-depth curve starts at d = 0 (else at its first step)
     curve_from_zero = False
+
+    @property
+    def curve_method(self):
+        return self.methods.get("force_depth_curve", self.method)
+
+    @property
+    def pressure_method(self):
+        return self.methods["pressure_profile"]
+
+    def extent(self, d):
+        return self.a_at(d)
 
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)
@@ -85,31 +95,18 @@ class Axisymmetric(StressEffects, Contact):
 
     def pressure_radii(self, a: float) -> np.ndarray:
         """The radii of a pressure profile: 0 to 1.5 a, kept off the axis and off a kink."""
-        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+        r = super().pressure_radii(a)
         if self.off_axis:
             r[0] = a * 1e-3
         if self.kink is not None:  # p is log-infinite there: such a point moves by 1e-3 step
             r[np.abs(r - self.kink) <= 1e-12 * a] += 1e-3 * (r[1] - r[0])
         return r
 
-    def effect_pressure_profile(self, st):
-        d = self.last(st)
-        r = self.pressure_radii(self.a_at(d))
-        return Value({"r": r, "p": np.asarray(self.p(r, d), float)},
-                     self.methods["pressure_profile"], st.rel_error)
-
     def effect_surface_displacement(self, st):
         d = self.last(st)
         r = np.linspace(0.0, 4.0 * self.a_at(d), FIELD_POINTS)
         return Value({"r": r, "u": np.asarray(self.u(r, d), float)},
                      self.methods["surface_displacement"], st.rel_error)
-
-    def effect_force_depth_curve(self, st):
-        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
-        if not self.curve_from_zero:
-            d = d[1:]
-        return Value({"depth": d, "force": np.asarray(self.force_of(d), float)},
-                     self.methods.get("force_depth_curve", self.method), st.rel_error)
 
     def effect_mdr_profile(self, st):
         a = self.a_at(self.last(st))
