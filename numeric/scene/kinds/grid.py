@@ -27,7 +27,7 @@ class GridState(State):
 class GridContact(Contact):
     kind = "bem"
     instead = {"contact_radius": "contact_area", "half_width": "contact_area",
-               "semi_axes": "contact_area", "force_depth_curve": "force"}
+               "semi_axes": "contact_area"}
     why_not = {"contact_radius": "the contact is not a circle: its area is",
                "max_pressure": "a flat punch's pressure is singular at its edge; on a grid its "
                                "largest value only measures the pixel size",
