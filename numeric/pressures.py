@@ -16,7 +16,7 @@ import numpy as np
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import nonnegative, positive, result
 
-__all__ = ["DISTRIBUTIONS", "pressure", "force", "surface_displacement"]
+__all__ = ["DISTRIBUTIONS", "pressure", "force", "surface_displacement", "max_pressure_of"]
 
 #: distribution -> (its exponent n, where the chapter gives it)
 DISTRIBUTIONS = {"uniform": (0.0, "Problem 6"), "hertzian": (0.5, "(5.16), Fig. 5.2"),
@@ -92,3 +92,48 @@ def surface_displacement(r, distribution, p0, a, E_star):
     out[ins] = inside(E_star[ins], a[ins], p0[ins], r[ins])
     out[~ins] = outside(E_star[~ins], a[~ins], p0[~ins], r[~ins])
     return result(out)
+
+
+def max_pressure_of(p, a, *, points=2001):
+    """The largest value of a pressure p(r) [Pa] over a contact 0 <= r < a, wherever it lies
+    (at the centre of a power law with n <= 2, towards the edge for n > 2, Fig. 5.17).
+
+    The pressure is evaluated on ``points`` radii 0, a/(points - 1), ... (the edge r = a
+    excluded) and the largest value is refined by a bounded scalar search (Brent) over the two
+    cells beside it, to 1e-12 a in r; the result is the larger of the grid's and the search's.
+    A pressure that is +inf on the grid (a conical tip's axis) gives +inf.
+
+    Parameters
+    ----------
+    p : callable
+        Vectorized pressure p(r) [Pa] of radii r [m] in [0, a).
+    a : float
+        Contact radius [m], >= 0. At a = 0 (an unloaded point of a sweep) the result is p(0).
+    points : int
+        Grid size, >= 3.
+
+    Returns
+    -------
+    value : float
+        The largest pressure [Pa].
+    r_max : float
+        Where it lies [m].
+    """
+    from scipy.optimize import minimize_scalar
+
+    a = float(nonnegative("a", a))
+    if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 3:
+        raise ValueError(f"points = {points!r} is out of range; valid: an integer >= 3")
+    if a == 0.0:
+        return float(np.asarray(p(np.zeros(1)), float)[0]), 0.0
+    r = np.linspace(0.0, a, int(points))[:-1]
+    values = np.asarray(p(r), float)
+    k = int(np.argmax(values))
+    best, where = float(values[k]), float(r[k])
+    lo, hi = r[max(k - 1, 0)], r[min(k + 1, len(r) - 1)]
+    if np.isfinite(best) and hi > lo:
+        res = minimize_scalar(lambda x: -float(np.asarray(p(np.array([x])), float)[0]),
+                              bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * a})
+        if -res.fun > best:
+            best, where = float(-res.fun), float(res.x)
+    return best, where

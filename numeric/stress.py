@@ -10,6 +10,8 @@ The formulas are generated from :mod:`hertzmdr.derive.stress` (Hertz field, axis
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
@@ -25,7 +27,7 @@ from hertzmdr.numeric._validate import (
 __all__ = [
     "spheroidal", "hertz_stress_cylindrical", "hertz_stress", "axis_stresses",
     "axis_max_shear", "von_mises", "tresca", "max_shear", "hertz_maximum",
-    "superposed_stress", "MAX_DISTANCE",
+    "superposed_stress", "superposed_plane", "PlaneField", "MAX_DISTANCE",
 ]
 
 
@@ -457,3 +459,66 @@ def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int =
     sig = _rotate(x, y, *np.moveaxis(fine, -1, 0))
     e = _rotate(x, y, *np.moveaxis(err, -1, 0))
     return sig, np.abs(e)
+
+
+@dataclass(frozen=True)
+class PlaneField:
+    """The von Mises stress (5.50) and the largest shear stress (sigma_1 - sigma_3)/2 [Pa] on a
+    grid of the x-z plane (y = 0), indexed [z][x], with a relative error estimate.
+
+    Attributes
+    ----------
+    x, z : ndarray
+        The grid's coordinates [m].
+    von_mises, max_shear : ndarray
+        Shape (len(z), len(x)) [Pa].
+    rel_error : float
+        The largest estimated absolute error of any stress component over the largest
+        |component| on the grid [1].
+    """
+
+    x: np.ndarray
+    z: np.ndarray
+    von_mises: np.ndarray
+    max_shear: np.ndarray
+    rel_error: float
+
+    def maximum(self, criterion: str) -> tuple[float, float, float]:
+        """(value [Pa], x [m], z [m]) of the largest ``"von_mises"`` or ``"max_shear"`` on the
+        grid (located to the grid's spacing)."""
+        if criterion not in ("von_mises", "max_shear"):
+            raise ValueError(f"criterion = {criterion!r}; valid: 'von_mises', 'max_shear'")
+        field = getattr(self, criterion)
+        k = np.unravel_index(int(np.argmax(field)), field.shape)
+        return float(field[k]), float(self.x[k[1]]), float(self.z[k[0]])
+
+
+def superposed_plane(pressure, a, nu, *, n: int = 13) -> PlaneField:
+    """The von Mises and the largest shear stress under an axisymmetric pressure p(r) on r < a,
+    by :func:`superposed_stress`, on n points 0 <= x <= 2a and the n - 1 points 0 < z <= 2a of
+    an n-point grid (z = 0 excluded: see :func:`superposed_stress`).
+
+    Parameters
+    ----------
+    pressure : callable
+        p(r) [Pa], as :func:`superposed_stress` takes it.
+    a : float
+        Radius of the loaded disc [m], a > 0.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    n : int
+        Grid points along x, >= 2.
+
+    Returns
+    -------
+    PlaneField
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+        raise ValueError(f"n = {n!r} is out of range; valid: an integer >= 2")
+    a = float(positive("a", a))
+    x = np.linspace(0.0, 2.0 * a, n)
+    z = np.linspace(0.0, 2.0 * a, n)[1:]
+    X, Z = np.meshgrid(x, z)
+    sig, err = superposed_stress(X, 0.0 * X, Z, pressure, a, nu)
+    rel = float(np.max(np.abs(err))) / float(np.max(np.abs(sig)))
+    return PlaneField(x, z, np.asarray(von_mises(sig)), np.asarray(max_shear(sig)), rel)

@@ -270,6 +270,25 @@ def test_bounds_are_not_vacuous(measured):
                if name.startswith("cone") and q[-1] in "Fa")
 
 
+@pytest.mark.parametrize("index", [0, 1])
+def test_max_pressure_bound_holds(index):
+    """``Solution.max_pressure(return_error=True)`` against (5.59) at the solution's own contact
+    radius: the smooth sphere and the kinked sphere-on-cone, whose largest pressure is on the
+    axis (checked against two off-axis radii); the conical tip's is +inf."""
+    case = _cases()[index]
+    sol = case.profile().solve(depth=case.depths[0], E_star=E)
+    value, bound = sol.max_pressure(return_error=True)
+    a = sol.contact_radius
+    with mp.workdps(DPS):
+        want = p_ref(case, a, 0)
+        assert all(p_ref(case, a, x * a) < want for x in (0.2, 0.5))
+        err = float(abs(value / want - 1))
+    assert err <= bound / value, (err, bound / value)
+    cone = _cases()[3]
+    assert cone.profile().solve(depth=cone.depths[0], E_star=E).max_pressure(
+        return_error=True) == (np.inf, 0.0)
+
+
 if __name__ == "__main__":
     print("| profile | quantity | depth [nm] | bound | actual |")
     print("|---|---|---|---|---|")

@@ -191,3 +191,61 @@ def test_force_sweep(name, n):
 
     assert_mpmath_equal(getattr(gen, name), ref, {"a": Arg(1e-9, 1e3), "p0": Arg(1e3, 1e12)},
                         rtol=TOL_FLOAT, n=n_points(100, 12), dps=50, name=name)
+
+
+# -- the largest value of a pressure over a contact (pressures.max_pressure_of) ---------------
+A_DISC = 2e-4  # m
+
+
+def _hertz_like(r):
+    return 3e8 * np.sqrt(1 - (r / A_DISC) ** 2)
+
+
+def _edge_peaked(r):
+    return 1e16 * r * r * np.sqrt(1 - (r / A_DISC) ** 2)
+
+
+def _off_grid(r):  # a peak at 0.31234567 a, between the grid's radii
+    return 5e7 * np.exp(-(((r - 0.31234567 * A_DISC) / (0.05 * A_DISC)) ** 2))
+
+
+def _references():
+    """(p, largest value, where): Hertz-like at r = 0; r^2 sqrt(1 - r^2/a^2), whose derivative
+    2 r (1 - r^2/a^2)^(1/2) - r^3 / (a^2 (1 - r^2/a^2)^(1/2)) vanishes at r = a sqrt(2/3),
+    where it is (2/3) a^2 / sqrt(3); a Gaussian peak off the grid."""
+    with mp.workdps(30):
+        a = mp.mpf(A_DISC)
+        edge = (float(mp.mpf(1e16) * 2 * a * a / 3 / mp.sqrt(3)),
+                float(a * mp.sqrt(mp.mpf(2) / 3)))
+    return [(_hertz_like, 3e8, 0.0), (_edge_peaked, *edge), (_off_grid, 5e7, 0.31234567 * A_DISC)]
+
+
+@pytest.mark.parametrize("case", range(3))
+def test_max_pressure_of(case):
+    from hertzmdr.numeric import pressures
+
+    p, ref, where = _references()[case]
+    value, at = pressures.max_pressure_of(p, A_DISC)
+    # the search locates r to 1e-12 a where p' = 0, so the value's error is quadratic in that:
+    # what is left is the rounding of p (a few ulps), 1e-14 relative
+    assert abs(value / ref - 1) < 1e-14
+    # a flat maximum locates only to about sqrt(eps) of its curvature scale: 1e-7 a
+    assert abs(at - where) < 1e-7 * A_DISC
+
+
+def test_max_pressure_of_edge_cases():
+    from hertzmdr.numeric import pressures
+
+    # a conical tip's pressure is log-infinite on the axis: the largest value is +inf there
+    def cone_like(r):
+        with np.errstate(divide="ignore"):
+            return -np.log(r / A_DISC)
+
+    value, at = pressures.max_pressure_of(cone_like, A_DISC)
+    assert value == np.inf and at == 0.0
+    # an unloaded point of a sweep (a = 0): p(0)
+    assert pressures.max_pressure_of(lambda r: 7.0 + 0 * r, 0.0) == (7.0, 0.0)
+    with pytest.raises(ValueError, match="a"):
+        pressures.max_pressure_of(_hertz_like, -1.0)
+    with pytest.raises(ValueError, match="points"):
+        pressures.max_pressure_of(_hertz_like, A_DISC, points=2)

@@ -325,6 +325,30 @@ def test_superposition_route():
         assert_close(s[2, 2], ref, max(1e-12, 10 * float(e[2, 2] / abs(ref))), f"punch z={zz}")
 
 
+def test_superposed_plane_and_its_maxima():
+    """superposed_plane under the Hertz pressure (a = 1, p0 = 1) against the closed-form field
+    at the same grid points; its maxima are the closed form's largest values on that grid."""
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    f = stress.superposed_plane(hp, 1.0, 0.3, n=5)
+    X, Z = np.meshgrid(f.x, f.z)
+    ref = stress.hertz_stress(X, 0.0 * X, Z, 1.0, 1.0, 0.3)
+    vm, tau = np.asarray(stress.von_mises(ref)), np.asarray(stress.max_shear(ref))
+    # the superposition agrees to 1e-12 (test_superposition_route); its estimate bounds that,
+    # and von Mises and (sigma_1 - sigma_3)/2 are within 2 components' errors of each other
+    for got, want in ((f.von_mises, vm), (f.max_shear, tau)):
+        assert np.max(np.abs(got - want)) <= 2 * f.rel_error * np.max(np.abs(ref)) + 1e-14
+    k = np.unravel_index(int(np.argmax(vm)), vm.shape)
+    value, x, z = f.maximum("von_mises")
+    assert (x, z) == (f.x[k[1]], f.z[k[0]]) and abs(value - vm[k]) < 1e-12
+    k = np.unravel_index(int(np.argmax(tau)), tau.shape)
+    value, x, z = f.maximum("max_shear")
+    assert (x, z) == (f.x[k[1]], f.z[k[0]]) and abs(value - tau[k]) < 1e-12
+    with pytest.raises(ValueError, match="criterion"):
+        f.maximum("tresca")
+    with pytest.raises(ValueError, match="n = 1"):
+        stress.superposed_plane(hp, 1.0, 0.3, n=1)
+
+
 def test_stress_modules_import_no_sympy_scipy_matplotlib():
     import subprocess
     import sys

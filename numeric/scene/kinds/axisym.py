@@ -18,6 +18,10 @@ import numpy as np
 from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
 from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 
+#: the relative accuracy of numeric/pressures.py's max_pressure_of (located to 1e-12 a;
+#: verified by tests/test_pressures.py)
+MAX_SEARCH_RTOL = 1e-12
+
 
 class Axisymmetric(StressEffects, Contact):
     """Base: the effects of an axisymmetric contact, from the primitives ``radius(d)``,
@@ -36,8 +40,18 @@ class Axisymmetric(StressEffects, Contact):
     off_axis = True
     #: a radius where p is log-infinite (a kink of the profile), kept off the profile's grid
     kink: float | None = None
-    #: whether the force-depth curve starts at d = 0 (else at its first step)
     curve_from_zero = False
+
+    @property
+    def curve_method(self):
+        return self.methods.get("force_depth_curve", self.method)
+
+    @property
+    def pressure_method(self):
+        return self.methods["pressure_profile"]
+
+    def extent(self, d):
+        return self.a_at(d)
 
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)
@@ -52,9 +66,14 @@ class Axisymmetric(StressEffects, Contact):
         from hertzmdr.numeric.scene.kinds.stresses import SuperposedStresses
 
         d = self.last(st)
-        a = float(np.atleast_1d(self.radius(d))[0])
+        a = self.a_at(d)
         return SuperposedStresses(lambda r, d=d: np.asarray(self.p(r, d), float), a,
                                   self.materials.stressed.nu)
+
+    def a_at(self, d: float) -> float:
+        """The contact radius [m] at one depth d [m], as a float (``radius`` may return an
+        array of one)."""
+        return float(np.atleast_1d(self.radius(d))[0])
 
     def _radius_at(self, st) -> np.ndarray:
         return np.asarray(self.radius(st.depth), float)
@@ -76,34 +95,21 @@ class Axisymmetric(StressEffects, Contact):
 
     def pressure_radii(self, a: float) -> np.ndarray:
         """The radii of a pressure profile: 0 to 1.5 a, kept off the axis and off a kink."""
-        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+        r = super().pressure_radii(a)
         if self.off_axis:
             r[0] = a * 1e-3
         if self.kink is not None:  # p is log-infinite there: such a point moves by 1e-3 step
             r[np.abs(r - self.kink) <= 1e-12 * a] += 1e-3 * (r[1] - r[0])
         return r
 
-    def effect_pressure_profile(self, st):
-        d = self.last(st)
-        r = self.pressure_radii(float(self.radius(d)))
-        return Value({"r": r, "p": np.asarray(self.p(r, d), float)},
-                     self.methods["pressure_profile"], st.rel_error)
-
     def effect_surface_displacement(self, st):
         d = self.last(st)
-        r = np.linspace(0.0, 4.0 * float(self.radius(d)), FIELD_POINTS)
+        r = np.linspace(0.0, 4.0 * self.a_at(d), FIELD_POINTS)
         return Value({"r": r, "u": np.asarray(self.u(r, d), float)},
                      self.methods["surface_displacement"], st.rel_error)
 
-    def effect_force_depth_curve(self, st):
-        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
-        if not self.curve_from_zero:
-            d = d[1:]
-        return Value({"depth": d, "force": np.asarray(self.force_of(d), float)},
-                     self.methods.get("force_depth_curve", self.method), st.rel_error)
-
     def effect_mdr_profile(self, st):
-        a = float(self.radius(self.last(st)))
+        a = self.a_at(self.last(st))
         x = np.linspace(0.0, 1.2 * a, FIELD_POINTS)
         return Value({"x": x, "g": np.asarray(self.g(x), float)}, self.methods["mdr_profile"],
                      st.rel_error)
@@ -191,30 +197,19 @@ class ClosedFormContact(Axisymmetric):
         return self.form.g_profile(x)
 
     def effect_max_pressure(self, st):
-        """The largest pressure over the contact, wherever it lies (at the centre of a power law
-        with n <= 2, towards the edge for n > 2, Fig. 5.17): located on a grid of 2001 points
-        and refined by a bounded scalar search."""
-        from scipy.optimize import minimize_scalar
+        """The largest pressure over the contact, wherever it lies
+        (numeric/pressures.py's ``max_pressure_of``: a grid, then a bounded search)."""
+        from hertzmdr.numeric import pressures
 
-        out = []
-        for d in np.atleast_1d(st.depth):
-            a = float(self.radius(d))
-            r = np.linspace(0, a, 2001)[:-1]
-            p = np.asarray(self.p(r, d), float)
-            k = int(np.argmax(p))
-            lo, hi = r[max(k - 1, 0)], r[min(k + 1, len(r) - 1)]
-            best = p[k]
-            if hi > lo:
-                res = minimize_scalar(lambda x, d=d: -float(self.p(x, d)), bounds=(lo, hi),
-                                      method="bounded", options={"xatol": 1e-12 * a})
-                best = max(best, -res.fun)
-            out.append(best)
-        return Value(np.array(out), "max of (5.59) over r (grid + bounded search)", 1e-12)
+        out = [pressures.max_pressure_of(lambda r, d=d: self.p(r, d), self.a_at(d))[0]
+               for d in np.atleast_1d(st.depth)]
+        return Value(np.array(out), "max of (5.59) over r (grid + bounded search)",
+                     MAX_SEARCH_RTOL)
 
     def rtol_ranges(self, effects):
         out = super().rtol_ranges(effects)
         if "max_pressure" in effects:
-            out.append(("the search for the largest pressure", (1e-12, 1.0)))
+            out.append(("the search for the largest pressure", (MAX_SEARCH_RTOL, 1.0)))
         return out
 
 
@@ -312,33 +307,70 @@ class NumericalMDR(Axisymmetric):
     def g(self, x):
         return self.profile.g(x)
 
+    # -- every effect with the solver's own bound (numeric/mdr.py) ----------------------------
+    # Field effects report max |error| / max |value| over their points; the pressure's bound is
+    # that of p at the solution's own contact radius (the error of a is contact_radius's).
+    @staticmethod
+    def _field_error(value, err) -> float:
+        fin = np.isfinite(value)  # p(0) = +inf under a conical tip
+        scale = float(np.max(np.abs(value[fin]))) if fin.any() else 0.0
+        return float(np.max(err[fin])) / scale if scale > 0 else 0.0
+
     def effect_contact_radius(self, st):
         return Value(np.array([s.contact_radius for s in st.solutions]), st.method,
                      st.rel_error)
 
+    def effect_mean_pressure(self, st):
+        """F/(pi a^2): the bounds of F and of a^2 add up, 3 rel_error."""
+        v = super().effect_mean_pressure(st)
+        return Value(v.value, v.method, 3.0 * st.rel_error)
+
     def effect_max_pressure(self, st):
+        """mdr.Solution.max_pressure with its bound, plus the state's rel_error (p scales with
+        the contact radius, whose error the pressure's bound leaves out)."""
         vals, errs = [], []
         for s in st.solutions:
-            r = np.linspace(0, s.contact_radius, 1001)[:-1]
-            p, e = s.pressure(r, return_error=True)
-            k = int(np.argmax(p))
-            vals.append(p[k])  # +inf under a conical tip (p is log-infinite at r = 0)
-            errs.append(e[k] / p[k] if 0 < p[k] < np.inf else 0.0)
-        return Value(np.array(vals), st.method + ", max over 1000 radii", max(errs))
+            v, e = s.max_pressure(return_error=True)
+            vals.append(v)  # +inf under a conical tip (p is log-infinite at r = 0)
+            errs.append(e / v + s.rel_error if 0 < v < np.inf else s.rel_error)
+        return Value(np.array(vals), st.method + ", the largest of (5.59) over r (grid + "
+                     "bounded search)", max(errs))
 
     def effect_force_depth_curve(self, st):
         d = np.linspace(0.0, self.last(st), FIELD_POINTS)[1:]
-        sols = [self._solve(depth=float(v)) for v in d]
-        return Value({"depth": d, "force": np.array([s.force for s in sols])}, st.method,
-                     max(s.rel_error for s in sols))
+        curve = self.profile.force_depth_curve(d, E_star=self.E_star, rtol=self.rtol)
+        return Value({"depth": curve.depth, "force": curve.force}, st.method,
+                     float(np.max(curve.rel_error)))
 
     def effect_pressure_profile(self, st):
         s = self._solve(depth=self.last(st))
         r = np.linspace(0.0, 1.5 * s.contact_radius, FIELD_POINTS)
         p, e = s.pressure(r, return_error=True)
-        fin = np.isfinite(p)  # p(0) = +inf under a conical tip
-        scale = float(np.max(p[fin])) if np.max(p[fin]) > 0 else 1.0
-        return Value({"r": r, "p": p}, st.method, float(np.max(e[fin])) / scale)
+        return Value({"r": r, "p": p}, st.method, self._field_error(p, e))
+
+    def effect_surface_displacement(self, st):
+        s = self._solve(depth=self.last(st))
+        r = np.linspace(0.0, 4.0 * s.contact_radius, FIELD_POINTS)
+        u, e = s.displacement(r, return_error=True)
+        return Value({"r": r, "u": u}, st.method + ", (5.60)", self._field_error(u, e))
+
+    def effect_mdr_profile(self, st):
+        s = self._solve(depth=self.last(st))
+        x = np.linspace(0.0, 1.2 * s.contact_radius, FIELD_POINTS)
+        g, e = self.profile.g(x, return_error=True)
+        return Value({"x": x, "g": g}, "numerical MDR, (5.52)", self._field_error(g, e))
+
+    def stress_solver(self, st):
+        """Superposition over the solution's pressure; its error adds the pressure's bound
+        relative to its largest value (the stresses are linear in p)."""
+        from hertzmdr.numeric.scene.kinds.stresses import SuperposedStresses
+
+        s = self._solve(depth=self.last(st))
+        r = np.linspace(0.0, s.contact_radius, FIELD_POINTS)[:-1]
+        p, e = s.pressure(r, return_error=True)
+        return SuperposedStresses(lambda rr: np.asarray(s.pressure(rr), float),
+                                  s.contact_radius, self.materials.stressed.nu,
+                                  pressure_error=self._field_error(p, e))
 
 
 def build_numerical(setup: Setup) -> NumericalMDR:

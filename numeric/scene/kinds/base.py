@@ -82,6 +82,17 @@ class Contact:
     state_method = "closed forms"
     state_range: tuple[float, float] = CLOSED_FORM_RANGE
     rel = CLOSED_FORM_RTOL
+    #: effect -> the primitive it is written from on this class: a kind without the primitive
+    #: does not have the effect. ``force_of(d)``: the force [N] at depths d [m] (an array);
+    #: ``p(r, d)``: the pressure [Pa] at distances r [m] from the centre of the contact along
+    #: a line through it, at depth d [m]; ``extent(d)``: the contact's half-length [m] along
+    #: that line
+    PRIMITIVES = {"force_depth_curve": ("force_of",), "pressure_profile": ("p", "extent")}
+    #: the method texts of the two effects written from them
+    curve_method = "?"
+    pressure_method = "?"
+    #: whether the force-depth curve starts at d = 0 (else at its first step)
+    curve_from_zero = True
 
     def __init__(self, materials: Materials, interface: Interface, rtol: float):
         self.materials = materials
@@ -98,6 +109,8 @@ class Contact:
                 "rtol": self.rtol}
 
     def has(self, effect: str) -> bool:
+        if not all(callable(getattr(self, prim, None)) for prim in self.PRIMITIVES.get(effect, ())):
+            return False
         return callable(getattr(self, "effect_" + effect, None))
 
     def rtol_ranges(self, effects) -> list[tuple[str, tuple[float, float]]]:
@@ -115,6 +128,27 @@ class Contact:
 
     def effect_force(self, st: State) -> Value:
         return Value(st.force, st.method, st.rel_error)
+
+    def effect_force_depth_curve(self, st: State) -> Value:
+        """F(d) [N] on FIELD_POINTS depths from 0 (or its first step) to the largest load,
+        from the kind's ``force_of``."""
+        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
+        if not self.curve_from_zero:
+            d = d[1:]
+        return Value({"depth": d, "force": np.asarray(self.force_of(d), float)},
+                     self.curve_method, st.rel_error)
+
+    def pressure_radii(self, a: float) -> np.ndarray:
+        """The points of a pressure profile [m]: 0 to 1.5 times the contact's half-length."""
+        return np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+
+    def effect_pressure_profile(self, st: State) -> Value:
+        """p along a line through the centre of the contact at the largest load, from the
+        kind's ``p`` and ``extent``."""
+        d = self.last(st)
+        r = self.pressure_radii(self.extent(d))
+        return Value({"r": r, "p": np.asarray(self.p(r, d), float)}, self.pressure_method,
+                     st.rel_error)
 
     @staticmethod
     def last(st: State, key: str = "depth") -> float:

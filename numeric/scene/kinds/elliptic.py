@@ -10,7 +10,7 @@ import numpy as np
 
 from hertzmdr.numeric import bodies, ellipse
 from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
-from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, State, Value
+from hertzmdr.numeric.scene.kinds.base import Contact, State, Value
 
 #: the tolerance to which tests/test_ellipse.py verifies the exact solution against mpmath
 EXACT_RTOL = 1e-12
@@ -102,15 +102,19 @@ class EllipticContact(Contact):
     def effect_stiffness(self, st):
         return self._value(st, "stiffness", "dF/dd")
 
-    def effect_pressure_profile(self, st):
-        """Along the x axis (the direction of R1)."""
-        c = self._solve(depth=self.last(st))
-        a = float(c.a)
-        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
-        return Value({"r": r, "p": c.pressure(r, 0.0)}, "(5.31) along the R1 direction",
-                     EXACT_RTOL)
+    # -- the primitives of the force-depth curve and the pressure profile (base.Contact) -----
+    pressure_method = "(5.31) along the R1 direction"
 
-    def effect_force_depth_curve(self, st):
-        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
-        c = self._solve(depth=d)
-        return Value({"depth": d, "force": c.force}, self.label, EXACT_RTOL)
+    @property
+    def curve_method(self):
+        return self.label
+
+    def force_of(self, d):
+        return self._solve(depth=d).force
+
+    def p(self, x, d):
+        """Along the x axis (the direction of R1)."""
+        return self._solve(depth=d).pressure(x, 0.0)
+
+    def extent(self, d):
+        return float(self._solve(depth=d).a)

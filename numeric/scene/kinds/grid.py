@@ -30,7 +30,11 @@ class GridContact(Contact):
                "semi_axes": "contact_area"}
     why_not = {"contact_radius": "the contact is not a circle: its area is",
                "max_pressure": "a flat punch's pressure is singular at its edge; on a grid its "
-                               "largest value only measures the pixel size"}
+                               "largest value only measures the pixel size",
+               "force_depth_curve": "every depth is a BEM solve (two with the error estimate): "
+                                    "ask for 'force' under a depth sweep instead",
+               "pressure_profile": "the BEM's pressure is a map of pixels, not a profile "
+                                   "along a line"}
 
     state_method = "the BEM's conjugate gradients (numeric/bem.py)"
     state_range = BEM_RANGE

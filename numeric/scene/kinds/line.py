@@ -8,7 +8,7 @@ import numpy as np
 
 from hertzmdr.numeric import line
 from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
-from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, State, Value
+from hertzmdr.numeric.scene.kinds.base import Contact, State, Value
 
 
 class LineContact(Contact):
@@ -59,15 +59,15 @@ class LineContact(Contact):
         return Value(np.full(np.shape(st.force), float(line.stiffness(self.L, self.E_star))),
                      "dF/dd of (5.34), under the convention (5.35)", CLOSED_FORM_RTOL)
 
-    def effect_pressure_profile(self, st):
-        d = self.last(st)
-        a = float(line.half_width(d, self.R))
-        x = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
-        return Value({"r": x, "p": line.pressure(x, d, self.R, self.E_star)},
-                     "(5.36) across the strip (r is the distance x from its centre line)",
-                     CLOSED_FORM_RTOL)
+    # -- the primitives of the force-depth curve and the pressure profile (base.Contact) -----
+    curve_method = "(5.34), linear in d"
+    pressure_method = "(5.36) across the strip (r is the distance x from its centre line)"
 
-    def effect_force_depth_curve(self, st):
-        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
-        return Value({"depth": d, "force": line.force(d, self.L, self.E_star)},
-                     "(5.34), linear in d", CLOSED_FORM_RTOL)
+    def force_of(self, d):
+        return line.force(d, self.L, self.E_star)
+
+    def p(self, x, d):
+        return line.pressure(x, d, self.R, self.E_star)
+
+    def extent(self, d):
+        return float(line.half_width(d, self.R))

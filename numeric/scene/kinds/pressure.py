@@ -15,7 +15,9 @@ class PressureLoad(Contact):
     kind = "pressure"
     instead = {"contact_radius": "surface_displacement", "max_pressure": "pressure_profile"}
     why_not = {"contact_radius": "the loaded disc is given, not found: there is no contact "
-               "problem to solve"}
+               "problem to solve",
+               "force_depth_curve": "the load is a prescribed pressure: its force and depth "
+               "are one point, not a curve"}
 
     def __init__(self, materials, interface, rtol, distribution, p0, a):
         super().__init__(materials, interface, rtol)
@@ -49,11 +51,17 @@ class PressureLoad(Contact):
         return Value(float(contact.mean_pressure_disc(st.force[0], self.a)), "force / (pi a^2)",
                      CLOSED_FORM_RTOL)
 
-    def effect_pressure_profile(self, st):
-        """The prescribed load itself, p0 (1 - r^2/a^2)^n, zero outside the disc."""
-        r = np.linspace(0.0, 1.5 * self.a, FIELD_POINTS)
-        p = np.asarray(pressures.pressure(r, self.distribution, self.p0, self.a), float)
-        return Value({"r": r, "p": p}, f"p0 (1 - r^2/a^2)^{self.n:g}", CLOSED_FORM_RTOL)
+    # -- the primitives of the pressure profile (base.Contact): the prescribed load itself,
+    # p0 (1 - r^2/a^2)^n, zero outside the disc
+    @property
+    def pressure_method(self):
+        return f"p0 (1 - r^2/a^2)^{self.n:g}"
+
+    def p(self, r, d):
+        return pressures.pressure(r, self.distribution, self.p0, self.a)
+
+    def extent(self, d):
+        return self.a
 
     def effect_surface_displacement(self, st):
         r = np.linspace(0.0, 4.0 * self.a, FIELD_POINTS)

@@ -10,6 +10,8 @@ costs about 0.1 s).
 
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 
 from hertzmdr.numeric.scene.kinds.base import Value
@@ -77,12 +79,15 @@ class HertzStresses:
 
 class SuperposedStresses:
     """Any axisymmetric pressure p(r) on r < a by superposition of (5.41)-(5.46); its error is
-    its own estimate (tanh-sinh), whatever rtol asks (``met_rtol`` says whether it met it)."""
+    its own estimate (tanh-sinh), whatever rtol asks (``met_rtol`` says whether it met it),
+    plus ``pressure_error``, the relative error of p itself (0 for a closed form's p, exact to
+    rounding; a numerical MDR's bound relative to its largest p)."""
 
     ranges: dict[str, float] = {}
 
-    def __init__(self, pressure, a, nu):
+    def __init__(self, pressure, a, nu, pressure_error=0.0):
         self.p, self.a, self.nu = pressure, a, nu
+        self.pressure_error = pressure_error
         self.method = "superposition of the point-force field (5.47), tanh-sinh"
 
     def _stress(self, x, z):
@@ -95,42 +100,38 @@ class SuperposedStresses:
         s, e = self._stress(0.0 * z, z)
         szz, srr = s[..., 2, 2], s[..., 0, 0]
         scale = float(np.max(np.abs(szz)))
-        err = float(np.max(e[..., 2, 2] + e[..., 0, 0])) / scale
+        err = float(np.max(e[..., 2, 2] + e[..., 0, 0])) / scale + self.pressure_error
         return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": _tau_1(szz, srr)},
                      self.method, err)
 
-    def _grid(self):
+    @cached_property
+    def _plane(self):
+        """numeric/stress.py's superposed plane field, once for the three effects using it."""
         from hertzmdr.numeric import stress
 
-        x = np.linspace(0.0, 2.0 * self.a, GRID_SUPERPOSED)
-        z = np.linspace(0.0, 2.0 * self.a, GRID_SUPERPOSED)[1:]
-        X, Z = np.meshgrid(x, z)
-        s, e = self._stress(X, Z)
-        sv = stress.von_mises(s)
-        tau = stress.max_shear(s)
-        err = float(np.max(np.abs(e))) / float(np.max(np.abs(s)))
-        return x, z, sv, tau, err
+        return stress.superposed_plane(self.p, self.a, self.nu, n=GRID_SUPERPOSED)
 
     def max_shear(self):
-        x, z, _, tau, err = self._grid()
-        k = np.unravel_index(int(np.argmax(tau)), tau.shape)
-        step = float(z[1] - z[0])
-        return Value({"value": float(tau[k]), "depth": float(z[k[0]])},
+        f = self._plane
+        value, _, z = f.maximum("max_shear")
+        step = float(f.z[1] - f.z[0])
+        return Value({"value": value, "depth": z},
                      f"largest on a {GRID_SUPERPOSED}-point grid (spacing {step:.3g} m), "
-                     + self.method, max(err, 0.0))
+                     + self.method, max(f.rel_error + self.pressure_error, 0.0))
 
     def field(self):
-        x, z, sv, _, err = self._grid()
-        xs = np.concatenate([-x[:0:-1], x])  # mirror: the field is symmetric in x
-        full = np.concatenate([sv[:, :0:-1], sv], axis=1)
-        return Value({"x": xs, "z": z, "sigma_v": full}, self.method + ", (5.50)", err)
+        f = self._plane
+        xs = np.concatenate([-f.x[:0:-1], f.x])  # mirror: the field is symmetric in x
+        full = np.concatenate([f.von_mises[:, :0:-1], f.von_mises], axis=1)
+        return Value({"x": xs, "z": f.z, "sigma_v": full}, self.method + ", (5.50)",
+                     f.rel_error + self.pressure_error)
 
     def max_von_mises(self):
-        x, z, sv, _, err = self._grid()
-        k = np.unravel_index(int(np.argmax(sv)), sv.shape)
-        return Value({"value": float(sv[k]), "x": float(x[k[1]]), "z": float(z[k[0]])},
+        f = self._plane
+        value, x, z = f.maximum("von_mises")
+        return Value({"value": value, "x": x, "z": z},
                      f"largest on a {GRID_SUPERPOSED}x{GRID_SUPERPOSED - 1} grid, "
-                     + self.method, err)
+                     + self.method, f.rel_error + self.pressure_error)
 
 
 class StressEffects:
