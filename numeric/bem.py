@@ -24,7 +24,7 @@ import numpy as np
 from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
 __all__ = ["influence_kernel", "HalfSpace", "BEMResult", "solve", "punch_stiffness",
-           "polygon_punch", "grid", "polygon_area", "read_height_map"]
+           "polygon_punch", "grid", "polygon_area", "read_height_map", "boundary_area"]
 
 
 def _love_primitive(X, Y):
@@ -141,6 +141,31 @@ class BEMResult:
     dx: float
     dy: float
     info: dict = field(default_factory=dict)
+
+
+def boundary_area(contact: np.ndarray, dx: float, dy: float) -> float:
+    """Area [m^2] of the pixels on either side of the edge of a pixel contact set: those in
+    contact with a neighbour out of contact, and those out of contact with a neighbour in it
+    (4-neighbours; the grid's border counts as out of contact).
+
+    A contact area counted in pixels can be wrong by whatever part of this band the true edge
+    cuts: the true edge runs between the centre of a pixel in contact and the centre of its
+    neighbour out of contact, so ``boundary_area / area`` bounds the area's relative error from
+    the pixelation of the edge (a punch's footprint: pixel centres inside the polygon).
+
+    Parameters
+    ----------
+    contact : ndarray of bool, shape (nx, ny)
+        Pixels in contact (``BEMResult.contact``).
+    dx, dy : float
+        Pixel size [m].
+    """
+    c = np.pad(np.asarray(contact, dtype=bool), 1)
+    inner = c[1:-1, 1:-1]
+    nbrs = (c[:-2, 1:-1], c[2:, 1:-1], c[1:-1, :-2], c[1:-1, 2:])
+    edge_in = inner & ~np.logical_and.reduce(nbrs)
+    edge_out = ~inner & np.logical_or.reduce(nbrs)
+    return float(np.count_nonzero(edge_in | edge_out)) * dx * dy
 
 
 def _residual(g, S, allowed, scale):

@@ -167,3 +167,23 @@ def test_exact_sphere_is_one_shape_module():
     hertz = 4 / 3 * float(E) * 1e-3**0.5 * 1e-9**1.5  # (5.23)
     # the cap's force is below Hertz's by (a/R)^2/10 = 1e-7 at a/R = 1e-3 (docs/sphere.md)
     assert 0 < 1 - shallow["force"]["value"] / hertz < 2e-7
+
+
+@pytest.mark.parametrize("body", [{"shape": "cone", "angle": "80 deg"},
+                                  {"shape": "flat_punch", "radius": 1e-3},
+                                  {"shape": "flattened_parabola", "radius": 0.05,
+                                   "flat_radius": 1e-4}])
+def test_maxima_under_a_singular_pressure(body):
+    """+inf at the singular radius for nu < 0.5 (the surface stress grows like (1 - 2 nu) p);
+    refused with the reason for nu = 0.5, where that term vanishes and no grid bounds the
+    maximum."""
+    def spec(nu):
+        return {"effects": ["max_shear", "max_von_mises"], "load": {"depth": 1e-6},
+                "body": [{**body, "rigid": True}, {"shape": "flat", "E": 70e9, "nu": nu}]}
+
+    eff = scene.load(spec(0.3)).run()["effects"]
+    for name in ("max_shear", "max_von_mises"):
+        assert eff[name]["value"]["value"] == math.inf and eff[name]["rel_error"] == 0
+        assert eff[name]["method"].startswith("unbounded")
+    with pytest.raises(scene.SceneError, match="hydrostatic"):
+        scene.load(spec(0.5)).run()

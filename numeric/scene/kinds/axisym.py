@@ -131,6 +131,9 @@ class ClosedForm:
         a(d), F(d, E*), d(F, E*), p(r, d, E*), u_z(r, d), g(x).
     no_max_pressure : str or None
         Why the pressure has no finite maximum, or None when it has one.
+    singular_at : callable or None
+        With ``no_max_pressure``: the radius r_s(a) [m] where the pressure is unbounded (0 at a
+        tip, a at a punch's edge, b at a worn tip's kink), where the stresses are too.
     kink : float or None
         A radius where the pressure is log-infinite (kept off the profile's grid).
     off_axis : bool
@@ -152,6 +155,7 @@ class ClosedForm:
     surface_displacement: Callable
     g_profile: Callable
     no_max_pressure: str | None = None
+    singular_at: Callable | None = None
     kink: float | None = None
     off_axis: bool = True
     methods: dict[str, str] = field(default_factory=dict)
@@ -176,7 +180,33 @@ class ClosedFormContact(Axisymmetric):
     def has(self, effect):
         if effect == "max_pressure" and self.form.no_max_pressure:
             return False
+        if effect in ("max_shear", "max_von_mises") and self._unbounded_at_half():
+            return False
         return super().has(effect)
+
+    def _unbounded_at_half(self) -> bool:
+        """A singular pressure in an incompressible body (nu = 0.5): the surface stress is
+        hydrostatic to leading order, so the maxima may be finite, and the grid cannot bound
+        them: refused (:meth:`stress_solver` says +inf for nu < 0.5)."""
+        singular = self.form.no_max_pressure and self.form.singular_at is not None
+        if singular and self.materials.stressed.nu >= 0.5:
+            self.why_not = {**self.why_not, **dict.fromkeys(
+                ("max_shear", "max_von_mises"),
+                f"{self.form.no_max_pressure}; with nu = 0.5 the stress there is hydrostatic to "
+                "leading order and the maximum is not computed (ask for 'axis_stresses' or "
+                "'von_mises_field')")}
+            return True
+        return False
+
+    def stress_solver(self, st):
+        """Superposition over the closed-form pressure; where that pressure is unbounded (and
+        nu < 0.5) the largest stresses are too: the surface stress there grows like
+        (1 - 2 nu) p."""
+        solver = super().stress_solver(st)
+        if self.form.no_max_pressure and self.form.singular_at is not None:
+            r_s = float(self.form.singular_at(self.a_at(self.last(st))))
+            solver.unbounded = (self.form.no_max_pressure, r_s)
+        return solver
 
     def radius(self, d):
         return self.form.contact_radius(d)

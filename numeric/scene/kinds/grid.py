@@ -76,7 +76,16 @@ class GridContact(Contact):
         return Value(vals, method, float(np.max(np.abs(vals / ref - 1))))
 
     def effect_contact_area(self, st):
-        return self._both(st, lambda s: s.area, "BEM contact area (pixel count)")
+        """The pixel count's area; its error is the larger of the change from half resolution
+        and the band of pixels the edge can cut (:func:`bem.boundary_area`): the two pixel
+        counts can scale alike and agree exactly while both miss the edge by a pixel."""
+        from hertzmdr.numeric import bem
+
+        v = self._both(st, lambda s: s.area, "BEM contact area (pixel count; rel_error: the "
+                       "edge's pixel band, or the change from half resolution if larger)")
+        band = max(bem.boundary_area(s.contact, s.dx, s.dy) / s.area if s.area > 0 else 0.0
+                   for s in st.fine)
+        return Value(v.value, v.method, max(v.rel_error, band))
 
     def effect_stiffness(self, st):
         return self._both(st, lambda s: s.stiffness, "BEM: flat punch of the contact area, "

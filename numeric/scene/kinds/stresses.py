@@ -10,6 +10,7 @@ costs about 0.1 s).
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
@@ -88,6 +89,9 @@ class SuperposedStresses:
     def __init__(self, pressure, a, nu, pressure_error=0.0):
         self.p, self.a, self.nu = pressure, a, nu
         self.pressure_error = pressure_error
+        #: (why, r_s [m]) when the pressure is unbounded at the surface radius r_s: the largest
+        #: stresses are then +inf there (set by the kind; None for a bounded pressure)
+        self.unbounded: tuple[str, float] | None = None
         self.method = "superposition of the point-force field (5.47), tanh-sinh"
 
     def _stress(self, x, z):
@@ -111,7 +115,14 @@ class SuperposedStresses:
 
         return stress.superposed_plane(self.p, self.a, self.nu, n=GRID_SUPERPOSED)
 
+    def _infinite(self, keys: dict) -> Value:
+        why, _ = self.unbounded
+        return Value({"value": math.inf, **keys}, f"unbounded: {why}, and the stress at the "
+                     "surface grows like (1 - 2 nu) p", 0.0)
+
     def max_shear(self):
+        if self.unbounded:
+            return self._infinite({"depth": 0.0})
         f = self._plane
         value, _, z = f.maximum("max_shear")
         step = float(f.z[1] - f.z[0])
@@ -127,6 +138,8 @@ class SuperposedStresses:
                      f.rel_error + self.pressure_error)
 
     def max_von_mises(self):
+        if self.unbounded:
+            return self._infinite({"x": self.unbounded[1], "z": 0.0})
         f = self._plane
         value, x, z = f.maximum("von_mises")
         return Value({"value": value, "x": x, "z": z},

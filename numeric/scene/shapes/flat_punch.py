@@ -30,4 +30,5 @@ class FlatPunch(Shape):
             pressure=lambda r, d, E: powerlaw.pressure(r, d, a, math.inf, E),
             surface_displacement=lambda r, d: powerlaw.surface_displacement(r, d, a, math.inf),
             g_profile=lambda x: np.where(np.abs(np.asarray(x, float)) < a, 0.0, np.inf),
-            no_max_pressure="the punch pressure (5.9) is singular at the edge")
+            no_max_pressure="the punch pressure (5.9) is singular at the edge",
+            singular_at=lambda a: a)

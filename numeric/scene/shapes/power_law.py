@@ -28,4 +28,5 @@ class PowerLaw(Shape):
             surface_displacement=lambda r, d: powerlaw.surface_displacement(r, d, c, n),
             g_profile=lambda x: powerlaw.g_profile(x, c, n),
             no_max_pressure=(None if n > 1 else "the pressure of f = c r^n with n <= 1 is "
-                             "singular at the centre"))
+                             "singular at the centre"),
+            singular_at=None if n > 1 else (lambda a: 0.0))
