@@ -61,7 +61,7 @@ def g_profile(x, c_n, n):
 
     Guaranteed finite and accurate for x in {0} U [1e-12, 1000], d in [1e-15, 1000], a in [1e-09,
     1000], n in [0.001, 1e+08], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for
-    n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    n > 24 within exp(+-500/n) of 1 m, so that kappa_n c_n is a float) (SI units; searched by
     tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
@@ -74,8 +74,13 @@ def g_profile(x, c_n, n):
         Exponent, > 0.
     """
     x = np.abs(np.asarray(x, dtype=float))
-    c_n, n = positive("c_n", c_n), positive("n", n)
-    return result(gen.powerlaw_g(c_n, kappa(n), n, nonnegative("x", x)))
+    x, c_n, n = np.broadcast_arrays(nonnegative("x", x), positive("c_n", c_n), positive("n", n))
+    # g(x; c_n) = g(c_n^(1/n) x; 1): for n >= 1 the scaled x, not x^n, is formed (x^n
+    # underflowed at x = 6e-4, n = 123 where c_n = 5e236 brings g back to 4e-160); for n < 1
+    # c_n^(1/n) could overflow instead, and x^n is harmless
+    big = n >= 1
+    xs = np.where(big, c_n ** (1.0 / np.where(big, n, 1.0)) * x, x)
+    return result(gen.powerlaw_g(np.where(big, 1.0, c_n), kappa(n), n, xs))  # (5.52)
 
 
 @representable
@@ -83,9 +88,9 @@ def contact_radius(d, c_n, n):
     """Contact radius a = (d/(kappa_n c_n))^(1/n) [m], (5.55).
 
     Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
-    with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 87 within exp(+-600/n)
-    of 1 m, so that c_n is a float) (SI units; searched by tests/domain_search.py). Beyond float64
-    (|result| > 1.8e308): OverflowError naming the inputs.
+    with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 24 within exp(+-500/n)
+    of 1 m, so that kappa_n c_n is a float) (SI units; searched by tests/domain_search.py). Beyond
+    float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -95,7 +100,9 @@ def contact_radius(d, c_n, n):
         As in :func:`g_profile`.
     """
     c_n, n = positive("c_n", c_n), positive("n", n)
-    return result(gen.powerlaw_contact_radius(c_n, nonnegative("d", d), kappa(n), n))
+    # d/kappa_n first: the product kappa_n c_n of the printed form overflows for c_n ~ 1e306
+    return result(gen.powerlaw_contact_radius(c_n, nonnegative("d", d) / kappa(n), 1.0,
+                                              n))  # (5.55)
 
 
 @representable
@@ -104,7 +111,7 @@ def force(d, c_n, n, E_star):
 
     Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
     E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n
-    > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    > 24 within exp(+-500/n) of 1 m, so that kappa_n c_n is a float) (SI units; searched by
     tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
@@ -147,9 +154,9 @@ def depth_from_force(F, c_n, n, E_star):
 
     Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], d in [1e-15, 1000], a in [1e-09,
     1000], n in [0.001, 1e+08], E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact
-    radius a in that range (for n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI
-    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
-    naming the inputs.
+    radius a in that range (for n > 24 within exp(+-500/n) of 1 m, so that kappa_n c_n is a float)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -169,7 +176,7 @@ def mean_pressure(d, c_n, n, E_star):
 
     Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
     E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n
-    > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    > 24 within exp(+-500/n) of 1 m, so that kappa_n c_n is a float) (SI units; searched by
     tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
     """
     c_n, n = positive("c_n", c_n), positive("n", n)
@@ -259,9 +266,9 @@ def pressure(r, d, c_n, n, E_star):
 
     Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], a in [1e-09,
     1000], n in [1.5, 1e+08], E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact
-    radius a in that range (for n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI
-    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
-    naming the inputs.
+    radius a in that range (for n > 24 within exp(+-500/n) of 1 m, so that kappa_n c_n is a float)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     n = inf is the flat punch of radius a = ``c_n`` (pass the punch radius as c_n then):
     p = E* d/(pi sqrt(a^2 - r^2)). At the centre p is +inf for n <= 1 (the cone's logarithmic
@@ -329,7 +336,7 @@ def surface_displacement(r, d, c_n, n):
 
     Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], a in [1e-09,
     1000], n in [0.001, 1e+08], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for
-    n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    n > 24 within exp(+-500/n) of 1 m, so that kappa_n c_n is a float) (SI units; searched by
     tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     n = inf is the flat punch of radius ``c_n`` (inside: u_z = d).

@@ -315,10 +315,10 @@ def _powerlaw_rows() -> list[Row]:
     def with_c(p, keep_d=True):
         """c_n = d/(kappa_n a^n) for a drawn contact radius a (the physical parametrization:
         the depth and the contact radius in their ranges); None if c_n is no float."""
-        # a^n must leave c_n a float: for large n, a is drawn within exp(+-600/n) of 1 m
-        # (the same log-uniform position in that band as in its own range)
+        # a^n must leave kappa_n c_n a float: for large n, a is drawn within exp(+-500/n) of
+        # 1 m (the same log-uniform position in that band as in its own range)
         a, n = p.pop("a"), p["n"]
-        band = min(1.0, 600.0 / n / math.log(1e3))
+        band = min(1.0, 500.0 / n / math.log(1e9))  # |log a| <= log(1e9) in its range
         a = math.exp(math.log(a) * band)
         with mp.workdps(DPS):
             c = mp.mpf(p["d"]) / (kappa_mp(mp.mpf(n)) * mp.mpf(a) ** n)
@@ -344,8 +344,8 @@ def _powerlaw_rows() -> list[Row]:
         return 2 * d / mp.pi * mp.quad(f, pts)
 
     dcn = {"d": P(1e-15, 1e3), "a": P(1e-9, 1e3), "n": N}
-    cn = (", with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 87 "
-          "within exp(+-600/n) of 1 m, so that c_n is a float)")
+    cn = (", with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 24 "
+          "within exp(+-500/n) of 1 m, so that kappa_n c_n is a float)")
     rows = [
         Row("powerlaw.kappa", powerlaw.kappa, {"n": P(1e-3, 1e300)},
             lambda n: kappa_mp(n) if n < 1e6 else mp.sqrt(mp.pi * n / 2) * mp.exp(1 / (4 * n)),
