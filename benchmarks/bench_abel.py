@@ -457,7 +457,10 @@ def write_docs(rows, conditions, docs_dir):
     else:
         out.append(f"PyAbel {_common.version('PyAbel')}; its `direct` method runs the "
                    "pure-Python backend (the C extension is not built in this install), so "
-                   "its times are pessimistic.\n\n")
+                   "its times are pessimistic. Its `basex` keeps each N's basis on disk "
+                   "(~/.cache/PyAbel) for later processes: its 'first' is the generation of "
+                   "the basis (minutes at N = 3201) where no earlier run on this machine "
+                   "saved it, else loading it.\n\n")
         out += _verdicts(rows, combos)
     out.append("\n![error vs time](abel_error_time.png)\n\n## Convergence orders\n\n"
                "Least-squares slope of log(error) against log(N), errors below 1e-12 (the "

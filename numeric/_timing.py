@@ -29,20 +29,27 @@ THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"
 
 @dataclass(frozen=True)
 class Budget:
-    """How much measuring: ``repeats`` rounds taking at least ``min_time`` seconds in all."""
+    """How much measuring: ``repeats`` rounds taking at least ``min_time`` seconds in all; no
+    new round once the rounds have taken ``max_time`` seconds (a slow call gets fewer rounds,
+    at least one)."""
 
     repeats: int
     min_time: float
+    max_time: float = math.inf
 
     def __post_init__(self):
         if self.repeats < 1:
             raise ValueError(f"Budget.repeats = {self.repeats}: at least 1")
         if not self.min_time >= 0:
             raise ValueError(f"Budget.min_time = {self.min_time} s: must be >= 0")
+        if not self.max_time > self.min_time:
+            raise ValueError(f"Budget.max_time = {self.max_time} s: must exceed min_time = "
+                             f"{self.min_time} s")
 
 
-#: the reports' setting: the median of 5 rounds of at least 0.2 s together
-FULL = Budget(repeats=5, min_time=0.2)
+#: the reports' setting: the median of 5 rounds of at least 0.2 s together (fewer rounds for
+#: calls slower than 0.5 s: no new round after 2 s)
+FULL = Budget(repeats=5, min_time=0.2, max_time=2.0)
 #: the ``--quick`` runs of the tests: two rounds of one call each (numbers, not timings)
 QUICK = Budget(repeats=2, min_time=0.0)
 
@@ -109,7 +116,10 @@ def measure(fn: Callable[..., object], budget: Budget = FULL,
     """
     if setup is None:
         first, number = _plan(fn, budget)
-        return Timing(first, tuple(_clock(fn, number) for _ in range(budget.repeats)), number)
+        rounds = []
+        while len(rounds) < budget.repeats and number * sum(rounds) < budget.max_time:
+            rounds.append(_clock(fn, number))
+        return Timing(first, tuple(rounds), number)
 
     def once():
         arg = setup()
@@ -119,7 +129,8 @@ def measure(fn: Callable[..., object], budget: Budget = FULL,
 
     first = once()
     rounds: list[float] = []
-    while len(rounds) < budget.repeats or sum(rounds) < budget.min_time:
+    while (len(rounds) < budget.repeats or sum(rounds) < budget.min_time) and (
+            sum(rounds) < budget.max_time or not rounds):
         rounds.append(once())
     return Timing(first, tuple(rounds), 1)
 
@@ -138,6 +149,9 @@ def compare(fns: Mapping[str, Callable[[], object]], budget: Budget = FULL) -> d
     plans = {name: _plan(fn, budget) for name, fn in fns.items()}
     rounds: dict[str, list[float]] = {name: [] for name in fns}
     for _ in range(budget.repeats):
+        spent = [plans[n][1] * sum(rounds[n]) for n in fns]
+        if rounds[next(iter(fns))] and max(spent) >= budget.max_time:
+            break
         for name, fn in fns.items():
             rounds[name].append(_clock(fn, plans[name][1]))
     return {name: Timing(plans[name][0], tuple(rounds[name]), plans[name][1]) for name in fns}

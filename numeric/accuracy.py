@@ -104,8 +104,8 @@ def markdown(results: list[Measured], figure: str | None,
              f"{_timing.conditions()}\n",
              "For each quantity: every way hertzmdr can compute it, the relative error against "
              "a 50-digit truth, and the median time per evaluation with the spread (min-max of "
-             f"{budget.repeats} rounds of at least {budget.min_time:g} s together; the first "
-             "call apart, not shown). *Digits* is -log10 of the error. Read it as: how many "
+             f"up to {budget.repeats} rounds of at least {budget.min_time:g} s together; the "
+             "first call apart, not shown). *Digits* is -log10 of the error. Read it as: how many "
              "digits can I have, and what does each digit cost.\n"]
     if figure:
         lines.append(f"![error against time]({figure})\n")
