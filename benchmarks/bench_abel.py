@@ -386,7 +386,9 @@ def best_table(rows):
         theirs = min((r for r in sel if not r["method"].startswith("hertzmdr")),
                      key=lambda r: r["error"])
         what = "(5.59)" if direction == "inverse" else "(5.61)"
-        how = ours["method"].replace("hertzmdr (", "").rstrip(")")
+        how = ours["method"].removeprefix("hertzmdr ")
+        if how.startswith("(") and how.endswith(")"):
+            how = how[1:-1]
         out.append(f"| {what} | {prof} | {ours['error']:.1e} ({how}, "
                    f"N={ours['N']}) | {1e3 * ours['again']:.2f} | {theirs['error']:.1e} "
                    f"({theirs['method']}, N={theirs['N']}) | {1e3 * theirs['again']:.2f} |\n")

@@ -47,9 +47,9 @@ def superposition_table(settings=SETTINGS, npts=20):
 
 def contactmechanics_table(m, budget):
     """hertzmdr and ContactMechanics's Hertz reference solutions on the same m^3 points (x, y
-    in [-2, 2] a, z log-spaced in [1e-3, 2] a) and m^3 surface radii (log-spaced in
-    [1e-3, 1e3] a): times (rounds interleaved), their ratio, and the largest difference.
-    None when ContactMechanics is not installed."""
+    log-spaced in +-[1e-8, 2] a: near the axis too; z log-spaced in [1e-3, 2] a) and m^3
+    surface radii (log-spaced in [1e-3, 1e5] a): times (rounds interleaved), their ratio, and
+    the largest difference. None when ContactMechanics is not installed."""
     cm = _common.peer("ContactMechanics.ReferenceSolutions.Hertz", "contactmechanics",
                       "the ContactMechanics comparison")
     if cm is None:
@@ -57,11 +57,12 @@ def contactmechanics_table(m, budget):
     from hertzmdr.numeric import hertz
 
     nu = 0.3
-    X, Y, Z = np.meshgrid(np.linspace(-2, 2, m), np.linspace(-2, 2, m),
-                          np.geomspace(1e-3, 2, m), indexing="ij")
+    half = np.geomspace(1e-8, 2, m // 2)
+    xs = np.concatenate([-half[::-1], half])
+    X, Y, Z = np.meshgrid(xs, xs, np.geomspace(1e-3, 2, m), indexing="ij")
     x, y, z = X.ravel(), Y.ravel(), Z.ravel()
     r = np.hypot(x, y)
-    rs = np.geomspace(1e-3, 1e3, m**3)
+    rs = np.geomspace(1e-3, 1e5, m**3)
     # units: a = 1, p0 = 1 (ContactMechanics's); its u_z is in p0 a/E*, negative into the
     # body: with R = 1, d = a^2/R = 1, p0 = 2 E* a/(pi R) (5.22), hertzmdr's u_z = -(2/pi) u
     cases = {
@@ -151,9 +152,10 @@ def main(argv=None):
             f"{_common.version('contactmechanics')} (`ContactMechanics.ReferenceSolutions."
             f"Hertz`: `stress_Cartesian`, `stress`, `surface_displacements`) and hertzmdr's "
             f"(`stress.hertz_stress`, `stress.hertz_stress_cylindrical`, "
-            f"`hertz.surface_displacement`) on the same {cm_m ** 3:,} points: x, y in "
-            f"[-2, 2] a ({cm_m} each), z log-spaced in [1e-3, 2] a ({cm_m}), nu = 0.3; the "
-            f"displacement at {cm_m ** 3:,} radii log-spaced in [1e-3, 1e3] a. Medians of "
+            f"`hertz.surface_displacement`) on the same {cm_m ** 3:,} points: x, y "
+            f"log-spaced in +-[1e-8, 2] a ({cm_m} each: the axis is approached to 1e-8 a), z "
+            f"log-spaced in [1e-3, 2] a ({cm_m}), nu = 0.3; the displacement at "
+            f"{cm_m ** 3:,} radii log-spaced in [1e-3, 1e5] a. Medians of "
             f"the interleaved rounds; the ratio from the same run. 'largest difference': "
             "over all points and components; hertzmdr's fields are checked against 30-digit "
             "references to ~1e-15 p0 (tests/test_stress.py, tests/test_hertz.py), so the "

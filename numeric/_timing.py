@@ -47,9 +47,9 @@ class Budget:
                              f"{self.min_time} s")
 
 
-#: the reports' setting: the median of 5 rounds of at least 0.2 s together (fewer rounds for
-#: calls slower than 0.5 s: no new round after 2 s)
-FULL = Budget(repeats=5, min_time=0.2, max_time=2.0)
+#: the reports' setting: the median of 5 rounds of at least 0.1 s together (fewer rounds for
+#: calls slower than 0.2 s: no new round after 1 s)
+FULL = Budget(repeats=5, min_time=0.1, max_time=1.0)
 #: the ``--quick`` runs of the tests: two rounds of one call each (numbers, not timings)
 QUICK = Budget(repeats=2, min_time=0.0)
 
