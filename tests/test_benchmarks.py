@@ -129,7 +129,7 @@ def test_missing_peers_are_skipped_with_a_note(tmp_path):
     bem.json records it and non_axisymmetric.md says its row is skipped."""
     procs = [_without("abel", "bench_abel.py", tmp_path),
              _without("tamaas", "bench_bem.py", tmp_path)]
-    procs.append(_without("tamaas", "beta.py", tmp_path))
+    procs.append(_without("tamaas", "beta.py", tmp_path))  # make_nonaxi_doc reads its JSON too
     procs.append(_without("tamaas", "make_nonaxi_doc.py", tmp_path))
     for proc in procs:
         assert proc.returncode == 0, proc.stderr[-4000:]
