@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from hertzmdr.numeric import _generated as gen
 
-FAMILIES = ("powerlaw", "worn", "kink")
+FAMILIES = ("powerlaw", "worn", "kink", "numerical_mdr")
 
 
 def derivations_section() -> str:
@@ -57,7 +57,56 @@ def verification_section() -> str:
          "::test_pressure_large_n_by_quadrature"),
         ("numerical MDR of samples (smooth, kinked, noisy)", "the closed forms and 30-digit "
          "quadrature of (5.59); the error estimate bounds the error", "tests/test_mdr.py"),
+        ("`mdr_force` (5.57) from the integral of g", "the pressure of (5.59), by quadrature, "
+         "integrated over the disc at 30 digits",
+         "tests/test_mdr.py::test_mdr_force_by_the_pressure"),
+        ("every error bound of the numerical MDR of samples (force-depth curve, force, contact "
+         "radius, depth under force control, pressure, displacement, g): a sphere, a sphere "
+         "on a cone with and without its kink as a breakpoint, a cone, issue 12's sphere-cone "
+         "tip at 10, 50, 100 nm", "30-digit quadratures of (5.52), (5.57), (5.59) (order "
+         "exchanged: an incomplete elliptic kernel) and (5.60) of the profile the samples come "
+         "from; fails when a bound is below the actual error", "tests/test_mdr_bounds.py"),
+        ("`RTOL_RANGE[0]`, what the refinement reaches", "callables of five profiles (smooth, "
+         "kinked, sphere-cone with and without its tangent point as a breakpoint) meet it at "
+         "two depths", "tests/test_mdr.py::test_rtol_range_lower_end"),
     ]
     out = ["## Verification\n\n| what | against | test |\n| --- | --- | --- |\n"]
     out += [f"| {a} | {b} | `{c}` |\n" for a, b, c in rows]
-    return "".join(out) + "\n"
+    return "".join(out) + "\n" + CONTRACT
+
+
+CONTRACT = """### The accuracy contract of the numerical MDR
+
+`rtol` has one meaning in `hertzmdr.numeric.mdr`: the target of the relative error bound
+`Solution.rel_error` (force, contact radius and depth), default `mdr.DEFAULT_RTOL` = 1e-8,
+accepted in `mdr.RTOL_RANGE` = (1e-11, 1e-2); outside it `Profile.solve` and
+`Profile.force_depth_curve` raise a ValueError naming rtol and the range. The lower end is
+measured: the bound that the grid refinement of a callable reaches (up to 8192 intervals a
+segment) for smooth, kinked and sphere-cone profiles is 2.5e-13 to 1.0e-11. The upper end is
+where the bound, a linearization of the difference between two resolutions, stops being tested.
+A callable's grid is doubled until the bound meets rtol; a sampled profile cannot be refined
+past its samples, so its quadrature is refined while that lowers the bound. The solution says
+whether the target was met (`met`) and, if not, why (`why_not_met`, e.g. "a sampled profile
+cannot be refined past its 51 samples; its estimate is ... with 8 Gauss points a panel").
+
+The bound is the larger of the coarse-vs-fine differences (every other sample, or half the grid)
+and the envelope of the differences of g and of its integral on radii within two coarse sample
+spacings of a, put through the linearized (5.55) and (5.57) (the differences at a alone can
+vanish by accident), plus a rounding floor (64 + 4 N) eps. `python tests/test_mdr_bounds.py`
+prints every bound next to its actual error against 30-digit references.
+
+### Two (5.59) engines, on purpose
+
+`numeric/abel.py` (from samples of the line load) and the numerical MDR's pressure
+(`numeric/_mdr/operators.py`) both evaluate (5.59). The first must be a linear operator on
+samples of q on a uniform grid, cached as a matrix and reused for every row and call: it
+integrates the derivative of a piecewise polynomial in s = x^2 exactly against the kernel and
+loses about log10(N) digits to differentiating samples. The second has g' itself: its smooth
+remainder tabulated in x or sqrt(x - b), graded towards the axis and the kinks, and the kinks'
+branch-point terms in closed form (the generated `mdr_kink_pressure`), with a contact radius
+anywhere and an error bound from a second representation. Routing it through the Abel operator
+would resample q on a grid ending at a and differentiate it again, losing the closed-form kink
+terms and the grading. They share the Gauss-Legendre rule (`numeric/_quadrature.py`) and the
+substitution that removes the kernel's singularity.
+
+"""

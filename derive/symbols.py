@@ -25,10 +25,12 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "R2": ("m", "radius of curvature of body 2, or second principal radius"),
     "d": ("m", "indentation depth"),
     "a": ("m", "contact radius"),
+    "A": ("m^2", "contact area"),
     "r": ("m", "radial coordinate on the surface"),
     "x": ("m", "coordinate"),
     "y": ("m", "coordinate"),
     "z": ("m", "depth below the surface"),
+    "n_p": ("1", "exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1)"),
     "p0": ("Pa", "pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0"),
     "theta": ("rad", "angle between the cone's surface and the plane"),
     "m": ("kg", "mass"),
@@ -52,6 +54,9 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius "
           "of a kink of the profile (derive/kink.py)"),
     "slope_jump": ("1", "jump f'(b+) - f'(b-) of the profile's slope at a kink r = b"),
+    "g_integral": ("m^2", "integral of the MDR profile g(x) over [0, a] (5.57)"),
+    "lam": ("1", "atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), "
+            "d = R lam tanh(lam)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

@@ -109,7 +109,17 @@ def relations() -> list[Relation]:
     root = sp.sqrt(1 + s_**2)
     tb = unit_interval("t_b")
     wide = {b: a * tb}  # b < a
+    f = sp.Max(0, (r - b) * (r + b)) / (2 * R)  # the profile: 0 on the flat r < b
     return [
+        Relation("worn_profile", "Problem 8", f, (R, b, r),
+                 "height f(r) [m] of the worn paraboloid's surface above its tip (0 for r < b)",
+                 "the paraboloid r^2/(2R) worn flat to the radius b",
+                 "tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f"),
+        Relation("worn_displacement_inside", "Problem 8, (5.60)", d - f, (R, b, d, r),
+                 "surface displacement u_z(r) [m] inside the contact (r <= a) of the worn "
+                 "paraboloid",
+                 "(5.60) of u = d - g(x) (5.54) for r <= a, which (5.53) makes d - f(r)",
+                 "tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f"),
         Relation("worn_g", "Problem 8", s["g"].subs(sp.sqrt(x**2 - b**2),
                                                    sp.sqrt(sp.Max(0, (x - b) * (x + b)))),
                  (R, b, x), "MDR profile g(x) [m] of the worn paraboloid (0 for x < b)",

@@ -50,6 +50,9 @@ __all__ = [
     'cone_mean_pressure',
     'cone_pressure',
     'cone_stiffness',
+    'contact_mean_pressure',
+    'disc_mean_pressure',
+    'disc_pressure',
     'ellipse_area',
     'ellipse_depth_from_force',
     'ellipse_equivalent_radius',
@@ -98,9 +101,11 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
+    'mdr_stiffness',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -121,10 +126,21 @@ __all__ = [
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
     'powerlaw_punch_pressure',
+    'punch_depth_from_force',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'sphere_depth',
+    'sphere_force_from_radius',
+    'sphere_g',
+    'sphere_lam_contact_radius',
+    'sphere_lam_depth',
+    'sphere_lam_force',
+    'sphere_lam_pressure_pole',
+    'sphere_pressure_atanh_kernel',
+    'sphere_profile',
+    'sphere_stiffness',
     'stress_axis_max_shear',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
@@ -140,6 +156,7 @@ __all__ = [
     'stress_spheroidal_u',
     'stress_spheroidal_u_inside',
     'stress_von_mises',
+    'strip_mean_pressure',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -147,11 +164,13 @@ __all__ = [
     'uniform_pressure_force',
     'worn_contact_radius',
     'worn_depth',
+    'worn_displacement_inside',
     'worn_displacement_outside',
     'worn_force',
     'worn_force_from_radius',
     'worn_g',
     'worn_pressure',
+    'worn_profile',
 ]
 
 #: every relation: (name, equation, family, derived formula, erratum or "")
@@ -196,6 +215,9 @@ RELATIONS = (
     ('cone_mean_pressure', '(5.40)/(pi a^2)', 'cone', 'E_star*tan(theta)/2', ''),
     ('cone_pressure', '(5.39)', 'cone', 'E_star*tan(theta)*acosh(2*d/(pi*r*tan(theta)))/2', "the print has a spurious minus sign: the pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it"),
     ('cone_stiffness', 'Problem 5', 'cone', '4*E_star*d/(pi*tan(theta))', ''),
+    ('contact_mean_pressure', '(5.17)', 'contact', 'F/A', ''),
+    ('disc_mean_pressure', '(5.17)', 'contact', 'F/(pi*a**2)', ''),
+    ('disc_pressure', '(5.9), (5.15), Problem 6', 'contact', 'p0*(1 - r**2/a**2)**n_p', ''),
     ('ellipse_area', '(5.29), exact', 'ellipse', '2*pi*R1*d*t_ba*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
     ('ellipse_depth_from_force', '(5.23), exact, inverted', 'ellipse', '3**(2/3)*F**(2/3)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(2*(1 - t_ba**2)) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(2*(1 - t_ba**2)))/(pi**(2/3)*E_star**(2/3)*R1**(1/3)*((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(1/3))', ''),
     ('ellipse_equivalent_radius', '(5.23), exact', 'ellipse', 'pi**2*R1*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(2*(1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**3)', ''),
@@ -244,9 +266,11 @@ RELATIONS = (
     ('line_max_pressure_from_half_width', '(5.37), from the matching', 'line', 'E_star*a/(2*R)', ''),
     ('line_pressure', '(5.36)', 'line', 'E_star*sqrt(d)*sqrt(Max(0, 1 - x**2/(R*d)))/(2*sqrt(R))', ''),
     ('line_stiffness', '(5.34), differentiated', 'line', 'pi*E_star*L/4', ''),
+    ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
+    ('mdr_stiffness', '(5.12), Problem 5', 'contact', '2*E_star*a', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
@@ -267,10 +291,21 @@ RELATIONS = (
     ('powerlaw_punch_displacement_outside', 'Problem 7(a)', 'powerlaw', '2*d*asin(a/r)/pi', ''),
     ('powerlaw_punch_force', 'Problem 7(a)', 'powerlaw', '2*E_star*a*d', ''),
     ('powerlaw_punch_pressure', 'Problem 7(a)', 'powerlaw', 'E_star*d/(pi*sqrt(a**2 - r**2))', ''),
+    ('punch_depth_from_force', '(5.11), inverted', 'contact', 'F/(2*E_star*a)', ''),
     ('punch_pressure_displacement', '(5.10)', 'pressures', 'pi*a*p0/E_star', ''),
     ('punch_pressure_displacement_outside', 'Fig. 5.2 (n = -1/2), Problem 7(a)', 'pressures', '2*a*p0*asin(a/r)/E_star', ''),
     ('punch_pressure_force', '(5.11)', 'pressures', '2*pi*a**2*p0', ''),
     ('punch_stiffness', '(5.12)', 'pressures', '2*E_star*a', ''),
+    ('sphere_depth', "(5.55), Sneddon's sphere", 'sphere', 'a*atanh(a/R)', ''),
+    ('sphere_force_from_radius', "(5.57), Sneddon's sphere", 'sphere', 'E_star*(R**2*atanh(a/R) - R*a + a**2*atanh(a/R))', ''),
+    ('sphere_g', "(5.52), Sneddon's sphere", 'sphere', 'x*atanh(x/R)', ''),
+    ('sphere_lam_contact_radius', "(5.55), Sneddon's sphere", 'sphere', 'R*tanh(lam)', ''),
+    ('sphere_lam_depth', "(5.55), Sneddon's sphere", 'sphere', 'R*lam*tanh(lam)', ''),
+    ('sphere_lam_force', "(5.57), Sneddon's sphere", 'sphere', 'E_star*R**2*(lam*tanh(lam)**2 + lam - tanh(lam))', ''),
+    ('sphere_lam_pressure_pole', "(5.59), Sneddon's sphere", 'sphere', 'E_star*R*atanh(sqrt(R**2*tanh(lam)**2 - r**2)/sqrt(R**2 - r**2))/(pi*sqrt(R**2 - r**2))', ''),
+    ('sphere_pressure_atanh_kernel', "(5.59), Sneddon's sphere", 'sphere', 'E_star*atanh(x/R)/(pi*x)', ''),
+    ('sphere_profile', "(5.52), Sneddon's sphere", 'sphere', 'R - sqrt(R**2 - r**2)', ''),
+    ('sphere_stiffness', "Problem 5, Sneddon's sphere", 'sphere', '2*E_star*a', ''),
     ('stress_axis_max_shear', 'Fig. 5.8', 'stress', 'p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
     ('stress_axis_max_shear_slope', 'Fig. 5.8', 'stress', '-p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2)**2) + p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*atan(a/z) + 2*(a**2 + z**2)*(nu + 1)*atan(a/z))/(4*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
@@ -286,6 +321,7 @@ RELATIONS = (
     ('stress_spheroidal_u', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
     ('stress_spheroidal_u_inside', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
     ('stress_von_mises', '(5.50)', 'stress', 'sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)', ''),
+    ('strip_mean_pressure', '(5.34)-(5.37)', 'contact', 'F/(2*L*a)', ''),
     ('uniform_pressure_displacement', 'Problem 6', 'pressures', '4*a*p0*elliptic_e(r**2/a**2)/(pi*E_star)', ''),
     ('uniform_pressure_displacement_centre', 'Problem 6', 'pressures', '2*a*p0/E_star', ''),
     ('uniform_pressure_displacement_edge', 'Problem 6', 'pressures', '4*a*p0/(pi*E_star)', ''),
@@ -293,11 +329,13 @@ RELATIONS = (
     ('uniform_pressure_force', 'Problem 6', 'pressures', 'pi*a**2*p0', ''),
     ('worn_contact_radius', 'Problem 8', 'worn', 'sqrt(b**2/2 + sqrt(4*R**2*d**2 + b**4)/2)', ''),
     ('worn_depth', 'Problem 8', 'worn', 'a*sqrt(a**2 - b**2)/R', ''),
+    ('worn_displacement_inside', 'Problem 8, (5.60)', 'worn', 'd - Max(0, (-b + r)*(b + r))/(2*R)', ''),
     ('worn_displacement_outside', 'Problem 8, (5.60)', 'worn', '(2*a*sqrt(a**2 - b**2)*asin(a/r) - (b - r)*(b + r)*(sqrt((-a**2 + b**2)/(b**2 - r**2))*sqrt((-a**2 + r**2)/(-b**2 + r**2)) - asin(sqrt((-a**2 + b**2)/(b**2 - r**2)))))/(pi*R)', ''),
     ('worn_force', 'Problem 8', 'worn', 'E_star*sqrt(-2*b**2 + 2*sqrt(4*R**2*d**2 + b**4))*(2*b**2 + sqrt(4*R**2*d**2 + b**4))/(3*R)', ''),
     ('worn_force_from_radius', 'Problem 8', 'worn', '2*E_star*sqrt(a - b)*sqrt(a + b)*(2*a**2 + b**2)/(3*R)', ''),
     ('worn_g', 'Problem 8', 'worn', 'x*sqrt(Max(0, (-b + x)*(b + x)))/R', ''),
     ('worn_pressure', 'Problem 8, (5.59)', 'worn', 'E_star*(2*a*sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r))))/sqrt((Max(b, r) - Min(b, r))*(Max(b, r) + Min(b, r)) + Max(0, (a - Max(b, r))*(a + Max(b, r)))) + (-b**2 + 2*Max(b, r)**2)*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/Max(b, r) - 2*elliptic_e(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)*Max(b, r))/(pi*R)', ''),
+    ('worn_profile', 'Problem 8', 'worn', 'Max(0, (-b + r)*(b + r))/(2*R)', ''),
 )
 
 
@@ -1206,6 +1244,67 @@ def cone_stiffness(E_star, d, theta):
         angle between the cone's surface and the plane [rad]
     """
     return 4*E_star*d/(numpy.pi*numpy.tan(theta))
+
+
+def contact_mean_pressure(A, F):
+    """Mean pressure F/A [Pa] over a contact of area A.
+
+    Chapter: (5.17). Derived from: the definition of the mean pressure.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_area``.
+
+    Parameters
+    ----------
+    A : float or ndarray
+        contact area [m^2]
+    F : float or ndarray
+        normal force [N]
+    """
+    return F/A
+
+
+def disc_mean_pressure(F, a):
+    """Mean pressure F/(pi a^2) [Pa] over a circular contact of radius a.
+
+    Chapter: (5.17). Derived from: the definition of the mean pressure over a disc.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_disc``.
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return F/(numpy.pi*a**2)
+
+
+def disc_pressure(a, n_p, p0, r):
+    """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a.
+
+    Chapter: (5.9), (5.15), Problem 6. Derived from: the distributions of section 5.1.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_disc_pressure_force``.
+
+    Printed in a stable form: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r =
+    0.9995 a); (a - r)(a + r)/a^2 does not.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n_p : float or ndarray
+        exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1) [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return p0*((a - r)*(a + r)/a**2)**n_p
 
 
 def ellipse_area(R1, d, t_ba):
@@ -2291,6 +2390,28 @@ def line_stiffness(E_star, L):
     return (1/4)*numpy.pi*E_star*L
 
 
+def mdr_force(E_star, a, d, g_integral):
+    """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
+
+    Chapter: (5.57). Derived from: (5.57) with (5.55) for any g(x).
+
+    Derivation: ``hertzmdr.derive.numerical_mdr``. Verified by
+    ``tests/test_mdr.py::test_mdr_force_by_the_pressure``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    """
+    return 2*E_star*(a*d - g_integral)
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -2361,6 +2482,24 @@ def mdr_kink_pressure(E_star, a, b, r, slope_jump):
     import scipy.special
 
     return E_star*b*slope_jump*scipy.special.ellipkinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)/(numpy.pi*functools.reduce(numpy.maximum, [b, r]))
+
+
+def mdr_stiffness(E_star, a):
+    """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a.
+
+    Chapter: (5.12), Problem 5. Derived from: dF/dd of (5.57) with d = g(a) (5.55).
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_stiffness_by_differentiation``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return 2*E_star*a
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -2821,6 +2960,26 @@ def powerlaw_punch_pressure(E_star, a, d, r):
     return E_star*d/(numpy.pi*numpy.sqrt(a**2 - r**2))
 
 
+def punch_depth_from_force(E_star, F, a):
+    """Indentation depth d [m] of a flat rigid punch of radius a under the force F.
+
+    Chapter: (5.11), inverted. Derived from: (5.11) F = 2 E* a d solved for d.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_punch_round_trip``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : float or ndarray
+        normal force [N]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/2)*F/(E_star*a)
+
+
 def punch_pressure_displacement(E_star, a, p0):
     """Surface displacement u_z [m] inside a disc loaded by p0*(1 - r^2/a^2)^(-1/2).
 
@@ -2888,6 +3047,226 @@ def punch_stiffness(E_star, a):
 
     Derivation: ``hertzmdr.derive.pressures``. Verified by
     ``tests/test_pressures.py::test_punch_stiffness_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
+def sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/2)*a*numpy.log1p(2*a/(R - a))
+
+
+def sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R;
+    below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b =
+    a/R, above it with atanh in log1p.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    import scipy.special
+
+    return numpy.select([numpy.less(a, (1/2)*R),True], [E_star*R**2*((1/2)*a**2*numpy.log1p(2*a/(R - a))/R**2 + (1/3)*a**3*scipy.special.hyp2f1(1, 3/2, 5/2, a**2/R**2)/R**3),E_star*(-R*a + (1/2)*(R**2 + a**2)*numpy.log1p(2*a/(R - a)))], default=numpy.nan)
+
+
+def sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*x*numpy.log1p(2*x/(R - x))
+
+
+def sphere_lam_contact_radius(R, lam):
+    """Contact radius a = R tanh(lam) [m] of a rigid spherical cap.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: the definition lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*numpy.tanh(lam)
+
+
+def sphere_lam_depth(R, lam):
+    """Indentation depth d [m] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*lam*numpy.tanh(lam)
+
+
+def sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small
+    lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b =
+    tanh(lam).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    import scipy.special
+
+    return numpy.select([numpy.less(lam, 1/2),True], [E_star*R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),E_star*R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+
+
+def sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as
+    a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (1/2)*E_star*R*numpy.log1p(2*numpy.sqrt(R*numpy.tanh(lam) - r)*numpy.sqrt(R*numpy.tanh(lam) + r)*(numpy.sqrt(R - r)*numpy.sqrt(R + r) + numpy.sqrt(R*numpy.tanh(lam) - r)*numpy.sqrt(R*numpy.tanh(lam) + r))*numpy.cosh(lam)**2/R**2)/(numpy.pi*numpy.sqrt(R - r)*numpy.sqrt(R + r))
+
+
+def sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2).
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*E_star*numpy.log1p(2*x/(R - x))/(numpy.pi*x)
+
+
+def sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R +
+    sqrt((R - r)(R + r))).
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return r**2/(R + numpy.sqrt(R - r)*numpy.sqrt(R + r))
+
+
+def sphere_stiffness(E_star, a):
+    """Differential stiffness dF/dd [N/m] of a rigid spherical cap at contact radius a.
+
+    Chapter: Problem 5, Sneddon's sphere. Derived from: (dF/da)/(dd/da) of (5.57) and
+    (5.55).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_stiffness``.
 
     Parameters
     ----------
@@ -3259,6 +3638,26 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
+def strip_mean_pressure(F, L, a):
+    """Mean pressure F/(2 a L) [Pa] over a contact strip of half-width a and length L.
+
+    Chapter: (5.34)-(5.37). Derived from: the definition of the mean pressure over a strip.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_strip``.
+
+    Parameters
+    ----------
+    F : float or ndarray
+        normal force [N]
+    L : float or ndarray
+        length of a line contact [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return (1/2)*F/(L*a)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -3410,6 +3809,31 @@ def worn_depth(R, a, b):
     return a*numpy.sqrt(a**2 - b**2)/R
 
 
+def worn_displacement_inside(R, b, d, r):
+    """Surface displacement u_z(r) [m] inside the contact (r <= a) of the worn paraboloid.
+
+    Chapter: Problem 8, (5.60). Derived from: (5.60) of u = d - g(x) (5.54) for r <= a,
+    which (5.53) makes d - f(r).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import functools
+
+    return d - 1/2*functools.reduce(numpy.maximum, [0, (-b + r)*(b + r)])/R
+
+
 def worn_displacement_outside(R, a, b, r):
     """Surface displacement u_z(r) [m] outside the contact (r > a) of the worn paraboloid.
 
@@ -3535,6 +3959,28 @@ def worn_pressure(E_star, R, a, b, r):
     return E_star*(2*a*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))]))/numpy.sqrt((functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r])) + functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])) + (-b**2 + 2*functools.reduce(numpy.maximum, [b, r])**2)*scipy.special.ellipkinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)/functools.reduce(numpy.maximum, [b, r]) - 2*scipy.special.ellipeinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)*functools.reduce(numpy.maximum, [b, r]))/(numpy.pi*R)
 
 
+def worn_profile(R, b, r):
+    """Height f(r) [m] of the worn paraboloid's surface above its tip (0 for r < b).
+
+    Chapter: Problem 8. Derived from: the paraboloid r^2/(2R) worn flat to the radius b.
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import functools
+
+    return (1/2)*functools.reduce(numpy.maximum, [0, (-b + r)*(b + r)])/R
+
+
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
 
@@ -3638,6 +4084,28 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def textbook_disc_pressure(a, n_p, p0, r):
+    """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a, in the derived (textbook) form; use disc_pressure: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r = 0.9995 a); (a - r)(a + r)/a^2 does not.
+
+    Chapter: (5.9), (5.15), Problem 6. Derived from: the distributions of section 5.1.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_disc_pressure_force``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n_p : float or ndarray
+        exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1) [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return p0*(1 - r**2/a**2)**n_p
 
 
 def textbook_ellipse_area(R1, d, t_ba):
@@ -3962,6 +4430,144 @@ def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
         integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
     """
     return E_star*a**(-n)*d*n*numpy.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((1/2)*n - 1)/numpy.pi
+
+
+def textbook_sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_depth: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return a*numpy.arctanh(a/R)
+
+
+def textbook_sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_force_from_radius: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R; below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b = a/R, above it with atanh in log1p.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return E_star*(R**2*numpy.arctanh(a/R) - R*a + a**2*numpy.arctanh(a/R))
+
+
+def textbook_sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R, in the derived (textbook) form; use sphere_g: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return x*numpy.arctanh(x/R)
+
+
+def textbook_sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R), in the derived (textbook) form; use sphere_lam_force: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b = tanh(lam).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return E_star*R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
+
+
+def textbook_sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a, in the derived (textbook) form; use sphere_lam_pressure_pole: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return E_star*R*numpy.arctanh(numpy.sqrt(R**2*numpy.tanh(lam)**2 - r**2)/numpy.sqrt(R**2 - r**2))/(numpy.pi*numpy.sqrt(R**2 - r**2))
+
+
+def textbook_sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2), in the derived (textbook) form; use sphere_pressure_atanh_kernel: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return E_star*numpy.arctanh(x/R)/(numpy.pi*x)
+
+
+def textbook_sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R, in the derived (textbook) form; use sphere_profile: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R + sqrt((R - r)(R + r))).
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return R - numpy.sqrt(R**2 - r**2)
 
 
 def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):

@@ -50,6 +50,9 @@ __all__ = [
     'cone_mean_pressure',
     'cone_pressure',
     'cone_stiffness',
+    'contact_mean_pressure',
+    'disc_mean_pressure',
+    'disc_pressure',
     'ellipse_area',
     'ellipse_depth_from_force',
     'ellipse_equivalent_radius',
@@ -98,9 +101,11 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
+    'mdr_stiffness',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -121,10 +126,21 @@ __all__ = [
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
     'powerlaw_punch_pressure',
+    'punch_depth_from_force',
     'punch_pressure_displacement',
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'sphere_depth',
+    'sphere_force_from_radius',
+    'sphere_g',
+    'sphere_lam_contact_radius',
+    'sphere_lam_depth',
+    'sphere_lam_force',
+    'sphere_lam_pressure_pole',
+    'sphere_pressure_atanh_kernel',
+    'sphere_profile',
+    'sphere_stiffness',
     'stress_axis_max_shear',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
@@ -140,6 +156,7 @@ __all__ = [
     'stress_spheroidal_u',
     'stress_spheroidal_u_inside',
     'stress_von_mises',
+    'strip_mean_pressure',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -147,11 +164,13 @@ __all__ = [
     'uniform_pressure_force',
     'worn_contact_radius',
     'worn_depth',
+    'worn_displacement_inside',
     'worn_displacement_outside',
     'worn_force',
     'worn_force_from_radius',
     'worn_g',
     'worn_pressure',
+    'worn_profile',
 ]
 
 
@@ -1058,6 +1077,67 @@ def cone_stiffness(E_star, d, theta):
         angle between the cone's surface and the plane [rad]
     """
     return 4*E_star*d/(mpmath.pi*mpmath.tan(theta))
+
+
+def contact_mean_pressure(A, F):
+    """Mean pressure F/A [Pa] over a contact of area A.
+
+    Chapter: (5.17). Derived from: the definition of the mean pressure.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_area``.
+
+    Parameters
+    ----------
+    A : mpmath.mpf
+        contact area [m^2]
+    F : mpmath.mpf
+        normal force [N]
+    """
+    return F/A
+
+
+def disc_mean_pressure(F, a):
+    """Mean pressure F/(pi a^2) [Pa] over a circular contact of radius a.
+
+    Chapter: (5.17). Derived from: the definition of the mean pressure over a disc.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_disc``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return F/(mpmath.pi*a**2)
+
+
+def disc_pressure(a, n_p, p0, r):
+    """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a.
+
+    Chapter: (5.9), (5.15), Problem 6. Derived from: the distributions of section 5.1.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_disc_pressure_force``.
+
+    Printed in a stable form: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r =
+    0.9995 a); (a - r)(a + r)/a^2 does not.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n_p : mpmath.mpf
+        exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1) [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return p0*((a - r)*(a + r)/a**2)**n_p
 
 
 def ellipse_area(R1, d, t_ba):
@@ -2110,6 +2190,28 @@ def line_stiffness(E_star, L):
     return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
 
 
+def mdr_force(E_star, a, d, g_integral):
+    """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
+
+    Chapter: (5.57). Derived from: (5.57) with (5.55) for any g(x).
+
+    Derivation: ``hertzmdr.derive.numerical_mdr``. Verified by
+    ``tests/test_mdr.py::test_mdr_force_by_the_pressure``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    """
+    return 2*E_star*(a*d - g_integral)
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -2177,6 +2279,24 @@ def mdr_kink_pressure(E_star, a, b, r, slope_jump):
         jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
     """
     return E_star*b*slope_jump*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/(mpmath.pi*max(b, r))
+
+
+def mdr_stiffness(E_star, a):
+    """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a.
+
+    Chapter: (5.12), Problem 5. Derived from: dF/dd of (5.57) with d = g(a) (5.55).
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_stiffness_by_differentiation``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*E_star*a
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -2624,6 +2744,26 @@ def powerlaw_punch_pressure(E_star, a, d, r):
     return E_star*d/(mpmath.pi*mpmath.sqrt(a**2 - r**2))
 
 
+def punch_depth_from_force(E_star, F, a):
+    """Indentation depth d [m] of a flat rigid punch of radius a under the force F.
+
+    Chapter: (5.11), inverted. Derived from: (5.11) F = 2 E* a d solved for d.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_punch_round_trip``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F/(E_star*a)
+
+
 def punch_pressure_displacement(E_star, a, p0):
     """Surface displacement u_z [m] inside a disc loaded by p0*(1 - r^2/a^2)^(-1/2).
 
@@ -2691,6 +2831,222 @@ def punch_stiffness(E_star, a):
 
     Derivation: ``hertzmdr.derive.pressures``. Verified by
     ``tests/test_pressures.py::test_punch_stiffness_by_kernel``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
+def sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*a*mpmath.log1p(2*a/(R - a))
+
+
+def sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R;
+    below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b =
+    a/R, above it with atanh in log1p.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return ((E_star*R**2*((mpmath.mpf(1)/mpmath.mpf(2))*a**2*mpmath.log1p(2*a/(R - a))/R**2 + (mpmath.mpf(1)/mpmath.mpf(3))*a**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), a**2/R**2)/R**3)) if (a < (mpmath.mpf(1)/mpmath.mpf(2))*R) else (E_star*(-R*a + (mpmath.mpf(1)/mpmath.mpf(2))*(R**2 + a**2)*mpmath.log1p(2*a/(R - a)))))
+
+
+def sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*x*mpmath.log1p(2*x/(R - x))
+
+
+def sphere_lam_contact_radius(R, lam):
+    """Contact radius a = R tanh(lam) [m] of a rigid spherical cap.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: the definition lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*mpmath.tanh(lam)
+
+
+def sphere_lam_depth(R, lam):
+    """Indentation depth d [m] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*lam*mpmath.tanh(lam)
+
+
+def sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Printed in a stable form: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small
+    lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b =
+    tanh(lam).
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return ((E_star*R**2*(lam*mpmath.tanh(lam)**2 + (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.tanh(lam)**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), mpmath.tanh(lam)**2))) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (E_star*R**2*(lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))))
+
+
+def sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as
+    a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*R*mpmath.log1p(2*mpmath.sqrt(R*mpmath.tanh(lam) - r)*mpmath.sqrt(R*mpmath.tanh(lam) + r)*(mpmath.sqrt(R - r)*mpmath.sqrt(R + r) + mpmath.sqrt(R*mpmath.tanh(lam) - r)*mpmath.sqrt(R*mpmath.tanh(lam) + r))*mpmath.cosh(lam)**2/R**2)/(mpmath.pi*mpmath.sqrt(R - r)*mpmath.sqrt(R + r))
+
+
+def sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2).
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Printed in a stable form: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R
+    - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.log1p(2*x/(R - x))/(mpmath.pi*x)
+
+
+def sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Printed in a stable form: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R +
+    sqrt((R - r)(R + r))).
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return r**2/(R + mpmath.sqrt(R - r)*mpmath.sqrt(R + r))
+
+
+def sphere_stiffness(E_star, a):
+    """Differential stiffness dF/dd [N/m] of a rigid spherical cap at contact radius a.
+
+    Chapter: Problem 5, Sneddon's sphere. Derived from: (dF/da)/(dd/da) of (5.57) and
+    (5.55).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_stiffness``.
 
     Parameters
     ----------
@@ -3056,6 +3412,26 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
+def strip_mean_pressure(F, L, a):
+    """Mean pressure F/(2 a L) [Pa] over a contact strip of half-width a and length L.
+
+    Chapter: (5.34)-(5.37). Derived from: the definition of the mean pressure over a strip.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_mean_pressure_strip``.
+
+    Parameters
+    ----------
+    F : mpmath.mpf
+        normal force [N]
+    L : mpmath.mpf
+        length of a line contact [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F/(L*a)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -3203,6 +3579,29 @@ def worn_depth(R, a, b):
     return a*mpmath.sqrt(a**2 - b**2)/R
 
 
+def worn_displacement_inside(R, b, d, r):
+    """Surface displacement u_z(r) [m] inside the contact (r <= a) of the worn paraboloid.
+
+    Chapter: Problem 8, (5.60). Derived from: (5.60) of u = d - g(x) (5.54) for r <= a,
+    which (5.53) makes d - f(r).
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return d - mpmath.mpf(1)/mpmath.mpf(2)*max(0, (-b + r)*(b + r))/R
+
+
 def worn_displacement_outside(R, a, b, r):
     """Surface displacement u_z(r) [m] outside the contact (r > a) of the worn paraboloid.
 
@@ -3321,6 +3720,26 @@ def worn_pressure(E_star, R, a, b, r):
     return E_star*(2*a*mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r))))/mpmath.sqrt((max(b, r) - min(b, r))*(max(b, r) + min(b, r)) + max(0, (a - max(b, r))*(a + max(b, r)))) + (-b**2 + 2*max(b, r)**2)*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/max(b, r) - 2*mpmath.ellipe(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)*max(b, r))/(mpmath.pi*R)
 
 
+def worn_profile(R, b, r):
+    """Height f(r) [m] of the worn paraboloid's surface above its tip (0 for r < b).
+
+    Chapter: Problem 8. Derived from: the paraboloid r^2/(2R) worn flat to the radius b.
+
+    Derivation: ``hertzmdr.derive.worn``. Verified by
+    ``tests/test_worn_numeric.py::test_inside_displacement_is_d_minus_f``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*max(0, (-b + r)*(b + r))/R
+
+
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
 
@@ -3424,6 +3843,28 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
+
+
+def textbook_disc_pressure(a, n_p, p0, r):
+    """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a, in the derived (textbook) form; use disc_pressure: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r = 0.9995 a); (a - r)(a + r)/a^2 does not.
+
+    Chapter: (5.9), (5.15), Problem 6. Derived from: the distributions of section 5.1.
+
+    Derivation: ``hertzmdr.derive.contact``. Verified by
+    ``tests/test_contact.py::test_disc_pressure_force``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n_p : mpmath.mpf
+        exponent of a prescribed pressure p0*(1 - r^2/a^2)^n_p on a disc (section 5.1) [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return p0*(1 - r**2/a**2)**n_p
 
 
 def textbook_ellipse_area(R1, d, t_ba):
@@ -3725,6 +4166,144 @@ def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
         integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
     """
     return E_star*a**(-n)*d*n*mpmath.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((mpmath.mpf(1)/mpmath.mpf(2))*n - 1)/mpmath.pi
+
+
+def textbook_sphere_depth(R, a):
+    """Indentation depth d [m] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_depth: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.55), Sneddon's sphere. Derived from: (5.55), d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*mpmath.atanh(a/R)
+
+
+def textbook_sphere_force_from_radius(E_star, R, a):
+    """Normal force F [N] of a rigid spherical cap at the contact radius a < R, in the derived (textbook) form; use sphere_force_from_radius: (a^2 + R^2) atanh(a/R) - a R cancels as (a/R)^2 for a << R; below a = R/2 it is written E* R^2 (b^2 atanh(b) + (b^3/3) 2F1(1, 3/2; 5/2; b^2)), b = a/R, above it with atanh in log1p.
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) with d = g(a).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return E_star*(R**2*mpmath.atanh(a/R) - R*a + a**2*mpmath.atanh(a/R))
+
+
+def textbook_sphere_g(R, x):
+    """MDR profile g(x) [m] of the spherical cap, 0 <= x < R, in the derived (textbook) form; use sphere_g: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: (5.52) with r = sqrt(x^2 - v^2).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return x*mpmath.atanh(x/R)
+
+
+def textbook_sphere_lam_force(E_star, R, lam):
+    """Normal force F [N] of a rigid spherical cap at lam = atanh(a/R), in the derived (textbook) form; use sphere_lam_force: (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with (b^3/3) 2F1(1, 3/2; 5/2; b^2) for lam - b, b = tanh(lam).
+
+    Chapter: (5.57), Sneddon's sphere. Derived from: (5.57) at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_depth_and_force_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return E_star*R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam))
+
+
+def textbook_sphere_lam_pressure_pole(E_star, R, lam, r):
+    """The part of the contact pressure p(r) [Pa] of a rigid spherical cap from the pole R x/(R^2 - x^2) of g'(x), at lam = atanh(a/R), 0 <= r < a, in the derived (textbook) form; use sphere_lam_pressure_pole: atanh(k/c), k^2 = a^2 - r^2, c^2 = R^2 - r^2, loses 1 - k/c as a -> R; it is written log1p(2k(c + k) cosh(lam)^2/R^2)/2.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) with x^2 = r^2 + w^2, w =
+    sqrt(R^2 - r^2) tanh(u).
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return E_star*R*mpmath.atanh(mpmath.sqrt(R**2*mpmath.tanh(lam)**2 - r**2)/mpmath.sqrt(R**2 - r**2))/(mpmath.pi*mpmath.sqrt(R**2 - r**2))
+
+
+def textbook_sphere_pressure_atanh_kernel(E_star, R, x):
+    """Integrand (E*/pi) atanh(x/R)/x [Pa/m] of the rest of (5.59) for the spherical cap, to be integrated over w in (0, sqrt(a^2 - r^2)) at x = sqrt(r^2 + w^2), in the derived (textbook) form; use sphere_pressure_atanh_kernel: atanh(x/R) loses the digits of 1 - x/R near x = R; log1p(2x/(R - x))/2 keeps them (R - x is exact there) and is exact as x -> 0.
+
+    Chapter: (5.59), Sneddon's sphere. Derived from: (5.59) of the atanh term of g', with
+    x^2 = r^2 + w^2 (dx/sqrt(x^2 - r^2) = dw/x); no elementary antiderivative.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_pressure_by_quadrature_of_59``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return E_star*mpmath.atanh(x/R)/(mpmath.pi*x)
+
+
+def textbook_sphere_profile(R, r):
+    """Height f(r) [m] of a spherical cap of radius R above its apex, 0 <= r <= R, in the derived (textbook) form; use sphere_profile: R - sqrt(R^2 - r^2) cancels for r << R; it is written r^2/(R + sqrt((R - r)(R + r))).
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the sphere x^2 + (R - z)^2 = R^2.
+
+    Derivation: ``hertzmdr.derive.sphere``. Verified by
+    ``tests/test_sphere.py::test_profile_and_g``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return R - mpmath.sqrt(R**2 - r**2)
 
 
 def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):

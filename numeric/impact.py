@@ -15,7 +15,8 @@ from __future__ import annotations
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import positive, result
 
-__all__ = ["max_depth", "contact_time", "max_pressure", "max_force", "max_contact_radius"]
+__all__ = ["max_depth", "contact_time", "max_pressure", "max_force", "max_contact_radius",
+           "sphere_mass"]
 
 
 def _dispatch(by_mass, by_density, v0, R, E_star, m, rho):
@@ -86,3 +87,16 @@ def max_contact_radius(v0, R, E_star, *, m=None, rho=None):
     :func:`max_depth`."""
     return _dispatch(gen.impact_max_contact_radius, gen.impact_max_contact_radius_density, v0, R,
                      E_star, m, rho)
+
+
+def sphere_mass(R, rho):
+    """Mass m = (4/3) pi R^3 rho [kg] of a solid sphere (Problem 4).
+
+    Parameters
+    ----------
+    R : float or array_like
+        Radius of the sphere [m], R > 0.
+    rho : float or array_like
+        Density [kg/m^3], rho > 0.
+    """
+    return result(gen.impact_sphere_mass(positive("R", R), positive("rho", rho)))

@@ -16,7 +16,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["half_width", "force", "depth_from_force", "half_width_from_force",
-           "max_pressure", "max_pressure_from_force", "pressure"]
+           "max_pressure", "max_pressure_from_force", "pressure", "stiffness"]
 
 
 def half_width(d, R):
@@ -124,3 +124,17 @@ def pressure(x, d, R, E_star):
         raise ValueError(f"x = {x!r}: must be finite")
     return result(gen.line_pressure(positive("E_star", E_star), positive("R", R),
                                   positive("d", d), x))
+
+
+def stiffness(L, E_star):
+    """Differential stiffness dF/dd = (pi/4) E* L [N/m] of a line contact, (5.34) differentiated
+    (d in the sense of (5.35)); it does not depend on the load.
+
+    Parameters
+    ----------
+    L : float or array_like
+        Length of the contact [m], L > 0.
+    E_star : float or array_like
+        Effective modulus [Pa], E_star > 0.
+    """
+    return result(gen.line_stiffness(positive("E_star", E_star), positive("L", L)))

@@ -72,9 +72,11 @@ def test_mpmath_print_agrees_with_numpy_print():
                     args[s.name] = rng.uniform(0.5, 3.0)
             if rel.domain:  # e.g. r = a/t: evaluate where the relation is stated
                 continue_outer = False
+                t_vals = {}  # one value per unit-interval symbol, shared by the items
                 for sym, expr in rel.domain.items():
-                    t_vals = {t: rng.uniform(0.05, 0.95) for t in expr.free_symbols
-                              if t.name == "t" or t.name.startswith("t_")}
+                    for t in sorted(expr.free_symbols, key=lambda s: s.name):
+                        if (t.name == "t" or t.name.startswith("t_")) and t not in t_vals:
+                            t_vals[t] = rng.uniform(0.05, 0.95)
                     val = expr.subs({**{k: args[k.name] for k in expr.free_symbols
                                         if k.name in args}, **t_vals})
                     if val.free_symbols:

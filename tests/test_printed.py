@@ -45,9 +45,64 @@ def _numeric_diffs(rel, x, y):
     return out
 
 
+def _algebraic_zero(e):
+    """e == 0 for an algebraic e: every square root is split into square roots of the factors
+    of its radicand (principal branches, positive on the domain), each of those becomes a
+    symbol q with q^2 = radicand, and the numerator is reduced modulo those relations."""
+    def split(z):
+        coeff, factors = sp.factor_list(z.base)
+        factors = [list(f) for f in factors]
+        if coeff < 0:  # move the sign into a factor of odd power: -(t - 1) = 1 - t
+            odd = next((f for f in factors if f[1] % 2), None)
+            if odd is None:
+                return z
+            coeff, odd[0] = -coeff, -odd[0]
+        return sp.sqrt(coeff) * sp.Mul(*(sp.sqrt(b) ** k for b, k in factors))
+
+    e = sp.together(e.replace(lambda z: z.is_Pow and abs(z.exp) == sp.S.Half,
+                              lambda z: split(z) if z.exp > 0 else 1 / split(1 / z)))
+    num = sp.expand(sp.numer(e))
+    roots = sorted(num.atoms(sp.Pow), key=str)
+    roots = [z for z in roots if z.exp == sp.S.Half]
+    qs = sp.symbols(f"q0:{len(roots)}")
+    num = sp.expand(num.subs(dict(zip(roots, qs, strict=True))))
+    rules = {q**2: z.base for q, z in zip(qs, roots, strict=True)}
+    for _ in range(8):
+        reduced = sp.expand(num.replace(
+            lambda m: m.is_Pow and m.base in qs and m.exp >= 2,
+            lambda m: rules[m.base**2] * m.base ** (m.exp - 2)))
+        if reduced == num:
+            break
+        num = reduced
+    return sp.simplify(num) == 0
+
+
+def _equal_in_atanh(rel, x, y):
+    """log1p(z) is 2 atanh(z/(2 + z)): rewritten so, the stable forms of atanh built from
+    log1p meet the derived atanh; Piecewise forms are compared branch by branch, and two atanh
+    whose arguments are equal as algebraic functions (:func:`_algebraic_zero`) are merged."""
+    def prep(e):
+        e = _in_domain(rel, e).replace(log1p, lambda z: 2 * sp.atanh(sp.simplify(z / (2 + z))))
+        return sp.hyperexpand(e).replace(sp.atanh, lambda z: sp.atanh(sp.simplify(z)))
+
+    diff = sp.piecewise_fold(prep(x) - prep(y))
+    for e in ([b for b, _ in diff.args] if isinstance(diff, sp.Piecewise) else [diff]):
+        e = sp.simplify(e)
+        args = sorted((f.args[0] for f in e.atoms(sp.atanh)), key=str)
+        for i, A in enumerate(args):
+            for B in args[i + 1:]:
+                if _algebraic_zero(A - B):
+                    e = sp.simplify(e.subs(sp.atanh(A), sp.atanh(B)))
+        if e != 0:
+            return False
+    return True
+
+
 def _equal(rel, x, y):
     if sp.simplify(sp.hyperexpand(_in_domain(rel, x - y))) == 0:
         return True
+    if (x.has(log1p) or y.has(log1p)) and (x.has(sp.atanh) or y.has(sp.atanh)):
+        return _equal_in_atanh(rel, x, y)
     diff = _in_domain(rel, x - y)
     if diff.has(sp.acosh, sp.asinh) and sp.simplify(diff.rewrite(sp.log)) == 0:
         return True  # inverse hyperbolic identities: simplify proves them in logarithms

@@ -24,7 +24,7 @@ def test_json_document_has_exactly_the_requested_effects(capsys):
     assert list(doc["effects"]) == ["max_pressure", "contact_radius", "effective_modulus",
                                     "depth"]
     for name, eff in doc["effects"].items():
-        assert set(eff) == {"value", "unit", "method", "rel_error", "seconds"}, name
+        assert set(eff) == {"value", "unit", "method", "rel_error", "met_rtol", "seconds"}, name
         assert eff["unit"] == EFFECTS[name].unit
     assert doc["model"]["kind"] == "hertz"
 

@@ -20,21 +20,16 @@ def _plt():
     return plt
 
 
-_PREFIX = [(1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"),
-           (1e-9, "n"), (1e-12, "p")]
-
-
 def _scaled(values, name: str, unit: str):
     """Values divided by the SI prefix that suits their largest magnitude, and the axis label."""
     import numpy as np
 
+    from hertzmdr.numeric.scene.units import prefixed
+
     v = np.asarray(values, dtype=float)
     finite = np.abs(v[np.isfinite(v)])
-    top = float(finite.max()) if finite.size else 1.0
-    for scale, prefix in _PREFIX:
-        if top >= scale:
-            return v / scale, f"{name} [{prefix}{unit}]"
-    return v / 1e-12, f"{name} [p{unit}]"
+    scale, prefix = prefixed(float(finite.max()) if finite.size else 1.0)
+    return v / scale, f"{name} [{prefix}{unit}]"
 
 
 def _line(x, y, xname, xunit, yname, yunit, title, path):

@@ -1,27 +1,11 @@
-"""Human-readable output of a scene run: a table in engineering notation."""
+"""Human-readable output of a scene run: a table in engineering notation; an effect whose
+rel. error is above the scene's rtol is flagged."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-_PREFIXES = [(1e12, "T"), (1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"),
-             (1e-6, "µ"), (1e-9, "n"), (1e-12, "p"), (1e-15, "f")]
-
-
-def engineering(x: float, unit: str, digits: int = 5) -> str:
-    """``x`` with an SI prefix: engineering(1.0134e9, "Pa") == "1.0134 GPa"."""
-    if not math.isfinite(x):
-        return f"{x} {unit}"
-    if x == 0 or unit in ("", "1", "rad"):
-        return f"{x:.{digits}g} {unit}".strip()
-    if "/" in unit or "^" in unit:  # compound units keep plain scientific notation
-        return f"{x:.{digits}g} {unit}"
-    for scale, prefix in _PREFIXES:
-        if abs(x) >= scale * 0.9999999:
-            return f"{x / scale:.{digits}g} {prefix}{unit}"
-    return f"{x:.{digits}g} {unit}"
+from hertzmdr.numeric.scene.units import engineering
 
 
 def format_value(value, unit: str) -> str:
@@ -56,14 +40,22 @@ def unit_of(unit: str, key: str) -> str:
 def table(title: str, model: dict, results) -> str:
     lines = [title, "=" * len(title)]
     desc = model.get("description", model.get("kind", ""))
-    lines.append(f"model: {desc}; E* = {engineering(model['effective_modulus'], 'Pa')}")
+    lines.append(f"model: {desc}; E* = {engineering(model['effective_modulus'], 'Pa')}; "
+                 f"rtol = {model['rtol']:g}")
     rows = [("effect", "value", "method", "rel. error", "time")]
+    missed = []
     for res in results.values():
+        flag = "" if res.met_rtol else " > rtol (!)"
+        if not res.met_rtol:
+            missed.append(res.name)
         rows.append((res.name, format_value(res.value, res.unit), res.method,
-                     f"{res.rel_error:.1e}", f"{res.seconds * 1e3:.2f} ms"))
+                     f"{res.rel_error:.1e}{flag}", f"{res.seconds * 1e3:.2f} ms"))
     widths = [max(len(r[i]) for r in rows) for i in range(5)]
     for k, row in enumerate(rows):
         lines.append("  ".join(c.ljust(w) for c, w in zip(row, widths, strict=True)).rstrip())
         if k == 0:
             lines.append("  ".join("-" * w for w in widths))
+    if missed:
+        lines.append(f"(!) rel. error above rtol = {model['rtol']:g}: {', '.join(missed)} (the "
+                     "method cannot reach it here; the method column says why)")
     return "\n".join(lines)

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hertzmdr.numeric.scene.effects import EFFECTS
+from hertzmdr.numeric.scene.kinds import Contact
 from hertzmdr.numeric.scene.model import build
 from hertzmdr.numeric.scene.schema import SceneError, SceneSpec
 
@@ -22,17 +23,22 @@ class Result:
     unit: str
     method: str
     rel_error: float
+    met_rtol: bool  # rel_error <= the scene's rtol
     seconds: float
 
 
 @dataclass
 class Run:
+    """One run of a scene: its contact, and the nodes evaluated (each once), in order."""
+
     spec: SceneSpec
-    contact: object = None
+    contact: Contact
     evaluated: list[str] = field(default_factory=list)  # nodes, in the order they ran
+    model_seconds: float = 0.0
     _nodes: dict = field(default_factory=dict)
 
     def node(self, name: str):
+        """The node ``name`` (``state``, ``impact``, ``stress``), evaluated on first use."""
         if name not in self._nodes:
             self._nodes[name] = getattr(self.contact, "node_" + name)(self)
             self.evaluated.append(name)
@@ -41,11 +47,16 @@ class Run:
     def effect(self, name: str) -> Result:
         eff = EFFECTS[name]
         t0 = time.perf_counter()
-        args = [self.node(n) for n in eff.needs]
-        v = getattr(self.contact, "effect_" + name)(*args)
+        try:
+            args = [self.node(n) for n in eff.needs]
+            v = getattr(self.contact, "effect_" + name)(*args)
+        except ValueError as exc:  # numeric/'s validators name the input and its valid range
+            raise SceneError(self.spec.source, "effects", f"{name!r} at this load: {exc}") \
+                from exc
         seconds = time.perf_counter() - t0
         self.evaluated.append(name)
-        return Result(name, v.value, eff.unit, v.method, float(v.rel_error), seconds)
+        err = float(v.rel_error)
+        return Result(name, v.value, eff.unit, v.method, err, err <= self.spec.rtol, seconds)
 
 
 def check_applicable(spec: SceneSpec, contact) -> None:
@@ -95,6 +106,6 @@ def document(run_: Run, results: dict[str, Result]) -> dict:
         "model": model,
         "effects": {name: {"value": to_json_value(res.value), "unit": res.unit,
                            "method": res.method, "rel_error": res.rel_error,
-                           "seconds": res.seconds}
+                           "met_rtol": res.met_rtol, "seconds": res.seconds}
                     for name, res in results.items()},
     }

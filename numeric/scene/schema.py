@@ -12,6 +12,9 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from hertzmdr.numeric.scene.accuracy import DEFAULT_RTOL
+from hertzmdr.numeric.scene.materials import Interface
+from hertzmdr.numeric.scene.shapes import SHAPES
 from hertzmdr.numeric.scene.units import UnitError, to_si
 
 
@@ -23,22 +26,8 @@ class SceneError(ValueError):
         super().__init__(f"{where}: {key}: {message}" if key else f"{where}: {message}")
 
 
-# shape -> {key: (dimension or kind, required)}; "angle" values are radians after parsing
-SHAPES: dict[str, dict[str, tuple[str, bool]]] = {
-    "flat": {},
-    "sphere": {"radius": ("length", True)},
-    "cylinder": {"radius": ("length", True), "axis": ("angle", False), "length": ("length", False)},
-    "ellipsoid": {"radii": ("length_pair", True), "axis": ("angle", False)},
-    "cone": {"angle": ("angle", True)},
-    "flat_punch": {"radius": ("length", True)},
-    "power_law": {"coefficient": ("number", True), "exponent": ("number", True)},
-    "flattened_parabola": {"radius": ("length", True), "flat_radius": ("length", True)},
-    "profile": {"r": ("length_list", False), "f": ("length_list", False), "file": ("path", False)},
-    "polygon_punch": {"vertices": ("points", True), "pixels": ("count", False)},
-    "height_map": {"file": ("path", True), "spacing": ("length", True)},
-}
 MATERIAL_KEYS = {"E", "nu", "rigid"}
-TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model"}
+TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model", "interface"}
 
 
 @dataclass
@@ -67,19 +56,15 @@ class Load:
     radius: float | None = None
 
 
-#: prescribed pressures p0 (1 - r^2/a^2)^n of section 5.1 and Problem 6
-DISTRIBUTIONS = {"uniform": "n = 0 (Problem 6)", "hertzian": "n = 1/2 (5.15)",
-                 "punch": "n = -1/2 (5.9)"}
-
-
 @dataclass
 class SceneSpec:
     title: str
     effects: list[str]
     bodies: list[Body]
     load: Load
-    rtol: float | None
+    rtol: float  # [accuracy] rtol, DEFAULT_RTOL when not given (numeric/scene/accuracy.py)
     elliptic: str
+    interface: Interface
     source: str
     base_dir: Path | None
 
@@ -123,7 +108,7 @@ class _Reader:
     def extra_keys(self, table: dict, allowed, key: str) -> None:
         for k in table:
             if k not in allowed:
-                names = ", ".join(sorted(allowed))
+                names = ", ".join(sorted(allowed)) or "none yet"
                 self.fail(f"{key}.{k}" if key else k,
                           f"unknown key{suggest(k, allowed)} (allowed: {names})")
 
@@ -167,16 +152,21 @@ class _Reader:
             self.fail("load", "missing: give exactly one of depth, force, [load.impact] or "
                       "[load.pressure]")
         load = self.load(self.table(data["load"], "load"))
-        rtol = None
+        rtol = DEFAULT_RTOL
         if "accuracy" in data:
             acc = self.table(data["accuracy"], "accuracy")
             self.extra_keys(acc, {"rtol"}, "accuracy")
             if "rtol" in acc:
                 rtol = acc["rtol"]
                 if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) \
-                        or not (1e-15 <= rtol < 1):
-                    self.fail("accuracy.rtol", f"must be a number in [1e-15, 1), got {rtol!r}")
+                        or not (0 < rtol < 1):
+                    self.fail("accuracy.rtol", f"must be a number in (0, 1), got {rtol!r} (each "
+                              "method's own range is checked when the model is built)")
                 rtol = float(rtol)
+        interface = Interface()
+        if "interface" in data:
+            table = self.table(data["interface"], "interface")
+            self.extra_keys(table, Interface.KEYS, "interface")
         elliptic = "exact"
         if "model" in data:
             model = self.table(data["model"], "model")
@@ -184,8 +174,8 @@ class _Reader:
             elliptic = model.get("elliptic", "exact")
             if elliptic not in ("exact", "gaussian"):
                 self.fail("model.elliptic", f"must be \"exact\" or \"gaussian\", got {elliptic!r}")
-        return SceneSpec(title, list(effects), parsed, load, rtol, elliptic, self.where,
-                         self.base_dir)
+        return SceneSpec(title, list(effects), parsed, load, rtol, elliptic, interface,
+                         self.where, self.base_dir)
 
     def body(self, b: dict, i: int) -> Body:
         key = f"body[{i}]"
@@ -199,15 +189,19 @@ class _Reader:
         if shape not in SHAPES:
             self.fail(f"{key}.shape", f"unknown shape {shape!r}{suggest(str(shape), SHAPES)}")
         spec = SHAPES[shape]
-        self.extra_keys(b, {"name", "shape"} | MATERIAL_KEYS | set(spec), key)
+        self.extra_keys(b, {"name", "shape"} | MATERIAL_KEYS | {k.name for k in spec.keys}, key)
         params = {}
-        for k, (kind, required) in spec.items():
-            if k not in b:
-                if required:
-                    self.fail(f"{key}.{k}", f"missing: a {shape} needs {k}")
+        for k in spec.keys:
+            if k.name not in b:
+                if k.required:
+                    self.fail(f"{key}.{k.name}", f"missing: a {shape} needs {k.name}")
                 continue
-            params[k] = self.shape_value(b[k], kind, f"{key}.{k}")
-        self.check_shape(shape, params, key)
+            params[k.name] = self.shape_value(b[k.name], k.kind, f"{key}.{k.name}")
+
+        def fail(sub: str, message: str):
+            self.fail(f"{key}.{sub}" if sub else key, message)
+
+        spec.check(params, fail, self.base_dir or Path.cwd())
         if b.get("rigid", False) is True:
             if "E" in b or "nu" in b:
                 self.fail(key, "a rigid body has no E or nu")
@@ -255,77 +249,6 @@ class _Reader:
             return value
         raise AssertionError(kind)
 
-    def check_shape(self, shape: str, p: dict, key: str) -> None:
-        if "radius" in p and p["radius"] == 0:
-            self.fail(f"{key}.radius", "must not be 0 (negative for a concave surface)")
-        if shape in ("flat_punch", "flattened_parabola") and p["radius"] < 0:
-            self.fail(f"{key}.radius", f"must be > 0 for a {shape}, got {p['radius']}")
-        if shape == "ellipsoid" and any(r == 0 for r in p["radii"]):
-            self.fail(f"{key}.radii", "radii must not be 0")
-        if shape == "cone" and not 0 < p["angle"] < math.pi / 2:
-            self.fail(f"{key}.angle", "the angle between the cone's surface and the plane (5.38) "
-                      f"must be in (0, 90 deg), got {math.degrees(p['angle']):.6g} deg")
-        if shape == "power_law":
-            if not p["exponent"] > 0:
-                self.fail(f"{key}.exponent", f"must be > 0, got {p['exponent']}")
-            if not p["coefficient"] > 0:
-                self.fail(f"{key}.coefficient", f"must be > 0, got {p['coefficient']}")
-        if shape == "flattened_parabola" and not 0 < p["flat_radius"]:
-            self.fail(f"{key}.flat_radius", f"must be > 0, got {p['flat_radius']} (an unworn "
-                      "tip, b = 0, is shape = \"sphere\")")
-        if shape == "profile":
-            self.profile(p, key)
-        if shape == "height_map":
-            if not p["spacing"] > 0:
-                self.fail(f"{key}.spacing", f"must be > 0, got {p['spacing']}")
-            path = (self.base_dir or Path.cwd()) / p["file"]
-            if not path.is_file():
-                self.fail(f"{key}.file", f"height map {str(path)!r} not found")
-            p["file"] = str(path)
-
-    def profile(self, p: dict, key: str) -> None:
-        if "file" in p:
-            if "r" in p or "f" in p:
-                self.fail(key, "give samples r and f, or file, not both")
-            p["r"], p["f"] = self.read_samples(p.pop("file"), f"{key}.file")
-        elif not ("r" in p and "f" in p):
-            self.fail(key, "a profile needs samples r = [...] and f = [...], or file = \"...\"")
-        r, f = p["r"], p["f"]
-        if len(r) != len(f):
-            self.fail(key, f"r has {len(r)} samples and f has {len(f)}")
-        for j in range(len(r)):
-            if not (math.isfinite(r[j]) and math.isfinite(f[j])):
-                self.fail(f"{key}.r/f[{j}]", "samples must be finite numbers, not NaN or inf")
-        if r[0] != 0 or any(b <= a for a, b in zip(r, r[1:], strict=False)):
-            self.fail(f"{key}.r", "samples must start at r = 0 and increase strictly")
-
-    def read_samples(self, name: str, key: str):
-        path = (self.base_dir or Path.cwd()) / name
-        try:
-            lines = path.read_text(encoding="utf-8").splitlines()
-        except FileNotFoundError:
-            self.fail(key, f"sample file {str(path)!r} not found")
-        except (OSError, UnicodeDecodeError) as exc:
-            self.fail(key, f"cannot read {str(path)!r} ({exc})")
-        r, f = [], []
-        for n, line in enumerate(lines, 1):
-            line = line.split("#", 1)[0].strip()
-            if not line:
-                continue
-            parts = [s for s in line.replace(",", " ").split() if s]
-            try:
-                if len(parts) != 2:
-                    raise ValueError
-                r.append(float(parts[0]))
-                f.append(float(parts[1]))
-            except ValueError:
-                if not r and n == 1:  # a header line
-                    continue
-                self.fail(key, f"{path.name} line {n}: expected two numbers r, f (in m)")
-        if len(r) < 2:
-            self.fail(key, f"{path.name} has fewer than two samples")
-        return r, f
-
     def load(self, ld: dict) -> Load:
         kinds = ("depth", "force", "impact", "pressure")
         self.extra_keys(ld, set(kinds), "load")
@@ -340,11 +263,14 @@ class _Reader:
             for k in ("distribution", "p0", "radius"):
                 if k not in pr:
                     self.fail(f"load.pressure.{k}", "missing")
+            from hertzmdr.numeric.pressures import DISTRIBUTIONS
+
             if pr["distribution"] not in DISTRIBUTIONS:
                 self.fail("load.pressure.distribution",
                           f"unknown distribution {pr['distribution']!r}"
                           f"{suggest(str(pr['distribution']), DISTRIBUTIONS)} (one of: "
-                          + ", ".join(f"{k} ({v})" for k, v in DISTRIBUTIONS.items()) + ")")
+                          + ", ".join(f"{k} (n = {n:g}, {eq})" for k, (n, eq)
+                                      in DISTRIBUTIONS.items()) + ")")
             return Load("pressure", distribution=pr["distribution"],
                         p0=self.positive(pr["p0"], "pressure", "load.pressure.p0"),
                         radius=self.positive(pr["radius"], "length", "load.pressure.radius"))

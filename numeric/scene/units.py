@@ -22,8 +22,17 @@ DIMENSIONS = {
     "velocity": ("m/s", "a velocity"),
 }
 
-_PREFIX = {"": 1.0, "k": 1e3, "M": 1e6, "G": 1e9, "T": 1e12, "m": 1e-3, "u": 1e-6, "µ": 1e-6,
-           "μ": 1e-6, "n": 1e-9, "p": 1e-12, "c": 1e-2}
+#: the SI prefixes, largest first: the one table for reading units (:data:`FAST`) and for
+#: writing them (:func:`engineering` for the tables, :func:`prefixed` for the figures' axes)
+PREFIXES: tuple[tuple[str, float], ...] = (
+    ("T", 1e12), ("G", 1e9), ("M", 1e6), ("k", 1e3), ("", 1.0), ("c", 1e-2), ("m", 1e-3),
+    ("µ", 1e-6), ("n", 1e-9), ("p", 1e-12), ("f", 1e-15))
+#: other spellings of a prefix that scene files may use (ASCII u and the Greek mu for micro)
+ALIASES = {"u": "µ", "μ": "µ"}
+#: prefixes used when writing a value: engineering notation (powers of 1000) only
+_WRITE = tuple((p, f) for p, f in PREFIXES if p != "c")
+
+_PREFIX = {**dict(PREFIXES), **{k: dict(PREFIXES)[v] for k, v in ALIASES.items()}}
 
 #: (dimension, unit) -> factor to SI, for the unit strings most scenes use
 FAST: dict[tuple[str, str], float] = {}
@@ -83,3 +92,26 @@ def _with_pint(text: str, dimension: str) -> float:
         raise UnitError(f"{text!r} has the unit {have}, which is not {DIMENSIONS[dimension][1]} "
                         f"(convertible to {DIMENSIONS[dimension][0]})")
     return float(q.to(DIMENSIONS[dimension][0]).magnitude)
+
+
+def engineering(x: float, unit: str, digits: int = 5) -> str:
+    """``x`` with an SI prefix: engineering(1.0134e9, "Pa") == "1.0134 GPa"."""
+    if not math.isfinite(x):
+        return f"{x} {unit}"
+    if x == 0 or unit in ("", "1", "rad"):
+        return f"{x:.{digits}g} {unit}".strip()
+    if "/" in unit or "^" in unit:  # compound units keep plain scientific notation
+        return f"{x:.{digits}g} {unit}"
+    for prefix, scale in _WRITE:
+        if abs(x) >= scale * 0.9999999:
+            return f"{x / scale:.{digits}g} {prefix}{unit}"
+    return f"{x:.{digits}g} {unit}"
+
+
+def prefixed(top: float) -> tuple[float, str]:
+    """(scale, prefix) of the largest engineering prefix not above ``top`` (the smallest one
+    for smaller values): an axis of values up to ``top`` is drawn in prefix-units."""
+    for prefix, scale in _WRITE:
+        if top >= scale:
+            return scale, prefix
+    return _WRITE[-1][1], _WRITE[-1][0]

@@ -1,79 +1,74 @@
-"""Contact kinds: one module per kind, each a :class:`Contact` subclass with one method per
-effect it can compute. The runner asks a kind for an effect by name; an effect a kind does not
-have does not apply to it. Adding a kind is adding a module and a row in :data:`KINDS`."""
+"""Contact kinds: one module per kind, each a :class:`~.base.Contact` subclass with one method per
+effect it can compute, and :data:`KINDS`, the registry that says which bodies and loads make
+which kind and how it is built.
+
+A row of :data:`KINDS` applies to a scene when its load is among the row's ``loads`` and each
+body's shape lists the row's name in its ``kinds`` (a flat partners any kind). The model takes
+the first row that applies and calls its builder with a :class:`~.base.Setup`. A builder may
+still refuse (two flat bodies have no contact point) with a SceneError that says why. Adding a
+kind is adding a module and a row here (and the row's name to the shapes that make it).
+
+The modules are imported only when a row builds its kind: a Hertz scene never imports the
+numerical MDR, the BEM or the stress code.
+"""
 
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass
 
-import numpy as np
+from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
 
-#: relative error bound of a generated closed form evaluated in float64: the tolerance to which
-#: tests/ verify every generated function against its 50-digit independent reference
-CLOSED_FORM_RTOL = 1e-14
+DEPTH_OR_FORCE = ("depth", "force")
 
 
-@dataclass
-class Value:
-    """One computed effect: its value (SI), how it was computed and its relative error."""
+@dataclass(frozen=True)
+class Kind:
+    """A row of the registry: which loads and shapes make the kind, and its builder.
 
-    value: object
-    method: str
-    rel_error: float
+    Attributes
+    ----------
+    name : str
+        The row's name, listed in the ``kinds`` of the shapes that take part in it.
+    loads : tuple of str
+        The load kinds it accepts (``depth``, ``force``, ``impact``, ``pressure``).
+    module, builder : str
+        ``builder`` is a function of ``numeric/scene/kinds/<module>.py``: Setup -> Contact.
+    needs : str
+        The bodies it needs, in words: the error when a load only it accepts meets other shapes.
+    """
+
+    name: str
+    loads: tuple[str, ...]
+    module: str
+    builder: str
+    needs: str
+
+    def build(self, setup: Setup) -> Contact:
+        mod = importlib.import_module(f"hertzmdr.numeric.scene.kinds.{self.module}")
+        return getattr(mod, self.builder)(setup)
+
+    def takes(self, shapes) -> bool:
+        """Whether two shapes make this kind: each lists it, or partners any kind (a flat),
+        and at least one lists it."""
+        return (all(self.name in s.kinds or s.partners_any for s in shapes)
+                and any(self.name in s.kinds for s in shapes))
 
 
-@dataclass
-class State:
-    """The contact at the scene's load: depth and force as arrays (one entry per load point)."""
+KINDS: tuple[Kind, ...] = (
+    Kind("pressure", ("pressure",), "pressure", "build",
+         "a prescribed pressure acts between two flat bodies (section 5.1); give both bodies "
+         "shape = \"flat\""),
+    Kind("impact", ("impact",), "hertz", "build_impact",
+         "an impact scene is a sphere striking a flat wall (Problems 3 and 4)"),
+    Kind("quadratic", DEPTH_OR_FORCE, "quadratic", "build",
+         "two quadratic surfaces (flat, sphere, cylinder, ellipsoid)"),
+    Kind("mdr", DEPTH_OR_FORCE, "axisym", "build_closed_form",
+         "an axisymmetric profile with an MDR closed form on a flat body"),
+    Kind("numerical_mdr", DEPTH_OR_FORCE, "axisym", "build_numerical",
+         "a sampled axisymmetric profile on a flat body"),
+    Kind("bem", DEPTH_OR_FORCE, "grid", "build",
+         "a polygon_punch or height_map pressing on a flat body"),
+)
 
-    depth: np.ndarray
-    force: np.ndarray
-    rel_error: float
-    method: str
-    extra: dict
-
-
-class Contact:
-    """Base of the contact kinds."""
-
-    kind = "?"
-    label = "?"
-    #: effect -> the effect that applies instead, for the error message
-    instead: dict[str, str] = {}
-    #: effect -> why it does not apply
-    why_not: dict[str, str] = {}
-
-    def __init__(self, E_star: float, rtol: float | None):
-        self.E_star = E_star
-        self.rtol = rtol
-
-    def info(self) -> dict:
-        return {"kind": self.kind, "description": self.label, "effective_modulus": self.E_star}
-
-    def has(self, effect: str) -> bool:
-        return callable(getattr(self, "effect_" + effect, None))
-
-    def state(self, load) -> State:
-        """The contact at the load (depth- or force-controlled); every kind defines it."""
-        raise NotImplementedError(f"{type(self).__name__} must define state()")
-
-    def node_state(self, run) -> State:
-        return self.state(run.spec.load)
-
-    def node_impact(self, run):
-        """The impact's closed forms and integrated motion; only kinds that can strike."""
-        return None
-
-    def effect_effective_modulus(self) -> Value:
-        return Value(self.E_star, "(5.26)", CLOSED_FORM_RTOL)
-
-    def effect_depth(self, st: State) -> Value:
-        return Value(st.depth, st.method, st.rel_error)
-
-    def effect_force(self, st: State) -> Value:
-        return Value(st.force, st.method, st.rel_error)
-
-    @staticmethod
-    def last(st: State, key: str = "depth") -> float:
-        """Field effects of a sweep are drawn at its largest load."""
-        return float(np.max(getattr(st, key)))
+__all__ = ["FIELD_POINTS", "KINDS", "Contact", "Kind", "Setup", "State", "Value"]

@@ -1,127 +1,199 @@
-"""Axisymmetric profiles on a flat: the MDR of section 5.6 and Problems 7-8.
+"""Axisymmetric contacts: the MDR of section 5.6 and Problems 7-8.
 
-Closed forms where they exist (cone (5.38)-(5.40), flat punch (5.9)-(5.12), power law
-Problem 7(d), worn parabola Problem 8) and the numerical MDR of numeric/mdr.py for sampled
-profiles. The shared effects (stiffness 2 a E*, mean pressure, fields) live in the base class.
+:class:`Axisymmetric` writes every effect of an axisymmetric contact once, from six primitives
+a subclass provides: the contact radius a(d), the force F(d), the depth d(F), the pressure
+p(r, d), the surface displacement u(r, d) and the MDR profile g(x). The Hertz contact
+(kinds/hertz.py) is one; :class:`ClosedFormContact` takes them from a shape's
+:class:`ClosedForm` (cone (5.38)-(5.40), flat punch (5.9)-(5.12), power law Problem 7(d), worn
+parabola Problem 8, ...), and :class:`NumericalMDR` from the numerical MDR of numeric/mdr.py.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
 import numpy as np
 
-from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
-from hertzmdr.numeric.scene.kinds.stresses import StressEffects, SuperposedStresses
-
-FIELD_POINTS = 201
+from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 
 
 class Axisymmetric(StressEffects, Contact):
-    """Base: subclasses define a(d), F(d), d(F), p(r, d), u(r, d), g(x) and their methods."""
+    """Base: the effects of an axisymmetric contact, from the primitives ``radius(d)``,
+    ``force_of(d)``, ``depth_of(F)``, ``p(r, d)``, ``u(r, d)`` and ``g(x)`` of a subclass."""
 
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
+    #: the method of the contact state (and of the force-depth curve)
     method = "closed form"
-    rel = CLOSED_FORM_RTOL
-
-    # -- what each profile defines ---------------------------------------------------------
-    def radius(self, d): ...
-    def force_of(self, d): ...
-    def depth_of(self, F): ...
-    def p(self, r, d): ...
-    def u(self, r, d): ...
-    def g(self, x): ...
+    #: effect -> the method text of its value
+    methods = {"contact_radius": "(5.55) d = g(a)", "mean_pressure": "F/(pi a^2)",
+               "stiffness": "2 a E* (Problem 5, (5.12))", "pressure_profile": "(5.59)",
+               "surface_displacement": "d - f(r) inside, (5.60) outside",
+               "mdr_profile": "(5.52)"}
+    #: the first point of a pressure profile sits at 1e-3 a, off the axis (a cone's p is
+    #: singular there)
+    off_axis = True
+    #: a radius where p is log-infinite (a kink of the profile), kept off the profile's grid
+    kink: float | None = None
+    #: whether the force-depth curve starts at d = 0 (else at its first step)
+    curve_from_zero = False
 
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)
         if load.kind == "depth":
-            return State(v, np.asarray(self.force_of(v), float), self.rel, self.method, {})
-        return State(np.asarray(self.depth_of(v), float), v, self.rel,
-                     self.method + ", inverted", {})
+            return State(v, np.asarray(self.force_of(v), float), self.rel, self.method)
+        return State(np.asarray(self.depth_of(v), float), v, self.rel, self.method + ", inverted")
 
-    def effect_contact_radius(self, st):
-        return Value(np.asarray(self.radius(st.depth), float), "(5.55) d = g(a)", self.rel)
+    def rtol_ranges(self, effects):
+        return super().rtol_ranges(effects) + self.stress_ranges(effects, closed=False)
 
     def stress_solver(self, st):
+        from hertzmdr.numeric.scene.kinds.stresses import SuperposedStresses
+
         d = self.last(st)
         a = float(np.atleast_1d(self.radius(d))[0])
         return SuperposedStresses(lambda r, d=d: np.asarray(self.p(r, d), float), a,
-                                  self.nu_body[1])
+                                  self.materials.stressed.nu)
+
+    def _radius_at(self, st) -> np.ndarray:
+        return np.asarray(self.radius(st.depth), float)
+
+    def effect_contact_radius(self, st):
+        return Value(self._radius_at(st), self.methods["contact_radius"], st.rel_error)
 
     def effect_mean_pressure(self, st):
-        a = np.asarray(self.radius(st.depth), float)
-        return Value(st.force / (np.pi * a**2), "F/(pi a^2)", self.rel)
+        from hertzmdr.numeric import contact
+
+        return Value(contact.mean_pressure_disc(st.force, self._radius_at(st)),
+                     self.methods["mean_pressure"], st.rel_error)
 
     def effect_stiffness(self, st):
-        a = np.asarray(self.radius(st.depth), float)
-        return Value(2 * a * self.E_star, "2 a E* (Problem 5, (5.12))", self.rel)
+        from hertzmdr.numeric import contact
+
+        return Value(contact.stiffness(self._radius_at(st), self.E_star),
+                     self.methods["stiffness"], st.rel_error)
+
+    def pressure_radii(self, a: float) -> np.ndarray:
+        """The radii of a pressure profile: 0 to 1.5 a, kept off the axis and off a kink."""
+        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
+        if self.off_axis:
+            r[0] = a * 1e-3
+        if self.kink is not None:  # p is log-infinite there: such a point moves by 1e-3 step
+            r[np.abs(r - self.kink) <= 1e-12 * a] += 1e-3 * (r[1] - r[0])
+        return r
 
     def effect_pressure_profile(self, st):
         d = self.last(st)
-        a = float(self.radius(d))
-        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
-        r[0] = a * 1e-3  # the first point off the axis, where the cone's p is singular
-        return Value({"r": r, "p": np.asarray(self.p(r, d), float)}, "(5.59)", self.rel)
+        r = self.pressure_radii(float(self.radius(d)))
+        return Value({"r": r, "p": np.asarray(self.p(r, d), float)},
+                     self.methods["pressure_profile"], st.rel_error)
 
     def effect_surface_displacement(self, st):
         d = self.last(st)
-        a = float(self.radius(d))
-        r = np.linspace(0.0, 4.0 * a, FIELD_POINTS)
+        r = np.linspace(0.0, 4.0 * float(self.radius(d)), FIELD_POINTS)
         return Value({"r": r, "u": np.asarray(self.u(r, d), float)},
-                     "d - f(r) inside, (5.60) outside", self.rel)
+                     self.methods["surface_displacement"], st.rel_error)
 
     def effect_force_depth_curve(self, st):
-        d = np.linspace(0.0, self.last(st), FIELD_POINTS)[1:]
+        d = np.linspace(0.0, self.last(st), FIELD_POINTS)
+        if not self.curve_from_zero:
+            d = d[1:]
         return Value({"depth": d, "force": np.asarray(self.force_of(d), float)},
-                     self.method, self.rel)
+                     self.methods.get("force_depth_curve", self.method), st.rel_error)
 
     def effect_mdr_profile(self, st):
         a = float(self.radius(self.last(st)))
         x = np.linspace(0.0, 1.2 * a, FIELD_POINTS)
-        return Value({"x": x, "g": np.asarray(self.g(x), float)}, "(5.52)", self.rel)
+        return Value({"x": x, "g": np.asarray(self.g(x), float)}, self.methods["mdr_profile"],
+                     st.rel_error)
 
 
-class PowerLaw(Axisymmetric):
-    kind = "power_law"
-    why_not = {"max_pressure": "the pressure of f = c r^n with n <= 1 is singular at the centre"}
+@dataclass(frozen=True)
+class ClosedForm:
+    """The MDR closed form of one axisymmetric profile, as a shape provides it: validated
+    functions of numeric/ with the profile's parameters bound (lengths in m, forces in N,
+    pressures and E* in Pa).
 
-    def __init__(self, E_star, rtol, c, n):
-        super().__init__(E_star, rtol)
-        from hertzmdr.numeric import powerlaw
+    Attributes
+    ----------
+    kind, label, method : str
+        The model's kind and description, and the equations of its state.
+    params : dict
+        The profile's parameters, reported in the JSON's ``model``.
+    contact_radius, force, depth_from_force, pressure, surface_displacement, g_profile
+        a(d), F(d, E*), d(F, E*), p(r, d, E*), u_z(r, d), g(x).
+    no_max_pressure : str or None
+        Why the pressure has no finite maximum, or None when it has one.
+    kink : float or None
+        A radius where the pressure is log-infinite (kept off the profile's grid).
+    off_axis : bool
+        Whether a pressure profile starts at 1e-3 a (a pressure singular at the axis).
+    methods : dict
+        Method texts that differ from :attr:`Axisymmetric.methods`.
+    contact : type
+        The kind class (:class:`ClosedFormContact` or a subclass).
+    """
 
-        self.pl, self.c, self.n = powerlaw, c, n
-        self.label = f"power-law profile f = c r^{n:g} (Problem 7 d)"
-        self.method = "Problem 7(d)"
+    kind: str
+    label: str
+    method: str
+    params: dict[str, float]
+    contact_radius: Callable
+    force: Callable
+    depth_from_force: Callable
+    pressure: Callable
+    surface_displacement: Callable
+    g_profile: Callable
+    no_max_pressure: str | None = None
+    kink: float | None = None
+    off_axis: bool = True
+    methods: dict[str, str] = field(default_factory=dict)
+    contact: type | None = None
+
+
+class ClosedFormContact(Axisymmetric):
+    """An axisymmetric profile on a flat, in the closed form of its shape's :class:`ClosedForm`."""
+
+    def __init__(self, materials, interface, rtol, form: ClosedForm):
+        super().__init__(materials, interface, rtol)
+        self.form = form
+        self.kind, self.label, self.method = form.kind, form.label, form.method
+        self.methods = {**Axisymmetric.methods, **form.methods}
+        self.kink, self.off_axis = form.kink, form.off_axis
+        if form.no_max_pressure:
+            self.why_not = {"max_pressure": form.no_max_pressure}
 
     def info(self):
-        return {**super().info(), "coefficient": self.c, "exponent": self.n,
-                "kappa_n": float(self.pl.kappa(self.n))}
-
-    def radius(self, d):
-        return self.pl.contact_radius(d, self.c, self.n)
-
-    def force_of(self, d):
-        return self.pl.force(d, self.c, self.n, self.E_star)
-
-    def depth_of(self, F):
-        return self.pl.depth_from_force(F, self.c, self.n, self.E_star)
-
-    def p(self, r, d):
-        return self.pl.pressure(r, d, self.c, self.n, self.E_star)
-
-    def u(self, r, d):
-        return self.pl.surface_displacement(r, d, self.c, self.n)
-
-    def g(self, x):
-        return self.pl.g_profile(x, self.c, self.n)
+        return {**super().info(), **self.form.params}
 
     def has(self, effect):
-        if effect == "max_pressure" and self.n <= 1:
+        if effect == "max_pressure" and self.form.no_max_pressure:
             return False
         return super().has(effect)
 
+    def radius(self, d):
+        return self.form.contact_radius(d)
+
+    def force_of(self, d):
+        return self.form.force(d, self.E_star)
+
+    def depth_of(self, F):
+        return self.form.depth_from_force(F, self.E_star)
+
+    def p(self, r, d):
+        return self.form.pressure(r, d, self.E_star)
+
+    def u(self, r, d):
+        return self.form.surface_displacement(r, d)
+
+    def g(self, x):
+        return self.form.g_profile(x)
+
     def effect_max_pressure(self, st):
-        """The largest pressure: at the centre for n <= 2, towards the edge for n > 2 (Fig.
-        5.17); located on a grid of 2001 points and refined by a bounded scalar search."""
+        """The largest pressure over the contact, wherever it lies (at the centre of a power law
+        with n <= 2, towards the edge for n > 2, Fig. 5.17): located on a grid of 2001 points
+        and refined by a bounded scalar search."""
         from scipy.optimize import minimize_scalar
 
         out = []
@@ -139,106 +211,85 @@ class PowerLaw(Axisymmetric):
             out.append(best)
         return Value(np.array(out), "max of (5.59) over r (grid + bounded search)", 1e-12)
 
-
-class Cone(PowerLaw):
-    """A cone is the power law n = 1 with c = tan(theta); its own relations (5.38)-(5.40)."""
-
-    kind = "cone"
-    why_not = {"max_pressure": "the cone's pressure is log-singular at the tip (5.39)"}
-
-    def __init__(self, E_star, rtol, theta):
-        super().__init__(E_star, rtol, float(np.tan(theta)), 1.0)
-        from hertzmdr.numeric import cone
-
-        self.cone, self.theta = cone, theta
-        self.label = "rigid cone (5.38)-(5.40)"
-        self.method = "(5.38)-(5.40)"
-
-    def info(self):
-        return {**Contact.info(self), "angle": self.theta}
-
-    def radius(self, d):
-        return self.cone.contact_radius(d, self.theta)
-
-    def force_of(self, d):
-        return self.cone.force(d, self.theta, self.E_star)
-
-    def depth_of(self, F):
-        return self.cone.depth_from_force(F, self.theta, self.E_star)
-
-    def p(self, r, d):
-        return self.cone.pressure(r, d, self.theta, self.E_star)
-
-
-class FlatPunch(Axisymmetric):
-    kind = "flat_punch"
-    why_not = {"max_pressure": "the punch pressure (5.9) is singular at the edge"}
-
-    def __init__(self, E_star, rtol, a):
-        super().__init__(E_star, rtol)
-        self.a = a
-        self.label = "flat cylindrical punch (5.9)-(5.12), Problem 7(a)"
-        self.method = "(5.11), (5.12)"
-
-    def info(self):
-        return {**super().info(), "radius": self.a}
-
-    def radius(self, d):
-        return np.full(np.shape(d), self.a)
-
-    def force_of(self, d):
-        return gen.powerlaw_punch_force(self.E_star, self.a, np.asarray(d, float))
-
-    def depth_of(self, F):
-        return np.asarray(F, float) / gen.punch_stiffness(self.E_star, self.a)  # (5.12)
-
-    def p(self, r, d):
-        r = np.asarray(r, float)
-        out = np.zeros(r.shape)
-        ins = r < self.a
-        out[ins] = gen.powerlaw_punch_pressure(self.E_star, self.a, d, r[ins])
+    def rtol_ranges(self, effects):
+        out = super().rtol_ranges(effects)
+        if "max_pressure" in effects:
+            out.append(("the search for the largest pressure", (1e-12, 1.0)))
         return out
 
-    def u(self, r, d):
-        r = np.asarray(r, float)
-        out = np.full(r.shape, float(d))
-        out[r > self.a] = gen.powerlaw_punch_displacement_outside(self.a, d, r[r > self.a])
-        return out
 
-    def g(self, x):
-        x = np.abs(np.asarray(x, float))
-        return np.where(x < self.a, 0.0, np.inf)
+class PunchContact(ClosedFormContact):
+    """The flat punch: its g is 0 inside the contact and infinite outside (Problem 7(a))."""
 
     def effect_mdr_profile(self, st):
-        x = np.linspace(0.0, self.a * (1 - 1e-9), FIELD_POINTS)
+        a = float(self.form.params["radius"])
+        x = np.linspace(0.0, a * (1 - 1e-9), FIELD_POINTS)
         return Value({"x": x, "g": np.zeros_like(x)}, "Problem 7(a): g = 0 for |x| < a, "
-                     "infinite outside", self.rel)
+                     "infinite outside", st.rel_error)
+
+
+def build_closed_form(setup: Setup) -> ClosedFormContact:
+    """An axisymmetric profile with an MDR closed form (its shape's ``mdr``) on a flat."""
+    from hertzmdr.numeric.scene.shapes import SHAPES
+
+    body = _profiled(setup)
+    form = SHAPES[body.shape].mdr(body.params)
+    return (form.contact or ClosedFormContact)(setup.materials, setup.interface, setup.rtol,
+                                               form)
+
+
+def _profiled(setup: Setup):
+    shaped = setup.shaped()
+    if len(shaped) != 1:
+        names = " and ".join(b.shape for b in shaped)
+        setup.fail("body", f"two profiled bodies ({names}) are not supported: give one of them "
+                   "shape = \"flat\" (the MDR sums the two profiles; sample their sum as a "
+                   "profile)")
+    return shaped[0]
+
+
+@dataclass
+class MDRState(State):
+    """The contact state of the numerical MDR: one solution per load point."""
+
+    solutions: list = field(default_factory=list)
 
 
 class NumericalMDR(Axisymmetric):
     """Any axisymmetric gap by the numerical MDR (numeric/mdr.py), with its error estimate."""
 
     kind = "profile"
+    off_axis = False
+    state_method = "the numerical MDR"
 
-    def __init__(self, E_star, rtol, profile, label, breakpoints=()):
-        super().__init__(E_star, rtol)
+    def __init__(self, materials, interface, rtol, profile, label):
+        super().__init__(materials, interface, rtol)
+        from hertzmdr.numeric import mdr
+
+        self.state_range = mdr.RTOL_RANGE  # the rtol the numerical MDR can refine towards
         self.profile = profile
         self.label = label
-        self.tol = rtol or 1e-8
-        self.method = f"numerical MDR (rtol {self.tol:g})"
+        self.method = "numerical MDR"
         self._cache = {}
 
     def _solve(self, **kw):
         key = tuple(sorted(kw.items()))
         if key not in self._cache:
-            self._cache[key] = self.profile.solve(E_star=self.E_star, rtol=self.tol, **kw)
+            self._cache[key] = self.profile.solve(E_star=self.E_star, rtol=self.rtol, **kw)
         return self._cache[key]
 
-    def state(self, load) -> State:
+    def state(self, load) -> MDRState:
         sols = [self._solve(**{load.kind: float(v)}) for v in load.values]
         err = max(s.rel_error for s in sols)
-        return State(np.array([s.depth for s in sols]), np.array([s.force for s in sols]),
-                     err, self.method, {"sols": sols})
+        return MDRState(np.array([s.depth for s in sols]), np.array([s.force for s in sols]),
+                        err, self._label(sols), sols)
+
+    def _label(self, sols) -> str:
+        """The state's method: the numerical MDR's reason when a solve did not meet rtol (a
+        sampled profile cannot be refined past its samples). It names no tolerance: the
+        effect's ``met_rtol`` says whether its own error met it."""
+        missed = [s.why_not_met for s in sols if not s.met]
+        return "numerical MDR" + (f" (rtol not met: {missed[0]})" if missed else "")
 
     def radius(self, d):
         d = np.atleast_1d(np.asarray(d, float))
@@ -262,18 +313,24 @@ class NumericalMDR(Axisymmetric):
         return self.profile.g(x)
 
     def effect_contact_radius(self, st):
-        return Value(np.array([s.contact_radius for s in st.extra["sols"]]), self.method,
+        return Value(np.array([s.contact_radius for s in st.solutions]), st.method,
                      st.rel_error)
 
     def effect_max_pressure(self, st):
         vals, errs = [], []
-        for s in st.extra["sols"]:
+        for s in st.solutions:
             r = np.linspace(0, s.contact_radius, 1001)[:-1]
             p, e = s.pressure(r, return_error=True)
             k = int(np.argmax(p))
             vals.append(p[k])  # +inf under a conical tip (p is log-infinite at r = 0)
             errs.append(e[k] / p[k] if 0 < p[k] < np.inf else 0.0)
-        return Value(np.array(vals), self.method + ", max over 1000 radii", max(errs))
+        return Value(np.array(vals), st.method + ", max over 1000 radii", max(errs))
+
+    def effect_force_depth_curve(self, st):
+        d = np.linspace(0.0, self.last(st), FIELD_POINTS)[1:]
+        sols = [self._solve(depth=float(v)) for v in d]
+        return Value({"depth": d, "force": np.array([s.force for s in sols])}, st.method,
+                     max(s.rel_error for s in sols))
 
     def effect_pressure_profile(self, st):
         s = self._solve(depth=self.last(st))
@@ -281,77 +338,19 @@ class NumericalMDR(Axisymmetric):
         p, e = s.pressure(r, return_error=True)
         fin = np.isfinite(p)  # p(0) = +inf under a conical tip
         scale = float(np.max(p[fin])) if np.max(p[fin]) > 0 else 1.0
-        return Value({"r": r, "p": p}, self.method, float(np.max(e[fin])) / scale)
+        return Value({"r": r, "p": p}, st.method, float(np.max(e[fin])) / scale)
 
 
-class Worn(Axisymmetric):
-    """Problem 8's flattened (worn) parabola: a(d), F(d), g(x), the pressure (incomplete elliptic
-    integrals) and the outside displacement in closed form (derive/worn.py, F(d) in its stable
-    form). The pressure is log-infinite at the edge of the flat r = b, where f' jumps: it has
-    no maximum, and the stresses come from superposing it (tanh-sinh with an error estimate)."""
+def build_numerical(setup: Setup) -> NumericalMDR:
+    """A sampled profile (its shape's ``samples``) on a flat, by the numerical MDR."""
+    from hertzmdr.numeric import mdr
+    from hertzmdr.numeric.scene.shapes import SHAPES
 
-    kind = "flattened_parabola"
-    why_not = {"max_pressure": "the worn parabola's pressure is log-infinite at the edge of "
-               "the flat r = b (where the slope of the profile jumps): it has no finite maximum; "
-               "ask for 'pressure_profile' or the stresses"}
-
-    def has(self, effect):
-        return effect != "max_pressure" and super().has(effect)
-
-    def __init__(self, E_star, rtol, R, b):
-        super().__init__(E_star, rtol)
-        self.R, self.b = R, b
-        self.label = "flattened (worn) parabola, Problem 8"
-        self.method = "Problem 8"
-
-    def info(self):
-        return {**super().info(), "radius": self.R, "flat_radius": self.b}
-
-    def radius(self, d):
-        return gen.worn_contact_radius(self.R, self.b, np.asarray(d, float))
-
-    def force_of(self, d):
-        return gen.worn_force(self.E_star, self.R, self.b, np.asarray(d, float))
-
-    def depth_of(self, F):
-        """d(F): F(a) is increasing from 0 at a = b; solve it for a (brentq), then d = g(a)."""
-        from scipy.optimize import brentq
-
-        out = []
-        for Fi in np.atleast_1d(np.asarray(F, float)):
-            f = lambda a, Fi=Fi: float(gen.worn_force_from_radius(self.E_star, self.R, a,  # noqa
-                                                                  self.b)) - Fi
-            hi = 2 * max(self.b, 1e-300)
-            while f(hi) < 0:
-                hi *= 2
-            a = brentq(f, self.b, hi, xtol=1e-15 * hi, rtol=4e-16)
-            out.append(float(gen.worn_depth(self.R, a, self.b)))
-        return np.array(out)
-
-    def g(self, x):
-        x = np.abs(np.asarray(x, float))
-        out = np.zeros(x.shape)
-        out[x > self.b] = gen.worn_g(self.R, self.b, x[x > self.b])
-        return out
-
-    def u(self, r, d):
-        r = np.asarray(r, float)
-        a = float(self.radius(d))
-        out = np.empty(r.shape)
-        ins = r <= a
-        out[ins] = d - np.where(r[ins] < self.b, 0.0, (r[ins] ** 2 - self.b**2) / (2 * self.R))
-        out[~ins] = gen.worn_displacement_outside(self.R, a, self.b, r[~ins])
-        return out
-
-    def p(self, r, d):
-        a = float(self.radius(d))
-        return gen.worn_pressure(self.E_star, self.R, a, self.b, np.asarray(r, float))  # (5.59)
-
-    def effect_pressure_profile(self, st):
-        d = self.last(st)
-        a = float(self.radius(d))
-        r = np.linspace(0.0, 1.5 * a, FIELD_POINTS)
-        # p is log-infinite at r = b: a grid point that falls on it moves by 1e-3 of a step
-        r[np.abs(r - self.b) <= 1e-12 * a] += 1e-3 * (r[1] - r[0])
-        return Value({"r": r, "p": np.asarray(self.p(r, d), float)},
-                     "(5.59) in incomplete elliptic integrals (Problem 8)", self.rel)
+    body = _profiled(setup)
+    r, f, k = SHAPES[body.shape].samples(body.params)
+    try:
+        prof = mdr.Profile.from_samples(r, f, k=k)
+    except ValueError as exc:
+        setup.fail(f"body ({body.name})", f"profile samples: {exc}")
+    return NumericalMDR(setup.materials, setup.interface, setup.rtol, prof,
+                        f"sampled profile ({len(r)} samples), numerical MDR")

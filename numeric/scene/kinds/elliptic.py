@@ -4,14 +4,25 @@ elliptic integrals, numeric/ellipse.py) or the chapter's Gaussian-radius estimat
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from hertzmdr.numeric import bodies, ellipse
-from hertzmdr.numeric.scene.kinds import Contact, State, Value
+from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
+from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, State, Value
 
 #: the tolerance to which tests/test_ellipse.py verifies the exact solution against mpmath
 EXACT_RTOL = 1e-12
-FIELD_POINTS = 201
+
+
+@dataclass
+class EllipticState(State):
+    """The state of an elliptical contact: its solution, and the exact one when the model is the
+    Gaussian estimate (whose error is its deviation from it)."""
+
+    contact: ellipse.EllipticContact | None = None
+    exact: ellipse.EllipticContact | None = None
 
 
 class EllipticContact(Contact):
@@ -19,8 +30,11 @@ class EllipticContact(Contact):
     instead = {"contact_radius": "semi_axes", "half_width": "semi_axes"}
     why_not = {"contact_radius": "the contact is an ellipse, not a circle"}
 
-    def __init__(self, E_star, rtol, R1, R2, model="exact"):
-        super().__init__(E_star, rtol)
+    state_method = "the elliptic integrals of the exact solution"
+    state_range = (EXACT_RTOL, 1.0)
+
+    def __init__(self, materials, interface, rtol, R1, R2, model="exact"):
+        super().__init__(materials, interface, rtol)
         self.R1, self.R2, self.model = R1, R2, model
         self.label = ("elliptical Hertz contact (exact, complete elliptic integrals)"
                       if model == "exact" else
@@ -34,23 +48,22 @@ class EllipticContact(Contact):
     def _solve(self, **load):
         return ellipse.solve(self.R1, self.R2, self.E_star, model=self.model, **load)
 
-    def state(self, load) -> State:
+    def state(self, load) -> EllipticState:
         v = np.asarray(load.values, dtype=float)
         c = self._solve(**{load.kind: v})
         if self.model == "exact":
-            return State(np.atleast_1d(c.depth), np.atleast_1d(c.force), EXACT_RTOL,
-                         "elliptic integrals", {"c": c})
+            return EllipticState(np.atleast_1d(c.depth), np.atleast_1d(c.force), EXACT_RTOL,
+                                 "elliptic integrals", c)
         # the Gaussian estimate: its error is its deviation from the exact solution
         exact = ellipse.solve(self.R1, self.R2, self.E_star, model="exact", **{load.kind: v})
-        return State(np.atleast_1d(c.depth), np.atleast_1d(c.force), EXACT_RTOL,
-                     "Gaussian radius (5.28)-(5.30)", {"c": c, "exact": exact})
+        return EllipticState(np.atleast_1d(c.depth), np.atleast_1d(c.force), EXACT_RTOL,
+                             "Gaussian radius (5.28)-(5.30)", c, exact)
 
     def _value(self, st, attr, method):
-        c = st.extra["c"]
-        got = getattr(c, attr)
-        if "exact" not in st.extra:
+        got = getattr(st.contact, attr)
+        if st.exact is None:
             return Value(got, method, EXACT_RTOL)
-        ref = getattr(st.extra["exact"], attr)
+        ref = getattr(st.exact, attr)
         dev = float(np.max(np.abs(np.asarray(got) / np.asarray(ref) - 1)))
         return Value(got, f"{method}, Gaussian estimate; rel_error = deviation from exact", dev)
 
@@ -62,19 +75,19 @@ class EllipticContact(Contact):
 
     def effect_principal_radii(self):
         return Value([self.R1, self.R2], "eigenvalues of the gap's Hessian (Problem 2)",
-                     1e-14)
+                     CLOSED_FORM_RTOL)
 
     def effect_effective_radius(self):
         return Value(float(bodies.gaussian_radius(self.R1, self.R2)),
-                     "Gaussian radius sqrt(R1 R2) (5.30)", 1e-14)
+                     "Gaussian radius sqrt(R1 R2) (5.30)", CLOSED_FORM_RTOL)
 
     def effect_semi_axes(self, st):
-        c = st.extra["c"]
+        c = st.contact
         a, b = np.atleast_1d(c.a), np.atleast_1d(c.b)
         value = [float(a[0]), float(b[0])] if a.size == 1 else np.stack([a, b], axis=1)
         out = self._value(st, "a", "(5.28)" if self.model != "exact" else "elliptic integrals")
-        if "exact" in st.extra:  # the larger deviation of the two semi-axes
-            e = st.extra["exact"]
+        if st.exact is not None:  # the larger deviation of the two semi-axes
+            e = st.exact
             dev = max(float(np.max(np.abs(np.asarray(getattr(c, k)) / getattr(e, k) - 1)))
                       for k in ("a", "b"))
             return Value(value, out.method, dev)

@@ -8,9 +8,20 @@ areas and punch stiffnesses, second order for smooth indenters' forces, docs/non
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+
 import numpy as np
 
-from hertzmdr.numeric.scene.kinds import Contact, State, Value
+from hertzmdr.numeric.scene.accuracy import BEM_RANGE
+from hertzmdr.numeric.scene.kinds.base import Contact, Setup, State, Value
+
+
+@dataclass
+class GridState(State):
+    """The BEM's state: the solutions at the scene's grid and at half its resolution."""
+
+    fine: list = field(default_factory=list)
+    coarse: list = field(default_factory=list)
 
 
 class GridContact(Contact):
@@ -21,10 +32,12 @@ class GridContact(Contact):
                "max_pressure": "a flat punch's pressure is singular at its edge; on a grid its "
                                "largest value only measures the pixel size"}
 
-    def __init__(self, E_star, rtol, height, dx, label, punch):
-        super().__init__(E_star, rtol)
+    state_method = "the BEM's conjugate gradients (numeric/bem.py)"
+    state_range = BEM_RANGE
+
+    def __init__(self, materials, interface, rtol, height, dx, label, punch):
+        super().__init__(materials, interface, rtol)
         self.height, self.dx, self.label, self.punch = height, dx, label, punch
-        self.tol = min(rtol or 1e-8, 1e-6)
 
     def info(self):
         return {**super().info(), "grid": list(self.height.shape), "pixel_size": self.dx}
@@ -37,9 +50,9 @@ class GridContact(Contact):
     def _solve(self, height, dx, load_kind, value):
         from hertzmdr.numeric import bem
 
-        return bem.solve(height, dx, self.E_star, tol=self.tol, **{load_kind: value})
+        return bem.solve(height, dx, self.E_star, tol=self.rtol, **{load_kind: value})
 
-    def state(self, load) -> State:
+    def state(self, load) -> GridState:
         fine, coarse = [], []
         for v in load.values:
             fine.append(self._solve(self.height, self.dx, load.kind, v))
@@ -49,13 +62,13 @@ class GridContact(Contact):
         ref = np.array([(c.force if load.kind == "depth" else c.depth) for c in coarse])
         got = force if load.kind == "depth" else depth
         err = float(np.max(np.abs(got / ref - 1)))
-        return State(depth, force, err, f"BEM on {self.height.shape[0]}x{self.height.shape[1]} "
-                     f"pixels (rel_error: against half resolution)",
-                     {"fine": fine, "coarse": coarse})
+        return GridState(depth, force, err, f"BEM on {self.height.shape[0]}x"
+                         f"{self.height.shape[1]} pixels (rel_error: against half resolution)",
+                         fine, coarse)
 
     def _both(self, st, fn, method):
-        vals = np.array([fn(s) for s in st.extra["fine"]])
-        ref = np.array([fn(s) for s in st.extra["coarse"]])
+        vals = np.array([fn(s) for s in st.fine])
+        ref = np.array([fn(s) for s in st.coarse])
         return Value(vals, method, float(np.max(np.abs(vals / ref - 1))))
 
     def effect_contact_area(self, st):
@@ -66,23 +79,26 @@ class GridContact(Contact):
                           "(5.13)")
 
     def effect_mean_pressure(self, st):
-        return self._both(st, lambda s: s.force / s.area, "F / contact area")
+        from hertzmdr.numeric import contact
+
+        return self._both(st, lambda s: float(contact.mean_pressure(s.force, s.area)),
+                          "F / contact area")
 
     def effect_max_pressure(self, st):
         return self._both(st, lambda s: float(np.max(s.pressure)), "largest pixel pressure")
 
 
-def polygon_punch(E_star, rtol, vertices, pixels):
-    from hertzmdr.numeric import bem
+def build(setup: Setup) -> GridContact:
+    """A polygonal punch or a height map (its shape's ``height``) on a flat: the BEM."""
+    from hertzmdr.numeric.scene.shapes import SHAPES
 
-    height, dx = bem.polygon_punch(vertices, pixels, margin=0.05)
-    return GridContact(E_star, rtol, height, dx,
-                       f"polygonal flat punch, {len(vertices)} corners (BEM, (5.13))", True)
-
-
-def height_map(E_star, rtol, path, spacing):
-    from hertzmdr.numeric import bem
-
-    height = bem.read_height_map(path)
-    return GridContact(E_star, rtol, height, spacing,
-                       f"height map {height.shape[0]}x{height.shape[1]} (BEM)", False)
+    shaped = setup.shaped()
+    if len(shaped) != 1:
+        setup.fail("body", "a polygon_punch or height_map presses on a flat body: give the "
+                   "other body shape = \"flat\"")
+    body = shaped[0]
+    try:
+        height, dx, label, punch = SHAPES[body.shape].height(body.params)
+    except ValueError as exc:
+        setup.fail(f"body ({body.name})", str(exc))
+    return GridContact(setup.materials, setup.interface, setup.rtol, height, dx, label, punch)

@@ -7,9 +7,8 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import line
-from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Contact, State, Value
-
-FIELD_POINTS = 201
+from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
+from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, State, Value
 
 
 class LineContact(Contact):
@@ -22,8 +21,8 @@ class LineContact(Contact):
                "surface_displacement": "the displacement of a line load diverges "
                                        "logarithmically: it depends on the size of the bodies"}
 
-    def __init__(self, E_star, rtol, R, L):
-        super().__init__(E_star, rtol)
+    def __init__(self, materials, interface, rtol, R, L):
+        super().__init__(materials, interface, rtol)
         self.R, self.L = R, L
 
     def info(self):
@@ -33,9 +32,9 @@ class LineContact(Contact):
         v = np.asarray(load.values, dtype=float)
         if load.kind == "depth":
             return State(v, line.force(v, self.L, self.E_star), CLOSED_FORM_RTOL,
-                         "(5.34) with d defined by (5.35)", {})
+                         "(5.34) with d defined by (5.35)")
         return State(line.depth_from_force(v, self.L, self.E_star), v, CLOSED_FORM_RTOL,
-                     "(5.34) inverted", {})
+                     "(5.34) inverted")
 
     def effect_effective_radius(self):
         return Value(self.R, "(5.27), (5.35)", CLOSED_FORM_RTOL)
@@ -50,13 +49,14 @@ class LineContact(Contact):
                      CLOSED_FORM_RTOL)
 
     def effect_mean_pressure(self, st):
+        from hertzmdr.numeric import contact
+
         a = line.half_width_from_force(st.force, self.L, self.R, self.E_star)
-        return Value(st.force / (2 * a * self.L), "F/(2 a L)", CLOSED_FORM_RTOL)
+        return Value(contact.mean_pressure_strip(st.force, a, self.L), "F/(2 a L)",
+                     CLOSED_FORM_RTOL)
 
     def effect_stiffness(self, st):
-        from hertzmdr.numeric import _generated as gen
-
-        return Value(np.full(np.shape(st.force), float(gen.line_stiffness(self.E_star, self.L))),
+        return Value(np.full(np.shape(st.force), float(line.stiffness(self.L, self.E_star))),
                      "dF/dd of (5.34), under the convention (5.35)", CLOSED_FORM_RTOL)
 
     def effect_pressure_profile(self, st):

@@ -1,6 +1,7 @@
 """Stress effects for axisymmetric contacts (section 5.5, Figs. 5.8 and 5.9).
 
-The stresses are those in the first elastic body of the scene (its Poisson's ratio). Under the
+The stresses are those in the first elastic body of the scene (its Poisson's ratio, from the
+kind's :class:`~..materials.Materials`). Under the
 Hertz pressure they come from the closed forms of numeric/stress.py; under any other
 axisymmetric pressure (cone, flat punch, power law, worn parabola, sampled tips) from the
 superposition of the point-force field, with its error estimate, on coarser grids (a point
@@ -11,14 +12,31 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric.scene.kinds import CLOSED_FORM_RTOL, Value
+from hertzmdr.numeric.scene.kinds.base import Value
 
 AXIS_POINTS_CLOSED, AXIS_POINTS_SUPERPOSED = 201, 31
 GRID_CLOSED, GRID_SUPERPOSED = 101, 13
+#: the tolerances to which tests/test_stress.py verifies the closed-form field and its maxima
+FIELD_RTOL, MAXIMUM_RTOL = 1e-12, 1e-10
+
+
+def _tau_1(szz, srr):
+    """tau_1 = (sigma_1 - sigma_3)/2 on the axis (Fig. 5.8), where the principal stresses are
+    sigma_zz and sigma_rr (twice): numeric/stress.py's max_shear of that diagonal tensor."""
+    from hertzmdr.numeric import stress
+
+    szz, srr = np.broadcast_arrays(np.asarray(szz, float), np.asarray(srr, float))
+    sigma = np.zeros(szz.shape + (3, 3))
+    sigma[..., 0, 0] = sigma[..., 1, 1] = srr
+    sigma[..., 2, 2] = szz
+    return np.asarray(stress.max_shear(sigma), float)
 
 
 class HertzStresses:
     """Closed forms: the Hertz pressure of contact radius a and maximum pressure p0."""
+
+    ranges = {"axis_stresses": FIELD_RTOL, "von_mises_field": FIELD_RTOL,
+              "max_shear": MAXIMUM_RTOL, "max_von_mises": MAXIMUM_RTOL}
 
     def __init__(self, a, p0, nu):
         self.a, self.p0, self.nu = a, p0, nu
@@ -29,8 +47,8 @@ class HertzStresses:
 
         z = np.linspace(0.0, 3.0 * self.a, AXIS_POINTS_CLOSED)
         szz, srr = stress.axis_stresses(z, self.a, self.p0, self.nu)
-        return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": 0.5 * np.abs(szz - srr)},
-                     self.method, 1e-12)
+        return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": _tau_1(szz, srr)},
+                     self.method, FIELD_RTOL)
 
     def max_shear(self):
         from hertzmdr.numeric import stress
@@ -38,7 +56,7 @@ class HertzStresses:
         value, r, z = stress.hertz_maximum(self.nu, "max_shear")
         return Value({"value": value * self.p0, "depth": z * self.a},
                      "maximum of (sigma_1 - sigma_3)/2 in the body (grid, then Nelder-Mead)",
-                     1e-10)
+                     MAXIMUM_RTOL)
 
     def field(self):
         from hertzmdr.numeric import stress
@@ -47,18 +65,21 @@ class HertzStresses:
         z = np.linspace(0.0, 2.0 * self.a, GRID_CLOSED)
         X, Z = np.meshgrid(x, z)
         sv = stress.von_mises(stress.hertz_stress(X, 0.0 * X, Z, self.a, self.p0, self.nu))
-        return Value({"x": x, "z": z, "sigma_v": sv}, self.method + ", (5.50)", 1e-12)
+        return Value({"x": x, "z": z, "sigma_v": sv}, self.method + ", (5.50)", FIELD_RTOL)
 
     def max_von_mises(self):
         from hertzmdr.numeric import stress
 
         value, r, z = stress.hertz_maximum(self.nu, "von_mises")
         return Value({"value": value * self.p0, "x": r * self.a, "z": z * self.a},
-                     "maximum of (5.50) in the body (grid, then Nelder-Mead)", 1e-10)
+                     "maximum of (5.50) in the body (grid, then Nelder-Mead)", MAXIMUM_RTOL)
 
 
 class SuperposedStresses:
-    """Any axisymmetric pressure p(r) on r < a by superposition of (5.41)-(5.46)."""
+    """Any axisymmetric pressure p(r) on r < a by superposition of (5.41)-(5.46); its error is
+    its own estimate (tanh-sinh), whatever rtol asks (``met_rtol`` says whether it met it)."""
+
+    ranges: dict[str, float] = {}
 
     def __init__(self, pressure, a, nu):
         self.p, self.a, self.nu = pressure, a, nu
@@ -75,7 +96,7 @@ class SuperposedStresses:
         szz, srr = s[..., 2, 2], s[..., 0, 0]
         scale = float(np.max(np.abs(szz)))
         err = float(np.max(e[..., 2, 2] + e[..., 0, 0])) / scale
-        return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": 0.5 * np.abs(szz - srr)},
+        return Value({"z": z, "sigma_zz": szz, "sigma_rr": srr, "tau_1": _tau_1(szz, srr)},
                      self.method, err)
 
     def _grid(self):
@@ -113,15 +134,19 @@ class SuperposedStresses:
 
 
 class StressEffects:
-    """Mixin for contact kinds: the four stress effects, through ``node_stress``."""
+    """Mixin for contact kinds: the four stress effects, through the ``stress`` node. A kind
+    defines ``stress_solver(state)`` (:class:`HertzStresses` or :class:`SuperposedStresses`)."""
 
-    nu_body = None  # (name, nu) of the body whose stresses are reported; set by the model
-
-    def stress_solver(self, st):
-        raise NotImplementedError
+    STRESS_EFFECTS = ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises")
 
     def node_stress(self, run):
-        return self.stress_solver(run._nodes.get("state") or run.node("state"))
+        return self.stress_solver(run.node("state"))
+
+    def stress_ranges(self, effects, closed: bool) -> list[tuple[str, tuple[float, float]]]:
+        """The rtol each requested stress effect can deliver (closed forms only; superposition
+        reports its estimate)."""
+        table = HertzStresses.ranges if closed else SuperposedStresses.ranges
+        return [(f"{e} (closed form)", (table[e], 1.0)) for e in effects if e in table]
 
     def effect_axis_stresses(self, solver):
         return solver.axis()
@@ -136,4 +161,4 @@ class StressEffects:
         return solver.max_von_mises()
 
 
-__all__ = ["CLOSED_FORM_RTOL", "HertzStresses", "StressEffects", "SuperposedStresses"]
+__all__ = ["HertzStresses", "StressEffects", "SuperposedStresses"]

@@ -1,0 +1,126 @@
+"""Numerical MDR, solving: the contact radius (5.55) and the force (5.57) at a depth or a
+force on a pair of representations, and the bound of their relative error.
+
+g(a) = d by safeguarded Newton on g and g' by quadrature (no tables); under force control the
+monotone F(a) by Brent's method. The bound is the larger of the coarse-vs-fine differences and
+the envelope of the differences of g and of its integral around a put through the linearized
+(5.55) and (5.57), plus a rounding floor.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric._mdr import quadrature
+from hertzmdr.numeric._mdr.spline import Rep
+
+_EPS = np.finfo(float).eps
+
+
+def radius(rep: Rep, r_max: float, d: float, guess: float | None = None) -> float:
+    """Solve g(a) = d (5.55) by safeguarded Newton on g and g' by quadrature (no tables):
+    bracket on 16 radii (one vectorized quadrature) unless a guess is given. d [m] -> a [m]."""
+    lo, hi = 0.0, r_max
+    g_hi = quadrature.g(rep, np.array([hi]))[0]
+    if g_hi < d:
+        raise ValueError(f"depth {d} exceeds g(r_max) = {g_hi}: the profile is too short "
+                         "for this depth")
+    if guess is None:
+        xs = np.linspace(0, hi, 17)[1:]
+        gs = quadrature.g(rep, xs)
+        i = int(np.searchsorted(gs, d))
+        lo, hi = (xs[i - 1] if i > 0 else 0.0), xs[min(i, len(xs) - 1)]
+        g_lo = gs[i - 1] if i > 0 else 0.0
+        g_hi = gs[min(i, len(xs) - 1)]
+        # secant start inside the bracket
+        a = lo + (hi - lo) * (d - g_lo) / (g_hi - g_lo) if g_hi > g_lo else (lo + hi) / 2
+    else:
+        a = guess
+    for _ in range(100):
+        gg, gp = quadrature.g_and_gprime(rep, np.array([a]))
+        ga, gp = gg[0] - d, gp[0]
+        if ga == 0:
+            return a
+        if ga > 0:
+            hi = a
+        else:
+            lo = a
+        step = ga / gp if gp > 0 else np.inf
+        if abs(step) <= 2e-16 * a:  # quadratic convergence: this step is the last
+            return a - step
+        a_new = a - step
+        if not (lo <= a_new <= hi):
+            a_new = (lo + hi) / 2
+        if hi - lo <= 4e-16 * hi:
+            return a_new
+        a = a_new
+    return a
+
+
+def force(rep: Rep, a: float, d: float, E_star: float) -> float:
+    """F [N] at the contact radius a [m] and depth d [m] (5.57)."""
+    return float(gen.mdr_force(E_star, a, d, quadrature.G(rep, np.array([a]))[0]))  # (5.57)
+
+
+def force_of_radius(rep: Rep, a: float, E_star: float) -> float:
+    """F(a) [N] with d = g(a) (5.55), (5.57)."""
+    return force(rep, a, quadrature.g(rep, np.array([a]))[0], E_star)
+
+
+def envelope(fine: Rep, coarse: Rep, a: float) -> tuple[float, float]:
+    """The largest |g_fine - g_coarse| [m] and |G_fine - G_coarse| [m^2] (G = integral_0^x g)
+    on 9 radii x within two coarse sample spacings of a (and below r_max).
+
+    The signed differences at a alone can vanish by accident (the coarse error passing
+    through 0 at that radius while both are in error); their envelope over the radii around
+    a cannot. (Integrating |f'_fine - f'_coarse| instead would not do: the interpolating
+    splines' f' errors cancel over every interval between samples, where both splines match
+    f, by construction, and their absolute values overstate the error a thousandfold.)"""
+    kn = coarse.knots
+    i = int(np.clip(np.searchsorted(kn, a), 1, len(kn) - 1))
+    h = kn[i] - kn[i - 1]
+    x = np.clip(a + h * np.linspace(-2, 2, 9), a / 2, kn[-1])
+    gf, _, Gf = quadrature.direct(fine, x, with_G=True)
+    gc, _, Gc = quadrature.direct(coarse, x, with_G=True)
+    return float(np.max(np.abs(gf - gc))), float(np.max(np.abs(Gf - Gc)))
+
+
+def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float | None,
+         E_star: float) -> tuple[float, float, float, float, float, float]:
+    """(d [m], a [m], F [N]) on the fine representation at the ``depth`` [m] or the force
+    ``load`` [N],
+    the coarse one's d [m] and a [m], and the bound of the relative error of d, a, F."""
+    from scipy.optimize import brentq
+
+    out = []
+    for rep in (fine, coarse):
+        if depth is not None:
+            d = depth
+            a = radius(rep, r_max, d, out[0][1] if out else None)
+        else:
+            Fmax = force_of_radius(rep, r_max, E_star)
+            if load > Fmax:
+                raise ValueError(f"force = {load} exceeds F(r_max) = {Fmax}")
+            a = brentq(lambda aa, rp=rep: force_of_radius(rp, aa, E_star) - load,
+                       0.0, r_max, xtol=1e-16 * r_max, rtol=1e-15)
+            d = float(quadrature.g(rep, np.array([a]))[0])
+        out.append((d, a, force(rep, a, d, E_star)))
+    (d, a, F), (dc, ac, Fc) = out
+    # 1. coarse vs fine: the error of the coarse solution, conservative for the fine one
+    diff = max(abs(F - Fc) / F, abs(a - ac) / a, abs(d - dc) / d)
+    # 2. the same without an accidental cancellation at a: the envelope of the differences
+    # of g and G around a (envelope), put through the linearized (5.55) and (5.57): F
+    # is stationary in a at a fixed d (dF/da = 2 E* (d - g(a)) = 0), so at a given depth
+    # dF = -2 E* dG and da = dg/g'(a); at a given force F(a) = 2 E* (a g(a) - G(a)) with
+    # dF/da = 2 E* a g'(a), and dd = g' da + dg
+    Dg, DG = envelope(fine, coarse, a)
+    slope = a * float(quadrature.gprime(fine, np.array([a]))[0])  # a g'(a) [m]
+    if depth is not None:
+        dev = max(Dg / slope if slope > 0 else np.inf, 2 * E_star * DG / F)
+    else:
+        da = (a * Dg + DG) / (a * slope) if slope > 0 else np.inf
+        dev = max(da, (slope * da + Dg) / d)
+    # 3. rounding: f' of a spline through N samples loses about log10(N) digits
+    floor = (64 + 4 * len(fine.knots)) * _EPS
+    return d, a, F, dc, ac, max(diff, dev) + floor

@@ -1,0 +1,101 @@
+"""Numerical MDR, the spline representation of the profile f at one resolution.
+
+f is interpolated (or smoothed) by a spline of degree k per segment between the breakpoints
+(kinks); ``Rep`` holds the splines and, filled on first use by the other modules, the caches
+of the quadrature nodes, the kinks and the tables.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:  # scipy is imported when the first representation is built
+    from scipy.interpolate import BSpline
+
+
+@dataclass
+class Rep:
+    """A piecewise spline representation of f at one resolution, and its MDR caches.
+
+    f' jumps by s_j at the kinks b_j (the segment edges; every knot for k = 1). Then
+    g'(x) = q(x) + sum_j b_j s_j / sqrt(x^2 - b_j^2) and g(x) = G_s(x) + sum_j b_j s_j
+    acosh(x / b_j) (terms for x > b_j), where q(x) = integral_0^(pi/2) h(x sin theta) dtheta,
+    h = (u f')' away from the kinks, and G_s' = q. The kink terms are exact (``kinks``); q
+    and G_s are tabulated (``tables``; they go like c0 + c1 sqrt(x - b_j) + ... past a kink:
+    tables in sqrt(x - b_j)).
+    """
+
+    segments: list[BSpline]  # one per segment
+    edges: np.ndarray  # segment edges, edges[0] = 0, edges[-1] = r_max
+    m_theta: int  # Gauss points per panel
+    knots: np.ndarray  # the sample radii: the spline's pieces
+    k: int = 5
+    table_nodes: int = 128  # table spacing at most (segment length)/table_nodes
+    # filled on first use by tables.tables(), kinks.jumps() and quadrature.ugrid()
+    tables: list | None = field(default=None, repr=False)  # list[tables.Seg]
+    kinks: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)  # (b, s)
+    # (piece edges, nodes u, weights * f'(u), weights * (u f')'(u))
+    ugrid: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = field(
+        default=None, repr=False)
+
+    def seg_index(self, u):
+        """The segment holding each radius u [m]."""
+        return np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0,
+                       len(self.segments) - 1)
+
+    def derivs(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """f'(u) and f''(u), one segment lookup for both."""
+        u = np.asarray(u, float)
+        f1, f2 = np.zeros(u.shape), np.zeros(u.shape)
+        if len(self.segments) == 1:
+            spl = self.segments[0]
+            return spl(u, nu=1), (spl(u, nu=2) if self.k > 1 else f2)
+        idx = self.seg_index(u)
+        for i, spl in enumerate(self.segments):
+            sel = idx == i
+            if sel.any():
+                f1[sel] = spl(u[sel], nu=1)
+                if self.k > 1:
+                    f2[sel] = spl(u[sel], nu=2)
+        return f1, f2
+
+    def fprime(self, u):
+        """f'(u) [1]."""
+        return self.derivs(u)[0]
+
+    def with_quadrature(self, m_theta: int, table_nodes: int | None = None) -> Rep:
+        """The same splines with ``m_theta`` Gauss points a panel (and ``table_nodes``)."""
+        return replace(self, m_theta=m_theta, tables=None, ugrid=None,
+                       table_nodes=self.table_nodes if table_nodes is None else table_nodes)
+
+    def panel_knots(self):
+        """Knots used as panel breaks: all of them for k = 1 (f' jumps there), every few for
+        the smoother splines (at most 64 panels), always the segment edges."""
+        inner = self.knots[1:-1]
+        step = 1 if self.k == 1 else max(1, len(inner) // 64)
+        return np.union1d(inner[::step], self.edges[1:-1])
+
+
+def build(r, f, breakpoints, k, smoothing, m_theta) -> Rep:
+    """The spline representation of the samples (r_i, f_i) [m], one spline per segment
+    between the ``breakpoints`` [m]: interpolating of degree k, or a cubic smoothing spline
+    (``smoothing``: its parameter, or "gcv")."""
+    from scipy.interpolate import make_interp_spline, make_smoothing_spline
+
+    edges = np.concatenate([[0.0], breakpoints, [r[-1]]])
+    segments = []
+    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+        sel = (r >= lo - 1e-15 * hi) & (r <= hi * (1 + 1e-15))
+        rs, fs = r[sel], f[sel]
+        kk = min(k, len(rs) - 1)
+        if kk < 1:
+            raise ValueError(f"segment [{lo}, {hi}] has {len(rs)} sample(s); need >= 2")
+        if smoothing is not None:
+            lam = None if smoothing == "gcv" else float(smoothing)
+            segments.append(make_smoothing_spline(rs, fs, lam=lam))
+        else:
+            segments.append(make_interp_spline(rs, fs, k=kk))
+    return Rep(segments, edges, m_theta, np.asarray(r, float), k if smoothing is None else 3)

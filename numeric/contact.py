@@ -1,0 +1,101 @@
+"""Relations every contact shares, whatever its profile: the mean pressure over a disc, a strip
+or a measured area; the differential stiffness 2 a E* of an axisymmetric contact (5.12),
+Problem 5; the flat punch's force (5.11) and its inverse.
+
+Floats or NumPy arrays in SI units; bad input raises ValueError. The formulas are generated
+from :mod:`hertzmdr.derive.contact` and :mod:`hertzmdr.derive.powerlaw` (the punch).
+"""
+
+from __future__ import annotations
+
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric._validate import nonnegative, positive, result
+
+__all__ = ["mean_pressure", "mean_pressure_disc", "mean_pressure_strip", "stiffness",
+           "punch_force", "punch_depth_from_force"]
+
+
+def mean_pressure(F, A):
+    """Mean pressure F/A [Pa] over a contact of area A, (5.17).
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], >= 0.
+    A : float or array_like
+        Contact area [m^2], > 0.
+    """
+    return result(gen.contact_mean_pressure(positive("A", A), nonnegative("F", F)))
+
+
+def mean_pressure_disc(F, a):
+    """Mean pressure F/(pi a^2) [Pa] over a circular contact of radius a, (5.17).
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], >= 0.
+    a : float or array_like
+        Contact radius [m], > 0.
+    """
+    return result(gen.disc_mean_pressure(nonnegative("F", F), positive("a", a)))
+
+
+def mean_pressure_strip(F, a, L):
+    """Mean pressure F/(2 a L) [Pa] over a contact strip of half-width a and length L, (5.34).
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], >= 0.
+    a : float or array_like
+        Half-width of the strip [m], > 0.
+    L : float or array_like
+        Length of the strip [m], > 0.
+    """
+    return result(gen.strip_mean_pressure(nonnegative("F", F), positive("L", L),
+                                          positive("a", a)))
+
+
+def stiffness(a, E_star):
+    """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a,
+    (5.12), Problem 5 (dF/dd of (5.57) with d = g(a)).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Contact radius [m], >= 0.
+    E_star : float or array_like
+        Effective modulus [Pa], > 0.
+    """
+    return result(gen.mdr_stiffness(positive("E_star", E_star), nonnegative("a", a)))
+
+
+def punch_force(d, a, E_star):
+    """Normal force F = 2 E* a d [N] of a flat rigid punch of radius a at depth d, (5.11).
+
+    Parameters
+    ----------
+    d : float or array_like
+        Indentation depth [m], >= 0.
+    a : float or array_like
+        Punch radius [m], > 0.
+    E_star : float or array_like
+        Effective modulus [Pa], > 0.
+    """
+    return result(gen.powerlaw_punch_force(positive("E_star", E_star), positive("a", a),
+                                           nonnegative("d", d)))
+
+
+def punch_depth_from_force(F, a, E_star):
+    """Indentation depth d = F/(2 E* a) [m] of a flat rigid punch under the force F, (5.11).
+
+    Parameters
+    ----------
+    F : float or array_like
+        Normal force [N], >= 0.
+    a, E_star
+        As in :func:`punch_force`.
+    """
+    return result(gen.punch_depth_from_force(positive("E_star", E_star), nonnegative("F", F),
+                                             positive("a", a)))

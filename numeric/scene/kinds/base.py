@@ -1,0 +1,122 @@
+"""What every contact kind shares: the value of an effect, the contact state at the load, what
+a builder receives, and the :class:`Contact` base class with the effects written once."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, NoReturn
+
+import numpy as np
+
+from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RANGE, CLOSED_FORM_RTOL
+from hertzmdr.numeric.scene.materials import Interface, Materials
+
+if TYPE_CHECKING:
+    from hertzmdr.numeric.scene.schema import SceneSpec
+
+#: points of every field effect (profiles, curves): one constant for all kinds
+FIELD_POINTS = 201
+
+
+@dataclass
+class Value:
+    """One computed effect: its value (SI), how it was computed and its relative error."""
+
+    value: object
+    method: str
+    rel_error: float
+
+
+@dataclass
+class State:
+    """The contact at the scene's load: depth and force as arrays (one entry per load point),
+    their relative error and how they were found. Kinds with more to carry subclass it."""
+
+    depth: np.ndarray
+    force: np.ndarray
+    rel_error: float
+    method: str
+
+
+@dataclass(frozen=True)
+class Setup:
+    """What a kind's builder receives: the scene, both bodies' materials (E* among them)."""
+
+    spec: SceneSpec
+    materials: Materials
+
+    @property
+    def interface(self) -> Interface:
+        return self.spec.interface
+
+    @property
+    def rtol(self) -> float:
+        return self.spec.rtol
+
+    def fail(self, key: str, message: str) -> NoReturn:
+        from hertzmdr.numeric.scene.schema import SceneError
+
+        raise SceneError(self.spec.source, key, message)
+
+    def shaped(self) -> list:
+        """The bodies that are not flat."""
+        return [b for b in self.spec.bodies if b.shape != "flat"]
+
+
+class Contact:
+    """Base of the contact kinds.
+
+    A kind defines ``state(load) -> State`` and one ``effect_<name>`` method per effect it can
+    compute (an effect it lacks does not apply to it); the runner calls them with the nodes the
+    effect needs (:mod:`..effects`). Every kind receives the :class:`Materials` and the
+    :class:`Interface` of the scene and its ``rtol``.
+    """
+
+    kind = "?"
+    label = "?"
+    #: effect -> the effect that applies instead, for the error message
+    instead: dict[str, str] = {}
+    #: effect -> why it does not apply
+    why_not: dict[str, str] = {}
+    #: what computes the contact state, and the rtol it can deliver (accuracy.py)
+    state_method = "closed forms"
+    state_range: tuple[float, float] = CLOSED_FORM_RANGE
+    rel = CLOSED_FORM_RTOL
+
+    def __init__(self, materials: Materials, interface: Interface, rtol: float):
+        self.materials = materials
+        self.interface = interface
+        self.rtol = rtol
+
+    @property
+    def E_star(self) -> float:
+        """Effective modulus E* [Pa] (5.26)."""
+        return self.materials.E_star
+
+    def info(self) -> dict:
+        return {"kind": self.kind, "description": self.label, "effective_modulus": self.E_star,
+                "rtol": self.rtol}
+
+    def has(self, effect: str) -> bool:
+        return callable(getattr(self, "effect_" + effect, None))
+
+    def rtol_ranges(self, effects) -> list[tuple[str, tuple[float, float]]]:
+        """(method, the rtol range it can deliver) of each method the effects use."""
+        return [(self.state_method, self.state_range)]
+
+    def node_state(self, run) -> State:
+        return self.state(run.spec.load)
+
+    def effect_effective_modulus(self) -> Value:
+        return Value(self.E_star, "(5.26)", CLOSED_FORM_RTOL)
+
+    def effect_depth(self, st: State) -> Value:
+        return Value(st.depth, st.method, st.rel_error)
+
+    def effect_force(self, st: State) -> Value:
+        return Value(st.force, st.method, st.rel_error)
+
+    @staticmethod
+    def last(st: State, key: str = "depth") -> float:
+        """Field effects of a sweep are drawn at its largest load."""
+        return float(np.max(getattr(st, key)))

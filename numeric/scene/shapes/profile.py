@@ -1,0 +1,66 @@
+"""A measured axisymmetric tip: samples r, f (or a file of them), solved by the numerical MDR."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from hertzmdr.numeric.scene.shapes.base import Key, Shape
+
+
+class Profile(Shape):
+    name = "profile"
+    doc = "a measured tip; r starts at 0 and increases"
+    keys = (Key("r", "length_list", required=False, doc="samples r = [...] (m)"),
+            Key("f", "length_list", required=False, doc="samples f = [...] (m)"),
+            Key("file", "path", required=False,
+                doc='or file = "tip.csv" (two columns r, f in m, relative to the scene file)'))
+    kinds = ("numerical_mdr",)
+
+    def check(self, p, fail, base_dir):
+        if "file" in p:
+            if "r" in p or "f" in p:
+                fail("", "give samples r and f, or file, not both")
+            p["r"], p["f"] = read_samples(base_dir / p.pop("file"), fail)
+        elif not ("r" in p and "f" in p):
+            fail("", "a profile needs samples r = [...] and f = [...], or file = \"...\"")
+        r, f = p["r"], p["f"]
+        if len(r) != len(f):
+            fail("", f"r has {len(r)} samples and f has {len(f)}")
+        for j in range(len(r)):
+            if not (math.isfinite(r[j]) and math.isfinite(f[j])):
+                fail(f"r/f[{j}]", "samples must be finite numbers, not NaN or inf")
+        if r[0] != 0 or any(b <= a for a, b in zip(r, r[1:], strict=False)):
+            fail("r", "samples must start at r = 0 and increase strictly")
+
+    def samples(self, p):
+        """The profile's samples r, f [m] and the spline degree the numerical MDR uses."""
+        return p["r"], p["f"], (3 if len(p["r"]) < 20 else 5)
+
+
+def read_samples(path: Path, fail):
+    """Two columns r, f [m] of a text file (commas or spaces, # comments, one header line)."""
+    try:
+        lines = path.read_text(encoding="utf-8").splitlines()
+    except FileNotFoundError:
+        fail("file", f"sample file {str(path)!r} not found")
+    except (OSError, UnicodeDecodeError) as exc:
+        fail("file", f"cannot read {str(path)!r} ({exc})")
+    r, f = [], []
+    for n, line in enumerate(lines, 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = [s for s in line.replace(",", " ").split() if s]
+        try:
+            if len(parts) != 2:
+                raise ValueError
+            r.append(float(parts[0]))
+            f.append(float(parts[1]))
+        except ValueError:
+            if not r and n == 1:  # a header line
+                continue
+            fail("file", f"{path.name} line {n}: expected two numbers r, f (in m)")
+    if len(r) < 2:
+        fail("file", f"{path.name} has fewer than two samples")
+    return r, f

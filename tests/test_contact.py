@@ -1,0 +1,103 @@
+"""The relations every contact shares (derive/contact.py, numeric/contact.py) and the prescribed
+pressures on a disc (numeric/pressures.py), by independent routes: forces by mpmath quadrature
+of a pressure, stiffness by differentiating a force that quadrature gives, the punch's depth by
+a round trip through its integrated pressure."""
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from hertzmdr.numeric import contact, pressures
+
+# a handful of correctly rounded float64 operations against a 30-digit reference
+TOL_FLOAT = 1e-14
+
+CASES = [(1e-6, 1e9), (3e-3, 2.5e8), (0.7, 1.3e11)]  # (a [m], p0 or E* [Pa])
+
+
+@pytest.mark.parametrize("a, p0", CASES)
+def test_mean_pressure_disc(a, p0):
+    """The Hertz pressure p0 sqrt(1 - r^2/a^2) carries F = integral 2 pi r p dr (tanh-sinh at
+    30 digits); its mean pressure is (2/3) p0, (5.17)."""
+    with mp.workdps(30):
+        F = mp.quad(lambda r: 2 * mp.pi * r * p0 * mp.sqrt(1 - (r / a) ** 2), [0, a])
+        got = contact.mean_pressure_disc(float(F), a)
+        assert abs(got / (mp.mpf(2) / 3 * p0) - 1) < TOL_FLOAT
+
+
+@pytest.mark.parametrize("a, p0", CASES)
+def test_mean_pressure_strip(a, p0):
+    """The line contact's pressure p0 sqrt(1 - x^2/a^2) on a strip of length L carries
+    F = L integral p dx; its mean pressure is (pi/4) p0."""
+    L = 0.37
+    with mp.workdps(30):
+        F = L * mp.quad(lambda x: p0 * mp.sqrt(1 - (x / a) ** 2), [-a, 0, a])
+        got = contact.mean_pressure_strip(float(F), a, L)
+        assert abs(got / (mp.pi / 4 * p0) - 1) < TOL_FLOAT
+
+
+def test_mean_pressure_area():
+    """A pressure p0 (1 + x y/s^2) on a square of side s: F by 2-D quadrature, mean p0 (5/4)."""
+    s, p0 = 2e-4, 3e7
+    with mp.workdps(30):
+        F = mp.quad(lambda x, y: p0 * (1 + x * y / s**2), [0, s], [0, s])
+        got = contact.mean_pressure(float(F), s * s)
+        assert abs(got / (p0 * mp.mpf(5) / 4) - 1) < TOL_FLOAT
+
+
+@pytest.mark.parametrize("n", [1.0, 2.0, 3.5])
+def test_stiffness_by_differentiation(n):
+    """dF/dd of the power-law force F(d) = 2 E* integral_0^a (d - g(x)) dx (5.57), g = kappa c
+    x^n, a from g(a) = d (5.55) by findroot, differentiated by mpmath: 2 a E* (5.12)."""
+    E, c, d0 = 1.7e11, 2.0e3, 1e-7
+    with mp.workdps(30):
+        kappa = mp.sqrt(mp.pi) * mp.gamma(n / 2 + 1) / mp.gamma(n / 2 + mp.mpf(1) / 2)
+
+        def radius(d):
+            return mp.findroot(lambda a: kappa * c * a**n - d, (d / (kappa * c)) ** (1 / n))
+
+        def force(d):
+            a = radius(d)
+            return 2 * E * mp.quad(lambda x: d - kappa * c * x**n, [0, a])
+
+        k = mp.diff(force, mp.mpf(d0))
+        got = contact.stiffness(float(radius(mp.mpf(d0))), E)
+        # mp.diff's finite differences at 30 digits are good to ~1e-20; the float64 radius
+        # passed in is rounded to 1e-16
+        assert abs(got / k - 1) < TOL_FLOAT
+
+
+@pytest.mark.parametrize("a, E", CASES)
+def test_punch_round_trip(a, E):
+    """The punch pressure E* d/(pi sqrt(a^2 - r^2)) (5.9) integrated over the disc (tanh-sinh
+    copes with the edge singularity) gives the force; the force gives back the depth."""
+    d = 3e-8
+    with mp.workdps(30):
+        am = mp.mpf(a)  # (a - r)(a + r) in mpmath keeps the edge r -> a exact
+        F = mp.quad(lambda r: 2 * r * E * d / mp.sqrt((am - r) * (am + r)), [0, am])
+        assert abs(contact.punch_force(d, a, E) / F - 1) < TOL_FLOAT
+        assert abs(contact.punch_depth_from_force(float(F), a, E) / d - 1) < TOL_FLOAT
+
+
+@pytest.mark.parametrize("name, n", [("uniform", 0), ("hertzian", 0.5), ("punch", -0.5)])
+def test_disc_pressure_force(name, n):
+    """The prescribed pressure against p0 (1 - r^2/a^2)^n at 30 digits (0 outside the disc), and
+    its integral over the disc (tanh-sinh) against the force derived in derive/pressures.py."""
+    a, p0 = 2e-3, 4e6
+    r = np.array([0.0, 1e-4, 0.9e-3, 1.7e-3, 1.999e-3, 2e-3, 3e-3])
+    got = pressures.pressure(r, name, p0, a)
+    with mp.workdps(30):
+        am = mp.mpf(a)
+        for ri, gi in zip(r, got, strict=True):
+            ref = p0 * (1 - (mp.mpf(ri) / am) ** 2) ** n if ri < a else 0
+            assert (gi == 0 if ref == 0 else abs(gi / ref - 1) < TOL_FLOAT), (ri, gi, ref)
+        F = mp.quad(lambda rr: 2 * mp.pi * rr * p0 * ((am - rr) * (am + rr) / am**2) ** n,
+                    [0, am])
+    assert abs(pressures.force(name, p0, a) / F - 1) < TOL_FLOAT
+
+
+def test_disc_pressure_refuses_bad_input():
+    with pytest.raises(ValueError, match="distribution"):
+        pressures.pressure(0.0, "triangular", 1e6, 1e-3)
+    with pytest.raises(ValueError, match="a > 0"):
+        pressures.force("uniform", 1e6, -1e-3)
