@@ -27,21 +27,27 @@ HERE = Path(__file__).resolve().parent
 @dataclass(frozen=True)
 class Step:
     """One generator: how to run it, and the files it writes (report files in the docs folder,
-    measurements in the results folder)."""
+    measurements in the results folder).
+
+    ``args`` is the command after ``python`` (default: the script ``name`` of this folder);
+    ``out_file``: it takes ``--out`` as its report's path (its first doc) instead of a folder;
+    ``quick``: it takes ``--quick`` (a generator that measures nothing need not).
+    """
 
     name: str
     docs: tuple[str, ...]
     results: tuple[str, ...] = ()
+    args: tuple[str, ...] = ()
+    out_file: bool = False
+    quick: bool = True
 
     def command(self, docs: Path, quick: bool, out: Path | None) -> list[str]:
-        if self.name == "hertzmdr accuracy":
-            cmd = [sys.executable, "-m", "hertzmdr.numeric.cli", "accuracy",
-                   "--out", str(docs / "accuracy.md")]
-        else:
-            cmd = [sys.executable, str(HERE / self.name)]
-            if out is not None:
-                cmd += ["--out", str(out)]
-        return cmd + (["--quick"] if quick else [])
+        cmd = [sys.executable, *(self.args or (str(HERE / self.name),))]
+        if self.out_file:
+            cmd += ["--out", str(docs / self.docs[0])]
+        elif out is not None:
+            cmd += ["--out", str(out)]
+        return cmd + (["--quick"] if quick and self.quick else [])
 
 
 STEPS = (
@@ -54,7 +60,9 @@ STEPS = (
                              "figures/fig5_9_von_mises.png")),
     Step("bench_laws.py", ("laws_speed.md",)),
     Step("bench_scene.py", ("scene_speed.md",)),
-    Step("hertzmdr accuracy", ("accuracy.md", "accuracy.png")),
+    Step("sphere_bias.py", ("sphere.md", "sphere_bias.png"), out_file=True, quick=False),
+    Step("hertzmdr accuracy", ("accuracy.md", "accuracy.png"),
+         args=("-m", "hertzmdr.numeric.cli", "accuracy"), out_file=True),
 )
 
 
