@@ -99,6 +99,11 @@ def relations() -> list[Relation]:
                  erratum="the print has a spurious minus sign: the pressure is positive in "
                  "compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), "
                  "(5.15) and the chapter's own Problem 7(c) have it",
+                 stable=E_star * sp.tan(theta)
+                 * sp.asinh(sp.sqrt(a_d - r) / sp.sqrt(2 * r)),
+                 stable_why="arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for a "
+                 "flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and "
+                 "arccosh of 1 + (a - r)/r loses the digits of a - r next to the rim",
                  domain={r: a_d * unit_interval()}),
         Relation("cone_depth_from_force", "(5.40), inverted", s["d_F"], (E_star, F, theta),
                  "indentation depth d [m] of a rigid cone under the force F",

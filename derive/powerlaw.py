@@ -26,7 +26,7 @@ from __future__ import annotations
 from functools import cache
 
 import sympy as sp
-from sympy.codegen.cfunctions import log1p
+from sympy.codegen.cfunctions import expm1, log1p
 
 from hertzmdr.derive import mdr
 from hertzmdr.derive.relation import Relation
@@ -69,8 +69,10 @@ def kappa_asymptotic() -> sp.Expr:
     series = sp.series(log_ratio, m, sp.oo, STIRLING_ORDER).removeO()
     series = sp.expand(sp.expand_log(series, force=True))  # the log(2 pi) terms cancel
     assert not series.has(sp.log), series
-    return (sp.sqrt(sp.pi * m) * sp.exp(sp.horner(series.subs(m, 1 / z)).subs(z, 1 / m))
-            ).subs(m, n / 2)
+    # Horner in 1/m = 2/n, printed as powers of n**(-1.0): 1/n**2 would overflow n**2 for
+    # n > 1.3e154 (the terms it scales underflow harmlessly to 0 instead)
+    return (sp.sqrt(sp.pi * m) * sp.exp(sp.horner(series.subs(m, 1 / z)).subs(
+        z, 2 * sp.Pow(n, -1.0)))).subs(m, n / 2)
 
 
 @cache
@@ -190,6 +192,30 @@ def displacement_outside() -> sp.Expr:
     return sp.collect(sp.factor_terms(sp.expand(sp.cancel(u))), sp.asin(a / r))
 
 
+w_out = symbol("w_out")
+
+
+@cache
+def displacement_outside_integrand() -> tuple[sp.Expr, sp.Expr]:
+    """(5.60) as an integral over w in (0, asin(a/r)) with a smooth integrand, for any n.
+
+    x = r sin(asin(a/r) - w) takes x from a (w = 0) to 0 (w = asin(a/r)) and removes the
+    1/sqrt(r^2 - x^2) of (5.60): dx/sqrt(r^2 - x^2) = -dw. With g = d (x/a)^n (5.55), u_z(r) =
+    integral of (2 d/pi)(1 - (r sin(asin(a/r) - w)/a)^n) dw, no cancellation: the integrand is
+    positive. Returns (derived, stable): the stable form writes the power as
+    exp(n log1p(-2 sin(w/2)^2 - sqrt(r - a) sqrt(r + a) sin(w)/a)) (the base is
+    cos(w) - cot(asin(a/r)) sin(w)), which keeps the digits of a base 1 - O(1/n) and never
+    squares r, and 1 - exp(...) as -expm1(...).
+    """
+    xx = sp.Symbol("xx", positive=True)
+    g = solution()["g"].subs(c_n, d / (kappa_n * a**n))  # (5.52), d = g(a) (5.55)
+    integrand = 2 / sp.pi * (g.subs(x, a) - g.subs(x, xx))  # (5.60) times sqrt(r^2 - x^2)
+    derived = sp.powsimp(integrand.subs(xx, r * sp.sin(sp.asin(a / r) - w_out)), force=True)
+    base = -2 * sp.sin(w_out / 2) ** 2 - sp.sqrt(r - a) * sp.sqrt(r + a) * sp.sin(w_out) / a
+    stable = -2 * d / sp.pi * expm1(n * log1p(base))
+    return derived, stable
+
+
 def punch() -> dict[str, sp.Expr]:
     """Flat punch (Problem 7(a)): pressure from (5.59) with q' = -E* d delta(x - a)."""
     xx = sp.Symbol("xx", positive=True)
@@ -210,6 +236,7 @@ def relations() -> list[Relation]:
     printed_kappa = sp.sqrt(sp.pi) / 2 * n * sp.gamma(n / 2) / sp.gamma(n / 2 + half)
     p_b, p_a = pressure_hyper()
     pq_derived, pq_stable = pressure_integrand()
+    uq_derived, uq_stable = displacement_outside_integrand()
     outside = {r: a / unit_interval()}
     pun = punch()
     rels = [
@@ -246,7 +273,22 @@ def relations() -> list[Relation]:
         Relation("powerlaw_depth_from_force", "Problem 7(d), inverted", s["d_F"],
                  (E_star, F, c_n, kappa_n, n),
                  "indentation depth d [m] of a power-law indenter under the force F",
-                 "the force of Problem 7(d) solved for d", f"{TEST}::test_force_roundtrip"),
+                 "the force of Problem 7(d) solved for d", f"{TEST}::test_force_roundtrip",
+                 stable=(F * (n + 1) / (2 * E_star * n)) ** (n / (n + 1))
+                 * (kappa_n * c_n) ** (1 / (n + 1)),
+                 stable_why="(kappa_n c_n)^(1/n) of the derived form overflows or underflows "
+                 "for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); "
+                 "split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), "
+                 "whose factors stay within the range of the inputs"),
+        Relation("powerlaw_mean_pressure_from_depth", "Fig. 5.17",
+                 sp.powsimp(s["pm"].subs(a, s["a"]), force=True), (E_star, c_n, d, kappa_n, n),
+                 "mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d",
+                 "(5.57) over the contact area, a from (5.55)",
+                 f"{TEST}::test_force_by_pressure",
+                 stable=2 * E_star * n * d * (kappa_n * c_n / d) ** (1 / n) / (sp.pi * (n + 1)),
+                 stable_why="the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0 "
+                 "for small n where F/(pi a^2) is still a float (and overflows where it is "
+                 "not): one power of the ratio kappa_n c_n/d, times d"),
         Relation("powerlaw_mean_pressure", "Fig. 5.17", s["pm"], (E_star, a, d, n),
                  "mean pressure F/(pi a^2) [Pa] of a power-law indenter",
                  "(5.57) over the contact area", f"{TEST}::test_force_by_pressure"),
@@ -282,6 +324,18 @@ def relations() -> list[Relation]:
                  "surface displacement u_z(r) [m] outside the contact (r > a) of a power-law "
                  "indenter", "(5.60) for r > a", f"{TEST}::test_against_3d_elasticity",
                  domain=outside),
+        Relation("powerlaw_displacement_outside_integrand", "Problem 7(d), (5.60)",
+                 uq_derived, (a, d, n, r, w_out),
+                 "integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, "
+                 "positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for "
+                 "large n)", "(5.60) with x = r sin(asin(a/r) - w)",
+                 f"{TEST}::test_displacement_outside_large_n",
+                 stable=uq_stable,
+                 stable_why="(x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold and "
+                 "r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - "
+                 "sqrt(r - a) sqrt(r + a) sin(w)/a))",
+                 domain={r: a / unit_interval(), w_out: sp.asin(unit_interval())
+                         * unit_interval("t_w")}),
         Relation("powerlaw_punch_pressure", "Problem 7(a)", pun["p"], (E_star, a, d, r),
                  "contact pressure p(r) [Pa] under a flat rigid punch of radius a at depth d, "
                  "r < a", "(5.59) with q' = -E* d delta(x - a)", f"{TEST}::test_punch",

@@ -117,6 +117,20 @@ def axis_maxima(nu_value: str, dps: int = 30) -> tuple[mp.mpf, mp.mpf]:
         return +out[0], +out[1]
 
 
+def max_shear_bracket() -> sp.Expr:
+    """A depth z_lo (0 < z_lo < the maximum) where d(tau_1)/dz > 0, for every -1 < nu <= 1/2.
+
+    With s = z/a, 4 d(tau_1/p0)/ds = 2 (1 + nu)(atan(1/s) - s/(1 + s^2)) - 6 s/(1 + s^2)^2
+    (the derivative of :func:`max_shear_axis`). atan(1/s) >= pi/2 - s, s/(1 + s^2) <= s and
+    s/(1 + s^2)^2 <= s make it >= 2 (1 + nu)(pi/2 - 2 s) - 6 s, positive for
+    s < pi (1 + nu)/(4 (1 + nu) + 6); half of that bound is z_lo. It tends to 0 with 1 + nu,
+    as the maximum does (it reaches the surface at nu = -1: tau_1 = 3 p0/(4 (1 + s^2))). The
+    upper end of the bracket is z = 2a for every nu: the slope grows with nu (its nu-term
+    is positive) and at nu = 1/2 it is 3 (atan(1/2) - 2/5) - 12/25 < 0 at s = 2.
+    """
+    return sp.pi * (1 + nu) * a / (8 * (1 + nu) + 12)
+
+
 @cache
 def spheroidal_u() -> sp.Expr:
     """Johnson's u: the positive root of r^2/(a^2 + u) + z^2/u = 1 (a quadratic in u)."""
@@ -149,6 +163,21 @@ def hertz_field(far: bool | str = False) -> dict[str, sp.Expr]:
     xi >= 1; with ``far=True`` as written; else with atan(1/xi) = pi/2 - atan(xi), finite at
     xi = 0 (accurate for xi < 1).
     """
+    if far == "scaled":
+        # the "hyper" form in powers of v = 1/xi, printed as xi**(-1.0) powers: xi^4 of its
+        # denominators would overflow for xi > 1e77 (z = 1e78 a), the powers of v underflow
+        v = sp.Symbol("v", positive=True)
+        wv = v**2 / (1 + v**2)  # w = 1/(1 + xi^2)
+        k = (sp.Rational(2, 15) * wv * v**2
+             * sp.hyper([1, sp.Rational(3, 2)], [sp.Rational(7, 2)], -(v**2)))
+        out = {
+            "rr": p0 * ((1 - 2 * nu) * wv / (3 * (1 + eta))
+                        - eta * chi**2 * v**2 / ((1 + v**2) * (1 + eta**2 * v**2))
+                        - (1 + nu) * eta * k),
+            "tt": p0 * ((1 - 2 * nu) * wv * (eta**2 + eta - 1) / (3 * (1 + eta))
+                        - (1 + nu) * eta * k),
+        }
+        return {key: e.subs(v, sp.Pow(xi, -1.0)) for key, e in out.items()}
     w = 1 / (1 + xi**2)
     if far == "hyper":
         k = (sp.Rational(2, 15) * w / xi**2
@@ -197,7 +226,7 @@ def relations() -> list[Relation]:
     inside = {r: a * unit_interval("t_r"),
               z: a * unit_interval("t_z") * sp.sqrt(1 - unit_interval("t_r") ** 2)}
     field = hertz_field()
-    far_field = hertz_field(far="hyper")
+    far_field = hertz_field(far="scaled")
     far_derived = hertz_field(far=True)
     q_st = (r - a) * (r + a) + z**2
     disc_st = sp.sqrt(q_st**2 + 4 * a**2 * z**2)
@@ -209,7 +238,10 @@ def relations() -> list[Relation]:
         Relation("stress_von_mises", "(5.50)", vm, (sxx, syy, szz, sxy, syz, sxz),
                  "von Mises equivalent stress [Pa] of the stress tensor",
                  "sqrt(3 J2), J2 the second invariant of the stress deviator",
-                 f"{TEST}::test_von_mises_invariant", printed=vm_printed),
+                 f"{TEST}::test_von_mises_invariant", printed=vm_printed,
+                 stable=vm_printed, stable_why="the expanded 3 J2 subtracts products of the "
+                 "stresses and rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the "
+                 "centre of a Hertz contact with nu = 1/2); (5.50) is a sum of squares"),
         Relation("stress_axis_sigma_zz", "(5.48)", s["zz"], (a, p0, z),
                  "normal stress sigma_zz [Pa] on the axis under the Hertz pressure",
                  "(5.43) superposed over (5.15) along the axis, (5.47)",
@@ -234,6 +266,11 @@ def relations() -> list[Relation]:
                  "d(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the "
                  "depth of the maximum shear stress", "the derivative of tau_1",
                  f"{TEST}::test_axis_maximum_shear"),
+        Relation("stress_axis_max_shear_bracket", "Fig. 5.8", max_shear_bracket(), (a, nu),
+                 "depth z_lo [m] on the axis where d(tau_1)/dz > 0 for -1 < nu <= 1/2: the "
+                 "lower end of the bracket [z_lo, 2a] of the maximum shear stress",
+                 "lower bounds of the terms of d(tau_1)/dz (stress_axis_max_shear_slope)",
+                 f"{TEST}::test_axis_maximum_shear_bracket"),
         Relation("stress_spheroidal_u", "Johnson (1985), (3.44)", u, (a, r, z),
                  "Johnson's u [m^2], the root of r^2/(a^2 + u) + z^2/u = 1 (for "
                  "r^2 + z^2 >= a^2)", "the oblate spheroid through (r, z)",
@@ -270,5 +307,6 @@ def relations() -> list[Relation]:
                 f"{what} [Pa] under the Hertz pressure at (xi, beta), for xi >= 1",
                 lit, fld, stable=far_field[comp], domain={xi: 1 / unit_interval()},
                 stable_why="1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written "
-                "as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2"))
+                "as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of "
+                "1/xi (xi^4 overflows for xi > 1e77)"))
     return rels

@@ -51,6 +51,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "kappa_n": ("1", "MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d))"),
     "r_tilde": ("1", "normalized radius r/a"),
     "w_quad": ("1", "integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2"),
+    "w_out": ("rad", "integration variable in (0, asin(a/r)) of (5.60) outside the contact: "
+              "x = r sin(asin(a/r) - w)"),
     "b": ("m", "radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius "
           "of a kink of the profile (derive/kink.py)"),
     "slope_jump": ("1", "jump f'(b+) - f'(b-) of the profile's slope at a kink r = b"),

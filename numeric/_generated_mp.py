@@ -64,6 +64,9 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'flamant_sigma_xx',
+    'flamant_sigma_zz',
+    'flamant_tau_xz',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -101,6 +104,28 @@ __all__ = [
     'line_max_pressure_from_half_width',
     'line_pressure',
     'line_stiffness',
+    'line_stress_axis_max_shear',
+    'line_stress_axis_max_shear_slope',
+    'line_stress_axis_sigma_xx',
+    'line_stress_axis_sigma_zz',
+    'line_stress_axis_von_mises',
+    'line_stress_axis_von_mises_slope',
+    'line_stress_principal_max',
+    'line_stress_principal_min',
+    'line_stress_principal_shear',
+    'line_stress_sigma_xx_core',
+    'line_stress_sigma_xx_deep',
+    'line_stress_sigma_xx_side',
+    'line_stress_sigma_yy',
+    'line_stress_sigma_zz_core',
+    'line_stress_sigma_zz_deep',
+    'line_stress_sigma_zz_side',
+    'line_stress_tau_xz_core',
+    'line_stress_tau_xz_deep',
+    'line_stress_tau_xz_side',
+    'line_stress_tau_xz_slope_x',
+    'line_stress_tau_xz_slope_z',
+    'line_stress_von_mises',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
@@ -109,12 +134,14 @@ __all__ = [
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
+    'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
     'powerlaw_force_from_radius',
     'powerlaw_g',
     'powerlaw_kappa',
     'powerlaw_kappa_asymptotic',
     'powerlaw_mean_pressure',
+    'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
@@ -142,6 +169,7 @@ __all__ = [
     'sphere_profile',
     'sphere_stiffness',
     'stress_axis_max_shear',
+    'stress_axis_max_shear_bracket',
     'stress_axis_max_shear_slope',
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
@@ -1041,6 +1069,10 @@ def cone_pressure(E_star, d, theta, r):
     Derivation: ``hertzmdr.derive.cone``. Verified by
     ``tests/test_cone.py::test_cone_by_kernel``.
 
+    Printed in a stable form: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for
+    a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of
+    1 + (a - r)/r loses the digits of a - r next to the rim.
+
     Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
     pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
     nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
@@ -1056,7 +1088,7 @@ def cone_pressure(E_star, d, theta, r):
     r : mpmath.mpf
         radial coordinate on the surface [m]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
+    return E_star*mpmath.tan(theta)*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(2*d/(mpmath.pi*mpmath.tan(theta)) - r)/mpmath.sqrt(r))
 
 
 def cone_stiffness(E_star, d, theta):
@@ -1415,6 +1447,69 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
         axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
     """
     return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*E_star*mpmath.sqrt(R1)*mpmath.sqrt(d)*mpmath.sqrt(mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))/((mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(1)/mpmath.mpf(2)), (2,), 1 - t_ba**2) + (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def flamant_sigma_xx(F_L, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : mpmath.mpf
+        normal force per unit length of a line contact [N/m]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*F_L*x**2*z/(mpmath.pi*(x**2 + z**2)**2)
+
+
+def flamant_sigma_zz(F_L, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : mpmath.mpf
+        normal force per unit length of a line contact [N/m]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*F_L*z**3/(mpmath.pi*(x**2 + z**2)**2)
+
+
+def flamant_tau_xz(F_L, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) of a line load F_L [N/m] at the origin pushing into the half-plane z > 0 (plane strain, tension positive).
+
+    Chapter: Flamant (2-D Boussinesq). Derived from: the Airy function phi = -(P/pi) x
+    atan(x/z) of a line load.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_flamant_is_an_elastic_field``.
+
+    Parameters
+    ----------
+    F_L : mpmath.mpf
+        normal force per unit length of a line contact [N/m]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*F_L*x*z**2/(mpmath.pi*(x**2 + z**2)**2)
 
 
 def hertz_contact_radius(R, d):
@@ -2190,6 +2285,500 @@ def line_stiffness(E_star, L):
     return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star*L
 
 
+def line_stress_axis_max_shear(a, p0, z):
+    """Principal shear stress tau_1 = (sigma_xx - sigma_zz)/2 [Pa] on the axis of a line contact.
+
+    Chapter: (5.36), Flamant. Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return a*p0*z/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2)))
+
+
+def line_stress_axis_max_shear_slope(a, p0, z):
+    """D(tau_1)/dz [Pa/m] on the axis of a line contact; its root is the depth of the largest tau_1.
+
+    Chapter: (5.36), Flamant. Derived from: the derivative of tau_1.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*p0*z**2/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(z + mpmath.sqrt(a**2 + z**2))) + a*p0*z*(-z/mpmath.sqrt(a**2 + z**2) - 1)/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2)))
+
+
+def line_stress_axis_sigma_xx(a, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis of a line contact of half-width a.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Printed in a stable form: the derived form subtracts terms of size z/a to leave one of
+    size (a/z)^3; -p0 a^3/(s (s + z)^2), s = (a^2 + z^2)^(1/2), has none.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_axis_sigma_zz(a, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis of a line contact of half-width a.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*p0/mpmath.sqrt(a**2 + z**2)
+
+
+def line_stress_axis_von_mises(a, nu, p0, z):
+    """Von Mises stress [Pa] on the axis of a line contact (plane strain).
+
+    Chapter: (5.50), (5.36). Derived from: (5.50) with the axis stresses and sigma_yy = nu
+    (sigma_xx + sigma_zz).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Printed in a stable form: (5.50) expanded subtracts squares of size p0^2; with c =
+    (sigma_xx + sigma_zz)/2 it is ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return mpmath.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-mpmath.mpf(1)/mpmath.mpf(2)*a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_axis_von_mises_slope(a, nu, p0, z):
+    """D(sigma_vM)/dz [Pa/m] on the axis of a line contact; its root is the depth of the largest von Mises stress.
+
+    Chapter: (5.50), (5.36). Derived from: the derivative.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (-3*a**2*p0**2*z**3/((a**2 + z**2)**2*(z + mpmath.sqrt(a**2 + z**2))**2) + (mpmath.mpf(3)/mpmath.mpf(2))*a**2*p0**2*z**2*(-2*z/mpmath.sqrt(a**2 + z**2) - 2)/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**3) + 3*a**2*p0**2*z/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + (mpmath.mpf(1)/mpmath.mpf(2))*(1 - 2*nu)**2*(-mpmath.mpf(1)/mpmath.mpf(2)*a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*p0/mpmath.sqrt(a**2 + z**2))*(a**3*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(z + mpmath.sqrt(a**2 + z**2))**2) - a**3*p0*(-2*z/mpmath.sqrt(a**2 + z**2) - 2)/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**3) + a*p0*z/(a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))))/mpmath.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-mpmath.mpf(1)/mpmath.mpf(2)*a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """Largest principal stress [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """Smallest principal stress [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """Principal shear stress tau_1 [Pa] in the x-z plane.
+
+    Chapter: plane stress state x-z. Derived from: half the difference of the principal
+    stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def line_stress_sigma_xx_core(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -p0*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*(2*x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/(a*(z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_xx_deep(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*(2*a**2*z**2*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) + 2*x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/((z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_xx_side(a, p0, x, z):
+    """Normal stress sigma_xx [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*(2*a**2*x*z**3/((x*z/mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) - z**2 - (a - x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_yy(nu, sigma_xx, sigma_zz):
+    """Out-of-plane stress sigma_yy [Pa] in plane strain.
+
+    Chapter: plane strain. Derived from: eps_yy = (sigma_yy - nu (sigma_xx + sigma_zz))/E =
+    0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    """
+    return nu*(sigma_xx + sigma_zz)
+
+
+def line_stress_sigma_zz_core(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -p0*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(a*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_zz_deep(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_sigma_zz_side(a, p0, x, z):
+    """Normal stress sigma_zz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*x*z**3/(mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_core(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -p0*x*z*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_deep(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*x*z**3/(mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_side(a, p0, x, z):
+    """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -2*a*p0*z**2*mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_xz_slope_x(a, p0, x, z):
+    """D(tau_xz)/dx [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: -(z/pi) Im F'' of the Cauchy integral F of the
+    pressure.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_orthogonal_shear_maximum``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*p0*z*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(-3*x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3
+
+
+def line_stress_tau_xz_slope_z(a, p0, x, z):
+    """D(tau_xz)/dz [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: -(Im F' + z Re F'')/pi of the Cauchy integral F
+    of the pressure.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_orthogonal_shear_maximum``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.pi*a*p0*x*z**2*(-x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(3)/mpmath.mpf(2))*z**2 + (mpmath.mpf(3)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3) - mpmath.pi*p0*(-x*z**2/mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + x*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/(a*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/mpmath.pi
+
+
+def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0).
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Printed in a stable form: (5.50) expanded subtracts products of size p0^2 (it goes
+    negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3
+    tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz)**2 + (mpmath.mpf(3)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
+
+
 def mdr_force(E_star, a, d, g_integral):
     """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
 
@@ -2329,6 +2918,11 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     Derivation: ``hertzmdr.derive.powerlaw``. Verified by
     ``tests/test_powerlaw.py::test_force_roundtrip``.
 
+    Printed in a stable form: (kappa_n c_n)^(1/n) of the derived form overflows or
+    underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split
+    into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay
+    within the range of the inputs.
+
     Parameters
     ----------
     E_star : mpmath.mpf
@@ -2342,7 +2936,7 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : mpmath.mpf
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return ((mpmath.mpf(1)/mpmath.mpf(2))*F*(c_n*kappa_n)**(1/n)*(n + 1)/(E_star*n))**(n/(n + 1))
+    return (c_n*kappa_n)**(1/(n + 1))*((mpmath.mpf(1)/mpmath.mpf(2))*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
 def powerlaw_displacement_outside(a, d, n, r):
@@ -2365,6 +2959,34 @@ def powerlaw_displacement_outside(a, d, n, r):
         radial coordinate on the surface [m]
     """
     return 2*d*(-a*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), (mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(1)/mpmath.mpf(2)), ((mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(3)/mpmath.mpf(2),), a**2/r**2)/r + (n + 1)*mpmath.asin(a/r))/(mpmath.pi*(n + 1))
+
+
+def powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Printed in a stable form: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold
+    and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r -
+    a) sqrt(r + a) sin(w)/a)).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_out : mpmath.mpf
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return -2*d*mpmath.expm1(n*mpmath.log1p(-2*mpmath.sin((mpmath.mpf(1)/mpmath.mpf(2))*w_out)**2 - mpmath.sqrt(-a + r)*mpmath.sqrt(a + r)*mpmath.sin(w_out)/a))/mpmath.pi
 
 
 def powerlaw_force(E_star, c_n, d, kappa_n, n):
@@ -2469,7 +3091,7 @@ def powerlaw_kappa_asymptotic(n):
     n : mpmath.mpf
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(n)*mpmath.exp(2*(mpmath.mpf(1)/mpmath.mpf(8) + 4*(mpmath.mpf(-1)/mpmath.mpf(192) + 4*(mpmath.mpf(1)/mpmath.mpf(640) + 4*(mpmath.mpf(-17)/mpmath.mpf(14336) + (mpmath.mpf(31)/mpmath.mpf(4608))/n**2)/n**2)/n**2)/n**2)/n)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(n)*mpmath.exp(2*n**(mpmath.mpf((1, 1, 0, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*(4*n**(mpmath.mpf((1, 1, 1, 1)))*((mpmath.mpf(31)/mpmath.mpf(4608))*n**(mpmath.mpf((1, 1, 1, 1))) + mpmath.mpf(-17)/mpmath.mpf(14336)) + mpmath.mpf(1)/mpmath.mpf(640)) + mpmath.mpf(-1)/mpmath.mpf(192)) + mpmath.mpf(1)/mpmath.mpf(8)))
 
 
 def powerlaw_mean_pressure(E_star, a, d, n):
@@ -2492,6 +3114,34 @@ def powerlaw_mean_pressure(E_star, a, d, n):
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
     return 2*E_star*d*n/(mpmath.pi*a*(n + 1))
+
+
+def powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Printed in a stable form: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0
+    for small n where F/(pi a^2) is still a float (and overflows where it is not): one power
+    of the ratio kappa_n c_n/d, times d.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : mpmath.mpf
+        indentation depth [m]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(mpmath.pi*(n + 1))
 
 
 def powerlaw_pressure(E_star, a, d, n, r):
@@ -3080,6 +3730,25 @@ def stress_axis_max_shear(a, nu, p0, z):
     return (mpmath.mpf(1)/mpmath.mpf(4))*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*mpmath.atan(a/z))/(a*(a**2 + z**2))
 
 
+def stress_axis_max_shear_bracket(a, nu):
+    """Depth z_lo [m] on the axis where d(tau_1)/dz > 0 for -1 < nu <= 1/2: the lower end of the bracket [z_lo, 2a] of the maximum shear stress.
+
+    Chapter: Fig. 5.8. Derived from: lower bounds of the terms of d(tau_1)/dz
+    (stress_axis_max_shear_slope).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_axis_maximum_shear_bracket``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return mpmath.pi*a*(nu + 1)/(8*nu + 20)
+
+
 def stress_axis_max_shear_slope(a, nu, p0, z):
     """D(tau_1)/dz [Pa/m] on the axis under the Hertz pressure; its root is the depth of the maximum shear stress.
 
@@ -3207,7 +3876,8 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3222,7 +3892,7 @@ def stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     chi : mpmath.mpf
         sin(beta) of the oblate spheroidal angle beta [1]
     """
-    return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-chi**2*eta*xi**(mpmath.mpf((1, 1, 1, 1)))/((xi**(mpmath.mpf((1, 1, 1, 1))) + 1)*(eta**2*xi**(mpmath.mpf((1, 1, 1, 1))) + 1)) - mpmath.mpf(2)/mpmath.mpf(15)*eta*xi**(mpmath.mpf((1, 1, 2, 1)))*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -xi**(mpmath.mpf((1, 1, 1, 1))))/(xi**(mpmath.mpf((1, 1, 1, 1))) + 1) + xi**(mpmath.mpf((1, 1, 1, 1)))*(1 - 2*nu)/((3*eta + 3)*(xi**(mpmath.mpf((1, 1, 1, 1))) + 1)))
 
 
 def stress_hertz_sigma_tt(nu, p0, xi, eta):
@@ -3258,7 +3928,8 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     ``tests/test_stress.py::test_hertz_field_by_superposition``.
 
     Printed in a stable form: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written
-    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4
+    overflows for xi > 1e77).
 
     Parameters
     ----------
@@ -3271,7 +3942,7 @@ def stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     eta : mpmath.mpf
         cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
-    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -1/xi**2)/(xi**2*(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
+    return p0*(-mpmath.mpf(2)/mpmath.mpf(15)*eta*xi**(mpmath.mpf((1, 1, 2, 1)))*(nu + 1)*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(7)/mpmath.mpf(2),), -xi**(mpmath.mpf((1, 1, 1, 1))))/(xi**(mpmath.mpf((1, 1, 1, 1))) + 1) + xi**(mpmath.mpf((1, 1, 1, 1)))*(1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**(mpmath.mpf((1, 1, 1, 1))) + 1)))
 
 
 def stress_hertz_sigma_zz(p0, xi, eta):
@@ -3394,6 +4065,10 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     Derivation: ``hertzmdr.derive.stress``. Verified by
     ``tests/test_stress.py::test_von_mises_invariant``.
 
+    Printed in a stable form: the expanded 3 J2 subtracts products of the stresses and
+    rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the centre of a Hertz
+    contact with nu = 1/2); (5.50) is a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -3409,7 +4084,7 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(6*tau_xy**2 + 6*tau_xz**2 + 6*tau_yz**2 + (sigma_xx - sigma_yy)**2 + (sigma_xx - sigma_zz)**2 + (-sigma_yy + sigma_zz)**2)
 
 
 def strip_mean_pressure(F, L, a):
@@ -3845,6 +4520,32 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
     return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
 
 
+def textbook_cone_pressure(E_star, d, theta, r):
+    """Contact pressure p(r) [Pa] of a rigid cone at depth d, for 0 < r <= a (log-singular at r = 0), in the derived (textbook) form; use cone_pressure: arccosh(a/r) = 2 asinh(sqrt((a - r)/(2 r))): a/r overflows for a flat cone (theta = 1e-300: a = 6e296 m) where the pressure is a float, and arccosh of 1 + (a - r)/r loses the digits of a - r next to the rim.
+
+    Chapter: (5.39). Derived from: the pressures (5.9) of the superposed punches.
+
+    Derivation: ``hertzmdr.derive.cone``. Verified by
+    ``tests/test_cone.py::test_cone_by_kernel``.
+
+    Differs from the print (see docs/errata.md): the print has a spurious minus sign: the
+    pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 -
+    nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.tan(theta)*mpmath.acosh(2*d/(mpmath.pi*r*mpmath.tan(theta)))
+
+
 def textbook_disc_pressure(a, n_p, p0, r):
     """Prescribed pressure p0 (1 - r^2/a^2)^n_p [Pa] on a disc of radius a, r < a, in the derived (textbook) form; use disc_pressure: 1 - r^2/a^2 cancels towards the edge r -> a (1e-13 at r = 0.9995 a); (a - r)(a + r)/a^2 does not.
 
@@ -4121,6 +4822,72 @@ def textbook_hertz_displacement_outside(R, d, r):
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
 
 
+def textbook_line_stress_axis_sigma_xx(a, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis of a line contact of half-width a, in the derived (textbook) form; use line_stress_axis_sigma_xx: the derived form subtracts terms of size z/a to leave one of size (a/z)^3; -p0 a^3/(s (s + z)^2), s = (a^2 + z^2)^(1/2), has none.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over the line pressure (5.36)
+    along the axis x = 0.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return p0*(2*a**2*z - a**2*mpmath.sqrt(a**2 + z**2) + 2*z**3 - 2*z**2*mpmath.sqrt(a**2 + z**2))/(a*(a**2 + z**2))
+
+
+def textbook_line_stress_axis_von_mises(a, nu, p0, z):
+    """Von Mises stress [Pa] on the axis of a line contact (plane strain), in the derived (textbook) form; use line_stress_axis_von_mises: (5.50) expanded subtracts squares of size p0^2; with c = (sigma_xx + sigma_zz)/2 it is ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2).
+
+    Chapter: (5.50), (5.36). Derived from: (5.50) with the axis stresses and sigma_yy = nu
+    (sigma_xx + sigma_zz).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_axis_maxima_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return mpmath.sqrt(a**6*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/mpmath.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0), in the derived (textbook) form; use line_stress_von_mises: (5.50) expanded subtracts products of size p0^2 (it goes negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
+
+    Chapter: (5.50), plane strain. Derived from: (5.50) with the plane-strain sigma_yy.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
+
+
 def textbook_mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b, in the derived (textbook) form; use mdr_kink_g: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
 
@@ -4139,6 +4906,78 @@ def textbook_mdr_kink_g(b, slope_jump, x):
         coordinate [m]
     """
     return 2*b*slope_jump*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b))
+
+
+def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
+
+    Chapter: Problem 7(d), inverted. Derived from: the force of Problem 7(d) solved for d.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_roundtrip``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F : mpmath.mpf
+        normal force [N]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((mpmath.mpf(1)/mpmath.mpf(2))*F*(c_n*kappa_n)**(1/n)*(n + 1)/(E_star*n))**(n/(n + 1))
+
+
+def textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """Integrand [m] of (5.60) in w: u_z(r > a) = integral_0^asin(a/r) of it dw, positive and smooth (a layer of width ~1/(n cot(asin(a/r))) at w = 0 for large n), in the derived (textbook) form; use powerlaw_displacement_outside_integrand: (x/a)^n with x/a = 1 - O(1/n) amplifies its rounding n-fold and r^2 - a^2 overflows for r > 1e154; written -expm1(n log1p(-2 sin(w/2)^2 - sqrt(r - a) sqrt(r + a) sin(w)/a)).
+
+    Chapter: Problem 7(d), (5.60). Derived from: (5.60) with x = r sin(asin(a/r) - w).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_displacement_outside_large_n``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    w_out : mpmath.mpf
+        integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
+    """
+    return (-2*d*(-r*mpmath.sin(w_out - mpmath.asin(a/r))/a)**n + 2*d)/mpmath.pi
+
+
+def textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """Mean pressure F/(pi a^2) [Pa] of a power-law indenter at depth d, in the derived (textbook) form; use powerlaw_mean_pressure_from_depth: the contact radius a = (d/(kappa_n c_n))^(1/n) underflows to 0 for small n where F/(pi a^2) is still a float (and overflows where it is not): one power of the ratio kappa_n c_n/d, times d.
+
+    Chapter: Fig. 5.17. Derived from: (5.57) over the contact area, a from (5.55).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_force_by_pressure``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    d : mpmath.mpf
+        indentation depth [m]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(mpmath.pi*(n + 1))
 
 
 def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
@@ -4349,7 +5188,7 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
-    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Radial stress sigma_rr [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_rr_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4374,7 +5213,7 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
 
 
 def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
-    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2.
+    """Hoop stress sigma_theta [Pa] under the Hertz pressure at (xi, beta), for xi >= 1, in the derived (textbook) form; use stress_hertz_sigma_tt_far: 1 - xi atan(1/xi) - w/3 cancels to O(1/xi^4) far away; written as (2/15) w 2F1(1, 3/2; 7/2; -1/xi^2)/xi^2, and every term in powers of 1/xi (xi^4 overflows for xi > 1e77).
 
     Chapter: Fig. 5.9. Derived from: Huber (1904) as given by Johnson (1985), eqs. (3.44),
     in spheroidal variables.
@@ -4434,6 +5273,33 @@ def textbook_stress_spheroidal_u_inside(a, r, z):
         depth below the surface [m]
     """
     return -mpmath.mpf(1)/mpmath.mpf(2)*a**2 + (mpmath.mpf(1)/mpmath.mpf(2))*r**2 + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
+
+
+def textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """Von Mises equivalent stress [Pa] of the stress tensor, in the derived (textbook) form; use stress_von_mises: the expanded 3 J2 subtracts products of the stresses and rounds below 0 for a nearly hydrostatic state (sqrt: NaN at the centre of a Hertz contact with nu = 1/2); (5.50) is a sum of squares.
+
+    Chapter: (5.50). Derived from: sqrt(3 J2), J2 the second invariant of the stress
+    deviator.
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_von_mises_invariant``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_yy : mpmath.mpf
+        normal stress component sigma_yy [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xy : mpmath.mpf
+        shear stress component tau_xy [Pa]
+    tau_yz : mpmath.mpf
+        shear stress component tau_yz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
 def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):

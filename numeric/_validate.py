@@ -82,3 +82,70 @@ def result(value):
     """Return a NumPy scalar for 0-d results, the array otherwise."""
     arr = np.asarray(value)
     return arr[()] if arr.ndim == 0 else arr
+
+
+def pow2_scale(x) -> np.ndarray:
+    """An even power of 2 within a factor 4 of |x| (1 for x = 0): dividing by it is exact,
+    and so is the square root of the quotient, so a homogeneous formula can be evaluated in
+    units of it, unchanged to the last bit, without overflow in its squares."""
+    _, e = np.frexp(np.asarray(x, dtype=float))
+    return np.ldexp(1.0, 2 * ((e - 1) // 2))
+
+
+def _first_bad(value: np.ndarray, bound: dict) -> tuple[str, str]:
+    """The index (as text) of the first non-finite element of ``value`` and its inputs."""
+    bad = ~np.isfinite(value)
+    idx = tuple(int(i) for i in np.argwhere(bad)[0]) if value.ndim else ()
+    parts = []
+    for name, v in bound.items():
+        arr = np.asarray(v) if not callable(v) else None
+        if arr is None or arr.dtype.kind not in "fiu":
+            continue
+        try:
+            item = np.broadcast_to(arr, value.shape)[idx]
+        except ValueError:
+            item = arr
+        parts.append(f"{name} = {float(item) if np.ndim(item) == 0 else item!r}")
+    where = "" if not idx else f"[{idx[0] if len(idx) == 1 else idx}]"
+    return where, ", ".join(parts)
+
+
+def representable(func):
+    """Decorate a public function whose true result may exceed the float64 range.
+
+    The function runs with floating-point overflow trapped. A result that is +-inf or NaN
+    although every input was finite (the true value exceeds 1.8e308) raises OverflowError
+    naming the function, the element and its inputs, never a silent inf. An overflow in an
+    intermediate that leaves the result finite is reported as the RuntimeWarning NumPy would
+    have given (a defect of the printed form, which the domain search turns into a failure).
+    """
+    import functools
+    import inspect
+    import warnings
+
+    sig = inspect.signature(func)
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        try:
+            with np.errstate(over="raise"):
+                value = func(*args, **kwargs)
+            trapped = None
+        except FloatingPointError as exc:
+            trapped = exc
+            with np.errstate(over="ignore"):
+                value = func(*args, **kwargs)
+        arr = np.asarray(value, dtype=float)
+        if not np.isfinite(arr).all():
+            bound = sig.bind(*args, **kwargs)
+            bound.apply_defaults()
+            where, inputs = _first_bad(arr, bound.arguments)
+            raise OverflowError(f"{func.__module__.rsplit('.', 1)[-1]}.{func.__name__}{where}: "
+                                f"the result at {inputs} exceeds the float64 range "
+                                "(|value| > 1.8e308)")
+        if trapped is not None:
+            warnings.warn(f"{func.__name__}: {trapped} in an intermediate (result finite)",
+                          RuntimeWarning, stacklevel=2)
+        return value
+
+    return wrapper

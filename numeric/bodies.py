@@ -23,6 +23,7 @@ from hertzmdr.numeric._validate import (
     nonzero,
     poisson,
     positive,
+    representable,
     result,
 )
 
@@ -34,8 +35,13 @@ __all__ = [
 ]
 
 
+@representable
 def effective_modulus(E1, nu1, E2=None, nu2=None):
     """Effective modulus E* [Pa] of two elastic bodies, (5.26); of one body on a rigid one, (5.8).
+
+    Guaranteed finite and accurate for E1 in [0.001, 1e+15], nu1 in (-1, 0.5], E2 in [0.001, 1e+15],
+    nu2 in (-1, 0.5] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     .. math:: 1/E^* = (1 - \\nu_1^2)/E_1 + (1 - \\nu_2^2)/E_2
 
@@ -68,8 +74,13 @@ def effective_modulus(E1, nu1, E2=None, nu2=None):
     return result(gen.bodies_effective_modulus(E1, nu1, E2, nu2))  # (5.26)
 
 
+@representable
 def effective_radius(R1, R2=np.inf):
     """Effective radius R [m] of two spheres (or any two axisymmetric quadratic surfaces), (5.27).
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     .. math:: 1/R = 1/R_1 + 1/R_2
 
@@ -97,12 +108,22 @@ def effective_radius(R1, R2=np.inf):
     return result(gen.bodies_effective_radius(R1, R2))  # (5.27)
 
 
-def _radii_from_curvatures(k1, k2, names):
-    k1, k2 = np.broadcast_arrays(np.asarray(k1, float), np.asarray(k2, float))
+def _radii_from_curvatures(curvature_1, curvature_2, args, names):
+    """(R_1, R_2) from the generated principal curvatures k1 >= k2 of ``args``.
+
+    k2 is printed as 2 det/(trace + root) = det/k1: it is evaluated only where k1 > 0 (a gap
+    with k1 <= 0 is refused below, before 0/0 can give a warning)."""
+    args = np.broadcast_arrays(*args)
+    k1 = np.asarray(curvature_1(*args), dtype=float).reshape(args[0].shape)
+    k2 = np.zeros(k1.shape)
+    ok = k1 > 0
+    k2[ok] = curvature_2(*(v[ok] for v in args))
     bad = ~(k2 >= 0) | ~(k1 > 0)
     if bad.any():
-        raise ValueError(f"{names}: the gap is not convex (principal curvatures "
-                         f"{k1[bad].flat[0]!r}, {k2[bad].flat[0]!r} [1/m]); both must be >= 0 "
+        i = tuple(int(j) for j in np.argwhere(bad)[0]) if bad.ndim else ()
+        given = ", ".join(f"{n} = {float(v[i])!r}" for n, v in zip(names[1], args, strict=True))
+        raise ValueError(f"{names[0]}: {given}: the gap is not convex (principal curvatures "
+                         f"{float(k1[i])!r}, {float(k2[i])!r} [1/m]); both must be >= 0 "
                          "and the larger > 0 for the bodies to touch in a point or a line")
     R_1 = 1 / k1
     R_2 = np.full(k2.shape, np.inf)
@@ -114,6 +135,11 @@ def _radii_from_curvatures(k1, k2, names):
 
 def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
     """Principal radii (R_1, R_2) [m] of the gap between two bodies, R_1 <= R_2.
+
+    Guaranteed finite and accurate for R1a in [1e-06, 1e+06], R1b in [1e-06, 1e+06], R2a in [1e-06,
+    1e+06], R2b in [1e-06, 1e+06], omega in [-10, 10] (each radius of either sign, or inf;
+    ValueError for a gap that is not convex) (SI units; searched by tests/domain_search.py). Beyond
+    float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Body i has the principal radii R_ia, R_ib; the first principal directions of the two
     bodies enclose the angle omega. The gap is h = (x, y) H (x, y)^T / 2 with
@@ -142,13 +168,17 @@ def principal_radii(R1a, R1b=np.inf, R2a=np.inf, R2b=np.inf, omega=0.0):
     w = as_float("omega", omega)
     if not np.isfinite(w).all():
         raise ValueError(f"omega = {omega!r}: must be finite")
-    k1 = gen.bodies_principal_curvature_1(*args, w)
-    k2 = gen.bodies_principal_curvature_2(*args, w)
-    return _radii_from_curvatures(k1, k2, "principal_radii")
+    return _radii_from_curvatures(gen.bodies_principal_curvature_1,
+                                  gen.bodies_principal_curvature_2, (*args, w),
+                                  ("principal_radii", ("R1a", "R1b", "R2a", "R2b", "omega")))
 
 
 def crossed_cylinder_radii(R1, R2, alpha):
     """Principal radii (R_1, R_2) [m] of the gap of two cylinders crossed at the angle alpha.
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150], alpha in [0,
+    3.14159] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     (5.32) for alpha = pi/2 (R_1, R_2 = the two cylinder radii); Problem 2 for alpha = pi/4;
     parallel cylinders (alpha = 0 or pi) give R_2 = inf (line contact, (5.34)-(5.37)).
@@ -167,13 +197,18 @@ def crossed_cylinder_radii(R1, R2, alpha):
     """
     R1, R2 = positive("R1", R1, allow_inf=True), positive("R2", R2, allow_inf=True)
     alpha = between("alpha", alpha, 0.0, np.pi, lo_open=False, hi_open=False)
-    k1 = gen.bodies_crossed_cylinders_curvature_1(R1, R2, alpha)
-    k2 = gen.bodies_crossed_cylinders_curvature_2(R1, R2, alpha)
-    return _radii_from_curvatures(k1, k2, "crossed_cylinder_radii")
+    return _radii_from_curvatures(gen.bodies_crossed_cylinders_curvature_1,
+                                  gen.bodies_crossed_cylinders_curvature_2, (R1, R2, alpha),
+                                  ("crossed_cylinder_radii", ("R1", "R2", "alpha")))
 
 
+@representable
 def crossed_cylinders_gaussian_radius(R1, R2, alpha):
     """Gaussian radius sqrt(R_1 R_2) = sqrt(R1 R2)/sin(alpha) [m] of two crossed cylinders, (5.33).
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150], alpha in
+    [1e-300, 3.14159] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -186,8 +221,13 @@ def crossed_cylinders_gaussian_radius(R1, R2, alpha):
         positive("R1", R1), positive("R2", R2), between("alpha", alpha, 0.0, np.pi)))
 
 
+@representable
 def gaussian_radius(R1, R2):
     """Gaussian radius R~ = sqrt(R1 R2) [m] of a gap with the principal radii R1, R2, (5.30).
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+150], R2 in [1e-12, 1e+150] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     Parameters
     ----------
@@ -199,6 +239,10 @@ def gaussian_radius(R1, R2):
 
 def gaussian_approx_semi_axes(d, R1, R2):
     """Semi-axes (a, b) = (sqrt(R1 d), sqrt(R2 d)) [m] of the elliptic contact, (5.28).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     The chapter's rough estimate (its footnote 4): the exact semi-axes follow from elliptic
     integrals and are closer together than these.
@@ -215,8 +259,13 @@ def gaussian_approx_semi_axes(d, R1, R2):
             result(gen.bodies_gaussian_approx_semi_axis_2(R2, d)))
 
 
+@representable
 def gaussian_approx_area(d, R1, R2):
     """Contact area A = pi sqrt(R1 R2) d [m^2] of the elliptic contact, (5.29) (approximation).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     Parameters as :func:`gaussian_approx_semi_axes`.
     """
@@ -224,8 +273,13 @@ def gaussian_approx_area(d, R1, R2):
                                                 nonnegative("d", d)))
 
 
+@representable
 def gaussian_approx_max_pressure(d, R1, R2, E_star):
     """Maximum pressure p0 [Pa] of the elliptic contact: (5.22) with R = R~ (approximation).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -241,8 +295,13 @@ def gaussian_approx_max_pressure(d, R1, R2, E_star):
         nonnegative("d", d)))
 
 
+@representable
 def gaussian_approx_force(d, R1, R2, E_star):
     """Normal force F [N] of the elliptic contact: (5.23) with R = R~ (approximation).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     The chapter (footnote 5) quotes 2.5 % accuracy up to R1/R2 = 10. Parameters as
     :func:`gaussian_approx_max_pressure`.
@@ -252,9 +311,14 @@ def gaussian_approx_force(d, R1, R2, E_star):
         nonnegative("d", d)))
 
 
+@representable
 def gaussian_approx_depth_from_force(F, R1, R2, E_star):
     """Indentation depth d [m] of the elliptic contact under the force F [N]: (5.24) with
     R = R~ (approximation), the inverse of :func:`gaussian_approx_force`.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R1 in [1e-12, 1e+06], R2 in
+    [1e-12, 1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond
+    float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -270,8 +334,14 @@ def gaussian_approx_depth_from_force(F, R1, R2, E_star):
         positive("R2", R2)))
 
 
+@representable
 def gaussian_approx_pressure(x, y, d, R1, R2, E_star):
     """Pressure p(x, y) = p0 sqrt(1 - x^2/a^2 - y^2/b^2) [Pa] of the elliptic contact, (5.31).
+
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+300], y in {0} U [1e-300, 1e+300], d
+    in [1e-15, 1000], R1 in [1e-12, 1e+06], R2 in [1e-12, 1e+06], E_star in [0.001, 1e+15] (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
 
     With the semi-axes (5.28) and the p0 of :func:`gaussian_approx_max_pressure`; 0 outside
     the ellipse. x runs along the principal direction of R1.
@@ -289,6 +359,13 @@ def gaussian_approx_pressure(x, y, d, R1, R2, E_star):
     for name, v in (("x", x), ("y", y)):
         if not np.isfinite(v).all():
             raise ValueError(f"{name} must be finite")
-    return result(gen.bodies_gaussian_approx_pressure(
-        positive("E_star", E_star), positive("R1", R1), positive("R2", R2), positive("d", d),
-        x, y))
+    x, y, d, R1, R2, E_star = np.broadcast_arrays(x, y, positive("d", d), positive("R1", R1),
+                                                  positive("R2", R2), positive("E_star", E_star))
+    # the generated form decides in or out (its Max(0, 1 - x^2/a^2 - y^2/b^2)); it is called
+    # only inside the box |x| < 2a, |y| < 2b (5.28), so that no coordinate far outside is
+    # squared (y = 1e200 m would overflow); 0 elsewhere
+    box = ((np.abs(x) < 2 * gen.bodies_gaussian_approx_semi_axis_1(R1, d))
+           & (np.abs(y) < 2 * gen.bodies_gaussian_approx_semi_axis_2(R2, d)))
+    p = gen.bodies_gaussian_approx_pressure(E_star, R1, R2, d, np.where(box, x, 0.0),
+                                            np.where(box, y, 0.0))  # (5.31)
+    return result(np.where(box, p, 0.0))

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import between, nonnegative, positive, result
+from hertzmdr.numeric._validate import between, nonnegative, positive, representable, result
 
 __all__ = ["contact_radius", "depth", "force", "pressure", "mean_pressure", "stiffness",
            "depth_from_force", "contact_radius_from_force"]
@@ -22,8 +22,13 @@ def _theta(theta):
     return between("theta", theta, 0.0, np.pi / 2)
 
 
+@representable
 def contact_radius(d, theta):
     """Contact radius a = 2 d/(pi tan(theta)) [m], (5.38).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], theta in [1e-300, 1.5] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     Parameters
     ----------
@@ -35,8 +40,13 @@ def contact_radius(d, theta):
     return result(gen.cone_contact_radius(nonnegative("d", d), _theta(theta)))
 
 
+@representable
 def depth(a, theta):
     """Indentation depth d = (pi/2) a tan(theta) [m] at the contact radius a, (5.38).
+
+    Guaranteed finite and accurate for a in [1e-12, 1e+06], theta in [1e-300, 1.5] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     Parameters
     ----------
@@ -48,8 +58,13 @@ def depth(a, theta):
     return result(gen.cone_depth(nonnegative("a", a), _theta(theta)))
 
 
+@representable
 def force(d, theta, E_star):
     """Normal force F = (2/pi) E* d^2/tan(theta) [N], (5.40).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -67,6 +82,10 @@ def force(d, theta, E_star):
 def pressure(r, d, theta, E_star):
     """Contact pressure p(r) = (E*/2) tan(theta) arccosh(a/r) [Pa], (5.39) with its sign
     corrected (positive in compression; see docs/errata.md).
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in {0} U [1e-15, 1000], theta
+    in [1e-300, 1.5], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py).
+    Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     The pressure has a logarithmic singularity at the tip: at r = 0 exactly this returns
     ``inf`` (no warning); it is 0 for r >= a.
@@ -91,8 +110,13 @@ def pressure(r, d, theta, E_star):
     return result(out)
 
 
+@representable
 def mean_pressure(theta, E_star):
     """Mean pressure F/(pi a^2) = (E*/2) tan(theta) [Pa], the same at every depth.
+
+    Guaranteed finite and accurate for theta in [1e-300, 1.5], E_star in [0.001, 1e+15] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     Parameters
     ----------
@@ -104,14 +128,25 @@ def mean_pressure(theta, E_star):
     return result(gen.cone_mean_pressure(positive("E_star", E_star), _theta(theta)))
 
 
+@representable
 def stiffness(d, theta, E_star):
-    """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`."""
+    """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5). Parameters as :func:`force`.
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     return result(gen.cone_stiffness(positive("E_star", E_star), nonnegative("d", d),
                                    _theta(theta)))
 
 
+@representable
 def depth_from_force(F, theta, E_star):
     """Indentation depth d = (pi F tan(theta)/(2 E*))^(1/2) [m], (5.40) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -124,8 +159,13 @@ def depth_from_force(F, theta, E_star):
                                           _theta(theta)))
 
 
+@representable
 def contact_radius_from_force(F, theta, E_star):
     """Contact radius a = (2 F/(pi E* tan(theta)))^(1/2) [m], (5.38) with (5.40) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], theta in [1e-300, 1.5], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`depth_from_force`.
     """

@@ -52,6 +52,10 @@ def _ratio(R1, R2) -> np.ndarray:
 def axis_ratio(R1, R2):
     """Axis ratio b/a <= 1 (minor over major semi-axis) of the exact elliptical contact.
 
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+06], q in [1, 1e+08], q = max(R1,
+    R2)/min(R1, R2) (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+
     Solves R_major/R_minor = ellipse_radius_ratio(t) for t = b/a: the ratio of the principal
     radii fixes the shape of the contact, independently of depth, force and modulus.
 
@@ -92,7 +96,12 @@ def axis_ratio(R1, R2):
 
 def eccentricity(R1, R2):
     """Eccentricity e = sqrt(1 - (b/a)^2) of the exact contact ellipse; m = e^2 is SciPy's
-    parameter of ellipk/ellipe. Parameters as :func:`axis_ratio`."""
+    parameter of ellipk/ellipe. Parameters as :func:`axis_ratio`.
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+06], q in [1, 1e+08], q = max(R1,
+    R2)/min(R1, R2) (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     t = np.asarray(axis_ratio(R1, R2))
     return result(np.sqrt((1 - t) * (1 + t)))
 
@@ -130,6 +139,12 @@ class EllipticContact:
     def pressure(self, x, y):
         """Pressure p(x, y) = p0 sqrt(1 - x^2/a^2 - y^2/b^2) [Pa], 0 outside, (5.31).
 
+        Guaranteed finite and accurate for R1 in [1e-12, 1e+06], q in [1, 1e+08], E_star in [0.001,
+        1e+15], depth in [1e-15, 1000], x in {0} U [1e-300, 1e+300], y in {0} U [1e-300, 1e+300], q
+        = max(R1, R2)/min(R1, R2), for the contact of solve(..., depth=depth) (SI units; searched by
+        tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the
+        inputs.
+
         Parameters
         ----------
         x, y : float or array_like
@@ -137,18 +152,30 @@ class EllipticContact:
             against the contact's arrays.
         """
         x, y = as_float("x", x), as_float("y", y)
+        x, y, a, b = np.broadcast_arrays(x, y, self.a, self.b)
+        # the generated forms decide in or out (their Max(0, 1 - x^2/a^2 - y^2/b^2)); they are
+        # called only inside the box |x| < 2a, |y| < 2b, so that no coordinate far outside is
+        # squared (y = 1e200 m would overflow); 0 elsewhere
+        box = (np.abs(x) < 2 * a) & (np.abs(y) < 2 * b)
+        x, y = np.where(box, x, 0.0), np.where(box, y, 0.0)
         if self.model == "gaussian":  # (5.31) with (5.28), (5.22) and R~ (5.30)
-            return result(gen.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2,
-                                                            self.depth, x, y))
+            p = gen.bodies_gaussian_approx_pressure(self.E_star, self.R1, self.R2, self.depth,
+                                                    x, y)
+            return result(np.where(box, p, 0.0))
         major_x = np.asarray(self.R1 >= self.R2)  # the generated form has x along the major axis
         xm, ym = np.where(major_x, x, y), np.where(major_x, y, x)
         Rmaj = np.maximum(self.R1, self.R2)
         t = np.minimum(self.a, self.b) / np.maximum(self.a, self.b)
-        return result(gen.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym))  # (5.31)
+        p = gen.ellipse_pressure(self.E_star, Rmaj, self.depth, t, xm, ym)  # (5.31)
+        return result(np.where(box, p, 0.0))
 
 
 def solve(R1, R2, E_star, *, depth=None, force=None, model: str = "exact") -> EllipticContact:
     """Elliptical Hertz contact of the gap x^2/(2 R1) + y^2/(2 R2), depth- or force-controlled.
+
+    Guaranteed finite and accurate for R1 in [1e-12, 1e+06], q in [1, 1e+08], E_star in [0.001,
+    1e+15], depth in {0} U [1e-15, 1000], q = max(R1, R2)/min(R1, R2) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------

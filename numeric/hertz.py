@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import nonnegative, positive, result
+from hertzmdr.numeric._validate import nonnegative, positive, pow2_scale, representable, result
 
 __all__ = [
     "contact_radius", "max_pressure", "mean_pressure", "force", "energy", "stiffness",
@@ -21,8 +21,13 @@ __all__ = [
 ]
 
 
+@representable
 def contact_radius(d, R):
     """Contact radius a = sqrt(R d) [m], (5.21).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     Parameters
     ----------
@@ -34,8 +39,13 @@ def contact_radius(d, R):
     return result(gen.hertz_contact_radius(positive("R", R), nonnegative("d", d)))
 
 
+@representable
 def max_pressure(d, R, E_star):
     """Maximum pressure p0 = (2/pi) E* sqrt(d/R) [Pa] at the centre, (5.22).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -50,20 +60,37 @@ def max_pressure(d, R, E_star):
                                        nonnegative("d", d)))
 
 
+@representable
 def mean_pressure(d, R, E_star):
-    """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`."""
+    """Mean pressure F/(pi a^2) = (2/3) p0 [Pa], (5.17). Parameters as :func:`max_pressure`.
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     return result(gen.hertz_mean_pressure(positive("E_star", E_star), positive("R", R),
                                         nonnegative("d", d)))
 
 
+@representable
 def force(d, R, E_star):
-    """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`."""
+    """Normal force F = (4/3) E* R^(1/2) d^(3/2) [N], (5.23). Parameters as :func:`max_pressure`.
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
+    """
     return result(gen.hertz_force(positive("E_star", E_star), positive("R", R),
                                 nonnegative("d", d)))
 
 
+@representable
 def energy(d, R, E_star):
     """Elastic energy U = (8/15) E* R^(1/2) d^(5/2) [J], (5.25).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`max_pressure`.
     """
@@ -71,8 +98,13 @@ def energy(d, R, E_star):
                                  nonnegative("d", d)))
 
 
+@representable
 def stiffness(d, R, E_star):
     """Differential stiffness dF/dd = 2 a E* [N/m] (Problem 5).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`max_pressure`.
     """
@@ -80,8 +112,13 @@ def stiffness(d, R, E_star):
                                     nonnegative("d", d)))
 
 
+@representable
 def depth_from_force(F, R, E_star):
     """Indentation depth d [m] under the normal force F, (5.23) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -96,8 +133,13 @@ def depth_from_force(F, R, E_star):
                                            positive("R", R)))
 
 
+@representable
 def contact_radius_from_force(F, R, E_star):
     """Contact radius a = (3 F R / (4 E*))^(1/3) [m], (5.24).
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`depth_from_force`.
     """
@@ -105,8 +147,13 @@ def contact_radius_from_force(F, R, E_star):
                                                     nonnegative("F", F), positive("R", R)))
 
 
+@representable
 def max_pressure_from_force(F, R, E_star):
     """Maximum pressure p0 = (6 F E*^2 / (pi^3 R^2))^(1/3) [Pa], (5.24).
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters as :func:`depth_from_force`.
     """
@@ -114,8 +161,13 @@ def max_pressure_from_force(F, R, E_star):
                                                   nonnegative("F", F), positive("R", R)))
 
 
+@representable
 def pressure(r, d, R, E_star):
     """Pressure p(r) = p0 sqrt(1 - r^2/a^2) [Pa] inside the contact and 0 outside, (5.15).
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -126,12 +178,22 @@ def pressure(r, d, R, E_star):
     R, E_star
         As in :func:`max_pressure`.
     """
-    return result(gen.hertz_pressure(positive("E_star", E_star), positive("R", R),
-                                   positive("d", d), nonnegative("r", r)))
+    r, d, R, E_star = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R),
+                                          positive("E_star", E_star))
+    # the generated form decides in or out (its Max(0, 1 - r^2/a^2)); it is called only for
+    # r < 2a, so that r is never squared far outside (r = 1e155 m would overflow)
+    inside = r < 2 * gen.hertz_contact_radius(R, d)  # (5.21)
+    return result(np.where(inside, gen.hertz_pressure(E_star, R, d, np.where(inside, r, 0.0)),
+                           0.0))  # (5.15)
 
 
+@representable
 def surface_displacement(r, d, R):
     """Surface displacement u_z(r) [m] inside (5.18) and outside (Fig. 5.2) the contact.
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], R in [1e-12,
+    1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
 
     Inside, u_z = d - r^2/(2R); outside, the displacement of the Hertz pressure, printed in a
     form that keeps full accuracy for r >> a, where it decays like the point-load field
@@ -147,8 +209,18 @@ def surface_displacement(r, d, R):
         Effective radius [m], R > 0.
     """
     r, d, R = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R))
-    inside = r * r <= R * d  # r <= a, (5.21)
+    # in or out on the same rounded a = sqrt(R) sqrt(d) as the outside form's asin(a/r), so
+    # that a/r <= 1 there (r*r <= R*d disagreed with it at r = nextafter(a, 0): NaN)
+    # u is homogeneous of degree 1 in (r, d, R): lengths in units of s ~ r, an even power of
+    # 2 (exact, square roots too), so that the outside form's R d/r^2 never squares a huge r;
+    # outside only where both its asin(sqrt(R d)/r) and its 2F1(..., R d/r^2) see < 1
+    inside = np.array(r <= gen.hertz_contact_radius(R, d))  # (5.21)
+    o = np.flatnonzero(~inside)
+    s = pow2_scale(r.flat[o])  # s > a/4 there: (R/s)(d/s) <= 16
+    rs, ds, Rs = r.flat[o] / s, d.flat[o] / s, R.flat[o] / s
+    far = Rs * ds < rs * rs
+    inside.flat[o[~far]] = True
     out = np.empty(r.shape)
     out[inside] = gen.hertz_displacement_inside(R[inside], d[inside], r[inside])
-    out[~inside] = gen.hertz_displacement_outside(R[~inside], d[~inside], r[~inside])
+    out.flat[o[far]] = s[far] * gen.hertz_displacement_outside(Rs[far], ds[far], rs[far])
     return result(out)

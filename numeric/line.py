@@ -13,14 +13,19 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
+from hertzmdr.numeric._validate import as_float, nonnegative, positive, representable, result
 
 __all__ = ["half_width", "force", "depth_from_force", "half_width_from_force",
            "max_pressure", "max_pressure_from_force", "pressure", "stiffness"]
 
 
+@representable
 def half_width(d, R):
     """Half-width a = sqrt(R d) [m] of the contact strip, (5.35) (the definition of d).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06] (SI units;
+    searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming
+    the inputs.
 
     Parameters
     ----------
@@ -32,8 +37,13 @@ def half_width(d, R):
     return result(gen.line_half_width(positive("R", R), nonnegative("d", d)))
 
 
+@representable
 def force(d, L, E_star):
     """Normal force F = (pi/4) E* L d [N], (5.34), with d in the sense of (5.35).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], L in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -48,8 +58,13 @@ def force(d, L, E_star):
                                nonnegative("d", d)))
 
 
+@representable
 def depth_from_force(F, L, E_star):
     """Depth d = 4 F/(pi E* L) [m] (in the sense of (5.35)) under the force F, (5.34).
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], L in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -62,8 +77,13 @@ def depth_from_force(F, L, E_star):
                                           positive("L", L)))
 
 
+@representable
 def half_width_from_force(F, L, R, E_star):
     """Half-width a = 2 (F R/(pi E* L))^(1/2) [m] of the strip under the force F.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], L in [1e-12, 1e+06], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -80,8 +100,13 @@ def half_width_from_force(F, L, R, E_star):
                                                positive("L", L), positive("R", R)))
 
 
+@representable
 def max_pressure(d, R, E_star):
     """Maximum pressure p0 = (E*/2) (d/R)^(1/2) [Pa], (5.37), d in the sense of (5.35).
+
+    Guaranteed finite and accurate for d in {0} U [1e-15, 1000], R in [1e-12, 1e+06], E_star in
+    [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| >
+    1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -96,8 +121,13 @@ def max_pressure(d, R, E_star):
                                       nonnegative("d", d)))
 
 
+@representable
 def max_pressure_from_force(F, L, R, E_star):
     """Maximum pressure p0 = (E* F/(pi L R))^(1/2) [Pa] under the force F, (5.37).
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], L in [1e-12, 1e+06], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     The chapter prints this without the pi (see docs/errata.md). Parameters as
     :func:`half_width_from_force`.
@@ -107,8 +137,13 @@ def max_pressure_from_force(F, L, R, E_star):
                                                  positive("R", R)))
 
 
+@representable
 def pressure(x, d, R, E_star):
     """Pressure p(x) = p0 (1 - x^2/a^2)^(1/2) [Pa] across the strip, 0 outside, (5.36).
+
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+300], d in [1e-15, 1000], R in [1e-12,
+    1e+06], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -122,8 +157,13 @@ def pressure(x, d, R, E_star):
     x = as_float("x", x)
     if not np.isfinite(x).all():
         raise ValueError(f"x = {x!r}: must be finite")
-    return result(gen.line_pressure(positive("E_star", E_star), positive("R", R),
-                                  positive("d", d), x))
+    x, d, R, E_star = np.broadcast_arrays(x, positive("d", d), positive("R", R),
+                                          positive("E_star", E_star))
+    # the generated form decides in or out (its Max(0, 1 - x^2/a^2)); it is called only for
+    # |x| < 2a, so that x is never squared far outside (x = 1e155 m would overflow)
+    inside = np.abs(x) < 2 * gen.line_half_width(R, d)  # (5.35)
+    return result(np.where(inside, gen.line_pressure(E_star, R, d, np.where(inside, x, 0.0)),
+                           0.0))  # (5.36)
 
 
 def stiffness(L, E_star):

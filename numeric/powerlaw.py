@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import nonnegative, positive, result
+from hertzmdr.numeric._validate import nonnegative, positive, pow2_scale, representable, result
 
 __all__ = ["kappa", "g_profile", "contact_radius", "force", "force_from_radius",
            "depth_from_force", "mean_pressure", "pressure", "pressure_normalized",
@@ -26,12 +26,19 @@ __all__ = ["kappa", "g_profile", "contact_radius", "force", "force_from_radius",
 #: evaluating the 2F1: SciPy's hyp2f1(1, 1 - n/2; 3/2; z) loses digits as n grows (5e-13 at
 #: n = 300) and returns NaN near the centre for n >= 343 that is not an even integer
 N_PRESSURE_QUADRATURE = 40.0
+#: :func:`surface_displacement` integrates (5.60) instead of evaluating its 2F1 form where
+#: n > N_PRESSURE_QUADRATURE or r < a (1 + EDGE_QUADRATURE)
+EDGE_QUADRATURE = 1e-4
 #: kappa_n switches from the Gamma ratio to the Stirling series at this n (both < 1e-15 there)
 N_ASYMPTOTIC = 40.0
 
 
+@representable
 def kappa(n):
     """MDR factor kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2) [1], Problem 7(d).
+
+    Guaranteed finite and accurate for n in [0.001, 1e+300] (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     g(x) = kappa_n c_n |x|^n is the MDR profile (5.52) of f = c_n r^n. kappa_n ~ sqrt(pi n/2)
     for large n; kappa_1 = pi/2, kappa_2 = 2.
@@ -48,8 +55,14 @@ def kappa(n):
     return result(np.where(n < N_ASYMPTOTIC, small, large))
 
 
+@representable
 def g_profile(x, c_n, n):
     """MDR profile g(x) = kappa_n c_n |x|^n [m] (5.52), Problem 7(d).
+
+    Guaranteed finite and accurate for x in {0} U [1e-12, 1000], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [0.001, 1e+08], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for
+    n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -65,8 +78,14 @@ def g_profile(x, c_n, n):
     return result(gen.powerlaw_g(c_n, kappa(n), n, nonnegative("x", x)))
 
 
+@representable
 def contact_radius(d, c_n, n):
     """Contact radius a = (d/(kappa_n c_n))^(1/n) [m], (5.55).
+
+    Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
+    with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n > 87 within exp(+-600/n)
+    of 1 m, so that c_n is a float) (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -79,8 +98,14 @@ def contact_radius(d, c_n, n):
     return result(gen.powerlaw_contact_radius(c_n, nonnegative("d", d), kappa(n), n))
 
 
+@representable
 def force(d, c_n, n, E_star):
     """Normal force F = 2n/(n+1) E* a d [N], (5.57) (the print of Problem 7(d) has an erratum).
+
+    Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
+    E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n
+    > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -94,8 +119,13 @@ def force(d, c_n, n, E_star):
                                    kappa(n), n))
 
 
+@representable
 def force_from_radius(a, d, n, E_star):
     """F = 2n/(n+1) E* a d [N] for a contact of radius a at depth d, (5.57).
+
+    Guaranteed finite and accurate for a in [1e-12, 1e+06], d in {0} U [1e-15, 1000], n in [0.001,
+    1e+08], E_star in [0.001, 1e+15] (SI units; searched by tests/domain_search.py). Beyond float64
+    (|result| > 1.8e308): OverflowError naming the inputs.
 
     Parameters
     ----------
@@ -111,8 +141,15 @@ def force_from_radius(a, d, n, E_star):
                                                positive("n", n)))
 
 
+@representable
 def depth_from_force(F, c_n, n, E_star):
     """Indentation depth d [m] under the normal force F, Problem 7(d) inverted.
+
+    Guaranteed finite and accurate for F in {0} U [1e-300, 1e+30], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [0.001, 1e+08], E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact
+    radius a in that range (for n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
 
     Parameters
     ----------
@@ -126,11 +163,18 @@ def depth_from_force(F, c_n, n, E_star):
                                               c_n, kappa(n), n))
 
 
+@representable
 def mean_pressure(d, c_n, n, E_star):
-    """Mean pressure F/(pi a^2) [Pa] (Fig. 5.17). Parameters as :func:`force`."""
-    a = contact_radius(d, c_n, n)
-    return result(gen.powerlaw_mean_pressure(positive("E_star", E_star), a, positive("d", d),
-                                           positive("n", n)))
+    """Mean pressure F/(pi a^2) [Pa] (Fig. 5.17). Parameters as :func:`force`.
+
+    Guaranteed finite and accurate for d in [1e-15, 1000], a in [1e-09, 1000], n in [0.001, 1e+08],
+    E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for n
+    > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+    """
+    c_n, n = positive("c_n", c_n), positive("n", n)
+    return result(gen.powerlaw_mean_pressure_from_depth(positive("E_star", E_star), c_n,
+                                                      positive("d", d), kappa(n), n))
 
 
 def _pressure_at(r, a, d, n, E_star):
@@ -180,8 +224,44 @@ def _pressure_quadrature(r, a, d, n, E_star, m=16):
     return np.sum(wts * f, axis=1)
 
 
+def _displacement_quadrature(r, a, d, n, m=16):
+    """(5.60) as integral_0^asin(a/r) powerlaw_displacement_outside_integrand dw, for broadcast
+    1-D arrays, r > a.
+
+    The integrand rises from 0 at w = 0 to ~2d/pi in a layer of width ~1/L,
+    L = n cot(asin(a/r)) + sqrt(n) (the base cos(w) - cot(asin(a/r)) sin(w) of the power n
+    falls linearly, or quadratically where r -> a): composite m-point Gauss-Legendre on panels
+    with edges w = 2^j/L (j = -6, -5, ...), as for the pressure, and w = W (1 - 2^-k), W =
+    asin(a/r) (k = 1 ... 40), where the integrand is 1 - O((W - w)^n), singular for small n.
+    """
+    from hertzmdr.numeric._quadrature import panels
+
+    # W = asin(a/r) as atan2 of the same sqrt(r - a) sqrt(r + a) that the integrand's base
+    # uses: asin of the rounded a/r next to 1 would put W past the zero of the base
+    top = np.arctan2(a, np.sqrt(r - a) * np.sqrt(r + a))
+    cot = np.sqrt(r - a) * np.sqrt(r + a) / a
+    lam = n * cot + np.sqrt(n)
+    j = 2.0 ** np.arange(-6, 64)
+    k = 1 - 2.0 ** -np.arange(1, 41)  # nearer W, 1 + base = sin(W - w)/sin(W) < 1e-12 rounds
+    breaks = np.concatenate([j[None, :] / lam[:, None], top[:, None] * k[None, :]], axis=1)
+    w, wts = panels(np.zeros(len(r)), top, breaks, m)
+    w[wts == 0] = 0.0  # the empty panels of clipped edges (nodes at asin(a/r)): weight 0
+
+    def col(v):
+        return v[:, None]
+
+    f = gen.powerlaw_displacement_outside_integrand(col(a), col(d), col(n), col(r), w)
+    return np.sum(wts * f, axis=1)
+
+
 def pressure(r, d, c_n, n, E_star):
     """Contact pressure p(r) [Pa] of a power-law indenter, 0 outside the contact, (5.59).
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [1.5, 1e+08], E_star in [0.001, 1e+15], with c_n = d/(kappa_n a^n) for a contact
+    radius a in that range (for n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
 
     n = inf is the flat punch of radius a = ``c_n`` (pass the punch radius as c_n then):
     p = E* d/(pi sqrt(a^2 - r^2)). At the centre p is +inf for n <= 1 (the cone's logarithmic
@@ -222,6 +302,10 @@ def pressure(r, d, c_n, n, E_star):
 def pressure_normalized(r_tilde, n):
     """p/p_mean [1] at r_tilde = r/a (Fig. 5.17), 0 for r_tilde >= 1.
 
+    Guaranteed finite and accurate for r_tilde in {0} U [1e-12, 1e+300], n in [1.5, 1e+08] (SI
+    units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError
+    naming the inputs.
+
     Parameters
     ----------
     r_tilde : float or array_like
@@ -239,8 +323,14 @@ def pressure_normalized(r_tilde, n):
     return result(p * np.pi / F)
 
 
+@representable
 def surface_displacement(r, d, c_n, n):
     """Surface displacement u_z(r) [m]: d - c_n r^n inside, (5.60) outside the contact.
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+300], d in [1e-15, 1000], a in [1e-09,
+    1000], n in [0.001, 1e+08], with c_n = d/(kappa_n a^n) for a contact radius a in that range (for
+    n > 87 within exp(+-600/n) of 1 m, so that c_n is a float) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     n = inf is the flat punch of radius ``c_n`` (inside: u_z = d).
 
@@ -258,12 +348,20 @@ def surface_displacement(r, d, c_n, n):
     fin = ~punch
     a[fin] = contact_radius(d[fin], c_n[fin], n[fin])
     out = np.empty(r.shape)
-    inside = r <= a
+    inside = r <= a  # the rounded a that the outside forms take: a/r <= 1 there
     sel = inside & fin
     out[sel] = d[sel] - c_n[sel] * r[sel] ** n[sel]
     out[inside & punch] = d[inside & punch]
-    sel = ~inside & fin
-    out[sel] = gen.powerlaw_displacement_outside(a[sel], d[sel], n[sel], r[sel])
+    # the 2F1 form subtracts two terms with a sqrt(r - a) singularity: next to the edge it
+    # loses eps/sqrt(1 - a/r) (1e-7 at r = a(1 + 1e-15)), and for n > 40 SciPy's 2F1 fails
+    quad = (n > N_PRESSURE_QUADRATURE) | (r < a * (1 + EDGE_QUADRATURE))
+    sel = ~inside & fin & ~quad
+    s = pow2_scale(r[sel])  # homogeneous of degree 1 in (a, d, r): in units of s ~ r (a power
+    out[sel] = s * gen.powerlaw_displacement_outside(  # of 2, exact), (a/r)^2 cannot overflow
+        a[sel] / s, d[sel] / s, n[sel], r[sel] / s)
+    sel = ~inside & fin & quad  # (5.60) by quadrature of a positive, smooth integrand
+    if sel.any():
+        out[sel] = _displacement_quadrature(r[sel], a[sel], d[sel], n[sel])
     sel = ~inside & punch
     out[sel] = gen.powerlaw_punch_displacement_outside(a[sel], d[sel], r[sel])
     return result(out)

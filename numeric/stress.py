@@ -13,23 +13,53 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
+from hertzmdr.numeric._validate import (
+    as_float,
+    nonnegative,
+    poisson,
+    positive,
+    pow2_scale,
+    result,
+)
 
 __all__ = [
     "spheroidal", "hertz_stress_cylindrical", "hertz_stress", "axis_stresses",
     "axis_max_shear", "von_mises", "tresca", "max_shear", "hertz_maximum",
-    "superposed_stress",
+    "superposed_stress", "MAX_DISTANCE",
 ]
+
+
+#: :func:`spheroidal`, :func:`hertz_stress_cylindrical`, :func:`hertz_stress` and
+#: :func:`axis_stresses` accept max(r, z) up to this many contact radii (xi^3 stays below
+#: 1e300; the stresses there are ~1e-200 p0)
+MAX_DISTANCE = 1e100
+
+
+def _within_reach(r, z, a):
+    """ValueError naming the point if max(r, z) > MAX_DISTANCE a."""
+    far = np.maximum(r, z) > MAX_DISTANCE * a
+    if far.any():
+        i = np.unravel_index(np.argmax(far), far.shape) if far.ndim else ()
+        raise ValueError(f"r = {float(r[i])!r}, z = {float(z[i])!r}, a = {float(a[i])!r}: "
+                         f"max(r, z) is out of range; valid: max(r, z) <= {MAX_DISTANCE:g} a "
+                         "(the stresses there are below 1e-200 p0)")
 
 
 def spheroidal(r, z, a):
     """Oblate spheroidal coordinates (xi, cos(beta), sin(beta)) of the contact disc at (r, z).
+
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+110], z in {0} U [1e-300, 1e+110], a
+    in [1e-12, 1e+06], max(r, z) <= 1e100 a (a ValueError beyond) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta); xi^2 = u/a^2 with Johnson's u, the
     positive root of r^2/(a^2 + u) + z^2/u = 1. Inside the sphere r^2 + z^2 < a^2 the
     cancellation-free forms are used; at the contact edge (r = a, z = 0) the limit xi = 0,
     beta = pi/2 is returned. cos(beta) and sin(beta) are returned rather than beta, which
     would lose the relative accuracy of cos(beta) near the surface outside the contact.
+
+    Guaranteed finite and accurate for max(r, z) <= MAX_DISTANCE a (1e100 a), a ValueError
+    beyond; next to the edge circle xi keeps ~sqrt(eps) absolute (r/a is rounded).
 
     Parameters
     ----------
@@ -48,7 +78,12 @@ def spheroidal(r, z, a):
         cos(beta), sin(beta) [1], 0 <= beta <= pi/2.
     """
     r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
+    _within_reach(r, z, a)
     r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
+    # far away (r or z > 1e154 a) q^2 would overflow: outside the sphere r^2 + z^2 = a^2
+    # the lengths are taken in units of s, the power of 2 below max(r, z) (exact), with the
+    # contact radius 1/s; inside it s = 1
+    s = np.maximum(pow2_scale(np.maximum(r, z)), 1.0)
     q = (r - 1) * (r + 1) + z * z
     edge = (q == 0) & (z * z == 0)  # the edge circle (to within z^2 underflow, z < 1e-154 a)
     i = (q <= 0) & ~edge
@@ -58,21 +93,34 @@ def spheroidal(r, z, a):
     one = np.ones(r.shape)
     u[i] = gen.stress_spheroidal_u_inside(one[i], r[i], z[i])
     cos_b[i] = gen.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
-    u[o] = gen.stress_spheroidal_u(one[o], r[o], z[o])
-    cos_b[o] = z[o] / np.sqrt(u[o])  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
+    so = s[o]  # u/s^2 in units of s (the contact radius 1/s): u = s^2 u', sqrt(u) = s sqrt(u')
+    uo = gen.stress_spheroidal_u(1.0 / so, r[o] / so, z[o] / so)
+    cos_b[o] = (z[o] / so) / np.sqrt(uo)  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
+    xi = np.empty(r.shape)
+    xi[...] = np.sqrt(u)
+    xi[o] = so * np.sqrt(uo)
+    sin_b = np.empty(r.shape)
+    sin_b[~o] = r[~o] / np.sqrt(1 + u[~o])
+    sin_b[o] = (r[o] / so) / np.sqrt(1.0 / so**2 + uo)  # 1/s^2 underflows harmlessly
     # on the edge circle the field is the limit beta -> pi/2, xi = 0, which every generated
     # form reaches continuously; 1e-100 keeps eta^3/(xi^2 + eta^2) from being 0/0
     cos_b[edge] = 1e-100
-    sin_b = r / np.sqrt(1 + u)
-    return result(np.sqrt(u)), result(cos_b), result(sin_b)
+    return result(xi), result(cos_b), result(sin_b)
 
 
 def hertz_stress_cylindrical(r, z, a, p0, nu):
     """Stresses (sigma_rr, sigma_theta, sigma_zz, tau_rz) [Pa] under the Hertz pressure.
 
+    Guaranteed finite and accurate for r in {0} U [1e-300, 1e+110], z in {0} U [1e-300, 1e+110], a
+    in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5], max(r, z) <= 1e100 a (a ValueError
+    beyond) (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+
     Huber's closed form (Huber 1904; Johnson 1985, eqs. (3.44)) in spheroidal coordinates,
     printed without the cancellations of the textbook form on the axis, at depth and at the
-    contact edge (see :mod:`hertzmdr.derive.stress`). Finite everywhere in the closed body.
+    contact edge (see :mod:`hertzmdr.derive.stress`). Guaranteed finite and accurate for
+    max(r, z) <= MAX_DISTANCE a (1e100 a), every -1 < nu <= 0.5 and any finite p0; beyond
+    that distance a ValueError.
 
     Parameters
     ----------
@@ -95,6 +143,7 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     r, z, a, p0, nu = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z),
                                           positive("a", a), nonnegative("p0", p0),
                                           poisson("nu", nu))
+    _within_reach(r, z, a)
     xi, eta, chi = (np.asarray(v) for v in spheroidal(r, z, a))
     srr, stt = np.empty(r.shape), np.empty(r.shape)
     n = xi < 1.0  # the form with atan; beyond, the hypergeometric form without cancellation
@@ -127,6 +176,11 @@ def _rotate(x, y, srr, stt, szz, trz):
 def hertz_stress(x, y, z, a, p0, nu):
     """Stress tensor [Pa] at (x, y, z) under the Hertz pressure p0 (1 - r^2/a^2)^(1/2) (5.15).
 
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+110], y in {0} U [1e-300, 1e+110], z
+    in {0} U [1e-300, 1e+110], a in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5],
+    max(sqrt(x^2 + y^2), z) <= 1e100 a (a ValueError beyond) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     Parameters
     ----------
     x, y : float or array_like
@@ -151,6 +205,10 @@ def hertz_stress(x, y, z, a, p0, nu):
 def axis_stresses(z, a, p0, nu):
     """sigma_zz (5.48) and sigma_xx = sigma_yy (5.49) [Pa] on the axis under the Hertz pressure.
 
+    Guaranteed finite and accurate for z in {0} U [1e-300, 1e+110], a in [1e-12, 1e+06], p0 in
+    [0.001, 1e+15], nu in (-1, 0.5], z <= 1e100 a (a ValueError beyond) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     (5.49) is used for z < a; for z >= a a form without its cancellation (exact at nu = 1/2).
 
     Parameters
@@ -162,6 +220,9 @@ def axis_stresses(z, a, p0, nu):
     """
     z, a, p0, nu = np.broadcast_arrays(nonnegative("z", z), positive("a", a),
                                        nonnegative("p0", p0), poisson("nu", nu))
+    _within_reach(z, z, a)
+    s_ = pow2_scale(np.maximum(a, z))  # homogeneous of degree 0 in (z, a): in units of a
+    z, a = z / s_, a / s_  # power of 2 near max(a, z) (exact): z^4 of the deep form <= 16
     szz = gen.stress_axis_sigma_zz(a, p0, z)  # (5.48)
     sxx = np.empty(z.shape)
     shallow = z < a
@@ -177,13 +238,19 @@ def axis_max_shear(nu):
     """Depth z/a and value tau_1/p0 of the maximum of tau_1 = (sigma_xx - sigma_zz)/2 on the
     axis under the Hertz pressure (Fig. 5.8); the von Mises stress there is 2 tau_1.
 
+    Guaranteed finite and accurate for nu in (-1, 0.5] (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
+
     The root of d(tau_1)/dz (generated from the derivation) by Brent's method on
-    0.05 a <= z <= 2 a, to full double precision.
+    z_lo <= z <= 2 a, to full double precision (relative: the maximum approaches the surface
+    like z = pi (1 + nu) a/6 as nu -> -1). z_lo (``stress_axis_max_shear_bracket``) is derived
+    from lower bounds of the slope's terms, so that the bracket holds for every nu.
 
     Parameters
     ----------
     nu : float
-        Poisson's ratio, -1 < nu <= 0.5.
+        Poisson's ratio, -1 < nu <= 0.5: the whole range is guaranteed (finite, z/a to a few
+        ulp).
 
     Returns
     -------
@@ -193,31 +260,50 @@ def axis_max_shear(nu):
     from scipy.optimize import brentq
 
     nu = float(poisson("nu", nu))
-    s = brentq(lambda t: gen.stress_axis_max_shear_slope(1.0, nu, 1.0, t), 0.05, 2.0,
-               xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+    lo = float(gen.stress_axis_max_shear_bracket(1.0, nu))  # slope > 0 there, < 0 at 2a
+    s = brentq(lambda t: gen.stress_axis_max_shear_slope(1.0, nu, 1.0, t), lo, 2.0,
+               xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=200)
     return s, float(gen.stress_axis_max_shear(1.0, nu, 1.0, s))
 
 
 def von_mises(sigma):
-    """von Mises equivalent stress (5.50) [Pa] of stress tensors of shape (..., 3, 3)."""
+    """von Mises equivalent stress (5.50) [Pa] of stress tensors of shape (..., 3, 3).
+
+    Guaranteed finite and accurate for s in [1e-100, 1e+100] (s: the size of the stress components)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+    """
     s = as_float("sigma", sigma)
     return result(gen.stress_von_mises(s[..., 0, 0], s[..., 1, 1], s[..., 2, 2], s[..., 0, 1],
                                      s[..., 1, 2], s[..., 0, 2]))
 
 
 def tresca(sigma):
-    """Tresca equivalent stress sigma_1 - sigma_3 [Pa] (largest minus smallest principal)."""
+    """Tresca equivalent stress sigma_1 - sigma_3 [Pa] (largest minus smallest principal).
+
+    Guaranteed finite and accurate for s in [1e-100, 1e+100] (s: the size of the stress components)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+    """
     ev = np.linalg.eigvalsh(as_float("sigma", sigma))
     return result(ev[..., -1] - ev[..., 0])
 
 
 def max_shear(sigma):
-    """Maximum shear stress (sigma_1 - sigma_3)/2 [Pa]; on the axis it is tau_1 of Fig. 5.8."""
+    """Maximum shear stress (sigma_1 - sigma_3)/2 [Pa]; on the axis it is tau_1 of Fig. 5.8.
+
+    Guaranteed finite and accurate for s in [1e-100, 1e+100] (s: the size of the stress components)
+    (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
+    OverflowError naming the inputs.
+    """
     return result(0.5 * np.asarray(tresca(sigma)))
 
 
 def hertz_maximum(nu, criterion: str = "von_mises"):
     """Maximum of an equivalent stress in the body under the Hertz pressure, over p0.
+
+    Guaranteed finite and accurate for nu in (-1, 0.5] (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     A 60 x 60 grid over 0 <= r <= 2a, 0 <= z <= 2a locates the peak; Nelder-Mead refines it
     (for the Hertz pressure the peak lies on the axis; it is searched for, not assumed).
@@ -319,6 +405,10 @@ def _superpose_point(r, z, a, nu, pressure, n_psi, level):
 def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int = 5):
     """Stress tensor [Pa] under an axisymmetric pressure p(r) on r < a, by superposing the
     point-force field (5.41)-(5.46) over the pressure (5.47), with an error estimate.
+
+    Guaranteed finite and accurate for x in [0.001, 10], z in [0.001, 10], a in [0.1, 10], nu in
+    (-1, 0.5] (x, z: the field point, for a uniform pressure on r < a) (SI units; searched by
+    tests/domain_search.py). Beyond float64 (|result| > 1.8e308): OverflowError naming the inputs.
 
     Quadrature on rays from the field point's projection (so the kernel's scale z is resolved
     however close to the surface): in the distance s, tanh-sinh on s = z sinh(v), which copes

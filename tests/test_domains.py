@@ -94,3 +94,57 @@ def test_finite_and_monotone(row, data):
     assert sign * (other - value) >= -8 * EPS * max(abs(value), abs(other)), \
         f"{name} not {'increasing' if sign > 0 else 'decreasing'} in {mono}: {args} -> {value}, " \
         f"{moved} -> {other}"
+
+
+# -- the documented-domain search (issue 19): every public function of the closed-form modules,
+# each parameter over its documented range, the neighbours of every branch boundary, mpmath
+# references that also say where the true value is no float64, round trips; see
+# tests/domain_search.py. CI runs a few points per function, the sweep the bulk.
+
+import domain_search  # noqa: E402
+
+from oracle import n_points  # noqa: E402
+
+SEARCH_ROWS = domain_search.rows()
+
+
+@pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
+def test_documented_domain(row):
+    failures, _ = domain_search.run([row], 3)  # the corners, the edges, 3 random points
+    assert not failures, "\n".join(failures)
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
+def test_documented_domain_sweep(row):
+    failures, _ = domain_search.run([row], n_points(full=400, ci=8), seed=1)
+    assert not failures, "\n".join(failures)
+
+
+def test_search_uses_the_documented_reach():
+    from hertzmdr.numeric import stress
+
+    assert domain_search.MAX_DISTANCE == stress.MAX_DISTANCE
+
+
+@pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
+def test_docstring_states_the_searched_domain(row):
+    """Each public function's docstring states the domain the search tests, word for word."""
+    import inspect
+
+    doc = " ".join(inspect.getdoc(row.target).split())
+    assert " ".join(domain_search.guarantee(row).split()) in doc, row.target.__qualname__
+
+
+def test_accuracy_report_has_the_search_counts(tmp_path):
+    import json
+
+    from hertzmdr.numeric import accuracy
+
+    record = tmp_path / "search.json"
+    record.write_text(json.dumps({"functions": 62, "parameters": 198, "cases": 1000,
+                                  "failures": 0, "seconds": 12.5, "points_per_row": 400,
+                                  "command": "python tests/domain_search.py"}))
+    text = accuracy.domain_search_section(record)
+    assert "| 62 | 198 | 1000 | 0 | 12.5 |" in text
+    assert accuracy.domain_search_section(tmp_path / "missing.json") == ""

@@ -1,10 +1,19 @@
 """The generated module is fresh, deterministic, and importing the runtime never loads SymPy."""
 
+import difflib
+import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
 
-from hertzmdr.derive.__main__ import targets
+import pytest
+
+from hertzmdr.derive.__main__ import ROOT
+
+#: the files ``python -m hertzmdr.derive`` writes, relative to the source tree
+GENERATED = ["numeric/_generated.py", "numeric/_generated_mp.py", "docs/derivations.md",
+             "docs/errata.md"]
 
 
 def test_generated_files_are_fresh(capsys):
@@ -19,9 +28,63 @@ def test_generated_files_are_fresh(capsys):
     assert rc == 0, out.out[-3000:] + out.err
 
 
-def test_printing_is_deterministic():
-    """Printing the same relations twice gives the same text (sorted names, stable printers)."""
-    assert targets() == targets()
+def stale(committed: Path, regenerated: Path) -> dict[str, str]:
+    """{file: unified diff} for every generated file whose text under ``committed`` differs
+    from the one under ``regenerated`` (both laid out like the source tree)."""
+    out = {}
+    for name in GENERATED:
+        old = (committed / name).read_text() if (committed / name).exists() else ""
+        new = (regenerated / name).read_text()
+        if old != new:
+            out[name] = "".join(difflib.unified_diff(
+                old.splitlines(keepends=True), new.splitlines(keepends=True),
+                f"{name} (committed)", f"{name} (regenerated)", n=1))
+    return out
+
+
+@pytest.fixture(scope="module")
+def regenerated(tmp_path_factory):
+    """Every generated file printed by a fresh interpreter into a temporary directory, with a
+    hash seed other than this process's (set and dict orders that leak into the output would
+    differ), through the same ``targets()`` that ``python -m hertzmdr.derive`` writes."""
+    out = tmp_path_factory.mktemp("regenerated")
+    code = ("import sys; from pathlib import Path; "
+            "from hertzmdr.derive.__main__ import ROOT, targets; out = Path(sys.argv[1])\n"
+            "for path, text in targets().items():\n"
+            "    dest = out / path.relative_to(ROOT)\n"
+            "    dest.parent.mkdir(parents=True, exist_ok=True)\n"
+            "    dest.write_text(text)\n")
+    seed = "1" if os.environ.get("PYTHONHASHSEED") != "1" else "2"
+    subprocess.run([sys.executable, "-c", code, str(out)], check=True,
+                   env={**os.environ, "PYTHONHASHSEED": seed})
+    assert sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()) \
+        == sorted(GENERATED), "the generator writes exactly the files listed here"
+    return out
+
+
+def test_regenerated_in_a_fresh_process_matches_the_committed_files(regenerated):
+    """Deterministic across processes and hash seeds, and fresh: a subprocess prints exactly
+    the committed text."""
+    diffs = stale(ROOT, regenerated)
+    assert not diffs, "stale or non-deterministic output:\n" + "\n".join(diffs.values())[:3000]
+
+
+def test_the_staleness_check_fails_on_an_edited_file(regenerated, tmp_path):
+    """The comparison above can fail: a copy of the committed files with one number of the
+    generated module changed is reported stale, that file only, with the change in its diff."""
+    for name in GENERATED:
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(ROOT / name, tmp_path / name)
+    assert not stale(tmp_path, regenerated)
+    path = tmp_path / "numeric" / "_generated.py"
+    text = path.read_text()
+    i = next(k for k, ch in enumerate(text) if ch.isdigit() and text[k - 1] == " "
+             and k > text.index("def "))
+    edited = text[:i] + str((int(text[i]) + 1) % 10) + text[i + 1:]
+    path.write_text(edited)
+    diffs = stale(tmp_path, regenerated)
+    assert list(diffs) == ["numeric/_generated.py"]
+    assert edited.splitlines()[text[:i].count("\n")] in diffs["numeric/_generated.py"]
 
 
 def test_numeric_does_not_import_sympy():

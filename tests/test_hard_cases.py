@@ -304,3 +304,161 @@ def test_hard_case(case):
         err = float(abs((mp.mpf(float(got)) - ref) / ref))
     assert err <= case.bound, (f"{case.name}: relative error {err:.2e} > {case.bound:.2e} "
                                f"({case.bound_why}); hard because {case.why}")
+
+
+# -- issue 19: the edges of the documented domains ------------------------------------------
+
+def _powerlaw_depth(F, c, n, E):
+    """d with F(d) = F: F(d) = 2n/(n + 1) E* a d, a = (d/(kappa_n c))^(1/n) (5.55), (5.57),
+    kappa_n by quadrature (test_powerlaw.kappa_reference), d by findroot on log d."""
+    from test_powerlaw import kappa_reference
+
+    def ref():
+        n_, c_, E_, F_ = (mp.mpf(v) for v in (n, c, E, F))
+        k = kappa_reference(n_)
+
+        def force(logd):
+            dd = mp.exp(logd)
+            return mp.log(2 * n_ / (n_ + 1) * E_ * (dd / (k * c_)) ** (1 / n_) * dd) - mp.log(F_)
+        # F is a power of d: d^((n + 1)/n) (kappa c)^(-1/n) 2n E/(n + 1); start from log d = 0
+        return mp.exp(mp.findroot(force, mp.mpf(0)))
+    return ref
+
+
+def _powerlaw_outside(n, r_over_a):
+    """u_z(r > a) of the power law against (5.60) by quadrature in x (test_powerlaw)."""
+    from hertzmdr.numeric import powerlaw
+
+    from test_powerlaw import displacement_outside_reference
+
+    d = 1.0
+    c = 1.0 / float(powerlaw.kappa(n))  # a = 1 m
+    a = float(powerlaw.contact_radius(d, c, n))
+    r = r_over_a * a
+    return (lambda: powerlaw.surface_displacement(r, d, c, n)), \
+        (lambda: displacement_outside_reference(r, d, a, n))
+
+
+def _max_shear_depth(nu_):
+    """The depth of the tau_1 maximum: the root of the derivation's slope, 30 digits, by
+    findroot on a bracket (0.05 a ... 2 a fails for nu < -0.8985)."""
+    import sympy as sp
+
+    from hertzmdr.derive import stress as ds
+    from hertzmdr.numeric import stress
+
+    def ref():
+        s = sp.Symbol("s", positive=True)
+        tau = (ds.max_shear_axis() / ds.p0).subs(ds.z, ds.a * s).subs(ds.a, 1)
+        slope = sp.lambdify(s, sp.diff(tau.subs(ds.nu, sp.Float(nu_, 40)), s), "mpmath")
+        # the maximum lies near pi (1 + nu)/6 as nu -> -1 and at ~0.55 a for nu = 1/2
+        return mp.findroot(slope, (mp.pi * (1 + mp.mpf(nu_)) / 20, mp.mpf(2)),
+                           solver="anderson")
+    return (lambda: stress.axis_max_shear(nu_)[0]), ref
+
+
+def _hertz_edge_displacement():
+    """r = nextafter(a, 0) for a (d, R) of issue 19, where r*r <= R*d said 'outside'."""
+    d, R = 1.3923563196198173e-07, 3.770060549304781e-07
+    r = 2.2911280259238836e-07
+    return (lambda: hertz.surface_displacement(r, d, R)), _far_displacement(R, d, r)
+
+
+def _cone_flat(r, d, theta, E):
+    from hertzmdr.numeric import cone
+
+    def ref():
+        # (5.39), p = (E*/2) tan(theta) acosh(a/r), a = 2d/(pi tan(theta)) (5.38), in mpmath
+        # (no overflow of a/r = 6e308 there)
+        t = mp.tan(mp.mpf(theta))
+        return mp.mpf(E) * t / 2 * mp.acosh(2 * mp.mpf(d) / (mp.pi * t * mp.mpf(r)))
+    return (lambda: cone.pressure(r, d, theta, E)), ref
+
+
+def _kappa_huge(n):
+    from hertzmdr.numeric import powerlaw
+
+    def ref():
+        with mp.workdps(400):  # ln Gamma(n/2) ~ 3e302: the difference needs 300 more digits
+            nn = mp.mpf(n)
+            return mp.sqrt(mp.pi) * mp.exp(mp.loggamma(nn / 2 + 1) - mp.loggamma(nn / 2 + 0.5))
+    return (lambda: powerlaw.kappa(n)), ref
+
+
+def _far_axis_sigma_rr(z_over_a):
+    from hertzmdr.numeric import stress
+
+    def ref():
+        # (5.49) as the chapter prints it, at 400 digits: its terms of size 1 cancel to leave
+        # one of size (a/z)^2 = 1e-156, so ~320 digits are lost and ~80 remain
+        with mp.workdps(400):
+            z, nu = mp.mpf(z_over_a), mp.mpf(3) / 10
+            return -((1 + nu) * (1 - z * mp.atan(1 / z)) - 1 / (2 * (1 + z**2)))
+    return (lambda: stress.hertz_stress_cylindrical(0.0, z_over_a, 1.0, 1.0, 0.3)[0]), ref
+
+
+CASES += [
+    Case("power-law u_z, n = 1000 at r = 1.001 a", "SciPy's 2F1(1/2, (n + 1)/2; (n + 3)/2; z) "
+         "of (5.60) returns NaN for n >= 342 next to the edge; the integral of a positive "
+         "integrand is taken instead", *_powerlaw_outside(1000.0, 1.001), WELL),
+    Case("power-law u_z, n = 343.5 at r = 1.001 a", "as above; the 2F1 gave -inf here",
+         *_powerlaw_outside(343.5, 1.001), WELL),
+    Case("power-law u_z, n = 1e-3 at r = a (1 + 1e-12)", "next to the edge the 2F1 form "
+         "subtracts two sqrt(r - a) terms (and for small n loses 1/n more)",
+         *_powerlaw_outside(1e-3, 1 + 1e-12), WELL),
+    Case("Hertz u_z at r = nextafter(a, 0)", "r*r <= R*d and the rounded a = sqrt(R) sqrt(d) "
+         "disagreed: arcsin(1 + 2e-16) = NaN", *_hertz_edge_displacement(), WELL),
+    Case("power-law depth from F = 1 N, c_n = 3, n = 1e-3", "(kappa c)^(1/n) = 3^1000 of the "
+         "textbook inverse overflows although d = 2.96 m (inf before)",
+         lambda: powerlaw_depth_from_force(1.0, 3.0, 1e-3, 1e9),
+         _powerlaw_depth(1.0, 3.0, 1e-3, 1e9),
+         # d = (F ...)^(n/(n + 1)) (kappa c)^(1/(n + 1)): exponents below 1 shrink the
+         # roundings; kappa_n (Gamma ratio) and the powers: a few eps
+         WELL),
+    Case("power-law depth from F = 3.3e-284 N, n = 0.0209", "F (kappa c)^(1/n) underflowed: "
+         "0 was returned for d = 8.9e-8 m",
+         lambda: powerlaw_depth_from_force(3.348556860994228e-284, 0.06977002573100553,
+                                           0.020913738184586448, 11216280.892656678),
+         _powerlaw_depth(3.348556860994228e-284, 0.06977002573100553, 0.020913738184586448,
+                         11216280.892656678),
+         # d = (F ...)^(n/(n + 1)): a relative rounding of the base is multiplied by
+         # n/(n + 1) < 1, but the base's two powers each carry |log| ~ 650 times eps
+         1e3 * EPS, "the powers of 1e-284: |log F| eps = 650 eps"),
+    Case("depth of the maximum shear at nu = -0.9", "the maximum lies at 0.049 a, outside the "
+         "fixed bracket 0.05 a ... 2 a", *_max_shear_depth(-0.9), WELL),
+    Case("depth of the maximum shear at nu = nextafter(-1, 0)", "the maximum at 6e-17 a: the "
+         "bracket and the tolerance of the root must be relative",
+         *_max_shear_depth(float(np.nextafter(-1.0, 0.0))), WELL),
+    Case("kappa_n at n = 1e300", "the Stirling series' 1/n^2 overflowed n^2 (value right, with "
+         "a warning)", *_kappa_huge(1e300), WELL),
+    Case("cone pressure with theta = 1e-300", "a/r = 6e308 overflowed in arccosh(a/r); "
+         "2 asinh(sqrt(a - r)/sqrt(2 r)) does not", *_cone_flat(1e-12, 1e-3, 1e-300, 1.0),
+         WELL),
+    Case("sigma_rr on the axis at z = 1e78 a", "the far-field form's xi^4 overflowed (NaN): it "
+         "is printed in powers of 1/xi", *_far_axis_sigma_rr(1e78), WELL),
+]
+
+
+def powerlaw_depth_from_force(F, c, n, E):
+    from hertzmdr.numeric import powerlaw
+
+    return powerlaw.depth_from_force(F, c, n, E)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: __import__("hertzmdr.numeric.cone", fromlist=["x"]).force(1.0, 1e-300, 2.1e11),
+    lambda: __import__("hertzmdr.numeric.powerlaw", fromlist=["x"]).contact_radius(
+        1e-3, 1e-6, 1e-3),
+    lambda: __import__("hertzmdr.numeric.powerlaw", fromlist=["x"]).g_profile(1000.0, 1.0, 343.5),
+    lambda: __import__("hertzmdr.numeric.powerlaw", fromlist=["x"]).mean_pressure(
+        1e-20, 1e-6, 1e-3, 1.0),
+    lambda: bodies.crossed_cylinders_gaussian_radius(1e300, 1.0, 1e-300),
+], ids=["cone.force", "powerlaw.contact_radius", "powerlaw.g_profile", "powerlaw.mean_pressure",
+        "bodies.crossed_cylinders_gaussian_radius"])
+def test_not_representable_is_an_error(call):
+    """Issue 19, row 11: where the true value exceeds 1.8e308 (checked: log10 of each is > 308,
+    e.g. cone.force = (2/pi) E* d^2/tan(theta) = 1.3e311 N), an OverflowError that names the
+    inputs, never a silent inf."""
+    with pytest.raises(OverflowError, match="exceeds the float64 range") as info:
+        call()
+    assert " = " in str(info.value)  # the inputs are named

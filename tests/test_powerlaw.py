@@ -261,3 +261,32 @@ def test_bad_input_is_named():
         powerlaw.kappa(-1.0)
     with pytest.raises(ValueError, match="d = -1.0 is out of range"):
         powerlaw.force(-1.0, 1.0, 2.0, 1e9)
+
+
+def displacement_outside_reference(r, d, a, n):
+    """(5.60) for g = d (x/a)^n: (2/pi) integral_0^a d (1 - (x/a)^n)/sqrt(r^2 - x^2) dx by
+    tanh-sinh in x (the original variable, not the angle the numeric form uses), split at
+    a (1 - 2^-k) where (x/a)^n falls off for large n; r - a enters as the float difference."""
+    with mp.workdps(40):
+        r, d, a, n = (mp.mpf(v) for v in (r, d, a, n))
+        pts = [mp.mpf(0)] + [a * (1 - mp.mpf(2) ** -k) for k in range(1, 60)] + [a]
+        # 1/sqrt(r^2 - x^2) with r^2 - x^2 = (r - x)(r + x), exact near x = a < r
+        f = lambda x: (1 - (x / a) ** n) / mp.sqrt((r - x) * (r + x))  # noqa: E731
+        return 2 * d / mp.pi * mp.quad(f, pts)
+
+
+@pytest.mark.parametrize("n", [1e-3, 0.5, 2.5, 39.0, 41.0, 343.5, 1e3, 1e5, 1e8])
+def test_displacement_outside_large_n(n):
+    """u_z outside the contact for every n, from next to the edge to r = 1e150 a: the
+    quadrature of powerlaw_displacement_outside_integrand (n > 40 and next to the edge) and
+    the 2F1 form elsewhere, against (5.60) by 40-digit quadrature in x."""
+    d = 0.3
+    c = d / float(powerlaw.kappa(n))  # a = 1
+    a = float(powerlaw.contact_radius(d, c, n))
+    for k in (1e-15, 1e-9, 1e-5, 1e-3, 0.5, 10.0, 1e6, 1e150):
+        r = a * (1 + k)
+        got = float(powerlaw.surface_displacement(r, d, c, n))
+        # 2e-11: the 2F1 form at r >> a subtracts asin(a/r) and a/((n + 1) r) 2F1, which
+        # cancel to a part n/(n + 1) of each: ~1e-12 for n = 2.5 measured, 1e-13 elsewhere
+        assert_close(got, displacement_outside_reference(r, d, a, n), 2e-11,
+                     f"u_z(r = a(1 + {k:g})), n = {n:g}")

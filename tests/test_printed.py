@@ -7,7 +7,7 @@ import random
 import mpmath as mp
 import pytest
 import sympy as sp
-from sympy.codegen.cfunctions import log1p
+from sympy.codegen.cfunctions import expm1, log1p
 
 from hertzmdr.derive import all_relations
 
@@ -36,13 +36,19 @@ def _points(rel, x, y, n=5, seed=1):
 
 
 def _numeric_diffs(rel, x, y):
-    x, y = _in_domain(rel, x), _in_domain(rel, y)
+    x, y = _in_domain(rel, _exact(x)), _in_domain(rel, _exact(y))
     out = []
     with mp.workdps(50):
         for pt in _points(rel, x, y):
             vx, vy = sp.N(x.subs(pt), 50), sp.N(y.subs(pt), 50)
             out.append(abs(vx - vy) / max(abs(vx), abs(vy), sp.Float(1e-300)))
     return out
+
+
+def _exact(e):
+    """Integer-valued float exponents (xi**(-1.0), printed so to keep powers from overflowing)
+    as the exact integers they are."""
+    return e.xreplace({f: sp.Integer(int(f)) for f in e.atoms(sp.Float) if float(f).is_integer()})
 
 
 def _algebraic_zero(e):
@@ -99,6 +105,7 @@ def _equal_in_atanh(rel, x, y):
 
 
 def _equal(rel, x, y):
+    x, y = _exact(x), _exact(y)
     if sp.simplify(sp.hyperexpand(_in_domain(rel, x - y))) == 0:
         return True
     if (x.has(log1p) or y.has(log1p)) and (x.has(sp.atanh) or y.has(sp.atanh)):
@@ -106,6 +113,38 @@ def _equal(rel, x, y):
     diff = _in_domain(rel, x - y)
     if diff.has(sp.acosh, sp.asinh) and sp.simplify(diff.rewrite(sp.log)) == 0:
         return True  # inverse hyperbolic identities: simplify proves them in logarithms
+    fx, fy = ([e for e in v.atoms(sp.Function) if isinstance(e, (sp.asinh, sp.acosh))]
+              for v in (x, y))
+    if len(fx) == 1 and len(fy) == 1:
+        # x = c F, y = c' G with F, G >= 0 inverse hyperbolic: x = y iff G = m F, m = c/c', iff
+        # cosh(m F) = cosh(G) (cosh is one-to-one on [0, inf)); expand_trig writes cosh(m F)
+        # as a polynomial in sinh(F) or cosh(F), which cancels against asinh or acosh
+        m = sp.simplify((x / fx[0]) / (y / fy[0]))
+        if m.is_Rational and m > 0:
+            lhs = sp.expand_trig(sp.cosh(m * fx[0]))
+            return sp.simplify(_in_domain(rel, lhs - sp.cosh(fy[0]))) == 0
+    ratio = sp.powsimp(sp.expand_power_base(_in_domain(rel, x / y), force=True), force=True)
+    if sp.simplify(ratio) == 1:
+        return True  # products of powers regrouped (positive factors; the 50-digit check below
+        # catches a sign or a branch)
+    if x.has(expm1) or y.has(expm1):
+        # 1 - exp(k log1p(q)) against 1 - B^k: write exp(k log(1 + q)) as (1 + q)^k with the
+        # base simplified (B > 0 on the domain; the 50-digit check below catches a sign)
+        def powers(e):
+            e = _in_domain(rel, e).replace(expm1, lambda z: sp.exp(z) - 1)
+            e = e.replace(log1p, lambda z: sp.log(1 + z))
+
+            def is_power(q):
+                return (isinstance(q, sp.exp) and isinstance(q.args[0], sp.Mul)
+                        and any(isinstance(f, sp.log) for f in q.args[0].args))
+
+            def as_power(q):
+                (lg,) = [f for f in q.args[0].args if isinstance(f, sp.log)]
+                base = sp.simplify(sp.expand_trig(lg.args[0]))
+                return sp.Pow(base, q.args[0] / lg)
+            return e.replace(is_power, as_power)
+
+        return sp.simplify(sp.expand_trig(powers(x) - powers(y))) == 0
     if x.has(log1p) or y.has(log1p):
         # exp(k log1p(-q)) against (1 - q)^k: simplify does not know 1 - q > 0. Both sides
         # are positive on the domain (the 50-digit check below catches a sign), so compare

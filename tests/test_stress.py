@@ -343,3 +343,22 @@ def test_bad_input_is_named():
         stress.superposed_stress(0.0, 0.0, 0.0, lambda r: r, 1.0, 0.3)
     with pytest.raises(ValueError, match="pressure"):
         stress.superposed_stress(0.0, 0.0, 1.0, 3.0, 1.0, 0.3)
+
+
+def test_axis_maximum_shear_bracket():
+    """Over the whole -1 < nu <= 1/2: the slope of tau_1 (the derivation's, at 30 digits) is
+    > 0 at the derived z_lo and < 0 at 2a, and the float64 maximum agrees with a 30-digit
+    root found by bisection on that bracket, down to nu = nextafter(-1, 0) where the maximum
+    lies at 6e-17 a (the fixed bracket 0.05 a ... 2 a missed it for nu < -0.8985)."""
+    s = sp.Symbol("s", positive=True)
+    nus = [np.nextafter(-1.0, 0.0), -1 + 1e-10, -0.99, -0.9, -0.8985, -0.5, 0.0, 0.3, 0.5]
+    for nu_ in nus:
+        tau = (ds.max_shear_axis() / p0).subs(z, a * s).subs(a, 1).subs(nu, sp.Float(nu_, 40))
+        slope = sp.lambdify(s, sp.diff(tau, s), "mpmath")
+        lo = float(gen.stress_axis_max_shear_bracket(1.0, nu_))
+        with mp.workdps(30):
+            assert slope(mp.mpf(lo)) > 0 and slope(mp.mpf(2)) < 0, nu_
+            root = mp.findroot(slope, (mp.mpf(lo), mp.mpf(2)), solver="anderson")
+        zf, _ = stress.axis_max_shear(nu_)
+        # a simple root to 4 ulp of the slope by Brent, with a relative tolerance: ~1e-15
+        assert_close(zf, root, 1e-14, f"z/a at nu = {nu_!r}")

@@ -1,0 +1,348 @@
+"""Stresses under the line contact (plane strain): Flamant and its superposition over (5.36).
+
+Independent routes: symbolic checks of the Flamant field (compatibility, equilibrium,
+tractions, resultant); mpmath tanh-sinh quadrature of the *derived* Flamant kernel over the
+pressure (split at the strip's edges and at the field point, as the "Singularities" section of
+mpmath's quad advises) at 30 and 50 digits; Johnson's printed (McEwen) form at 50 digits;
+finite-difference equilibrium and compatibility on grids; the surface tractions; numpy
+eigenvalues for the principal stresses; the maxima by mp.findroot on the quadrature route.
+"""
+
+from functools import cache
+
+import mpmath as mp
+import numpy as np
+import pytest
+import sympy as sp
+
+from hertzmdr.derive import line_stress as dl
+from hertzmdr.numeric import _generated_mp as gen_mp
+from hertzmdr.numeric import line_stress as ls
+
+from oracle import WORST
+
+X, Z, P = dl.x, sp.Symbol("z_s", positive=True), dl.F_L
+
+
+# -- Flamant, symbolically --------------------------------------------------------------------
+
+def test_flamant_is_an_elastic_field():
+    """The derived line-load field: biharmonic Airy function (plane-strain compatibility),
+    equilibrium, traction-free surface away from the load, and every half-circle carries it."""
+    zs = sp.Symbol("z_pos", positive=True)
+    phi = dl.airy()
+    lap = lambda f: sp.diff(f, X, 2) + sp.diff(f, zs, 2)  # noqa: E731
+    assert sp.simplify(lap(lap(phi))) == 0
+    s = {k: v.subs(dl.z, zs) for k, v in dl.flamant().items()}
+    assert sp.simplify(sp.diff(s["xx"], X) + sp.diff(s["xz"], zs)) == 0
+    assert sp.simplify(sp.diff(s["xz"], X) + sp.diff(s["zz"], zs)) == 0
+    # compatibility of the stresses themselves: the trace is harmonic
+    assert sp.simplify(lap(s["xx"] + s["zz"])) == 0
+    xn = sp.Symbol("x_nz", nonzero=True, real=True)
+    for comp in ("zz", "xz"):  # traction on z = 0, x != 0
+        assert sp.limit(s[comp].subs(X, xn), zs, 0) == 0
+    # resultant over the half-circle r = c: outward normal (sin t, cos t); the body inside it
+    # carries the load P in +z, so the traction of the outside on it sums to -P
+    c, t = sp.Symbol("c", positive=True), sp.Symbol("theta", real=True)
+    on = {X: c * sp.sin(t), zs: c * sp.cos(t)}
+    fz = sp.integrate(sp.simplify((s["xz"] * sp.sin(t) + s["zz"] * sp.cos(t)).subs(on)) * c,
+                      (t, -sp.pi / 2, sp.pi / 2))
+    fx = sp.integrate(sp.simplify((s["xx"] * sp.sin(t) + s["xz"] * sp.cos(t)).subs(on)) * c,
+                      (t, -sp.pi / 2, sp.pi / 2))
+    assert sp.simplify(fz + P) == 0 and sp.simplify(fx) == 0
+
+
+def test_complex_representation_and_printed_forms():
+    """The stable printed forms equal the forms SymPy took from the Cauchy integral, and those
+    equal Johnson's printed (McEwen) forms, symbolically in (m, n, z)."""
+    got, stable, john = dl.field_mn(), dl.field_stable_mn(), dl.johnson_mn()
+    aux = {dl._g: dl._m**2 - dl._z**2, dl._h: dl._m - dl._z}
+    for k in ("xx", "zz", "xz"):
+        assert sp.simplify(got[k] - john[k]) == 0
+        assert sp.simplify(stable[k].subs(aux) - got[k]) == 0
+
+
+# -- the quadrature route ---------------------------------------------------------------------
+
+@cache
+def _kernel(comp, deriv=""):
+    """Derived Flamant stress of a unit line load (optionally d/dx, d/dz), mpmath (x, z)."""
+    k = dl.flamant()[comp].subs(P, 1)
+    for d in deriv:
+        k = sp.diff(k, {"x": X, "z": dl.z}[d])
+    return sp.lambdify((X, dl.z), k, "mpmath")
+
+
+def superposed(comp, x, z, deriv=""):
+    """int_-1^1 sqrt(1 - s^2) K(x - s, z) ds (b = 1, p0 = 1): tanh-sinh, split at the strip's
+    edges (the pressure's square-root ends) and around the field point (the kernel's peak of
+    width z at s = x)."""
+    x, z = mp.mpf(x), mp.mpf(z)
+    k = _kernel(comp, deriv)
+    pts = {mp.mpf(-1), mp.mpf(1)}
+    for w in (0, 1, -1, 10, -10, 100, -100):
+        s = x + w * z
+        if -1 < s < 1:
+            pts.add(s)
+    return mp.quad(lambda s: mp.sqrt((1 - s) * (1 + s)) * k(x - s, z), sorted(pts),
+                   method="tanh-sinh")
+
+
+# points inside, below, near the surface, near the edge, outside and far away (b = 1)
+POINTS = [(0.0, 0.5), (0.3, 0.2), (-0.7, 0.9), (0.5, 1e-8), (0.99, 1e-3), (1.0, 1e-6),
+          (1 - 1e-6, 1e-7), (1 + 1e-6, 1e-7), (-1.5, 1e-5), (1.2, 0.3), (3.0, 0.5),
+          (0.8, 0.6), (0.866, 0.5), (5.0, 20.0), (0.0, 1e3), (2.0, 1e6), (40.0, 1e-3)]
+
+
+@pytest.mark.parametrize(("x", "z"), POINTS)
+def test_field_by_superposition(x, z):
+    """stresses() against the 30-digit superposition of the derived Flamant kernel. The
+    printed forms are products and quotients of positive terms built from square roots of
+    sums (no cancellation): a few tens of roundings, 2e-14 relative per component."""
+    got = ls.stresses(x, z, 1.0, 1.0, 0.3)
+    with mp.workdps(30):
+        for comp, val in zip(("xx", "zz", "xz"), got[:3], strict=False):
+            ref = superposed(comp, x, z)
+            err = float(abs((mp.mpf(float(val)) - ref) / ref)) if ref else abs(float(val))
+            WORST["line_stress.stresses"] = max(WORST.get("line_stress.stresses", 0), err)
+            assert err < 2e-14, (comp, x, z, float(val), ref)
+
+
+def _closed_form_mp(comp, x, z):
+    """The generated mpmath form, the region chosen as numeric/line_stress.py does."""
+    ax, q = abs(x), (1 - abs(x)) * (1 + abs(x)) + z * z
+    region = "core" if ax * ax + z * z <= 1 else ("side" if q < 0 else "deep")
+    name = f"line_stress_{'tau' if comp == 'xz' else 'sigma'}_{comp}_{region}"
+    v = getattr(gen_mp, name)(mp.mpf(1), mp.mpf(1), ax, z)
+    return -v if (comp == "xz" and x < 0) else v
+
+
+def _johnson_mp(comp, x, z):
+    """Johnson's printed form with McEwen's m, n straight from their definitions."""
+    q = 1 - x * x + z * z
+    root = mp.sqrt(q * q + 4 * x * x * z * z)
+    m = mp.sqrt((root + q) / 2)
+    n = mp.sign(x) * mp.sqrt((root - q) / 2)
+    f = dl.johnson_mn()[comp].subs(dl.p0, 1).subs(dl.a, 1)
+    return sp.lambdify((dl._m, dl._n, dl._z), f, "mpmath")(m, n, z)
+
+
+@pytest.mark.parametrize(("x", "z"), [(0.0, 0.5), (0.3, 0.2), (-0.7, 0.9), (0.99, 1e-3),
+                                      (1.0, 1e-6), (1.2, 0.3), (3.0, 0.5), (5.0, 20.0),
+                                      (-2.0, 1e3)])
+def test_closed_form_equals_superposition_at_50_digits(x, z):
+    """The proof the brief asks for where SymPy does not do the Cauchy integral: the printed
+    field (all three regions) equals the superposition, and Johnson's form, at 50 digits."""
+    with mp.workdps(60):
+        x, z = mp.mpf(x), mp.mpf(z)
+        for comp in ("xx", "zz", "xz"):
+            ref = superposed(comp, x, z)
+            got = _closed_form_mp(comp, x, z)
+            john = _johnson_mp(comp, x, z)
+            assert abs(got - ref) <= mp.mpf(10) ** -50 * abs(ref), (comp, x, z)
+            # Johnson's form cancels far away and near the surface: 60 digits leave >= 45
+            assert abs(john - ref) <= mp.mpf(10) ** -45 * abs(ref), (comp, x, z)
+
+
+def test_axis_stresses_by_superposition():
+    """axis_stresses() from z = 1e-6 b to 1e6 b against the quadrature (the printed forms are
+    cancellation-free: a handful of roundings, 4e-15), and against stresses() at x = 0."""
+    zs = np.logspace(-6, 6, 25)
+    sxx, szz, syy = ls.axis_stresses(zs, 1.0, 1.0, 0.3)
+    with mp.workdps(30):
+        for i, zz in enumerate(zs):
+            for comp, val in (("xx", sxx[i]), ("zz", szz[i])):
+                ref = superposed(comp, 0.0, zz)
+                assert abs(float((val - ref) / ref)) < 4e-15, (comp, zz)
+    full = ls.stresses(0.0, zs, 1.0, 1.0, 0.3)
+    np.testing.assert_allclose(full[0], sxx, rtol=2e-14)  # two printed routes, 2e-14 as above
+    np.testing.assert_allclose(full[1], szz, rtol=2e-14)
+    np.testing.assert_allclose(syy, 0.3 * (sxx + szz), rtol=4e-16)  # one product, one sum
+
+
+def test_surface_tractions():
+    """sigma_zz(x, 0) = -p(x), tau_xz(x, 0) = 0, and sigma_xx(x, 0) = -p(x) (0 outside), the
+    known surface state of the Hertz line contact; 4 roundings: 1e-15."""
+    xs = np.concatenate([np.linspace(-0.999, 0.999, 41), [-1, 1, 1 - 1e-12, 1.5, -3.0]])
+    sxx, szz, txz, _ = ls.stresses(xs, 0.0, 1.0, 1e9, 0.3)  # b = 1: x/b exact
+    p = 1e9 * np.sqrt(np.maximum((1 - xs) * (1 + xs), 0.0))
+    np.testing.assert_allclose(szz, -p, rtol=1e-15, atol=0)
+    np.testing.assert_allclose(sxx, -p, rtol=1e-15, atol=0)
+    assert np.all(txz == 0)
+
+
+def test_equilibrium_and_compatibility_on_a_grid():
+    """Central differences, step h = 1e-5 b: truncation h^2 |sigma_xxx|/6 <~ 2e-8 p0/b (third
+    derivatives reach ~1e3 p0/b^3 at z = 0.05 b by the contact edge), rounding eps/h ~ 1e-11,
+    so div sigma < 1e-7 p0/b (points 0.05 b or more below the surface). The Laplacian of the
+    trace (compatibility) by the 5-point stencil, h = 1e-3 b, at z >= 0.3 b: truncation
+    h^2 |d^4|/12 measured 2e-5 p0/b^2 (it grows 9-fold with h = 3e-3 b: truncation, not
+    rounding, which is eps/h^2 ~ 1e-10), so < 1e-4; a field that is not compatible is off
+    by O(1)."""
+    xg, zg = np.meshgrid(np.linspace(-2.5, 2.5, 21), np.linspace(0.05, 2.5, 15))
+
+    def field(x, z):
+        return ls.stresses(x, z, 1.0, 1.0, 0.3)
+
+    h = 1e-5
+    dx = [(a - b) / (2 * h) for a, b in zip(field(xg + h, zg), field(xg - h, zg), strict=True)]
+    dz = [(a - b) / (2 * h) for a, b in zip(field(xg, zg + h), field(xg, zg - h), strict=True)]
+    assert np.max(np.abs(dx[0] + dz[2])) < 1e-7
+    assert np.max(np.abs(dx[2] + dz[1])) < 1e-7
+    h = 1e-3
+
+    def trace(x, z):
+        s = field(x, z)
+        return s[0] + s[1]
+
+    xg, zg = np.meshgrid(np.linspace(-2.5, 2.5, 21), np.linspace(0.3, 2.5, 12))
+    lap = (trace(xg + h, zg) + trace(xg - h, zg) + trace(xg, zg + h) + trace(xg, zg - h)
+           - 4 * trace(xg, zg)) / h**2
+    assert np.max(np.abs(lap)) < 1e-4
+
+
+def test_plane_strain_and_principal_stresses():
+    """principal_shear and von_mises against numpy's eigenvalues of the 3x3 tensor (another
+    route, LAPACK): 1e-14 of p0 (a few roundings of quantities of size p0)."""
+    rng = np.random.default_rng(3)
+    x, z = rng.uniform(-3, 3, 60), rng.uniform(0, 3, 60)
+    for nu in (0.3, 0.5, -0.9):
+        sxx, szz, txz, syy = ls.stresses(x, z, 1.0, 1.0, nu)
+        tens = np.zeros((60, 3, 3))
+        tens[:, 0, 0], tens[:, 1, 1], tens[:, 2, 2] = sxx, syy, szz
+        tens[:, 0, 2] = tens[:, 2, 0] = txz
+        ev = np.linalg.eigvalsh(tens)
+        inplane = np.linalg.eigvalsh(tens[:, [0, 2]][:, :, [0, 2]])
+        tau1, tmax = ls.principal_shear(x, z, 1.0, 1.0, nu)
+        np.testing.assert_allclose(tau1, (inplane[:, 1] - inplane[:, 0]) / 2, atol=1e-14)
+        np.testing.assert_allclose(tmax, (ev[:, 2] - ev[:, 0]) / 2, atol=1e-14)
+        dev = tens - np.trace(tens, axis1=1, axis2=2)[:, None, None] / 3 * np.eye(3)
+        vm = np.sqrt(1.5 * np.sum(dev * dev, axis=(1, 2)))
+        np.testing.assert_allclose(ls.von_mises(x, z, 1.0, 1.0, nu), vm, atol=1e-14)
+        np.testing.assert_allclose(syy, nu * (sxx + szz), rtol=4e-16, atol=0)
+
+
+# -- maxima -----------------------------------------------------------------------------------
+
+def test_axis_maxima_by_superposition():
+    """tau_1 and von Mises maxima on the axis: mp.findroot of the derivative of the 30-digit
+    superposition (kernel differentiated under the integral), against the exact golden-ratio
+    values and max_shear()/max_von_mises(). float64: the value at a maximum is flat (error
+    ~ eps), the depth is a simple root of a slope computed to ~eps: 1e-14 both."""
+    with mp.workdps(30):
+        def tau1_slope(zz):
+            return (superposed("xx", 0, zz, "z") - superposed("zz", 0, zz, "z")) / 2
+
+        depth = mp.findroot(tau1_slope, mp.mpf("0.78"))
+        value = (superposed("xx", 0, depth) - superposed("zz", 0, depth)) / 2
+        gold = (1 + mp.sqrt(5)) / 2
+        assert abs(depth - gold ** mp.mpf(-0.5)) < mp.mpf(10) ** -28
+        assert abs(value - gold ** mp.mpf(-2.5)) < mp.mpf(10) ** -28
+        v, d = ls.max_shear()
+        assert abs(v - value) < 1e-14 * value and abs(d - depth) < 1e-14 * depth
+    for nu_s, start in (("0.25", 0.65), ("0.3", 0.7), ("0.5", 0.79)):
+        with mp.workdps(30):
+            nu = mp.mpf(nu_s)
+
+            def vm2(zz, nu=nu):
+                sx, sz = superposed("xx", 0, zz), superposed("zz", 0, zz)
+                sy = nu * (sx + sz)
+                return ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2
+
+            depth = mp.findroot(lambda zz, f=vm2: mp.diff(f, zz), mp.mpf(start))
+            value = mp.sqrt(vm2(depth))
+            # the generated mpmath slope's root (the docs' 30-digit table) is the same root
+            one = mp.mpf(1)
+            d_gen = mp.findroot(
+                lambda t, nu=nu, c=one: gen_mp.line_stress_axis_von_mises_slope(c, nu, c, t),
+                mp.mpf(start))
+            assert abs(d_gen - depth) < mp.mpf(10) ** -25 * depth
+            assert abs(gen_mp.line_stress_axis_von_mises(one, nu, one, d_gen) - value) \
+                < mp.mpf(10) ** -25 * value
+            v, xm, d = ls.max_von_mises(float(nu_s))
+            assert xm == 0.0
+            assert abs(v - value) < 1e-14 * value, (nu_s, v, value)
+            assert abs(d - depth) < 1e-13 * depth, (nu_s, d, depth)  # see above; mp.diff
+            # of the quadrature is good to ~1e-25, far below this
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.1, 0.25, 0.3, 0.5, -0.5, -1 + 1e-9])
+def test_von_mises_maximum_is_the_global_one(nu):
+    """No point of a 241 x 181 grid (|x| <= 3 b, z <= 3 b) exceeds max_von_mises(nu); for
+    small or negative nu the maximum is the surface centre, |1 - 2 nu| p0 (there
+    sigma_xx = sigma_zz = -p0, sigma_yy = -2 nu p0). 1e-13: the field's rounding."""
+    v, _, d = ls.max_von_mises(nu)
+    x, z = np.meshgrid(np.linspace(-3, 3, 241), np.linspace(0, 3, 181))
+    assert ls.von_mises(x, z, 1.0, 1.0, nu).max() <= v * (1 + 1e-13)
+    if nu <= 0.1:
+        assert d == 0.0 and abs(v - abs(1 - 2 * nu)) < 1e-15
+    assert abs(ls.von_mises(0.0, d, 1.0, 1.0, nu) - v) < 1e-14
+
+
+def test_orthogonal_shear_maximum():
+    """|tau_xz| max: mp.findroot of the quadrature's gradient at 30 digits, against the exact
+    p0/4 at (3^(1/2)/2 b, b/2) and max_orthogonal_shear() (hybr to xtol 1e-14: 1e-13 in the
+    location; the value is flat there: 1e-15)."""
+    with mp.workdps(30):
+        def grad(xx, zz):
+            return superposed("xz", xx, zz, "x"), superposed("xz", xx, zz, "z")
+
+        xr, zr = mp.findroot(grad, (mp.mpf("0.86"), mp.mpf("0.5")))
+        value = -superposed("xz", xr, zr)
+        assert abs(xr - mp.sqrt(3) / 2) < mp.mpf(10) ** -28
+        assert abs(zr - mp.mpf(1) / 2) < mp.mpf(10) ** -28
+        assert abs(value - mp.mpf(1) / 4) < mp.mpf(10) ** -28
+    v, xm, zm = ls.max_orthogonal_shear()
+    assert abs(v - 0.25) < 1e-15 and abs(xm - np.sqrt(3) / 2) < 1e-13 and abs(zm - 0.5) < 1e-13
+    x, z = np.meshgrid(np.linspace(-3, 3, 241), np.linspace(0, 3, 181))
+    assert np.abs(ls.stresses(x, z, 1.0, 1.0, 0.3)[2]).max() <= 0.25 * (1 + 1e-14)
+
+
+# -- hard cases, input ------------------------------------------------------------------------
+
+def test_no_nan_and_symmetry_at_hard_points():
+    """The edge x = +-b at z = 0 and at z = 1e-300, z/b = 1e6 and 1e-200, nu = 0.5 and -1+:
+    finite everywhere, sigma even and tau_xz odd in x."""
+    x = np.array([-1.0, 1.0, 1.0, 1.0 + 1e-15, 0.0, 2.0, 0.5, 1.0])
+    z = np.array([0.0, 0.0, 1e-300, 1e-200, 1e6, 1e6, 1e-200, 1e-160])
+    for nu in (0.5, -1 + 1e-12):
+        out = ls.stresses(x, z, 1.0, 1.0, nu)
+        assert all(np.all(np.isfinite(v)) for v in out)
+        neg = ls.stresses(-x, z, 1.0, 1.0, nu)
+        np.testing.assert_array_equal(out[0], neg[0])
+        np.testing.assert_array_equal(out[2], -neg[2])
+        assert np.all(np.isfinite(ls.von_mises(x, z, 1.0, 1.0, nu)))
+
+
+def test_units_scale():
+    """SI scaling: b = 2 mm, p0 = 1.5 GPa is the unit field times p0 at (x/b, z/b) (exact up to
+    the roundings of x/b, z/b and the product: 1e-15)."""
+    x, z = np.array([0.3e-3, 2.5e-3, -1e-3]), np.array([1e-3, 0.2e-3, 4e-3])
+    got = ls.stresses(x, z, 2e-3, 1.5e9, 0.3)
+    unit = ls.stresses(x / 2e-3, z / 2e-3, 1.0, 1.0, 0.3)
+    for g, u in zip(got, unit, strict=True):
+        np.testing.assert_allclose(g, 1.5e9 * u, rtol=1e-15)
+
+
+def test_bad_input_is_named():
+    with pytest.raises(ValueError, match="nu = 0.6"):
+        ls.stresses(0.0, 1.0, 1.0, 1.0, 0.6)
+    with pytest.raises(ValueError, match="z = -1.0"):
+        ls.von_mises(0.0, -1.0, 1.0, 1.0, 0.3)
+    with pytest.raises(ValueError, match="b = 0.0"):
+        ls.axis_stresses(1.0, 0.0, 1.0, 0.3)
+    with pytest.raises(ValueError, match="nu = -1.0"):
+        ls.max_von_mises(-1.0)
+
+
+def test_far_field_limit():
+    """Up to MAX_DISTANCE half-widths the field is finite and decays as the line load's
+    (sigma ~ 1/rho: every component times rho stays below p0 b); beyond it, the documented
+    ValueError instead of an overflow into NaN."""
+    D = ls.MAX_DISTANCE
+    for x, z in ((D, 1.0), (1.0, D), (D, D), (D, 1e-300)):
+        out = ls.stresses(x, z, 1.0, 1.0, 0.3)
+        assert all(np.isfinite(v) and abs(v) * max(x, z) <= 1.0 for v in out)
+    for x, z in ((2 * D, 1.0), (1.0, 2 * D), (1e300, 1e300)):
+        with pytest.raises(ValueError, match="half-widths"):
+            ls.stresses(x, z, 1.0, 1.0, 0.3)
