@@ -29,7 +29,17 @@ test: lint
 	$(PY) -m pytest -q
 
 accuracy: $(STAMP)
-	$(VENV)/bin/hertzmdr accuracy --out docs/accuracy.md
+	OPENBLAS_NUM_THREADS=1 $(VENV)/bin/hertzmdr accuracy --out docs/accuracy.md
+
+# every benchmark and report in docs/, in order, one progress line per script
+# (benchmarks/run_all.py; see benchmarks/README.md), with the peers of the bench extra
+BENCH_STAMP := $(VENV)/.installed-bench
+$(BENCH_STAMP): $(STAMP)
+	$(PY) -m pip install --quiet -c constraints.txt -e ".[$(EXTRAS),bench]"
+	touch $(BENCH_STAMP)
+
+benchmark: $(BENCH_STAMP)
+	$(PY) benchmarks/run_all.py
 
 # mutation testing of numeric/ (mutmut, module by module, one worker, nice 19): docs/mutation.md
 $(VENV)/.mutation: $(STAMP)

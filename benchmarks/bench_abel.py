@@ -1,10 +1,13 @@
 """Abel transforms of sampled contact data: hertzmdr.numeric.abel against PyAbel, in one run.
 
-Run: ``OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/bench_abel.py`` (needs the ``plot``
-extra and PyAbel, the ``bench`` extra; one BLAS thread: on the shared 2-core machine threaded
-matrix-vector products time the other jobs more than the methods). Writes docs/abel.md,
-docs/abel_error_time.png and benchmarks/results/abel.json; ``bench_mdr.py`` shows
-:func:`summary` in docs/mdr.md. Timings are wall clock on this machine.
+Run: ``OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/bench_abel.py [--quick] [--out DIR]
+[--docs-only]`` (``make benchmark`` runs it; needs the ``plot`` extra, and PyAbel, the ``bench``
+extra, for its side; one BLAS thread: on the shared 2-core machine threaded matrix-vector
+products time the other jobs more than the methods). Writes docs/abel.md,
+docs/abel_error_time.png and benchmarks/results/abel.json (``--docs-only``: the docs from that
+JSON, nothing measured); ``bench_mdr.py`` shows :func:`summary` in docs/mdr.md. Timings are wall
+clock on this machine, by ``hertzmdr.numeric._timing``; each method runs in a forked process of
+its own, so its first call at each N finds every cache empty.
 
 Set-up, the same for every method: contact radius a = 1, E* = 1, the grid x_i = i*dx,
 dx = 1.2/(N - 1), N - 1 = 50 * 2^k (a is never a grid point), the right half of the profile as
@@ -19,19 +22,20 @@ from __future__ import annotations
 
 import contextlib
 import io
-import os
-import time
+import json
 import warnings
-from pathlib import Path
 
+import _common
 import mpmath as mp
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric import _timing
 from hertzmdr.numeric import abel as habel
 
-DOCS = Path(__file__).resolve().parents[1] / "docs"
 NS = (51, 101, 201, 401, 801, 1601, 3201)
+NS_QUICK = (51, 101)
+WARM_N = 11  # a grid size not in NS: the imports' and first-use costs are paid on it
 K_COMMON = np.arange(3, 40)  # common radii r = 0.024 k
 WORN_R, WORN_B = 1.0, 0.3
 KINK = "hertzmdr (degree=5, kink=b)"  # the worn profile's kink
@@ -111,16 +115,11 @@ def pyabel_methods(direction):
         with contextlib.redirect_stdout(io.StringIO()):  # its "no C backend" notice
             return abel.direct.direct_transform(y, dr=dx, direction=direction)
 
-    def clear():
-        abel.basex.cache_cleanup()
-        abel.dasch.cache_cleanup()
-        abel.daun.cache_cleanup()
-
     meths = {"basex": basex, "three_point": three_point, "daun": daun,
              "daun (degree=3)": daun3, "hansenlaw": hansenlaw, "direct": direct}
     if direction == "forward":
         del meths["three_point"]  # PyAbel's Dasch methods are inverse only
-    return meths, clear
+    return meths
 
 
 def hertzmdr_methods(direction):
@@ -151,67 +150,65 @@ def hertzmdr_methods(direction):
             return y @ kmats[N]
 
         meths[MATRIX_KINK] = matrix_kink
-
-    def clear():
-        habel._CACHE.clear()
-        mats.clear()
-        if direction == "inverse":
-            kmats.clear()
-    return meths, clear
+    return meths
 
 
-def _time(call, y, dx, repeat):
-    best = np.inf
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = call(y, dx)
-        best = min(best, time.perf_counter() - t0)
-    return np.ravel(out), best
+def _method_rows(direction, name, call, profs, Ns, budget, verbose):
+    """One method on every N and profile (run in a forked process: its caches start empty).
+    'first' is the method's first call at N (the operator build, with the first profile),
+    'again' the median of the repeated calls on each profile (its own edge cached too)."""
+    rows = []
+    for N in Ns:
+        x = np.linspace(0, 1.2, N)
+        dx = x[1]
+        step = (N - 1) // 50
+        common = K_COMMON * step
+        first = None
+        for pname, (q, p) in profs.items():
+            if direction == "forward" and pname.startswith(("worn", "n = 1 ")):
+                continue  # no sampled p: the worn p has no closed form, the cone's p(0) is
+                # infinite
+            if (name in (KINK, MATRIX_KINK) and not pname.startswith("worn")) or (
+                    name == KINK0 and not pname.startswith("n = 1 ")):
+                continue
+            if name == MATRIX_KINK and abs(WORN_B / dx - round(WORN_B / dx)) < 1e-6:
+                continue  # b is a sample: the matrix cannot hold p(b) = inf
+            if direction == "inverse":
+                y, ref = q(x), p(x[common])
+            else:
+                y, ref = p(x), q(x[common])
+            y = y[None, :]
+            t = _timing.measure(lambda y=y, dx=dx: call(y, dx), budget)
+            if first is None:  # the operator build, once per (method, N)
+                first = t.first
+            out = np.ravel(call(y, dx))
+            err = float(np.max(np.abs(out[common] / ref - 1)))
+            rows.append(dict(direction=direction, profile=pname, method=name, N=N, error=err,
+                             first=first, again=t.median))
+            if verbose:
+                print(f"{direction:8s} {pname:18s} {name:22s} {N:5d} "
+                      f"{err:9.2e} {1e3 * first:9.2f} {1e3 * t.median:9.3f} ms", flush=True)
+    return rows
 
 
-def run(Ns=NS, verbose=True):
-    """All (profile, direction, method, N): error, first-call and repeated-call time [s]."""
+def run(Ns=NS, budget=_timing.FULL, verbose=True):
+    """All (profile, direction, method, N): error, first-call and repeated-call time [s].
+    Each method runs in a forked process of its own (``_timing.in_fork``), after one warm-up
+    call of every method on WARM_N samples here (the imports)."""
     rows = []
     profs = profiles()
+    abel = _common.peer("abel", "PyAbel", "the PyAbel rows")
     for direction in ("inverse", "forward"):
-        libs = [hertzmdr_methods(direction)]
-        try:
-            libs.append(pyabel_methods(direction))
-        except ImportError:
-            print("PyAbel not installed: pip install -e .[bench]")
-        for meths, clear in libs:
-            for name, call in meths.items():
-                for N in Ns:
-                    x = np.linspace(0, 1.2, N)
-                    dx = x[1]
-                    step = (N - 1) // 50
-                    common = K_COMMON * step
-                    first = None
-                    for pname, (q, p) in profs.items():
-                        if direction == "forward" and pname.startswith(("worn", "n = 1 ")):
-                            continue  # no sampled p: the worn p has no closed form, the cone's
-                            # p(0) is infinite
-                        if (name in (KINK, MATRIX_KINK) and not pname.startswith("worn")) or (
-                                name == KINK0 and not pname.startswith("n = 1 ")):
-                            continue
-                        if name == MATRIX_KINK and abs(WORN_B / dx - round(WORN_B / dx)) < 1e-6:
-                            continue  # b is a sample: the matrix cannot hold p(b) = inf
-                        if direction == "inverse":
-                            y, ref = q(x), p(x[common])
-                        else:
-                            y, ref = p(x), q(x[common])
-                        if first is None:  # the operator build, once per (method, N)
-                            clear()
-                            _, first = _time(call, y[None, :], dx, 1)
-                        call(y[None, :], dx)  # this profile's operator (its own edge)
-                        out, again = _time(call, y[None, :], dx, 3)
-                        err = float(np.max(np.abs(out[common] / ref - 1)))
-                        rows.append(dict(direction=direction, profile=pname, method=name,
-                                         N=N, error=err, first=first, again=again))
-                        if verbose:
-                            print(f"{direction:8s} {pname:18s} {name:22s} {N:5d} "
-                                  f"{err:9.2e} {1e3 * first:9.2f} {1e3 * again:9.3f} ms",
-                                  flush=True)
+        meths = hertzmdr_methods(direction)
+        if abel is not None:
+            meths.update(pyabel_methods(direction))
+        x = np.linspace(0, 1.2, WARM_N)
+        y = np.maximum(1 - (x / 1.01) ** 2, 0)[None, :]
+        for call in meths.values():
+            call(y, x[1])
+        for name, call in meths.items():
+            rows += _timing.in_fork(_method_rows, direction, name, call, profs, Ns, budget,
+                                    verbose)
     return rows
 
 
@@ -264,46 +261,44 @@ def order(Ns, errs):
 
 
 def summary(rows, N=201):
-    """The markdown table of one N (for docs/mdr.md): error and repeated-call time."""
+    """The markdown table of one N (for docs/mdr.md): error, repeated-call time, and that time
+    over the fastest PyAbel method's at the same N (a ratio from one run: the machine's load
+    moves it less than the times)."""
+    if not any(r["N"] == N for r in rows):
+        N = max(r["N"] for r in rows)  # a --quick run has only small grids
     out = [f"Max relative error on 0.072 <= r <= 0.936 (a = 1), N = {N} samples on [0, 1.2]; "
-           "time of a repeated call [ms] (operator cached; median over the profiles). Full "
-           "tables, first-call times, orders and the plot: [abel.md](abel.md).\n\n"]
+           "time of a repeated call [ms] (operator cached; median over the profiles) and its "
+           "ratio to the fastest PyAbel method's (< 1: faster). Full tables, first-call times, "
+           "orders and the plot: [abel.md](abel.md).\n\n"]
     for direction in ("inverse", "forward"):
         sel = [r for r in rows if r["direction"] == direction and r["N"] == N]
         profs = list(dict.fromkeys(r["profile"] for r in sel))
         meths = list(dict.fromkeys(r["method"] for r in sel))
         what = "(5.59) inverse: q -> p" if direction == "inverse" else "(5.61) forward: p -> q"
-        out.append(f"**{what}**\n\n| method | " + " | ".join(profs) + " | time [ms] |\n|---|"
-                   + "---|" * (len(profs) + 1) + "\n")
+        med = {m: float(np.median([x["again"] for x in sel if x["method"] == m]))
+               for m in meths}
+        theirs = [t for m, t in med.items() if not m.startswith("hertzmdr")]
+        fastest = min(theirs) if theirs else None
+        out.append(f"**{what}**\n\n| method | " + " | ".join(profs) + " | time [ms] | "
+                   "/ fastest PyAbel |\n|---|" + "---|" * (len(profs) + 2) + "\n")
         for m in meths:
-            cells, times = [], []
+            cells = []
             for pr in profs:
                 r = [x for x in sel if x["method"] == m and x["profile"] == pr]
                 cells.append(f"{r[0]['error']:.1e}" if r else "")
-                times += [r[0]["again"]] if r else []
-            out.append(f"| {m} | " + " | ".join(cells) + f" | {1e3 * np.median(times):.3f} |\n")
+            rel = f"{med[m] / fastest:.2f}" if fastest else "(PyAbel not run)"
+            out.append(f"| {m} | " + " | ".join(cells) + f" | {1e3 * med[m]:.3f} | {rel} |\n")
         out.append("\n")
     return "".join(out)
 
 
-RESULTS = Path(__file__).parent / "results" / "abel.json"
-
-
-def mdr_section(N=201):
-    """The comparison for docs/mdr.md: the summary table of the last full run
-    (benchmarks/results/abel.json), or of a run at N = 201 only when there is none."""
-    import json
-
-    rows = json.loads(RESULTS.read_text())["rows"] if RESULTS.exists() else None
-    if rows is None:
-        try:
-            import abel  # noqa: F401
-        except ImportError:
-            return "PyAbel not installed (`pip install -e .[bench]`).\n"
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            rows = run(Ns=(N,), verbose=False)
-    return summary(rows, N)
+def mdr_section(results_dir, N=201):
+    """The comparison for docs/mdr.md: the summary table of the last run (abel.json in
+    results_dir), or a line saying that there is none."""
+    path = results_dir / "abel.json"
+    if not path.exists():
+        return f"No {path.name} in {results_dir}: run benchmarks/bench_abel.py first.\n"
+    return summary(json.loads(path.read_text())["rows"], N)
 
 
 REASONS = {
@@ -391,14 +386,16 @@ def best_table(rows):
         theirs = min((r for r in sel if not r["method"].startswith("hertzmdr")),
                      key=lambda r: r["error"])
         what = "(5.59)" if direction == "inverse" else "(5.61)"
-        how = ours["method"].replace("hertzmdr (", "").rstrip(")")
+        how = ours["method"].removeprefix("hertzmdr ")
+        if how.startswith("(") and how.endswith(")"):
+            how = how[1:-1]
         out.append(f"| {what} | {prof} | {ours['error']:.1e} ({how}, "
                    f"N={ours['N']}) | {1e3 * ours['again']:.2f} | {theirs['error']:.1e} "
                    f"({theirs['method']}, N={theirs['N']}) | {1e3 * theirs['again']:.2f} |\n")
     return "".join(out) + "\n"
 
 
-def write_docs(rows, threads):
+def write_docs(rows, conditions, docs_dir):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -430,7 +427,8 @@ def write_docs(rows, threads):
         ax.axis("off")
     axes.ravel()[-1].legend(handles.values(), handles.keys(), loc="center", fontsize=9)
     fig.tight_layout()
-    fig.savefig(DOCS / "abel_error_time.png", dpi=90)
+    fig.savefig(docs_dir / "abel_error_time.png", dpi=90)
+    plt.close(fig)
 
     out = ["# Abel transforms (5.59), (5.61) from samples: hertzmdr and PyAbel\n\n",
            "<!-- Written by `benchmarks/bench_abel.py`; timings are wall clock on the shared "
@@ -445,32 +443,30 @@ def write_docs(rows, threads):
            "has a square-root kink, and for the cone with `kink=0`, its tip -- information "
            "PyAbel cannot use, so it is reported apart) and PyAbel's basex, three_point "
            "(inverse only), daun (degree 0, the default, and 3), hansenlaw, direct, all with "
-           "their default parameters. 'first' is the first call with every cache cleared "
-           "(the operator build), 'again' the best of 3 repeated calls on the same samples. "
+           "their default parameters. 'first' is a method's first call at N in a process of "
+           "its own (forked after the imports: every cache empty; the operator build), "
+           "'again' the median of the repeated calls on the same samples "
+           "(`hertzmdr.numeric._timing`). "
            "PyAbel caches its operators per N; hertzmdr caches (5.59) per N plus a cheap O(N) "
            "correction per contact radius, and (5.61) per (N, contact radius): a new profile "
            "with another radius pays the (5.61) first-call time again. The method and its "
            "error model: the docstring of `hertzmdr/numeric/abel.py`; the tests: "
            "`tests/test_abel.py`.\n\n"]
-    import abel
-    out.append(f"OPENBLAS_NUM_THREADS = {threads}. ")
-    out.append(f"PyAbel {abel.__version__}; its `direct` method runs the pure-Python backend "
-               "(the C extension is not built in this install), so its times are pessimistic."
-               "\n\n")
-    out.append("## Verdict: smaller error at equal time than PyAbel's best method?\n\n"
-               "A PyAbel point (method, N) counts as beaten when some hertzmdr point (degree, "
-               "N') is no slower (repeated call) and has a smaller error.\n\n")
-    for direction, prof in combos:
-        out.append(verdict_line(rows, direction, prof))
-        kinked = any("kink" in r["method"] and r["profile"] == prof for r in rows)
-        if kinked:
-            out.append(verdict_line(rows, direction, prof, with_kink=True))
-        if any("matrix" in r["method"] for r in rows):
-            out.append(verdict_line(rows, direction, prof, with_kink=kinked, with_matrix=True))
-    out.append("\n" + plain_statement(rows) + best_table(rows))
+    out.append(f"{conditions} ")
+    if not any(not r["method"].startswith("hertzmdr") for r in rows):
+        out.append("PyAbel was not installed for this run: its rows, the verdict, the plain "
+                   "statement and the table of best results are left out.\n\n")
+    else:
+        out.append(f"PyAbel {_common.version('PyAbel')}; its `direct` method runs the "
+                   "pure-Python backend (the C extension is not built in this install), so "
+                   "its times are pessimistic. Its `basex` keeps each N's basis on disk "
+                   "(~/.cache/PyAbel) for later processes: its 'first' is the generation of "
+                   "the basis (minutes at N = 3201) where no earlier run on this machine "
+                   "saved it, else loading it.\n\n")
+        out += _verdicts(rows, combos)
     out.append("\n![error vs time](abel_error_time.png)\n\n## Convergence orders\n\n"
                "Least-squares slope of log(error) against log(N), errors below 1e-12 (the "
-               "rounding floor) left out; 'rounding': at the floor on every grid; nan: fewer "
+               "rounding floor) left out; 'rounding': at the floor on every grid; '-': fewer "
                "than 3 points above it. Over this region, away from the axis, hertzmdr's "
                "n = 2.5 and cone errors fall at about the interpolation's order; with the "
                "axis included (tests/test_abel.py) |x|^n limits (5.59) to order n - 1 and "
@@ -488,7 +484,7 @@ def write_docs(rows, threads):
                 continue
             o = order([r["N"] for r in sel], [r["error"] for r in sel])
             cells.append("rounding" if max(r["error"] for r in sel) < 1e-12 else
-                         "nan" if np.isnan(o) else f"{o:.1f}")
+                         "-" if np.isnan(o) else f"{o:.1f}")
         out.append(f"| {direction} | {prof} | " + " | ".join(cells) + " |\n")
     out.append("\n## All results\n\n")
     for direction, prof in combos:
@@ -499,27 +495,41 @@ def write_docs(rows, threads):
                 out.append(f"| {r['method']} | {r['N']} | {r['error']:.2e} | "
                            f"{1e3 * r['first']:.2f} | {1e3 * r['again']:.3f} |\n")
         out.append("\n")
-    (DOCS / "abel.md").write_text("".join(out))
+    (docs_dir / "abel.md").write_text("".join(out))
+
+
+def _verdicts(rows, combos):
+    out = ["## Verdict: smaller error at equal time than PyAbel's best method?\n\n"
+           "A PyAbel point (method, N) counts as beaten when some hertzmdr point (degree, "
+           "N') is no slower (repeated call) and has a smaller error.\n\n"]
+    for direction, prof in combos:
+        out.append(verdict_line(rows, direction, prof))
+        kinked = any("kink" in r["method"] and r["profile"] == prof for r in rows)
+        if kinked:
+            out.append(verdict_line(rows, direction, prof, with_kink=True))
+        if any("matrix" in r["method"] for r in rows):
+            out.append(verdict_line(rows, direction, prof, with_kink=kinked, with_matrix=True))
+    out.append("\n" + plain_statement(rows) + best_table(rows))
+    return out
 
 
 def main(argv=None):
-    import argparse
-    import json
-
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--docs-only", action="store_true",
-                        help="rewrite docs/abel.md from benchmarks/results/abel.json")
-    args = parser.parse_args(argv)
+    ap = _common.parser(__doc__)
+    ap.add_argument("--docs-only", action="store_true",
+                    help="rewrite abel.md from the saved abel.json, measuring nothing")
+    args = ap.parse_args(argv)
+    run_ = _common.run_from(args)
+    path = run_.results / "abel.json"
     if args.docs_only:
-        saved = json.loads(RESULTS.read_text())
-        rows, threads = saved["rows"], saved["openblas_threads"]
+        saved = json.loads(path.read_text())
+        rows, conditions = saved["rows"], saved["conditions"]
     else:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # PyAbel's notices (direct without its C backend)
-            rows = run()
-        threads = os.environ.get("OPENBLAS_NUM_THREADS", "default")
-        RESULTS.write_text(json.dumps(dict(openblas_threads=threads, rows=rows), indent=0))
-    write_docs(rows, threads)
+            rows = run(NS_QUICK if args.quick else NS, run_.budget)
+        conditions = _timing.conditions()
+        path.write_text(json.dumps(dict(conditions=conditions, rows=rows), indent=0))
+    write_docs(rows, conditions, run_.docs)
     return rows
 
 

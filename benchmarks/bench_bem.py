@@ -8,23 +8,23 @@ Polonsky-Keer-Rey solver at tolerance 1e-8; its depth is taken as the mean of u 
 contact, u computed by our operator from its pressure (its model does not return the
 non-periodic displacement).
 
-Run: ``python benchmarks/bench_bem.py``; writes benchmarks/results/bem.json. Timings are the
-best of ``--repeat`` runs on this machine (2 shared cores); tests never assert on them.
+Run: ``python benchmarks/bench_bem.py [--quick] [--out DIR]`` (``make benchmark`` runs it);
+writes benchmarks/results/bem.json, which ``make_nonaxi_doc.py`` turns into
+docs/non_axisymmetric.md. Timings: medians of ``--repeat`` solves of each side, their rounds
+interleaved (``hertzmdr.numeric._timing.compare``), and Tamaas's time over ours, on this machine
+(2 shared cores); tests never assert on them.
 """
 
 from __future__ import annotations
 
-import argparse
 import json
 import platform
-import time
-from pathlib import Path
 
+import _common
 import numpy as np
 
-from hertzmdr.numeric import bem, hertz
+from hertzmdr.numeric import _timing, bem, hertz
 
-OUT = Path(__file__).parent / "results" / "bem.json"
 E, R, D = 1.0, 1.0, 0.25
 
 
@@ -41,33 +41,21 @@ def hertz_errors(p, depth, dx):
             "max_pressure": p.max() / hertz.max_pressure(D, R, E) - 1}
 
 
-def best_of(fn, repeat):
-    best, out = np.inf, None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
-
-
-def ours(n, repeat):
+def solvers(n):
+    """The two force-controlled solves of the same problem, as callables (Tamaas's: None when
+    it is not installed)."""
     h, dx = sphere(n)
     F = hertz.force(D, R, E)
-    t, res = best_of(lambda: bem.solve(h, dx, E, force=F, tol=1e-8, stiffness=False), repeat)
-    return {"seconds": t, "iterations": res.iterations, "residual": res.residual,
-            **hertz_errors(res.pressure, res.depth, dx)}, res
 
+    def ours():
+        return bem.solve(h, dx, E, force=F, tol=1e-8, stiffness=False)
 
-def tamaas(n, repeat):
-    try:
-        import tamaas as tm
-    except ImportError as exc:
-        return {"error": f"tamaas not importable: {exc}"}, None
+    tm = _common.peer("tamaas", "tamaas", "the Tamaas row")
+    if tm is None:
+        return ours, None
     tm.set_log_level(tm.LogLevel.warning)  # no per-iteration printout
-    h, dx = sphere(n)
-    F = hertz.force(D, R, E)
 
-    def run():
+    def theirs():
         model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [2.0, 2.0], [n, n])
         model.E, model.nu = E, 0.0  # E* = E/(1 - nu^2) = E
         tm.ModelFactory.registerNonPeriodic(model, "dcfft")
@@ -76,20 +64,39 @@ def tamaas(n, repeat):
         solver.solve(F / 4.0)  # mean pressure over the 2 x 2 m domain
         return np.array(model.traction, copy=True)
 
-    t, p = best_of(run, repeat)
+    return ours, theirs
+
+
+def side_by_side(n, budget):
+    """Both solvers on the n x n Hertz problem: times (interleaved), errors, their ratio."""
+    ours, theirs = solvers(n)
+    h, dx = sphere(n)
+    fns = {"hertzmdr": ours} if theirs is None else {"hertzmdr": ours, "tamaas": theirs}
+    t = _timing.compare(fns, budget)
+    res = ours()
+    mine = {"seconds": t["hertzmdr"].median, "first_seconds": t["hertzmdr"].first,
+            "iterations": res.iterations, "residual": res.residual,
+            **hertz_errors(res.pressure, res.depth, dx)}
+    if theirs is None:
+        return mine, {"error": "tamaas not installed"}
+    p = theirs()
     u = bem.HalfSpace((n, n), dx, dx, E)(p)
     S = p > 0
     depth = float(np.mean(u[S] + h[S]))
-    return {"seconds": t, "version": tm.__version__, **hertz_errors(p, depth, dx)}, p
+    other = {"seconds": t["tamaas"].median, "first_seconds": t["tamaas"].first,
+             "version": _common.version("tamaas"),
+             "time_over_hertzmdr": _timing.ratio(t["tamaas"], t["hertzmdr"]),
+             "max_pressure_difference_to_ours": float(np.max(np.abs(p - res.pressure))
+                                                      / res.pressure.max()),
+             **hertz_errors(p, depth, dx)}
+    return mine, other
 
 
 def convergence(ns):
     rows = []
     for n in ns:
         h, dx = sphere(n)
-        t0 = time.perf_counter()
-        res = bem.solve(h, dx, E, depth=D)
-        t_s = time.perf_counter() - t0
+        res, t_s = _timing.timed(lambda h=h, dx=dx: bem.solve(h, dx, E, depth=D))
         a = hertz.contact_radius(D, R)
         x, y, dx, _ = bem.grid(n, 2.0)
         mask = x**2 + y**2 < 1.0
@@ -114,26 +121,29 @@ def convergence(ns):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--n", type=int, default=256)
-    ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--nmax", type=int, default=512, help="largest grid of the convergence study")
+    ap = _common.parser(__doc__)
+    ap.add_argument("--n", type=int, help="grid of the side-by-side solve (default 256; "
+                    "--quick: 64)")
+    ap.add_argument("--repeat", type=int, default=3, help="solves of each side (default 3)")
+    ap.add_argument("--nmax", type=int, help="largest grid of the convergence study (default "
+                    "512; --quick: 64)")
     args = ap.parse_args(argv)
-    mine, res = ours(args.n, args.repeat)
+    run = _common.run_from(args)
+    n = args.n or (64 if args.quick else 256)
+    nmax = args.nmax or (64 if args.quick else 512)
+    budget = _timing.Budget(repeats=1 if args.quick else args.repeat, min_time=0.0)
+    mine, theirs = side_by_side(n, budget)
     print("hertzmdr.bem:", mine)
-    theirs, p_tm = tamaas(args.n, args.repeat)
     print("tamaas:", theirs)
-    if p_tm is not None:
-        theirs["max_pressure_difference_to_ours"] = float(
-            np.max(np.abs(p_tm - res.pressure)) / res.pressure.max())
-    ns = [n for n in (32, 64, 128, 256, 512, 1024) if n <= args.nmax]
-    rows = convergence(ns)
-    OUT.parent.mkdir(exist_ok=True)
-    OUT.write_text(json.dumps({
+    rows = convergence([m for m in (32, 64, 128, 256, 512, 1024) if m <= nmax])
+    out = run.results / "bem.json"
+    out.write_text(json.dumps({
         "machine": f"{platform.machine()}, {platform.python_implementation()} "
                    f"{platform.python_version()}, numpy {np.__version__}",
-        "grid": args.n, "hertzmdr": mine, "tamaas": theirs, "convergence": rows,
+        "conditions": _timing.conditions(), "repeat": budget.repeats,
+        "grid": n, "hertzmdr": mine, "tamaas": theirs, "convergence": rows,
     }, indent=1) + "\n")
+    print(f"wrote {out}")
 
 
 if __name__ == "__main__":

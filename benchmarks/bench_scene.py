@@ -2,90 +2,84 @@
 
 Goals (issue 5): `hertzmdr run examples/problem1_rail_wheel.toml --json` as a whole process in
 <= 0.6 s, `scene.run()` of a closed-form scene in <= 1 ms. Writes docs/scene_speed.md.
-Run: .venv/bin/python benchmarks/bench_scene.py
+Run: ``.venv/bin/python benchmarks/bench_scene.py [--quick] [--out DIR]`` (``make benchmark``
+runs it). Timings by ``hertzmdr.numeric._timing``: medians and 10 %/90 % quantiles of the
+rounds; the first call (cold caches, lazy imports) apart.
 """
 
 from __future__ import annotations
 
-import statistics
 import subprocess
 import sys
-import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-SCENE = ROOT / "examples" / "problem1_rail_wheel.toml"
+import _common
+
+from hertzmdr.numeric import _timing
+
+SCENE = _common.ROOT / "examples" / "problem1_rail_wheel.toml"
 
 
-def whole_process(n: int = 15) -> list[float]:
+def whole_process(budget: _timing.Budget) -> _timing.Timing:
     exe = Path(sys.executable).with_name("hertzmdr")
-    times = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        subprocess.run([str(exe), "run", str(SCENE), "--json"], check=True,
-                       stdout=subprocess.DEVNULL)
-        times.append(time.perf_counter() - t0)
-    return times
+    return _timing.measure(lambda: subprocess.run(
+        [str(exe), "run", str(SCENE), "--json"], check=True, stdout=subprocess.DEVNULL), budget)
 
 
-def python_startup(n: int = 15) -> list[float]:
-    times = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        subprocess.run([sys.executable, "-c", "import numpy"], check=True)
-        times.append(time.perf_counter() - t0)
-    return times
+def python_startup(budget: _timing.Budget) -> _timing.Timing:
+    return _timing.measure(lambda: subprocess.run([sys.executable, "-c", "import numpy"],
+                                                  check=True), budget)
 
 
-def in_process(n: int = 2000) -> tuple[list[float], list[float]]:
+def in_process(budget_run: _timing.Budget, budget_load: _timing.Budget):
     from hertzmdr.numeric import scene
 
     sc = scene.load(SCENE)
-    sc.run()  # warm: first-call imports
-    runs, loads = [], []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        sc.run()
-        runs.append(time.perf_counter() - t0)
-    for _ in range(200):
-        t0 = time.perf_counter()
-        scene.load(SCENE)
-        loads.append(time.perf_counter() - t0)
-    return runs, loads
+    return (_timing.measure(sc.run, budget_run),
+            _timing.measure(lambda: scene.load(SCENE), budget_load))
 
 
-def fmt(ts: list[float], unit: float, name: str) -> str:
-    q = statistics.quantiles(ts, n=10)
-    return (f"| {name} | {statistics.median(ts) / unit:.3g} | {q[0] / unit:.3g} - "
-            f"{q[-1] / unit:.3g} | {len(ts)} |")
+def fmt(t: _timing.Timing, unit: float, name: str) -> str:
+    return (f"| {name} | {t.median / unit:.3g} | {t.quantile(0.1) / unit:.3g} - "
+            f"{t.quantile(0.9) / unit:.3g} | {t.first / unit:.3g} | {len(t.rounds)} x "
+            f"{t.number} |")
 
 
-def main() -> None:
-    from hertzmdr.numeric.accuracy import machine
-
-    proc, start = whole_process(), python_startup()
-    runs, loads = in_process()
+def main(argv=None) -> None:
+    args = _common.parser(__doc__).parse_args(argv)
+    run = _common.run_from(args)
+    if args.quick:
+        proc_budget, run_budget, load_budget = (_timing.Budget(2, 0.0), _timing.QUICK,
+                                                _timing.QUICK)
+    else:
+        proc_budget = _timing.Budget(15, 0.0)  # 15 processes, one each
+        run_budget = _timing.Budget(200, 0.4)  # 200 rounds, 0.4 s of calls in all
+        load_budget = _timing.Budget(100, 0.2)
+    proc, start = whole_process(proc_budget), python_startup(proc_budget)
+    runs, loads = in_process(run_budget, load_budget)
     text = "\n".join([
         "# Scene speed",
         "",
         "<!-- Written by benchmarks/bench_scene.py; regenerate, do not edit. -->",
         "",
-        f"Measured on: {machine()}.",
+        _timing.conditions(),
         "",
         "Goals (issue 5): the rail-wheel scene (`examples/problem1_rail_wheel.toml`) as a whole "
         "process `hertzmdr run ... --json` in <= 0.6 s; `scene.run()` of a closed-form scene "
         "in-process in <= 1 ms. Imports are lazy: SciPy, pint, matplotlib and SymPy are not "
-        "loaded for this scene (tests/test_scenes.py checks the modules it loads).",
+        "loaded for this scene (tests/test_scenes.py checks the modules it loads). Median and "
+        "10 % - 90 % of the rounds (each round: the time per call of its calls); 'first': the "
+        "first call alone (lazy imports, cold caches).",
         "",
-        "| what | median | 10 % - 90 % | runs |",
-        "| --- | --- | --- | --- |",
+        "| what | median | 10 % - 90 % | first | rounds x calls |",
+        "| --- | --- | --- | --- | --- |",
         fmt(proc, 1e-3, "`hertzmdr run problem1 --json`, whole process [ms]"),
         fmt(start, 1e-3, "of which: `python -c 'import numpy'` alone [ms]"),
         fmt(runs, 1e-6, "`scene.run()`, in-process [µs]"),
         fmt(loads, 1e-6, "`scene.load(path)` (read, parse, validate) [µs]"),
         "",
     ])
-    out = ROOT / "docs" / "scene_speed.md"
+    out = run.docs / "scene_speed.md"
     out.write_text(text)
     print(text)
 

@@ -9,21 +9,19 @@ successive grids (n, 2n, 4n); the uncertainty is the difference between the extr
 the last two triples (or, when they agree better, the last step's correction divided by
 2^p - 1 times 0.1, a floor against lucky agreement).
 
-Run: ``python benchmarks/beta.py [--nmax 512]``; writes benchmarks/results/beta.json.
+Run: ``python benchmarks/beta.py [--nmax 512] [--quick] [--out DIR]`` (``make benchmark`` runs
+it; ``--quick``: n = 16, 32, 64); writes benchmarks/results/beta.json, which
+``make_nonaxi_doc.py`` turns into docs/non_axisymmetric.md.
 """
 
 from __future__ import annotations
 
-import argparse
 import json
-import time
-from pathlib import Path
 
+import _common
 import numpy as np
 
-from hertzmdr.numeric import bem
-
-OUT = Path(__file__).parent / "results" / "beta.json"
+from hertzmdr.numeric import _timing, bem
 
 SHAPES = {
     "circle (check: 1)": [(np.cos(t), np.sin(t)) for t in np.linspace(0, 2 * np.pi, 721)[:-1]],
@@ -66,20 +64,23 @@ def richardson(ns, betas):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--nmin", type=int, default=64)
-    ap.add_argument("--nmax", type=int, default=512)
+    ap = _common.parser(__doc__)
+    ap.add_argument("--nmin", type=int, help="coarsest grid (default 64; --quick: 16)")
+    ap.add_argument("--nmax", type=int, help="finest grid (default 512; --quick: 64)")
     args = ap.parse_args(argv)
+    run = _common.run_from(args)
+    nmin = args.nmin or (16 if args.quick else 64)
+    nmax = args.nmax or (64 if args.quick else 512)
     ns = []
-    n = args.nmin
-    while n <= args.nmax:
+    n = nmin
+    while n <= nmax:
         ns.append(n)
         n *= 2
     results = {}
     for name, verts in SHAPES.items():
-        t0 = time.perf_counter()
         scale = FINER.get(name, 1)
-        betas = [beta_at(verts, round(scale * n)) for n in ns]
+        betas, seconds = _timing.timed(
+            lambda verts=verts, scale=scale: [beta_at(verts, round(scale * n)) for n in ns])
         ext = richardson(ns, betas)
         value, order = ext[-1]
         if len(ext) >= 2 and np.isfinite(ext[-2][0]):
@@ -90,11 +91,12 @@ def main(argv=None):
         results[name] = {"n": [round(FINER.get(name, 1) * n) for n in ns], "beta_n": betas,
                          "extrapolated": value, "order": order, "uncertainty": unc,
                          "chapter": CHAPTER.get(name),
-                         "seconds": time.perf_counter() - t0}
+                         "seconds": seconds}
         print(f"{name:22s} " + " ".join(f"{b:.5f}" for b in betas)
               + f" -> {value:.4f} +- {unc:.4f} (order {order:.2f}); chapter {CHAPTER.get(name)}")
-    OUT.parent.mkdir(exist_ok=True)
-    OUT.write_text(json.dumps(results, indent=1) + "\n")
+    out = run.results / "beta.json"
+    out.write_text(json.dumps(results, indent=1) + "\n")
+    print(f"wrote {out}")
 
 
 if __name__ == "__main__":

@@ -1,22 +1,21 @@
 """Write docs/non_axisymmetric.md and its figure from the exact elliptical solution and the
 committed benchmark results (benchmarks/results/beta.json, bem.json).
 
-Run: ``python benchmarks/make_nonaxi_doc.py`` (after benchmarks/beta.py and bench_bem.py).
+Run: ``python benchmarks/make_nonaxi_doc.py [--quick] [--out DIR]`` (after benchmarks/beta.py
+and bench_bem.py, which write the JSON it reads; ``make benchmark`` runs them in that order).
+It measures nothing itself, so ``--quick`` changes nothing but is accepted like everywhere.
 """
 
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
+import _common
 import numpy as np
 
 from hertzmdr.numeric import ellipse
 
-ROOT = Path(__file__).resolve().parents[1]
-RESULTS = Path(__file__).parent / "results"
-DOC = ROOT / "docs" / "non_axisymmetric.md"
-FIG = ROOT / "docs" / "non_axisymmetric_errors.png"
+FIG_NAME = "non_axisymmetric_errors.png"
 E, R2, D, F = 1e9, 1.0, 1e-6, 1.0
 
 
@@ -71,7 +70,7 @@ def ratio_where(key, level):
     return float(np.exp(0.5 * (lo + hi)))
 
 
-def figure(qs, errs):
+def figure(qs, errs, path):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -89,7 +88,7 @@ def figure(qs, errs):
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(FIG, dpi=110)
+    fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
@@ -101,10 +100,11 @@ def pct(x):
     return f"{100 * x:+.2f} %"
 
 
-def main():
+def main(argv=None):
+    run = _common.run_from(_common.parser(__doc__).parse_args(argv))
     qs = np.geomspace(1, 1e4, 200)
     errs = approximation_errors(qs)
-    figure(qs, errs)
+    figure(qs, errs, run.docs / FIG_NAME)
     out = ["# Non-axisymmetric contacts: the exact ellipse, beta of (5.13)-(5.14), the BEM\n\n",
            "<!-- Written by `python benchmarks/make_nonaxi_doc.py` from the exact solution "
            "(`hertzmdr.numeric.ellipse`) and benchmarks/results/*.json; do not edit. -->\n\n",
@@ -116,7 +116,7 @@ def main():
            "`hertzmdr.derive.bodies`, relations `bodies_gaussian_*`, tests/test_bodies.py; "
            "`ellipse.solve(..., model=\"gaussian\")` calls them). Relative error of the "
            "estimate; R1 >= R2, so a is the major semi-axis.\n\n",
-           f"![approximation errors]({FIG.name})\n\n"]
+           f"![approximation errors]({FIG_NAME})\n\n"]
     out.insert(2, API)
     table_q = [1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000, 10000]
     errs_t = approximation_errors(table_q)
@@ -145,7 +145,7 @@ def main():
         f"{pct(e10['depth at given force, (5.23) with R~'])} at a given force. The 2.5 % "
         f"bound holds up to R1/R2 = {q25:.2f} (force at given depth) and {q25F:.2f} (depth "
         "at given force). See docs/errata_approximations.md.\n\n")
-    beta = json.loads((RESULTS / "beta.json").read_text())
+    beta = json.loads((run.results / "beta.json").read_text())
     out.append("## beta of (5.13)-(5.14) for flat punches\n\n"
                "k = 2 E* beta sqrt(A/pi). Flat-punch stiffness by the BEM "
                "(`bem.punch_stiffness`) on grids of n pixels along the longer side, "
@@ -163,23 +163,26 @@ def main():
                "elongated rectangles are stiffer (larger beta) -- beta grows with the aspect "
                "ratio. The n of the 10:1 rectangle is five times, that of the 3:1 rectangle 3/4 "
                "of the header's (whole pixels across the short side).\n\n")
-    bemr = json.loads((RESULTS / "bem.json").read_text())
+    bemr = json.loads((run.results / "bem.json").read_text())
     n = bemr["grid"]
     out.append(f"## The boundary-element solver\n\n### Hertz on a {n} x {n} grid, side by "
                "side (one run)\n\n"
                "Sphere R = 1 m, E* = 1 Pa, grid on [-1, 1]^2 m, force of the depth 0.25 m "
-               "(a = 0.5 m, 64 pixels per contact radius at n = 256), force-controlled, relative "
-               "residual 1e-8. Errors against Hertz (5.21)-(5.24). Machine: "
-               f"{bemr['machine']} (2 cores shared with other jobs); best of 3.\n\n"
-               "| solver | time [s] | force | depth | area | max pressure |\n"
-               "|---|---|---|---|---|---|\n")
+               f"(a = 0.5 m, {n // 4} pixels per contact radius), force-controlled, relative "
+               "residual 1e-8. Errors against Hertz (5.21)-(5.24). "
+               f"{bemr['conditions']} 2 cores shared with other jobs; the median of "
+               f"{bemr['repeat']} solves of each side, interleaved; 'time / hertzmdr': the "
+               "ratio of the medians (the machine's load moves it less than the times).\n\n"
+               "| solver | time [s] | time / hertzmdr | force | depth | area | max pressure |\n"
+               "|---|---|---|---|---|---|---|\n")
     for label, r in (("hertzmdr.numeric.bem", bemr["hertzmdr"]),
                      (f"Tamaas {bemr['tamaas'].get('version', '')}", bemr["tamaas"])):
         if "error" in r:
-            out.append(f"| {label} | {r['error']} | | | | |\n")
+            out.append(f"\nTamaas: {r['error']}; its row is skipped.\n")
             continue
-        out.append(f"| {label} | {r['seconds']:.2f} | {r['force']:.2e} | {r['depth']:.2e} | "
-                   f"{r['area']:.2e} | {r['max_pressure']:.2e} |\n")
+        rel = r.get("time_over_hertzmdr", 1.0)
+        out.append(f"| {label} | {r['seconds']:.3g} | {rel:.2f} | {r['force']:.2e} | "
+                   f"{r['depth']:.2e} | {r['area']:.2e} | {r['max_pressure']:.2e} |\n")
     if "max_pressure_difference_to_ours" in bemr["tamaas"]:
         out.append("\nLargest pressure difference between the two solutions, over the "
                    f"maximum pressure: {bemr['tamaas']['max_pressure_difference_to_ours']:.1e}"
@@ -199,14 +202,15 @@ def main():
                    f"{r['sphere_max_pressure']:.2e} | {r['sphere_stiffness']:.2e} | "
                    f"{r['punch_k_vs_2aE']:.2e} | {r['punch_k_vs_2a_pixE']:.2e} | "
                    f"{r['cone_force']:.2e} | {r['cone_stiffness']:.2e} | "
-                   f"{r['seconds_sphere']:.2f} |\n")
+                   f"{r['seconds_sphere']:.3g} |\n")
     out.append("\nThe sphere's force and central pressure converge at second order in the pixel "
                "size (a smooth pressure on pixels); areas and stiffnesses at first order, "
                "irregularly (the staircase boundary of the contact, the edge singularity (5.9) "
                "of a punch's pressure). The sphere's time includes its dF/dd (a punch solve on "
                "the contact area).\n")
-    DOC.write_text("".join(out))
-    print(f"wrote {DOC.relative_to(ROOT)} and {FIG.relative_to(ROOT)}")
+    doc = run.docs / "non_axisymmetric.md"
+    doc.write_text("".join(out))
+    print(f"wrote {doc} and {run.docs / FIG_NAME}")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,9 @@
 truths, each way of computing them (the generated closed form in float64, stable against
 textbook forms, SciPy quadrature of the defining integral at several tolerances, mpmath at 15
 to 100 digits, the numerical methods at several resolutions), and writes ``docs/accuracy.md``
-with a table per quantity and a log-log plot of error against time.
+with a table per quantity and a log-log plot of error against time. Times are taken by
+``hertzmdr.numeric._timing`` (the benchmarks' helper); ``--quick`` (the tests) times each way in
+two rounds of one call: numbers that show the report is whole, not timings.
 
 The truths come from ``_generated_mp`` (the derived expressions printed for mpmath) at 60
 digits, or from 60-digit quadrature where there is no closed form; ``tests/`` verify those
@@ -13,13 +15,12 @@ expressions against independent quadratures to >= 30 digits.
 
 from __future__ import annotations
 
-import platform
-import statistics
 import sys
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from hertzmdr.numeric import _timing
 
 TRUTH_DPS = 60
 FLOOR = 1e-50  # errors below this are shown as "< 1e-50" and drawn at this value
@@ -57,23 +58,7 @@ class Measured:
     rows: list[Row] = field(default_factory=list)
 
 
-def time_call(fn: Callable[[], object], repeats: int = 5, budget: float = 0.2):
-    """Median, min and max seconds per call over ``repeats`` rounds of ``number`` calls each,
-    with ``number`` chosen so that a round takes about ``budget``/``repeats`` seconds."""
-    t0 = time.perf_counter()
-    fn()
-    once = max(time.perf_counter() - t0, 1e-7)
-    number = max(1, int(budget / repeats / once))
-    per = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        per.append((time.perf_counter() - t0) / number)
-    return statistics.median(per), (min(per), max(per))
-
-
-def measure(q: Quantity, progress=None) -> Measured:
+def measure(q: Quantity, progress=None, budget: _timing.Budget = _timing.FULL) -> Measured:
     import mpmath as mp
 
     with mp.workdps(TRUTH_DPS):
@@ -84,31 +69,11 @@ def measure(q: Quantity, progress=None) -> Measured:
         with mp.workdps(TRUTH_DPS):
             v = mp.mpf(value)
             err = float(abs((v - truth) / truth)) if mp.isfinite(v) else float("inf")
-        med, spread = time_call(way.run)
-        out.rows.append(Row(way.method, way.setting, err, med, spread))
+        t = _timing.measure(way.run, budget)
+        out.rows.append(Row(way.method, way.setting, err, t.median, t.spread))
         if progress:
             progress()
     return out
-
-
-def machine() -> str:
-    cpu = platform.processor() or platform.machine()
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    import os
-
-    import mpmath
-    import numpy
-    import scipy
-
-    return (f"{cpu}, {os.cpu_count()} cores; Python {platform.python_version()}, "
-            f"NumPy {numpy.__version__}, SciPy {scipy.__version__}, mpmath {mpmath.__version__} "
-            f"(backend {mpmath.libmp.BACKEND}); {platform.system()} {platform.release()}")
 
 
 def _fmt_err(e: float) -> str:
@@ -132,14 +97,16 @@ def digits(e: float) -> float:
     return 50.0 if e < FLOOR else -math.log10(max(e, 1e-300))
 
 
-def markdown(results: list[Measured], figure: str | None) -> str:
+def markdown(results: list[Measured], figure: str | None,
+             budget: _timing.Budget = _timing.FULL) -> str:
     lines = ["# What accuracy costs in time\n",
              "<!-- Written by `hertzmdr accuracy` (make accuracy); regenerate, do not edit. -->\n",
-             f"Measured on: {machine()}.\n",
+             f"{_timing.conditions()}\n",
              "For each quantity: every way hertzmdr can compute it, the relative error against "
              "a 50-digit truth, and the median time per evaluation with the spread (min-max of "
-             "5 rounds). *Digits* is -log10 of the error. Read it as: how many digits can I "
-             "have, and what does each digit cost.\n"]
+             f"up to {budget.repeats} rounds of at least {budget.min_time:g} s together; the "
+             "first call apart, not shown). *Digits* is -log10 of the error. Read it as: how many "
+             "digits can I have, and what does each digit cost.\n"]
     if figure:
         lines.append(f"![error against time]({figure})\n")
     lines.append("## Headline\n")
@@ -208,17 +175,20 @@ def quantities() -> list[Quantity]:
     return _accuracy_cases.all_quantities()
 
 
-def main(out: Path, only: str | None = None) -> list[Measured]:
+def main(out: Path, only: str | None = None, quick: bool = False) -> list[Measured]:
+    """Measure every quantity (or those whose name contains ``only``) and write the report
+    ``out`` with its plot beside it; ``quick``: two rounds of one call per way."""
     from tqdm import tqdm
 
+    budget = _timing.QUICK if quick else _timing.FULL
     qs = [q for q in quantities() if only is None or only in q.name]
     with tqdm(total=sum(len(q.ways()) for q in qs), desc="ways measured", unit="way",
               file=sys.stderr) as bar:
-        results = [measure(q, lambda: bar.update(1)) for q in qs]
+        results = [measure(q, lambda: bar.update(1), budget) for q in qs]
     out.parent.mkdir(parents=True, exist_ok=True)
     fig = out.with_suffix(".png")
     plot(results, fig)
-    out.write_text(markdown(results, fig.name) + domain_search_section())
+    out.write_text(markdown(results, fig.name, budget) + domain_search_section())
     return results
 
 

@@ -32,6 +32,8 @@ p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; wr
 p_acc.add_argument("--out", type=Path, default=Path("docs/accuracy.md"),
                    help="the Markdown report to write (its plot goes beside it as .png)")
 p_acc.add_argument("--only", help="measure only the quantities whose name contains this")
+p_acc.add_argument("--quick", action="store_true",
+                   help="two rounds of one call per way: checks the report, not a measurement")
 
 
 def tour_scenes() -> list[Path]:
@@ -101,7 +103,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.command == "accuracy":
         from hertzmdr.numeric import accuracy
 
-        accuracy.main(args.out, args.only)
+        accuracy.main(args.out, args.only, args.quick)
         print(f"wrote {args.out} and {args.out.with_suffix('.png')}")
         return 0
     from hertzmdr.numeric.scene.schema import SceneError

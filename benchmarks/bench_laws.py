@@ -1,0 +1,84 @@
+"""Closed-form contact laws called from Python: the cost of hertzmdr's validated API against
+the bare expression and against nanite's Hertz model; writes docs/laws_speed.md.
+
+The Hertz force (5.23) F = (4/3) E* R^(1/2) d^(3/2) on 10^6 depths (an array: validation,
+broadcasting and the generated function) and on one Python float (a fitting loop's call),
+beside the same expression written by hand in NumPy / on floats, and beside nanite's
+``hertz_paraboloidal`` (the model its AFM fits evaluate; nu = 0 so that its E/(1 - nu^2) is E*).
+Times are medians of interleaved rounds (``hertzmdr.numeric._timing.compare``), reported with
+their ratio to the bare expression, which the machine's load moves less than the times.
+
+Run: ``.venv/bin/python benchmarks/bench_laws.py [--quick] [--out DIR]`` (``make benchmark``
+runs it; ``--quick``: 10^3 depths).
+"""
+
+from __future__ import annotations
+
+import math
+
+import _common
+import numpy as np
+
+from hertzmdr.numeric import _timing, hertz
+
+E, R = 1e9, 1e-5  # E* [Pa], tip radius [m]: an AFM-like contact
+
+
+def cases(n: int):
+    """(name, {way: callable}, {way: value to compare}) for each comparison."""
+    d = np.linspace(1e-9, 1e-6, n)
+    d0 = 3e-7
+    nanite = _common.peer("nanite.model.model_hertz_paraboloidal", "nanite",
+                          "the nanite column")
+    arrays = {"hertzmdr `hertz.force`": lambda: hertz.force(d, R, E),
+              "by hand in NumPy": lambda: 4.0 / 3.0 * E * np.sqrt(R) * d**1.5}
+    if nanite is not None:  # its delta is the tip position: negative into the sample
+        arrays["nanite `hertz_paraboloidal`"] = lambda: nanite.hertz_paraboloidal(
+            -d, E, R, 0.0)
+    scalars = {"hertzmdr `hertz.force`": lambda: hertz.force(d0, R, E),
+               "by hand on floats": lambda: 4.0 / 3.0 * E * math.sqrt(R) * d0**1.5}
+    return [(f"Hertz force (5.23) on {n:,} depths", arrays),
+            ("Hertz force (5.23) on one Python float", scalars)]
+
+
+def main(argv=None):
+    args = _common.parser(__doc__).parse_args(argv)
+    run = _common.run_from(args)
+    n = 10**3 if args.quick else 10**6
+    lines = ["# Closed-form laws from Python: hertzmdr, the bare expression, nanite\n\n",
+             "<!-- Written by `benchmarks/bench_laws.py`; regenerate, do not edit. -->\n\n",
+             _timing.conditions() + "\n\n",
+             " ".join(__doc__.split("\n\n")[1].split()) + "\n\n",
+             "'time / bare': the way's median over the bare expression's (1: as fast). "
+             "'largest difference': relative, against hertzmdr's values.\n\n"]
+    comparisons = cases(n)
+    for title, ways in comparisons:
+        t = _timing.compare(ways, run.budget)
+        bare = next(k for k in ways if k.startswith("by hand"))
+        ours = np.asarray(next(iter(ways.values()))(), dtype=float)
+        lines.append(f"## {title}\n\n| way | time | time / bare | first call | largest "
+                     "difference |\n|---|---|---|---|---|\n")
+        for name, fn in ways.items():
+            diff = float(np.max(np.abs(np.asarray(fn(), dtype=float) / ours - 1)))
+            lines.append(f"| {name} | {_fmt(t[name].median)} | "
+                         f"{_timing.ratio(t[name], t[bare]):.2f} | {_fmt(t[name].first)} | "
+                         f"{diff:.1e} |\n")
+        lines.append("\n")
+    if not any("nanite" in k for _, ways in comparisons for k in ways):
+        lines.append("nanite is not installed for this run: its column is skipped.\n")
+    else:
+        lines.append(f"nanite {_common.version('nanite')}.\n")
+    out = run.docs / "laws_speed.md"
+    out.write_text("".join(lines))
+    print("".join(lines))
+
+
+def _fmt(s: float) -> str:
+    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6)):
+        if s >= scale:
+            return f"{s / scale:.3g} {unit}"
+    return f"{s * 1e9:.3g} ns"
+
+
+if __name__ == "__main__":
+    main()

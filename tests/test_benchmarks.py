@@ -1,0 +1,196 @@
+"""Every benchmark and report generator runs, and writes finite numbers.
+
+A generator that nothing runs is already broken (scipy's ``_precompute`` lesson, STYLE.md).
+Each step of ``benchmarks/run_all.py`` (what ``make benchmark`` runs) runs here in its
+``--quick`` mode, in the same order, into a temporary folder (never docs/). The tests check that
+it exits 0, writes every file the step declares, and that every number in the Markdown tables it
+writes is finite. The peers of the ``bench`` extra need not be installed: a script whose peer is
+missing skips its rows with a note (checked here by hiding the peer). Timings are never asserted.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
+sys.path.insert(0, str(BENCH))
+import run_all  # noqa: E402  (benchmarks/ is a folder of scripts, not a package)
+
+from hertzmdr.numeric import _timing  # noqa: E402
+
+NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])")
+NONFINITE = re.compile(r"\b(?:nan|inf|infinity)\b", re.IGNORECASE)
+#: a cell that reports a failure as a result: the accuracy report's float64 Gamma ratio of
+#: kappa_n overflows at n = 1000, which is what that row shows
+REPORTED_FAILURE = "fails (inf or nan)"
+
+
+def table_cells(markdown: str) -> list[list[str]]:
+    """The data rows of every Markdown table (header and separator rows left out)."""
+    rows, header_next = [], True
+    for line in markdown.splitlines():
+        if not line.startswith("|"):
+            header_next = True
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if header_next:
+            header_next = False
+            continue
+        if all(set(c) <= set("-: ") for c in cells):
+            continue
+        rows.append(cells)
+    return rows
+
+
+def assert_finite_tables(path: Path):
+    rows = table_cells(path.read_text())
+    assert rows, f"{path.name}: no table"
+    numbers = 0
+    for cells in rows:
+        for cell in cells:
+            if cell == REPORTED_FAILURE:
+                continue
+            assert not NONFINITE.search(cell), f"{path.name}: non-finite cell {cell!r} in {cells}"
+            for tok in NUMBER.findall(cell.replace(",", "")):
+                assert math.isfinite(float(tok)), f"{path.name}: {tok} in {cells}"
+                numbers += 1
+    assert numbers, f"{path.name}: its tables hold no number"
+
+
+def test_table_checker_catches_nan(tmp_path):
+    """The checker itself can fail: a nan, an inf or a table without numbers is caught."""
+    for bad in ("| a | b |\n|---|---|\n| x | nan |\n", "| a |\n|---|\n| -inf |\n",
+                "| a |\n|---|\n| text |\n", "no table\n"):
+        f = tmp_path / "bad.md"
+        f.write_text(bad)
+        with pytest.raises(AssertionError):
+            assert_finite_tables(f)
+    f.write_text("| a | b |\n|---|---|\n| 1.5e-3 | 2 x 1 |\n")
+    assert_finite_tables(f)
+
+
+@pytest.fixture(scope="module")
+def quick_run(tmp_path_factory):
+    """Every step in make benchmark's order, --quick, into one temporary folder (later steps
+    read earlier steps' results from it). A failed step does not stop the others here: each
+    test reports its own."""
+    out = tmp_path_factory.mktemp("bench")
+    run = run_all._common.Run(True, out, out, run_all._common._timing.QUICK)
+    return out, {step.name: run_all.run_step(step, run, out) for step in run_all.STEPS}
+
+
+@pytest.mark.parametrize("step", run_all.STEPS, ids=[s.name for s in run_all.STEPS])
+def test_quick_run_writes_finite_tables(quick_run, step):
+    out, procs = quick_run
+    proc = procs[step.name]
+    assert proc.returncode == 0, (f"{step.name} failed:\n{proc.stdout[-2000:]}\n"
+                                  f"{proc.stderr[-4000:]}")
+    for name in step.docs + step.results:
+        assert (out / name).is_file() and (out / name).stat().st_size > 0, f"{name} not written"
+        if name.endswith(".md"):
+            assert_finite_tables(out / name)
+        if name.endswith(".json"):
+            json.loads((out / name).read_text())
+
+
+@pytest.mark.parametrize("script, doc", [("bench_abel.py", "abel.md"),
+                                         ("bench_mdr.py", "mdr.md")])
+def test_docs_only_rewrites_the_same_report(quick_run, script, doc):
+    """--docs-only (the cheap refresh, e.g. after a change of derive/) writes exactly what the
+    measuring run wrote, from its saved JSON."""
+    out, procs = quick_run
+    assert procs[script].returncode == 0
+    before = (out / doc).read_text()
+    (out / doc).unlink()
+    subprocess.run([sys.executable, str(BENCH / script), "--docs-only", "--out", str(out)],
+                   cwd=BENCH, env=run_all.environment(), check=True, capture_output=True)
+    assert (out / doc).read_text() == before
+
+
+def _without(module: str, script: str, out: Path) -> subprocess.CompletedProcess:
+    """Run a script with ``module`` made unimportable, as where the bench extra is missing."""
+    code = (f"import runpy, sys; sys.modules[{module!r}] = None; "
+            f"sys.path.insert(0, {str(BENCH)!r}); "
+            f"sys.argv = [{script!r}, '--quick', '--out', {str(out)!r}]; "
+            f"runpy.run_path({str(BENCH / script)!r}, run_name='__main__')")
+    return subprocess.run([sys.executable, "-c", code], cwd=BENCH, env=run_all.environment(),
+                          capture_output=True, text=True)
+
+
+def test_missing_peers_are_skipped_with_a_note(tmp_path):
+    """No PyAbel: abel.md has hertzmdr's rows and says PyAbel's are left out. No Tamaas:
+    bem.json records it and non_axisymmetric.md says its row is skipped."""
+    procs = [_without("abel", "bench_abel.py", tmp_path),
+             _without("tamaas", "bench_bem.py", tmp_path)]
+    procs.append(_without("tamaas", "beta.py", tmp_path))  # make_nonaxi_doc reads its JSON too
+    procs.append(_without("tamaas", "make_nonaxi_doc.py", tmp_path))
+    for proc in procs:
+        assert proc.returncode == 0, proc.stderr[-4000:]
+    assert "PyAbel not installed" in procs[0].stdout
+    assert "tamaas not installed" in procs[1].stdout
+    abel_md = (tmp_path / "abel.md").read_text()
+    assert "PyAbel was not installed for this run" in abel_md
+    assert "basex" not in "".join("".join(r) for r in table_cells(abel_md))
+    assert_finite_tables(tmp_path / "abel.md")
+    assert "error" in json.loads((tmp_path / "bem.json").read_text())["tamaas"]
+    assert "its row is skipped" in (tmp_path / "non_axisymmetric.md").read_text()
+    assert_finite_tables(tmp_path / "non_axisymmetric.md")
+
+
+# the timing helper's bookkeeping (what is called how often, what is kept apart); never its
+# speed figures
+
+
+def test_measure_keeps_the_first_call_apart():
+    calls = []
+    t = _timing.measure(lambda: calls.append(1), _timing.Budget(repeats=3, min_time=0.0))
+    assert len(calls) == 1 + 3 and len(t.rounds) == 3 and t.number == 1  # first, then rounds
+    made = []
+    t = _timing.measure(lambda obj: obj.append(2), _timing.Budget(repeats=4, min_time=0.0),
+                        setup=lambda: made.append([]) or made[-1])
+    assert len(made) == 1 + 4 and all(m == [2] for m in made)  # a fresh object each call
+    assert t.spread[0] <= t.median <= t.spread[1]
+    assert t.quantile(0) == t.spread[0] and t.quantile(1) == t.spread[1]
+
+
+def test_budget_stops_slow_calls_early_and_checks_its_fields():
+    import time
+
+    t = _timing.measure(lambda: time.sleep(0.05),
+                        _timing.Budget(repeats=10, min_time=0.0, max_time=0.12))
+    assert 1 <= len(t.rounds) <= 3  # 0.05 s a round: no new round once 0.12 s are spent
+    for bad in (dict(repeats=0, min_time=0.0), dict(repeats=1, min_time=-1.0),
+                dict(repeats=1, min_time=1.0, max_time=0.5)):
+        with pytest.raises(ValueError, match="Budget"):
+            _timing.Budget(**bad)
+
+
+def test_compare_interleaves_and_ratios():
+    order = []
+    t = _timing.compare({"a": lambda: order.append("a"), "b": lambda: order.append("b")},
+                        _timing.Budget(repeats=3, min_time=0.0))
+    assert order == ["a", "b"] + ["a", "b"] * 3  # first calls, then the rounds alternate
+    assert _timing.ratio(t["a"], t["b"]) == t["a"].median / t["b"].median
+
+
+def test_in_fork_discards_the_child_cache_and_reports_its_errors():
+    cache = {}
+
+    def fill(key):
+        cache[key] = True
+        return sorted(cache)
+
+    assert _timing.in_fork(fill, "x") == ["x"] and cache == {}
+
+    def fail():
+        raise ValueError("from the child")
+
+    with pytest.raises(RuntimeError, match="from the child"):
+        _timing.in_fork(fail)
