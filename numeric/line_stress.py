@@ -138,7 +138,8 @@ def axis_stresses(z, b, p0, nu):
 
     sigma_zz = -p0 b/(b^2 + z^2)^(1/2), sigma_xx = -p0 b^3/(s (s + z)^2) with
     s = (b^2 + z^2)^(1/2) (the cancellation-free form of
-    -p0 [(b^2 + 2 z^2)/(b s) - 2 z/b]), sigma_yy = nu (sigma_xx + sigma_zz).
+    -p0 [(b^2 + 2 z^2)/(b s) - 2 z/b]), sigma_yy = nu (sigma_xx + sigma_zz); for
+    z <= :data:`MAX_DISTANCE` b (a ValueError beyond).
 
     Parameters
     ----------
@@ -147,8 +148,7 @@ def axis_stresses(z, b, p0, nu):
     b, p0, nu
         As in :func:`stresses`.
     """
-    z, b, p0, nu = np.broadcast_arrays(nonnegative("z", z), positive("b", b),
-                                       nonnegative("p0", p0), poisson("nu", nu))
+    _, z, b, p0, nu = _inputs(0.0, z, b, p0, nu)  # within MAX_DISTANCE half-widths
     sxx = gen.line_stress_axis_sigma_xx(b, p0, z)
     szz = gen.line_stress_axis_sigma_zz(b, p0, z)
     return result(sxx), result(szz), result(gen.line_stress_sigma_yy(nu, sxx, szz))

@@ -346,3 +346,6 @@ def test_far_field_limit():
     for x, z in ((2 * D, 1.0), (1.0, 2 * D), (1e300, 1e300)):
         with pytest.raises(ValueError, match="half-widths"):
             ls.stresses(x, z, 1.0, 1.0, 0.3)
+    assert all(np.isfinite(v) for v in ls.axis_stresses(D, 1.0, 1.0, 0.3))
+    with pytest.raises(ValueError, match="half-widths"):
+        ls.axis_stresses(1e300, 1.0, 1.0, 0.3)
