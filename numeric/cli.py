@@ -30,8 +30,10 @@ p_run.add_argument("--force", action="store_true", help="allow --out into a non-
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
 p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")
 p_acc.add_argument("--out", type=Path, default=Path("docs/accuracy.md"),
-                   help="the Markdown report to write (its plot goes beside it as .png)")
-p_acc.add_argument("--only", help="measure only the quantities whose name contains this")
+                   help="the Markdown report to write, its plot beside it as .png (default: "
+                   "docs/accuracy.md under the current folder)")
+p_acc.add_argument("--only", help="measure only the quantities whose name contains this text "
+                   "(the names: `hertzmdr accuracy --only ?` lists them)")
 p_acc.add_argument("--quick", action="store_true",
                    help="two rounds of one call per way: checks the report, not a measurement")
 
@@ -43,12 +45,29 @@ def tour_scenes() -> list[Path]:
     return sorted(Path(str(p)) for p in folder.iterdir() if p.name.endswith(".toml"))
 
 
+class UsageError(Exception):
+    """A command-line value that cannot work: printed as one line, exit 2."""
+
+
+def check_out(folder: Path, force: bool) -> None:
+    """Refuse an --out folder before anything is computed: an existing file, a non-empty
+    folder without --force, or a parent that is a file or cannot be written."""
+    if folder.exists() and not folder.is_dir():
+        raise UsageError(f"--out {folder}: is a file, not a folder; give a folder")
+    if folder.exists() and any(folder.iterdir()) and not force:
+        raise UsageError(f"--out {folder}: is not empty; pass --force to write into it")
+    parent = next((p for p in (folder, *folder.parents) if p.exists()), Path("."))
+    if not parent.is_dir():
+        raise UsageError(f"--out {folder}: {parent} is a file, not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise UsageError(f"--out {folder}: {parent} is not writable")
+
+
 def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: bool) -> None:
     """Write atomically: everything goes to a temporary folder first, then is moved in."""
     from hertzmdr.numeric.scene.figures import write_all
 
-    if folder.exists() and any(folder.iterdir()) and not force:
-        raise FileExistsError(f"{folder} is not empty; pass --force to write into it")
+    check_out(folder, force)
     folder.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
     try:
@@ -73,6 +92,8 @@ def cmd_run(args) -> int:
     from hertzmdr.numeric.scene.report import table
 
     paths = [Path(args.scene)] if args.scene else tour_scenes()
+    if args.out:
+        check_out(args.out, args.force)
     runs = []
     for path in paths:
         sc = scene.load(path)
@@ -100,22 +121,37 @@ def main(argv: list[str] | None = None) -> int:
 
         print(listing())
         return 0
-    if args.command == "accuracy":
-        from hertzmdr.numeric import accuracy
-
-        accuracy.main(args.out, args.only, args.quick)
-        print(f"wrote {args.out} and {args.out.with_suffix('.png')}")
-        return 0
-    from hertzmdr.numeric.scene.schema import SceneError
-
     try:
-        return cmd_run(args)
-    except SceneError as exc:
+        if args.command == "accuracy":
+            return cmd_accuracy(args)
+        from hertzmdr.numeric.scene.schema import SceneError
+
+        try:
+            return cmd_run(args)
+        except SceneError as exc:
+            raise UsageError(str(exc)) from None
+    except UsageError as exc:
         print(f"hertzmdr: {exc}", file=sys.stderr)
         return 2
-    except FileExistsError as exc:
-        print(f"hertzmdr: {exc}", file=sys.stderr)
-        return 2
+    except BrokenPipeError:  # `hertzmdr run ... --json | head`: the reader left; say nothing
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0
+
+
+def cmd_accuracy(args) -> int:
+    from hertzmdr.numeric import accuracy
+
+    names = [q.name for q in accuracy.quantities()]
+    if args.only is not None and not any(args.only in n for n in names):
+        raise UsageError(f"--only {args.only!r} matches no quantity; the names: "
+                         + "; ".join(names))
+    check_out(args.out.parent if args.out.parent != Path("") else Path("."), force=True)
+    if args.out.is_dir():
+        raise UsageError(f"--out {args.out}: is a folder; give the report's file name")
+    accuracy.main(args.out, args.only, args.quick)
+    print(f"wrote {args.out} and {args.out.with_suffix('.png')}")
+    return 0
 
 
 if __name__ == "__main__":
