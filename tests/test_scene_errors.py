@@ -208,3 +208,19 @@ def test_sampled_conical_tip_pressure_is_infinite_at_the_axis():
     ref = cone.pressure(rr[1:], d, np.arctan(tan_t), E / (1 - nu**2))
     # piecewise linear f: the quintic spline is exact; the tables' error (estimate above)
     np.testing.assert_allclose(p[1:], ref, rtol=1e-7, atol=1e-9 * np.max(p[1:]))
+
+
+def test_byte_order_mark_is_accepted(tmp_path, capsys):
+    """Editors on some systems start a UTF-8 file with a byte-order mark: it is no content."""
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + GOOD.encode())
+    assert main(["run", str(path), "--json"]) == 0
+    assert '"force"' in capsys.readouterr().out
+
+
+def test_string_without_a_unit_names_the_key(tmp_path, capsys):
+    path = tmp_path / "bare.toml"
+    path.write_text(GOOD.replace('radius = "10 mm"', 'radius = "10"'))
+    assert main(["run", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "radius" in err and "has no unit" in err and len(err.strip().splitlines()) == 1

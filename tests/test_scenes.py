@@ -308,3 +308,19 @@ def test_worn_tip_pressure_and_stresses(tmp_path):
     # sigma_zz(z) = -p(0) + O(z) on the axis: the first depth is ~a/10; allow that and the
     # route's own error estimate
     assert abs(szz[0] / -p[0] - 1) < 0.05 + ax["rel_error"]
+
+
+def test_numbers_quoted_in_the_scene_docs_come_from_a_run():
+    """docs/scenes.md's Python example quotes Problem 1's max_pressure: it must be what a run
+    gives, to the 5 digits it prints (it once said 1.0134e9 where the run gives 1.0101e9)."""
+    import re
+    from pathlib import Path
+
+    from hertzmdr.numeric import scene
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "scenes.md").read_text()
+    quoted = re.search(r'\["max_pressure"\]\["value"\]\s*# ([0-9.e+-]+) \(Pa\)', text)
+    assert quoted, "the example line moved: update this test"
+    value = scene.load(next(p for p in tour_scenes() if p.stem == "problem1_rail_wheel")).run()
+    got = value["effects"]["max_pressure"]["value"]
+    assert abs(float(quoted.group(1)) / got - 1) < 5e-5  # 5 significant digits printed

@@ -76,7 +76,7 @@ def read(path_or_dict, *, known_effects) -> SceneSpec:
     path = Path(path_or_dict)
     where = str(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a byte-order mark is no content
     except FileNotFoundError:
         raise SceneError(where, "", "no such file") from None
     except (OSError, UnicodeDecodeError) as exc:

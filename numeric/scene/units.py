@@ -73,8 +73,10 @@ def to_si(value, dimension: str) -> float:
     m = _NUMBER_UNIT.match(value)
     if m and m.group(2) and (dimension, m.group(2)) in FAST:
         return float(m.group(1)) * FAST[(dimension, m.group(2))]
-    if m and not m.group(2):
-        return float(m.group(1))
+    if m and not m.group(2):  # "70": a bare number means SI only when it is not a string
+        raise UnitError(f"{value!r} has no unit: a string carries one (e.g. \"{m.group(1)} "
+                        f"{DIMENSIONS[dimension][0]}\"); a bare number ({m.group(1)}) is read "
+                        f"in {DIMENSIONS[dimension][0]}")
     return _with_pint(value, dimension)
 
 
