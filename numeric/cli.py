@@ -87,6 +87,21 @@ def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: boo
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+def _check_figures(runs) -> None:
+    """--out draws a PNG per field effect: without matplotlib (the ``plot`` extra) say so in
+    one line before anything is printed or written."""
+    from hertzmdr.numeric.scene.figures import FIGURES
+
+    fields = sorted({name for *_, results, _ in runs for name in results if name in FIGURES})
+    if not fields:
+        return
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        raise UsageError(f"--out draws the field effects ({', '.join(fields)}) as PNGs, which "
+                         "needs matplotlib: pip install 'hertzmdr[plot]'") from None
+
+
 def cmd_run(args) -> int:
     from hertzmdr.numeric import scene
     from hertzmdr.numeric.scene.report import table
@@ -99,6 +114,8 @@ def cmd_run(args) -> int:
         sc = scene.load(path)
         _, results, doc = sc.run_full()
         runs.append((path, sc, results, doc))
+    if args.out:
+        _check_figures(runs)
     if args.json:
         docs = [doc for *_, doc in runs]
         print(json.dumps(docs[0] if args.scene else docs, indent=2))

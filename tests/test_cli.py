@@ -6,6 +6,8 @@ from __future__ import annotations
 import subprocess
 import sys
 
+import pytest
+
 from hertzmdr.numeric.cli import main, tour_scenes
 
 SCENE = str(next(p for p in tour_scenes() if p.stem == "problem1_rail_wheel"))
@@ -87,3 +89,24 @@ def test_json_into_a_closed_pipe():
         proc.wait(timeout=120)
     assert "Traceback" not in err and "BrokenPipe" not in err, err
     assert proc.returncode == 0
+
+
+def test_out_with_a_field_effect_without_matplotlib(tmp_path, capsys, monkeypatch):
+    """A base install (no `plot` extra) asked for figures: one line naming the extra."""
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib -> ImportError
+    scene = str(next(p for p in tour_scenes() if p.stem == "problem7b_parabola"))
+    assert main(["run", scene, "--out", str(tmp_path / "res")]) == 2
+    _one_line(capsys, "--out", "hertzmdr[plot]")
+    assert not (tmp_path / "res").exists()
+
+
+def test_units_outside_the_fast_table_need_no_extra():
+    """pint is a core dependency: "2 yard" is read, "5 N" for a radius is refused in words."""
+    import importlib.metadata as md
+
+    from hertzmdr.numeric.scene.units import UnitError, to_si
+
+    assert any(r.startswith("pint") for r in md.requires("hertzmdr") if "extra" not in r)
+    assert abs(to_si("2 yard", "length") / 1.8288 - 1) < 1e-15  # 1 yd = 0.9144 m exactly
+    with pytest.raises(UnitError, match="not a length"):
+        to_si("5 N", "length")
