@@ -224,3 +224,25 @@ def test_string_without_a_unit_names_the_key(tmp_path, capsys):
     assert main(["run", str(path)]) == 2
     err = capsys.readouterr().err
     assert "radius" in err and "has no unit" in err and len(err.strip().splitlines()) == 1
+
+
+def _profile_scene(f, depth):
+    r = [i * 1e-7 for i in range(11)]
+    return {"effects": ["force"], "load": {"depth": depth},
+            "body": [{"shape": "profile", "r": r, "f": f(r), "rigid": True},
+                     {"shape": "flat", "E": 1e9, "nu": 0.3}]}
+
+
+def test_sampled_profile_that_decreases_names_the_sample():
+    from hertzmdr.numeric import scene
+
+    bump = lambda r: [x * x / 2e-6 - (3e-8 if i == 3 else 0.0) for i, x in enumerate(r)]  # noqa
+    with pytest.raises(scene.SceneError, match=r"f\[3\].*decreases"):
+        scene.load(_profile_scene(bump, 1e-9))
+
+
+def test_sampled_profile_too_short_says_where_the_samples_end():
+    from hertzmdr.numeric import scene
+
+    with pytest.raises(scene.SceneError, match=r"they end at r_max = 1e-06 m.*further out"):
+        scene.load(_profile_scene(lambda r: [x * x / 2e-6 for x in r], 1e-6)).run()

@@ -32,6 +32,11 @@ class Profile(Shape):
                 fail(f"r/f[{j}]", "samples must be finite numbers, not NaN or inf")
         if r[0] != 0 or any(b <= a for a, b in zip(r, r[1:], strict=False)):
             fail("r", "samples must start at r = 0 and increase strictly")
+        drop = next((j for j in range(1, len(f)) if f[j] < f[j - 1]), None)
+        if drop is not None:
+            fail(f"f[{drop}]", f"the profile decreases there (f = {float(f[drop])} m after "
+                 f"{float(f[drop - 1]) + 0.0} m, at r = {float(r[drop])} m): the MDR of "
+                 "section 5.6 takes a tip that rises from its apex, f non-decreasing in r")
 
     def samples(self, p):
         """The profile's samples r, f [m] and the spline degree the numerical MDR uses."""
