@@ -246,3 +246,34 @@ def test_sampled_profile_too_short_says_where_the_samples_end():
 
     with pytest.raises(scene.SceneError, match=r"they end at r_max = 1e-06 m.*further out"):
         scene.load(_profile_scene(lambda r: [x * x / 2e-6 for x in r], 1e-6)).run()
+
+
+def test_sample_file_unit(tmp_path):
+    """unit = "nm" beside file reads the columns in nm: the same tip in m and in nm gives the
+    same force (to rounding of the scale, 1e-15); unit without file, or not a length, is one
+    clear error."""
+    from hertzmdr.numeric import scene
+
+    r = [i * 20e-9 for i in range(40)]
+    (tmp_path / "m.csv").write_text("".join(f"{x!r}, {x * x / 2e-6!r}\n" for x in r))
+    (tmp_path / "nm.csv").write_text("r_nm, f_nm\n" + "".join(
+        f"{x * 1e9!r} {x * x / 2e-6 * 1e9!r}\n" for x in r))
+
+    def force(body):
+        spec = {"effects": ["force"], "load": {"depth": 20e-9},
+                "body": [{"shape": "profile", "rigid": True, **body},
+                         {"shape": "flat", "E": 1e9, "nu": 0.3}]}
+        path = tmp_path / "s.toml"
+        import json  # TOML's inline tables are JSON-like enough for these keys
+        lines = [f"effects = {json.dumps(spec['effects'])}", "[load]", "depth = 20e-9"]
+        for b in spec["body"]:
+            lines += ["[[body]]"] + [f"{k} = {json.dumps(v)}" for k, v in b.items()]
+        path.write_text("\n".join(lines) + "\n")
+        return scene.load(path).run()["effects"]["force"]["value"]
+
+    F_m, F_nm = force({"file": "m.csv"}), force({"file": "nm.csv", "unit": "nm"})
+    assert abs(F_nm / F_m - 1) < 1e-12  # scaling by 1e-9 rounds each sample by 1 ulp
+    with pytest.raises(scene.SceneError, match="unit: is the unit of a sample file"):
+        force({"r": [0.0, 1e-7, 2e-7], "f": [0.0, 1e-8, 4e-8], "unit": "nm"})
+    with pytest.raises(scene.SceneError, match="unit"):
+        force({"file": "nm.csv", "unit": "N"})

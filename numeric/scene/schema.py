@@ -243,6 +243,10 @@ class _Reader:
                 self.fail(key, "must be a list of at least three [x, y] corners")
             return [[self.quantity(c, "length", f"{key}[{j}]") for c in v]
                     for j, v in enumerate(value)]
+        if kind == "length_unit":  # "nm": the factor [m] that one such unit is
+            if not isinstance(value, str) or not value.strip():
+                self.fail(key, f"must be a length unit such as \"nm\" or \"um\", got {value!r}")
+            return self.quantity(f"1 {value.strip()}", "length", key)
         if kind == "count":
             if isinstance(value, bool) or not isinstance(value, int) or not 8 <= value <= 2048:
                 self.fail(key, f"must be an integer in [8, 2048], got {value!r}")

@@ -14,14 +14,21 @@ class Profile(Shape):
     keys = (Key("r", "length_list", required=False, doc="samples r = [...] (m)"),
             Key("f", "length_list", required=False, doc="samples f = [...] (m)"),
             Key("file", "path", required=False,
-                doc='or file = "tip.csv" (two columns r, f in m, relative to the scene file)'))
+                doc='or file = "tip.csv" (two columns r, f, relative to the scene file)'),
+            Key("unit", "length_unit", required=False,
+                doc='with file: the unit of both columns, e.g. unit = "nm" (default "m")'))
     kinds = ("numerical_mdr",)
 
     def check(self, p, fail, base_dir):
         if "file" in p:
             if "r" in p or "f" in p:
                 fail("", "give samples r and f, or file, not both")
-            p["r"], p["f"] = read_samples(base_dir / p.pop("file"), fail)
+            r, f = read_samples(base_dir / p.pop("file"), fail)
+            scale = p.pop("unit", 1.0)  # the columns' unit in m (schema: kind length_unit)
+            p["r"], p["f"] = [v * scale for v in r], [v * scale for v in f]
+        elif "unit" in p:
+            fail("unit", "is the unit of a sample file's columns; give r and f with their "
+                 "units instead (r = [\"0 nm\", \"10 nm\", ...])")
         elif not ("r" in p and "f" in p):
             fail("", "a profile needs samples r = [...] and f = [...], or file = \"...\"")
         r, f = p["r"], p["f"]
@@ -44,7 +51,8 @@ class Profile(Shape):
 
 
 def read_samples(path: Path, fail):
-    """Two columns r, f [m] of a text file (commas or spaces, # comments, one header line)."""
+    """Two columns r, f of a text file (commas or spaces, # comments, one header line), in the
+    unit the scene's ``unit`` key names (m by default)."""
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except FileNotFoundError:
@@ -65,7 +73,7 @@ def read_samples(path: Path, fail):
         except ValueError:
             if not r and n == 1:  # a header line
                 continue
-            fail("file", f"{path.name} line {n}: expected two numbers r, f (in m)")
+            fail("file", f"{path.name} line {n}: expected two numbers r, f")
     if len(r) < 2:
         fail("file", f"{path.name} has fewer than two samples")
     return r, f
