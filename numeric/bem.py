@@ -236,8 +236,9 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
         # start: the pressure of a flat punch of the overlap region, scaled by the overlap
         over = allowed & (h < d)
         if not over.any():
-            raise ValueError(f"depth = {d!r} is out of range; valid: depth > min(height) = "
-                             f"{h[allowed].min()!r} (the indenter must touch)")
+            raise ValueError(f"depth = {float(d)!r} is out of range; valid: depth > "
+                             f"min(height) = {float(h[allowed].min())!r} (the indenter must "
+                             "touch)")
         p = np.where(over, (d - hh) / op.self_influence, 0.0)
     t = np.zeros_like(p)
     G_old, delta = 1.0, 0.0

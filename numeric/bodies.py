@@ -103,8 +103,9 @@ def effective_radius(R1, R2=np.inf):
         idx = np.argwhere(bad)[0] if total.ndim else ()
         r1 = np.broadcast_to(R1, total.shape)[tuple(idx)]
         r2 = np.broadcast_to(R2, total.shape)[tuple(idx)]
-        raise ValueError(f"R1 = {r1!r}, R2 = {r2!r}: the sum of the curvatures 1/R1 + 1/R2 "
-                         "must be > 0 (a concave surface must be flatter than the convex one)")
+        raise ValueError(f"R1 = {float(r1)!r}, R2 = {float(r2)!r}: the sum of the curvatures "
+                         "1/R1 + 1/R2 must be > 0 (a concave surface must be flatter than the "
+                         "convex one)")
     return result(gen.bodies_effective_radius(R1, R2))  # (5.27)
 
 

@@ -44,7 +44,7 @@ def _ratio(R1, R2) -> np.ndarray:
     if np.any(q > MAX_RADIUS_RATIO):
         bad = np.broadcast_to(q, np.broadcast(R1, R2).shape)
         i = np.unravel_index(np.argmax(bad > MAX_RADIUS_RATIO), bad.shape)
-        raise ValueError(f"R1/R2 = {bad[i]!r} (or its inverse) is out of range; valid: "
+        raise ValueError(f"R1/R2 = {float(bad[i])!r} (or its inverse) is out of range; valid: "
                          f"1/{MAX_RADIUS_RATIO:g} <= R1/R2 <= {MAX_RADIUS_RATIO:g}")
     return q
 

@@ -426,3 +426,14 @@ def test_gaussian_pressure_refuses_infinite_coordinates():
     for name, args in (("x", (np.inf, 0.0)), ("y", (0.0, -np.inf))):
         with pytest.raises(ValueError, match=f"^{name} must be finite$"):
             bodies.gaussian_approx_pressure(*args, 1e-6, 0.01, 0.02, 1e11)
+
+
+def test_messages_print_plain_numbers():
+    """NumPy scalars in messages read as numbers, not as np.float64(...) (issue 12)."""
+    from hertzmdr.numeric import ellipse
+
+    for call in (lambda: bodies.effective_radius(np.float64(2.0), np.float64(-1.0)),
+                 lambda: ellipse.solve(np.float64(1e10), 1.0, 1e9, depth=1e-3)):
+        with pytest.raises(ValueError) as err:
+            call()
+        assert "np." not in str(err.value) and "float64" not in str(err.value), err.value
