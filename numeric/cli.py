@@ -17,10 +17,13 @@ import sys
 import tempfile
 from pathlib import Path
 
+from hertzmdr.numeric import __version__
+
 parser = argparse.ArgumentParser(
     prog="hertzmdr",
     description="Normal contact of elastic bodies (Boussinesq, Hertz, MDR): derived, "
     "generated and verified. See docs/scenes.md for the scene schema.")
+parser.add_argument("--version", action="version", version=f"hertzmdr {__version__}")
 sub = parser.add_subparsers(dest="command", required=True)
 p_run = sub.add_parser("run", help="run a scene file, or the built-in tour without one")
 p_run.add_argument("scene", nargs="?", help="scene file (TOML); omit for the built-in tour")

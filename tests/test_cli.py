@@ -110,3 +110,16 @@ def test_units_outside_the_fast_table_need_no_extra():
     assert abs(to_si("2 yard", "length") / 1.8288 - 1) < 1e-15  # 1 yd = 0.9144 m exactly
     with pytest.raises(UnitError, match="not a length"):
         to_si("5 N", "length")
+
+
+def test_version(capsys):
+    """`hertzmdr --version` and `hertzmdr.numeric.__version__` say the installed version."""
+    import importlib.metadata as md
+
+    import hertzmdr.numeric
+
+    with pytest.raises(SystemExit) as exit_:
+        main(["--version"])
+    assert exit_.value.code == 0
+    assert capsys.readouterr().out.strip() == f"hertzmdr {md.version('hertzmdr')}"
+    assert hertzmdr.numeric.__version__ == md.version("hertzmdr")
