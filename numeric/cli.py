@@ -147,9 +147,11 @@ def main(argv: list[str] | None = None) -> int:
         from hertzmdr.numeric.scene.schema import SceneError
 
         try:
-            return cmd_run(args)
+            rc = cmd_run(args)
         except SceneError as exc:
             raise UsageError(str(exc)) from None
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+        return rc
     except UsageError as exc:
         print(f"hertzmdr: {exc}", file=sys.stderr)
         return 2
