@@ -24,9 +24,11 @@ lint: $(STAMP)
 check: $(STAMP)
 	$(PY) -m hertzmdr.derive --check
 
-# the suite runs the --check itself (tests/test_generated.py)
+# the suite runs the --check itself (tests/test_generated.py); on as many workers as CI has
+# cores (pytest-xdist; `make test WORKERS=0` runs it in one process)
+WORKERS ?= 2
 test: lint
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n $(WORKERS)
 
 accuracy: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(VENV)/bin/hertzmdr accuracy --out docs/accuracy.md
