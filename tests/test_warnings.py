@@ -155,3 +155,18 @@ def test_docs_quote_the_one_table():
     assert markdown() in text
     for name in EXPECTED:
         assert f"`{name}.toml` " in text, name
+
+
+def test_a_result_beyond_float64_is_one_line(tmp_path, capsys):
+    """The same scene asking for the pressure: p0 (5.22) at E* = 5.9e307 Pa passes 1.8e308,
+    which numeric/ says (an OverflowError naming the inputs) in one line, exit 2."""
+    path = tmp_path / "huge.toml"
+    path.write_text('effects = ["contact_radius", "max_pressure"]\n'
+                    '[[body]]\nshape = "sphere"\nradius = "5 mm"\nrigid = true\n'
+                    '[[body]]\nshape = "flat"\nE = "5.4e307 Pa"\nnu = 0.3\n'
+                    '[load]\nforce = 1e308\n')
+    assert main(["run", str(path)]) == 2
+    out = capsys.readouterr()
+    assert out.out == "" and len(out.err.strip().splitlines()) == 1, out.err
+    assert "'max_pressure' at this load: hertz.max_pressure" in out.err
+    assert "exceeds the float64 range" in out.err

@@ -53,7 +53,8 @@ class Run:
         try:
             args = [self.node(n) for n in eff.needs]
             v = getattr(self.contact, "effect_" + name)(*args)
-        except ValueError as exc:  # numeric/'s validators name the input and its valid range
+        except (ValueError, OverflowError) as exc:  # numeric/'s validators name the input
+            # and its valid range; a result beyond float64 names its inputs (OverflowError)
             raise SceneError(self.spec.source, "effects", f"{name!r} at this load: {exc}") \
                 from exc
         seconds = time.perf_counter() - t0
