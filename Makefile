@@ -19,7 +19,7 @@ demo: $(STAMP)
 	$(VENV)/bin/hertzmdr run --out out/tour --force
 
 lint: $(STAMP)
-	$(VENV)/bin/ruff check derive numeric tests benchmarks examples
+	$(VENV)/bin/ruff check pkg derive numeric tests benchmarks examples
 
 check: $(STAMP)
 	$(PY) -m hertzmdr.derive --check

@@ -114,7 +114,7 @@ class BEMResult:
     gap : ndarray, m
         h - d + u_z (0 in contact, >= 0 outside; +inf outside a punch's footprint).
     contact : ndarray of bool
-        Pixels in contact (p > 0).
+        Pixels in contact (p > 0; under no load the pixels the indenter touches, :func:`solve`).
     area : float, m^2
         Contact area (pixel count times dx dy).
     force : float, N
@@ -193,8 +193,12 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
     E_star : float
         Effective modulus [Pa], > 0 (5.8), (5.26).
     depth, force : float
-        Give exactly one: the indentation depth d [m] (> 0) of the level h = 0 below the
-        undeformed surface, or the normal force F [N] (> 0).
+        Give exactly one: the indentation depth d [m] (>= 0) of the level h = 0 below the
+        undeformed surface, or the normal force F [N] (>= 0). No load -- F = 0, or a depth that
+        does not reach below the lowest height -- gives p = 0, u_z = 0, F = 0 exactly, with
+        the pixels the indenter touches (h = d; under F = 0, d = min(height)) as the contact:
+        the limit of a vanishing load (a punch's footprint, a tip's lowest pixels; none when
+        the depth stops short of the indenter).
     dy : float, optional
         Pixel size along y [m]; default dx.
     tol : float
@@ -229,16 +233,17 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
     hh = np.where(allowed, h, 0.0)
 
     if force is not None:
-        W = float(positive("force", force))
+        W = float(nonnegative("force", force))
+        if W == 0.0:
+            return _unloaded(h, allowed, float(h[allowed].min()), dx, dy, E_star, tol, op,
+                             stiffness)
         p = np.where(allowed, W / (dA * allowed.sum()), 0.0)
     else:
-        d = float(positive("depth", depth))
+        d = float(nonnegative("depth", depth))
         # start: the pressure of a flat punch of the overlap region, scaled by the overlap
         over = allowed & (h < d)
-        if not over.any():
-            raise ValueError(f"depth = {float(d)!r} is out of range; valid: depth > "
-                             f"min(height) = {float(h[allowed].min())!r} (the indenter must "
-                             "touch)")
+        if not over.any():  # the indenter does not press: no load
+            return _unloaded(h, allowed, d, dx, dy, E_star, tol, op, stiffness)
         p = np.where(over, (d - hh) / op.self_influence, 0.0)
     t = np.zeros_like(p)
     G_old, delta = 1.0, 0.0
@@ -283,6 +288,22 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
     return BEMResult(pressure=p, displacement=u, gap=gap, contact=S, area=float(S.sum() * dA),
                      force=float(p.sum() * dA), depth=depth_out, stiffness=k, iterations=iterations,
                      residual=res, dx=dx, dy=dy)
+
+
+def _unloaded(h, allowed, d, dx, dy, E_star, tol, op, stiffness) -> BEMResult:
+    """The exact solution under no load at depth d [m] (see :func:`solve`): no pressure, no
+    displacement; the contact is the pixels at h = d, its stiffness theirs as a flat punch
+    (0 with none)."""
+    touch = allowed & (h == d)
+    zero = np.zeros(h.shape)
+    k = None
+    if stiffness:
+        k = punch_stiffness(touch, dx, E_star, dy=dy, tol=tol, operator=op) if touch.any() \
+            else 0.0
+    return BEMResult(pressure=zero, displacement=zero.copy(),
+                     gap=np.where(allowed, h - d, np.inf), contact=touch,
+                     area=float(touch.sum() * dx * dy), force=0.0, depth=d, stiffness=k,
+                     iterations=0, residual=0.0, dx=dx, dy=dy)
 
 
 def punch_stiffness(mask, dx, E_star, *, dy=None, tol: float = 1e-10, max_iter: int = 5000,

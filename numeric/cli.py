@@ -124,7 +124,7 @@ def cmd_run(args) -> int:
         print(json.dumps(docs[0] if args.scene else docs, indent=2))
     else:
         for *_, results, doc in runs:
-            print(table(doc["title"], doc["model"], results))
+            print(table(doc["title"], doc["model"], results, doc["warnings"]))
             print()
     if args.out:
         _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"])

@@ -8,11 +8,28 @@ from :mod:`hertzmdr.derive.contact` and :mod:`hertzmdr.derive.powerlaw` (the pun
 
 from __future__ import annotations
 
+import numpy as np
+
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import nonnegative, positive, result
 
 __all__ = ["mean_pressure", "mean_pressure_disc", "mean_pressure_strip", "stiffness",
            "punch_force", "punch_depth_from_force"]
+
+
+def _unloaded(F, size, name: str, size_name: str):
+    """(F, size, empty) broadcast, ``empty`` where the contact has zero size: allowed only
+    where F = 0 too (an unloaded point of a sweep), refused under a force (a point load has no
+    mean pressure). Where empty, ``size`` is replaced by 1 so that the formula never divides
+    by 0; the caller sets 0 there."""
+    F, size = np.broadcast_arrays(nonnegative("F", F), nonnegative(size_name, size))
+    empty = size == 0
+    loaded = empty & (F > 0)
+    if loaded.any():
+        raise ValueError(f"{size_name} = 0 under F = {float(F[loaded].flat[0])!r} N: a contact "
+                         f"of zero {name} carries no force; valid: {size_name} > 0, or "
+                         f"{size_name} = 0 with F = 0 (no load)")
+    return F, np.where(empty, 1.0, size), empty
 
 
 def mean_pressure(F, A):
@@ -23,9 +40,11 @@ def mean_pressure(F, A):
     F : float or array_like
         Normal force [N], >= 0.
     A : float or array_like
-        Contact area [m^2], > 0.
+        Contact area [m^2], > 0; or 0 where F = 0 (no load: no contact, no pressure; the
+        result is 0 there).
     """
-    return result(gen.contact_mean_pressure(positive("A", A), nonnegative("F", F)))
+    F, A, empty = _unloaded(F, A, "area", "A")
+    return result(np.where(empty, 0.0, gen.contact_mean_pressure(A, F)))
 
 
 def mean_pressure_disc(F, a):
@@ -36,9 +55,12 @@ def mean_pressure_disc(F, a):
     F : float or array_like
         Normal force [N], >= 0.
     a : float or array_like
-        Contact radius [m], > 0.
+        Contact radius [m], > 0; or 0 where F = 0 (no load: no contact, no pressure; the
+        result is 0 there, although F/(pi a^2) of a cone tends to E* cot(theta)/2 as the load
+        goes to 0, a constant of the self-similar contact).
     """
-    return result(gen.disc_mean_pressure(nonnegative("F", F), positive("a", a)))
+    F, a, empty = _unloaded(F, a, "radius", "a")
+    return result(np.where(empty, 0.0, gen.disc_mean_pressure(F, a)))
 
 
 def mean_pressure_strip(F, a, L):
@@ -49,12 +71,13 @@ def mean_pressure_strip(F, a, L):
     F : float or array_like
         Normal force [N], >= 0.
     a : float or array_like
-        Half-width of the strip [m], > 0.
+        Half-width of the strip [m], > 0; or 0 where F = 0 (no load: the result is 0 there).
     L : float or array_like
         Length of the strip [m], > 0.
     """
-    return result(gen.strip_mean_pressure(nonnegative("F", F), positive("L", L),
-                                          positive("a", a)))
+    L = positive("L", L)
+    F, a, empty = _unloaded(F, a, "half-width", "a")
+    return result(np.where(empty, 0.0, gen.strip_mean_pressure(F, L, a)))
 
 
 def stiffness(a, E_star):

@@ -143,6 +143,12 @@ class Solution:
     _coarse: Rep = field(repr=False)
     _d_coarse: float = field(repr=False)
     _a_coarse: float = field(repr=False)
+
+    @property
+    def unloaded(self) -> bool:
+        """No load (depth 0, force 0): no contact, p = 0 and u_z = 0 everywhere, exactly."""
+        return self.force == 0.0 and self.contact_radius == 0.0
+
     def g(self, x, *, return_error=False):
         """MDR profile g(x) [m] (5.52) at |x| [m]; with ``return_error=True`` also a bound of
         its absolute error [m] (``Profile.g``)."""
@@ -158,6 +164,9 @@ class Solution:
         tests/test_mdr_bounds.py check it against 30-digit references, near kinks too.
         """
         r = nonnegative("r", r)
+        if self.unloaded:
+            zero = np.zeros(r.shape)
+            return (zero, zero.copy()) if return_error else zero
         flat = r.ravel()
         a, E = self.contact_radius, self.E_star
         conical = bool((flat == 0).any()) and operators.conical_tip(self._rep, self._coarse, a)
@@ -202,6 +211,9 @@ class Solution:
         contact radius, fewer Gauss points) over half a coarse sample spacing, plus
         ``rel_error`` times the depth (the error of d and a) and a rounding bound."""
         r = nonnegative("r", r)
+        if self.unloaded:
+            zero = np.zeros(r.shape)
+            return (zero, zero.copy()) if return_error else zero
         flat = r.ravel()
         u = operators.displacement(self._rep, flat, self.contact_radius, self.depth)
         if not return_error:
@@ -336,7 +348,10 @@ class Profile:
         Parameters
         ----------
         depth, force : float
-            Exactly one of them, > 0.
+            Exactly one of them, >= 0. At 0 (no load, the first point of a sweep) the solution
+            is exact: d = F = a = 0, rel_error 0, p = u_z = 0 everywhere (a sampled tip's flat
+            apex is not resolved as a contact either at small loads: its spline rises from
+            r = 0).
         E_star : float
             Effective modulus [Pa] (5.26), > 0.
         rtol : float, optional
@@ -354,9 +369,14 @@ class Profile:
         if (depth is None) == (force is None):
             raise ValueError("give exactly one of depth= and force=")
         if depth is not None:
-            depth = float(positive("depth", depth))
+            depth = float(nonnegative("depth", depth))
         else:
-            force = float(positive("force", force))
+            force = float(nonnegative("force", force))
+        if (depth if depth is not None else force) == 0.0:
+            coarse, fine = self._source.pair(0)
+            return Solution(depth=0.0, contact_radius=0.0, force=0.0, E_star=E_star,
+                            rel_error=0.0, rtol=rtol, met=True, why_not_met=None, _rep=fine,
+                            _coarse=coarse, _d_coarse=0.0, _a_coarse=0.0)
         level, best = 0, None
         while True:
             pair = self._source.pair(level)
@@ -378,10 +398,10 @@ class Profile:
 
     def force_depth_curve(self, depths, *, E_star: float,
                           rtol: float | None = None) -> ForceDepthCurve:
-        """F(d) [N] and a(d) [m] at each depth [m] of ``depths`` (monotone in d), each solved
-        as :meth:`solve` with the target ``rtol`` [1] (default ``DEFAULT_RTOL``)."""
+        """F(d) [N] and a(d) [m] at each depth [m] of ``depths`` (>= 0, monotone in d), each
+        solved as :meth:`solve` with the target ``rtol`` [1] (default ``DEFAULT_RTOL``)."""
         rtol = _check_rtol(rtol)
-        depths = positive("depths", depths).ravel()
+        depths = nonnegative("depths", depths).ravel()
         sols = [self.solve(depth=float(dd), E_star=E_star, rtol=rtol) for dd in depths]
         return ForceDepthCurve(depths, np.array([s.force for s in sols]),
                                np.array([s.contact_radius for s in sols]),

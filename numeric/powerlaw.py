@@ -279,7 +279,7 @@ def pressure(r, d, c_n, n, E_star):
     r : float or array_like
         Distance from the centre [m], >= 0.
     d : float or array_like
-        Depth [m], > 0.
+        Depth [m], >= 0 (at d = 0, no load: p = 0 everywhere, the punch's too).
     c_n : float or array_like
         Profile coefficient [m^(1-n)], > 0 (the punch radius [m] for n = inf).
     n : float or array_like
@@ -290,7 +290,7 @@ def pressure(r, d, c_n, n, E_star):
         Effective modulus [Pa], > 0.
     """
     r, d, c_n, n, E_star = np.broadcast_arrays(
-        nonnegative("r", r), positive("d", d), positive("c_n", c_n),
+        nonnegative("r", r), nonnegative("d", d), positive("c_n", c_n),
         positive("n", n, allow_inf=True), positive("E_star", E_star))
     out = np.zeros(r.shape)
     punch = np.isinf(n)

@@ -139,7 +139,8 @@ def test_polygon_punch_helper():
 @pytest.mark.parametrize("kw, message", [
     (dict(height=np.zeros(3), dx=1.0, E_star=1.0, depth=1.0), "height has shape"),
     (dict(height=np.zeros((4, 4)), dx=0.0, E_star=1.0, depth=1.0), "dx = 0.0 is out of range"),
-    (dict(height=np.ones((4, 4)), dx=1.0, E_star=1.0, depth=0.5), "depth = 0.5 is out of"),
+    (dict(height=np.ones((4, 4)), dx=1.0, E_star=1.0, depth=-0.5), "depth = -0.5 is out of"),
+    (dict(height=np.ones((4, 4)), dx=1.0, E_star=1.0, force=-1.0), "force = -1.0 is out of"),
     (dict(height=np.zeros((4, 4)), dx=1.0, E_star=1.0), "give exactly one"),
     (dict(height=np.full((4, 4), np.inf), dx=1.0, E_star=1.0, force=1.0), "no pixel can touch"),
 ])
@@ -346,8 +347,9 @@ def test_punch_stiffness_reports_its_residual_when_not_converged():
 
 
 def test_solve_messages():
-    """solve's refusals in full: -inf heights, no control or both, no pixel that can touch,
-    and a depth that does not reach below the lowest height (the bound itself refused)."""
+    """solve's refusals in full: -inf heights, no control or both, no pixel that can touch;
+    a depth that does not reach below the lowest height is no load (tests/test_zero_load.py),
+    a negative one is refused."""
     h = np.array([[1e-6, 2e-6], [3e-6, 4e-6]])
     for kw, msg in (
             (dict(height=np.where(h > 3e-6, -np.inf, h), depth=1e-6),
@@ -358,10 +360,9 @@ def test_solve_messages():
              "height is +inf everywhere: no pixel can touch")):
         with pytest.raises(ValueError, match="^" + re.escape(msg) + "$"):
             bem.solve(dx=1e-5, E_star=1e11, **kw)
-    with pytest.raises(ValueError, match=r"^depth = 1e-06 is out of range; valid: depth > "
-                                         r"min\(height\) = (np\.float64\()?1e-06\)? \(the "
-                                         r"indenter must touch\)$"):
-        bem.solve(h, 1e-5, 1e11, depth=1e-6)
+    with pytest.raises(ValueError, match=r"^depth = -1e-06 is out of range; valid: 0 <= depth "
+                                         r"< inf$"):
+        bem.solve(h, 1e-5, 1e11, depth=-1e-6)
 
 
 def test_solve_result_fields_and_non_convergence():

@@ -37,7 +37,9 @@ def unit_of(unit: str, key: str) -> str:
     return ""
 
 
-def table(title: str, model: dict, results) -> str:
+def table(title: str, model: dict, results, warnings=()) -> str:
+    """The table of a run: the model, one row per effect, then a line per flag and warning
+    (``warnings``: the records of the document's ``warnings``)."""
     lines = [title, "=" * len(title)]
     desc = model.get("description", model.get("kind", ""))
     lines.append(f"model: {desc}; E* = {engineering(model['effective_modulus'], 'Pa')}; "
@@ -58,4 +60,5 @@ def table(title: str, model: dict, results) -> str:
     if missed:
         lines.append(f"(!) rel. error above rtol = {model['rtol']:g}: {', '.join(missed)} (the "
                      "method cannot reach it here; the method column says why)")
+    lines += [f"warning: {w['message']}" for w in warnings]
     return "\n".join(lines)

@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from hertzmdr.numeric.scene.assumptions import check as check_assumptions
 from hertzmdr.numeric.scene.effects import EFFECTS
 from hertzmdr.numeric.scene.kinds import Contact
 from hertzmdr.numeric.scene.model import build
@@ -35,6 +36,8 @@ class Run:
     contact: Contact
     evaluated: list[str] = field(default_factory=list)  # nodes, in the order they ran
     model_seconds: float = 0.0
+    #: the chapter's assumptions the scene stretches (assumptions.check), after the effects
+    warnings: list[dict] = field(default_factory=list)
     _nodes: dict = field(default_factory=dict)
 
     def node(self, name: str):
@@ -50,7 +53,8 @@ class Run:
         try:
             args = [self.node(n) for n in eff.needs]
             v = getattr(self.contact, "effect_" + name)(*args)
-        except ValueError as exc:  # numeric/'s validators name the input and its valid range
+        except (ValueError, OverflowError) as exc:  # numeric/'s validators name the input
+            # and its valid range; a result beyond float64 names its inputs (OverflowError)
             raise SceneError(self.spec.source, "effects", f"{name!r} at this load: {exc}") \
                 from exc
         seconds = time.perf_counter() - t0
@@ -80,6 +84,7 @@ def run(spec: SceneSpec) -> tuple[Run, dict[str, Result]]:
     r.evaluated.append("model")
     check_applicable(spec, contact)
     results = {name: r.effect(name) for name in spec.effects}
+    r.warnings = check_assumptions(contact.ratios(r._nodes))
     r.model_seconds = time.perf_counter() - t0
     return r, results
 
@@ -108,4 +113,5 @@ def document(run_: Run, results: dict[str, Result]) -> dict:
                            "method": res.method, "rel_error": res.rel_error,
                            "met_rtol": res.met_rtol, "seconds": res.seconds}
                     for name, res in results.items()},
+        "warnings": run_.warnings,
     }

@@ -53,6 +53,16 @@ class Axisymmetric(StressEffects, Contact):
     def extent(self, d):
         return self.a_at(d)
 
+    def ratios(self, nodes):
+        """d/a at the largest load (a profile with no one radius or angle); none where no load
+        makes a contact (a sweep from 0 to 0 cannot be given)."""
+        st = nodes.get("state")
+        if st is None:
+            return {}
+        d = self.last(st)
+        a = self.a_at(d)
+        return {"d/a": d / a} if a > 0 else {}
+
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)
         if load.kind == "depth":
@@ -136,6 +146,10 @@ class ClosedForm:
         tip, a at a punch's edge, b at a worn tip's kink), where the stresses are too.
     kink : float or None
         A radius where the pressure is log-infinite (kept off the profile's grid).
+    radius, slope : float or None
+        The profile's radius of curvature R [m] at its tip, or its one surface gradient (a
+        cone's tan(theta)): the contact then reports a/R and d/R, or tan(theta), instead of d/a
+        (:mod:`..assumptions`).
     off_axis : bool
         Whether a pressure profile starts at 1e-3 a (a pressure singular at the axis).
     methods : dict
@@ -157,6 +171,8 @@ class ClosedForm:
     no_max_pressure: str | None = None
     singular_at: Callable | None = None
     kink: float | None = None
+    radius: float | None = None
+    slope: float | None = None
     off_axis: bool = True
     methods: dict[str, str] = field(default_factory=dict)
     contact: type | None = None
@@ -176,6 +192,17 @@ class ClosedFormContact(Axisymmetric):
 
     def info(self):
         return {**super().info(), **self.form.params}
+
+    def ratios(self, nodes):
+        if self.form.slope is not None:
+            return {"tan(theta)": self.form.slope}
+        if self.form.radius is None:
+            return super().ratios(nodes)
+        st = nodes.get("state")
+        if st is None:
+            return {}
+        d = self.last(st)
+        return {"a/R": self.a_at(d) / self.form.radius, "d/R": d / self.form.radius}
 
     def has(self, effect):
         if effect == "max_pressure" and self.form.no_max_pressure:
@@ -308,6 +335,14 @@ class NumericalMDR(Axisymmetric):
         err = max(s.rel_error for s in sols)
         return MDRState(np.array([s.depth for s in sols]), np.array([s.force for s in sols]),
                         err, self._label(sols), sols)
+
+    def ratios(self, nodes):
+        """d/a of the solution at the largest load (no new solve)."""
+        st = nodes.get("state")
+        if st is None:
+            return {}
+        s = max(st.solutions, key=lambda sol: sol.depth)
+        return {"d/a": s.depth / s.contact_radius} if s.contact_radius > 0 else {}
 
     def _label(self, sols) -> str:
         """The state's method: the numerical MDR's reason when a solve did not meet rtol (a

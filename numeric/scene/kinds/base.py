@@ -108,6 +108,13 @@ class Contact:
         return {"kind": self.kind, "description": self.label, "effective_modulus": self.E_star,
                 "rtol": self.rtol}
 
+    def ratios(self, nodes: dict) -> dict[str, float]:
+        """The ratios that measure how far the scene stretches the chapter's assumptions (keys
+        of :data:`~..assumptions.ASSUMPTIONS`), at the largest load, from the nodes the run
+        evaluated (``state``, ``impact``; a ratio of a node not evaluated is not measured).
+        A kind measures what it already computes; this base measures nothing."""
+        return {}
+
     def has(self, effect: str) -> bool:
         if not all(callable(getattr(self, prim, None)) for prim in self.PRIMITIVES.get(effect, ())):
             return False

@@ -45,6 +45,17 @@ class EllipticContact(Contact):
                 "gaussian_radius": float(bodies.gaussian_radius(self.R1, self.R2)),
                 "elliptic_model": self.model}
 
+    def ratios(self, nodes):
+        """The larger of a/R1 and b/R2 (each semi-axis over the radius along it), and d over the
+        smaller principal radius, at the largest load."""
+        st = nodes.get("state")
+        if st is None:
+            return {}
+        c = st.contact
+        a, b = float(np.max(c.a)), float(np.max(c.b))
+        return {"a/R": max(a / self.R1, b / self.R2),
+                "d/R": float(np.max(st.depth)) / min(self.R1, self.R2)}
+
     def _solve(self, **load):
         return ellipse.solve(self.R1, self.R2, self.E_star, model=self.model, **load)
 

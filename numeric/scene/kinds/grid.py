@@ -16,6 +16,16 @@ from hertzmdr.numeric.scene.accuracy import BEM_RANGE
 from hertzmdr.numeric.scene.kinds.base import Contact, Setup, State, Value
 
 
+def relative_difference(got, ref) -> float:
+    """The largest |got/ref - 1| over the load points, 0 where both are 0 (a point with no
+    load: the two resolutions agree exactly), inf where only ref is 0."""
+    got, ref = np.broadcast_arrays(np.asarray(got, float), np.asarray(ref, float))
+    same = got == ref
+    with np.errstate(divide="ignore"):
+        diff = np.where(same, 0.0, np.abs(got - ref) / np.where(same, 1.0, np.abs(ref)))
+    return float(np.max(diff))
+
+
 @dataclass
 class GridState(State):
     """The BEM's state: the solutions at the scene's grid and at half its resolution."""
@@ -65,7 +75,7 @@ class GridContact(Contact):
         force = np.array([s.force for s in fine])
         ref = np.array([(c.force if load.kind == "depth" else c.depth) for c in coarse])
         got = force if load.kind == "depth" else depth
-        err = float(np.max(np.abs(got / ref - 1)))
+        err = relative_difference(got, ref)
         return GridState(depth, force, err, f"BEM on {self.height.shape[0]}x"
                          f"{self.height.shape[1]} pixels (rel_error: against half resolution)",
                          fine, coarse)
@@ -73,7 +83,7 @@ class GridContact(Contact):
     def _both(self, st, fn, method):
         vals = np.array([fn(s) for s in st.fine])
         ref = np.array([fn(s) for s in st.coarse])
-        return Value(vals, method, float(np.max(np.abs(vals / ref - 1))))
+        return Value(vals, method, relative_difference(vals, ref))
 
     def effect_contact_area(self, st):
         """The pixel count's area; its error is the larger of the change from half resolution

@@ -38,6 +38,16 @@ class HertzContact(Axisymmetric):
     def info(self):
         return {**super().info(), "effective_radius": self.R, "principal_radii": self.principal}
 
+    def ratios(self, nodes):
+        """a/R and d/R at the largest load, or at an impact's largest compression."""
+        if "state" in nodes:
+            d = self.last(nodes["state"])
+        elif "impact" in nodes:
+            d = nodes["impact"]["closed"]["depth"]
+        else:
+            return {}
+        return {"a/R": self.a_at(d) / self.R, "d/R": d / self.R}
+
     def rtol_ranges(self, effects):
         out = [(self.state_method, self.state_range)]
         out += self.stress_ranges(effects, closed=True)

@@ -28,6 +28,15 @@ class LineContact(Contact):
     def info(self):
         return {**super().info(), "effective_radius": self.R, "length": self.L}
 
+    def ratios(self, nodes):
+        """a/R, d/R and a/L at the largest load (a the half-width (5.35))."""
+        st = nodes.get("state")
+        if st is None:
+            return {}
+        d = self.last(st)
+        a = self.extent(d)
+        return {"a/R": a / self.R, "d/R": d / self.R, "a/L": a / self.L}
+
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)
         if load.kind == "depth":

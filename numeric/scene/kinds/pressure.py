@@ -33,6 +33,11 @@ class PressureLoad(Contact):
         return np.asarray(pressures.surface_displacement(r, self.distribution, self.p0, self.a,
                                                          self.E_star), float)
 
+    def ratios(self, nodes):
+        """d/a: the displacement of the centre over the disc's radius."""
+        st = nodes.get("state")
+        return {} if st is None else {"d/a": self.last(st) / self.a}
+
     def state(self, load) -> State:
         d = np.atleast_1d(self._u(0.0))
         F = np.atleast_1d(pressures.force(self.distribution, self.p0, self.a))

@@ -34,4 +34,4 @@ class Cone(Shape):
             surface_displacement=lambda r, d: powerlaw.surface_displacement(r, d, c, 1.0),
             g_profile=lambda x: powerlaw.g_profile(x, c, 1.0),
             no_max_pressure="the cone's pressure is log-singular at the tip (5.39)",
-            singular_at=lambda a: 0.0)
+            singular_at=lambda a: 0.0, slope=c)

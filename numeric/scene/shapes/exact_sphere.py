@@ -21,6 +21,7 @@ class ExactSphere(Shape):
         return ClosedForm(
             kind="exact_sphere", label="exact sphere (spherical cap, Sneddon) by the MDR",
             method="MDR of the spherical cap (Sneddon)", params={"radius": R}, off_axis=False,
+            radius=R,
             contact_radius=lambda d: sphere.contact_radius(d, R),
             force=lambda d, E: sphere.force(d, R, E),
             depth_from_force=lambda F, E: sphere.depth_from_force(F, R, E),

@@ -31,5 +31,5 @@ class FlattenedParabola(Shape):
             no_max_pressure="the worn parabola's pressure is log-infinite at the edge of the "
             "flat r = b (where the slope of the profile jumps): it has no finite maximum; ask "
             "for 'pressure_profile' or the stresses",
-            singular_at=lambda a: b, kink=b, off_axis=False,
+            singular_at=lambda a: b, kink=b, off_axis=False, radius=R,
             methods={"pressure_profile": "(5.59) in incomplete elliptic integrals (Problem 8)"})
