@@ -37,6 +37,7 @@ minimum (the global minimum of F(a), resp. d(a), below the loaded state).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cache
 
 import numpy as np
 from scipy.optimize import brentq
@@ -49,7 +50,7 @@ from hertzmdr.numeric import sphere as _sphere
 from hertzmdr.numeric import worn as _worn
 from hertzmdr.numeric._validate import as_float, between, nonnegative, positive
 
-__all__ = ["Shape", "Paraboloid", "Sphere", "Cone", "PowerLaw", "FlatPunch", "Worn",
+__all__ = ["Shape", "Paraboloid", "Sphere", "Cone", "PowerLaw", "FlatPunch", "Worn", "Sampled",
            "AdhesiveContact", "PullOff", "Cycle", "Jump", "CONTROLS", "critical_elongation",
            "tabor_parameter", "TABOR_JKR"]
 
@@ -64,6 +65,13 @@ _EPS = np.finfo(float).eps
 _SCAN = 400
 #: Gauss-Legendre nodes per branch of the hysteresis integral (and twice that for its error)
 _GL_NODES = 40
+
+
+@cache
+def _gauss_legendre(m):
+    """Gauss-Legendre nodes and weights on [0, 1] (computed once per order)."""
+    u, w = np.polynomial.legendre.leggauss(m)
+    return (u + 1) / 2, w / 2
 
 
 def critical_elongation(a, E_star, dgamma):
@@ -140,6 +148,10 @@ class Shape:
     def scale(self, E_star, dgamma) -> float:
         """A length near the pull-off radius, where the scan for extrema is centred [m]."""
         raise NotImplementedError
+
+    def companion(self):
+        """The same profile at a coarser resolution, for an error estimate (None: exact)."""
+        return None
 
     # closed forms, where derived: (radius, force, depth) at pull-off, the zero-load radius
     def closed_pull_off(self, control, E_star, dgamma):
@@ -257,14 +269,12 @@ class PowerLaw(Shape):
 
     c_n: float
     n: float
+    kappa: float = field(init=False, repr=False)  # kappa_n of Problem 7(d), computed once
 
     def __post_init__(self):
         object.__setattr__(self, "c_n", float(positive("c_n", self.c_n)))
         object.__setattr__(self, "n", float(between("n", self.n, 0.5, np.inf)))
-
-    @property
-    def kappa(self):
-        return float(_powerlaw.kappa(self.n))
+        object.__setattr__(self, "kappa", float(_powerlaw.kappa(self.n)))
 
     def g(self, a):
         return _powerlaw.g_profile(a, self.c_n, self.n)
@@ -409,6 +419,61 @@ class FlatPunch(Shape):
         return 0.0 * np.asarray(r, dtype=float)
 
 
+@dataclass(frozen=True, eq=False)
+class Sampled(Shape):
+    """Any profile of :class:`hertzmdr.numeric.mdr.Profile` (samples or a callable), by the
+    numerical MDR: g(a), g'(a) and the integral of g by its quadrature of the profile's spline.
+
+    ``coarse=True`` is the same profile on its coarse representation (every other sample, or
+    half the grid): :class:`AdhesiveContact` solves on both and reports their difference as
+    the error estimate of a pull-off (as :mod:`hertzmdr.numeric.mdr` does for a solve). The
+    pressure and the displacement of a sampled adhesive contact are not computed here.
+    """
+
+    profile: object
+    coarse: bool = False
+
+    def __post_init__(self):
+        from hertzmdr.numeric import mdr
+
+        if not isinstance(self.profile, mdr.Profile):
+            raise ValueError(f"profile = {self.profile!r} is not a hertzmdr.numeric.mdr.Profile")
+        object.__setattr__(self, "kinks", tuple(float(b) for b in self._rep().edges[1:-1]))
+
+    def _rep(self):
+        coarse, fine = self.profile._source.pair(0)
+        return coarse if self.coarse else fine
+
+    @property
+    def a_limit(self):
+        return self.profile.r_max
+
+    def companion(self):
+        return None if self.coarse else Sampled(self.profile, coarse=True)
+
+    def g(self, a):
+        from hertzmdr.numeric._mdr import quadrature
+
+        a = np.asarray(a, float)
+        return np.reshape(quadrature.g(self._rep(), np.atleast_1d(a)), a.shape)  # (5.52)
+
+    def g_slope(self, a):
+        from hertzmdr.numeric._mdr import quadrature
+
+        a = np.asarray(a, float)
+        return np.reshape(quadrature.gprime(self._rep(), np.atleast_1d(a)), a.shape)
+
+    def force0(self, a, E_star):
+        from hertzmdr.numeric._mdr import quadrature
+
+        a = np.asarray(a, float)
+        G = np.reshape(quadrature.G(self._rep(), np.atleast_1d(a)), a.shape)
+        return gen.mdr_force(E_star, a, self.g(a), G)  # (5.57) with d = g(a)
+
+    def scale(self, E_star, dgamma):
+        return self.profile.r_max / 100
+
+
 # ------------------------------------------------------------------------------- results
 @dataclass(frozen=True)
 class PullOff:
@@ -503,6 +568,7 @@ class AdhesiveContact:
         self.shape = shape
         self.E_star = float(positive("E_star", E_star))
         self.dgamma = float(nonnegative("dgamma", dgamma))
+        self._pull_offs: dict[str, PullOff] = {}  # by control, from the far default start
 
     def __repr__(self):
         return f"AdhesiveContact({self.shape!r}, E_star={self.E_star!r}, dgamma={self.dgamma!r})"
@@ -553,11 +619,15 @@ class AdhesiveContact:
         return self.depth(a) if control == "depth" else self.force(a)
 
     # ---------------------------------------------------------------- extrema and roots
-    def _extrema(self, control, a_hi):
+    def _extrema(self, control, a_hi, *, closed=True):
         """Radii in (0, a_hi] where the slope under ``control`` changes sign, with the type
         ("min" where it goes from - to + with growing a, else "max"), each refined by Brent's
         method; kinks of the profile are candidates too (a corner of F or d)."""
         sh = self.shape
+        known = sh.closed_pull_off(control, self.E_star, self.dgamma) if closed else None
+        if known is not None and not self._punch:
+            # A a^(n+1) - B a^(3/2) (and A a^n - B a^(1/2)), n > 1/2: one minimum, derived
+            return [(known[0], "min")] if known[0] < a_hi else []
         lo = min(sh.scale(self.E_star, self.dgamma), a_hi) * 1e-6
         grid = np.geomspace(lo, a_hi, _SCAN)
         grid = np.unique(np.concatenate([grid, [k for k in sh.kinks if k < a_hi]]))
@@ -611,6 +681,14 @@ class AdhesiveContact:
         pull-off, 100 times the profile's pull-off scale). Delta gamma = 0 gives F = d = a = 0.
         """
         control = _control(control)
+        if a_from is None and control in self._pull_offs:
+            return self._pull_offs[control]
+        out = self._pull_off(control, a_from)
+        if a_from is None:
+            self._pull_offs[control] = out
+        return out
+
+    def _pull_off(self, control, a_from):
         if self.dgamma == 0:
             return PullOff(0.0, 0.0, 0.0, 0.0, "no adhesion")
         closed = self.shape.closed_pull_off(control, self.E_star, self.dgamma)
@@ -621,7 +699,7 @@ class AdhesiveContact:
             a_c, F_c, d_c = closed
             return PullOff(F_c, d_c, a_c, 8 * _EPS, "closed form")
         a_hi = a_from if a_from is not None else self._far()
-        mins = [a for a, kind in self._extrema(control, a_hi) if kind == "min"]
+        mins = [a for a, kind in self._extrema(control, a_hi, closed=False) if kind == "min"]
         if not mins:
             raise ValueError(f"no pull-off under {control} control below a = {a_hi!r} m")
         vals = [float(self._value(control, a)) for a in mins]
@@ -629,8 +707,15 @@ class AdhesiveContact:
         F_c, d_c = float(self.force(a_c)), float(self.depth(a_c))
         spread = max(abs(float(self.force(a_c * (1 + s * 4 * _EPS))) - F_c) for s in (-1, 1))
         which = "dF/da" if control == "force" else "dd/da"
-        return PullOff(F_c, d_c, a_c, spread / abs(F_c) + 8 * _EPS,
-                       f"bracketed root of {which} ({len(mins)} minima)")
+        err = spread / abs(F_c) + 8 * _EPS
+        method = f"bracketed root of {which} ({len(mins)} minima)"
+        twin = self.shape.companion()
+        if twin is not None:  # the numerical MDR: the coarse-vs-fine difference of the result
+            other = AdhesiveContact(twin, self.E_star, self.dgamma)._pull_off(control, a_from)
+            err += max(abs(other.force - F_c) / abs(F_c),
+                       abs(other.contact_radius - a_c) / a_c)
+            method += ", numerical MDR (error: coarse vs fine samples)"
+        return PullOff(F_c, d_c, a_c, err, method)
 
     def _far(self):
         lim = self.shape.a_limit
@@ -846,8 +931,7 @@ class AdhesiveContact:
                 continue
             vals = []
             for m in (_GL_NODES, 2 * _GL_NODES):
-                u, w = np.polynomial.legendre.leggauss(m)
-                u, w = (u + 1) / 2, w / 2
+                u, w = _gauss_legendre(m)
                 s = 3 * u**2 - 2 * u**3  # smoothstep: kills 1/sqrt endpoint singularities
                 x = a + (b - a) * s
                 jac = (b - a) * 6 * u * (1 - u)

@@ -408,3 +408,37 @@ def test_non_adhesive_helpers_agree():
     assert ad.Paraboloid(R).force0(a, E) == pytest.approx(float(hertz.force(a**2 / R, R, E)),
                                                           rel=1e-15)
     assert ad.Sphere(R).g(a) == pytest.approx(float(sphere.depth(a, R)), rel=1e-15)
+
+
+def test_sampled_profiles_converge_to_the_closed_forms():
+    """The numerical MDR with adhesion (mdr.Profile samples, every other sample for the
+    error estimate) against the closed-form pull-off: the estimate bounds the true error,
+    and the error falls with the sample spacing h like h^4 or faster for r^2.5 (the quintic
+    spline's g' error is O(h^4); measured 22-28 per halving, docs/adhesion.md)."""
+    from hertzmdr.numeric import mdr
+
+    E, dg = 3e6, 0.04
+    shape = ad.PowerLaw(1e9, 2.5)
+    ref = ad.AdhesiveContact(shape, E, dg)
+    errs = {c: [] for c in ad.CONTROLS}
+    for N in (100, 200, 400):
+        r = np.linspace(0.0, 3e-6, N + 1)
+        c = ad.AdhesiveContact(ad.Sampled(mdr.Profile.from_samples(r, 1e9 * r**2.5)), E, dg)
+        for control in ad.CONTROLS:
+            po, pr = c.pull_off(control), ref.pull_off(control)
+            err = max(abs(po.force / pr.force - 1), abs(po.contact_radius / pr.contact_radius
+                                                        - 1))
+            assert err <= po.rel_error, (N, control, err, po.rel_error)
+            assert po.method.endswith("coarse vs fine samples)")
+            errs[control].append(err)
+    for control, e in errs.items():
+        orders = np.log2(np.array(e[:-1]) / np.array(e[1:]))
+        assert np.all(orders > 3.5), (control, e, orders)
+    # the exact sphere sampled on 200 points: its pull-off to 1e-10
+    R = 1e-6
+    r = np.linspace(0.0, 0.9 * R, 201)
+    c = ad.AdhesiveContact(ad.Sampled(mdr.Profile.from_samples(r, sphere.profile(r, R))), E, dg)
+    ref = ad.AdhesiveContact(ad.Sphere(R), E, dg)
+    for control in ad.CONTROLS:
+        po = c.pull_off(control)
+        assert abs(po.force / ref.pull_off(control).force - 1) <= po.rel_error < 1e-9
