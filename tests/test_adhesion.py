@@ -442,3 +442,29 @@ def test_sampled_profiles_converge_to_the_closed_forms():
     for control in ad.CONTROLS:
         po = c.pull_off(control)
         assert abs(po.force / ref.pull_off(control).force - 1) <= po.rel_error < 1e-9
+
+
+def test_near_the_vertical_tangent():
+    """Under depth control the pull-off is where dd/da = 0: F(d) has a vertical tangent and
+    a(d) a square-root branch point. Just above it, the stable root of d(a) = d is found to
+    the sqrt(eps) that a minimum allows (rounding of d(a), ~1e-16 |d|, moves a root next to
+    a minimum by sqrt(2e-16 |d| / d'')), and the stiffness dF/dd tends to -infinity."""
+    E, R, dg = 2e6 / 0.75, 20e-9, 0.05
+    c = ad.AdhesiveContact(ad.Paraboloid(R), E, dg)
+    po = c.pull_off("depth")
+    with mp.workdps(DPS):
+        Em, Rm, gm = mp.mpf(E), mp.mpf(R), mp.mpf(dg)
+        a_dc = mp.mpf(po.contact_radius)
+        for rel in (1e-2, 1e-6, 1e-10):
+            d = po.depth * (1 - rel)  # d_dc < 0: slightly above it
+
+            def depth(a, d=d):
+                return a**2 / Rm - mp.sqrt(2 * mp.pi * a * gm / Em) - mp.mpf(d)
+
+            a_ref = mp.findroot(depth, (a_dc * (1 + mp.mpf(10) ** -20), 2 * a_dc),
+                                solver="anderson")
+            assert_close(c.contact_radius(depth=d), a_ref, 2e-7, f"a(d) at {rel}")
+            a = float(a_ref)
+            k = (gen.adhesion_force_slope(E, a, dg, 2 * a / R)
+                 / gen.adhesion_depth_slope(E, a, dg, 2 * a / R))
+            assert k < 0 and abs(k) > 1e-3 * E * R / np.sqrt(rel)  # like -1/sqrt(d - d_dc)

@@ -244,7 +244,9 @@ class AdhesiveKind(Contact):
         if isinstance(self.shape, ad.FlatPunch):
             return self.inner.effect_mdr_profile(st)
         a = self._a_last(st)
-        x = np.linspace(0.0, 1.2 * a, FIELD_POINTS)
+        top = 1.2 * a if np.isinf(self.shape.a_limit) else min(  # the exact sphere: x < R
+            1.2 * a, self.shape.a_limit * (1 - 1e-9))
+        x = np.linspace(0.0, top, FIELD_POINTS)
         return Value({"x": x, "g": np.asarray(self.shape.g(x), float)}, "(5.52)", st.rel_error)
 
     def effect_effective_radius(self):
