@@ -877,8 +877,8 @@ class AdhesiveContact:
             jumps.append(Jump("jump", self._state(m), self._state(nxt)))
             a = nxt
         if a_out is not None:
-            d_out, F_out, _ = self._state(a_out)
-            jumps.append(Jump("pull-off", self._state(a_out), (d_out, 0.0, 0.0)))
+            before = self._state(a_out)
+            jumps.append(Jump("pull-off", before, (before[0], 0.0, 0.0)))
         d_sep = jumps[-1].after[0] if a_out is not None else 0.0
         d_top = float(self.depth(a_top))
         if start is None:

@@ -20,17 +20,16 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion as ad
 from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
 from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 
 #: the effects only an adhesive contact has
 ADHESIVE_EFFECTS = ("pull_off_force", "pull_off_depth", "zero_load_contact_radius",
                     "adhesive_force_depth_curve")
 #: effects of the non-adhesive kinds that an adhesive contact does not compute, and why
+#: the adhesive pressure is unbounded at the edge (a tension like 1/sqrt(a - r), (5.59))
+UNBOUNDED = "the adhesive pressure is unbounded (a tension) at the edge of the contact"
 WHY_NOT = {
-    **dict.fromkeys(("max_pressure", "axis_stresses", "max_shear", "von_mises_field",
-                     "max_von_mises"),
-                    "the adhesive pressure is unbounded at the edge of the contact (a tension "
-                    "like 1/sqrt(a - r), (5.59)): its extreme and the stresses it makes are not "
-                    "computed; ask for 'pressure_profile'"),
+    "max_pressure": f"{UNBOUNDED}: its extreme is not computed; ask for 'pressure_profile'",
     "elastic_energy": "the elastic energy of an adhesive contact is not computed (the "
                       "'adhesive_force_depth_curve' reports the work lost per cycle)",
 }
@@ -38,7 +37,8 @@ WHY_NOT = {
 
 #: effects of a sampled profile's adhesive contact that are not computed
 SAMPLED_NOT = dict.fromkeys(
-    ("pressure_profile", "surface_displacement"),
+    ("pressure_profile", "surface_displacement", "axis_stresses", "max_shear",
+     "von_mises_field", "max_von_mises"),
     "the adhesive pressure and displacement of a sampled profile are not computed (its "
     "force, depth, contact radius, pull-off and cycle are, by the numerical MDR)")
 
@@ -83,8 +83,13 @@ def adhesive(setup: Setup, contact: Contact) -> AdhesiveKind:
     return AdhesiveKind(setup.materials, setup.interface, setup.rtol, contact, shape)
 
 
-class AdhesiveKind(Contact):
-    """An axisymmetric contact with adhesion (numeric/adhesion.py's AdhesiveContact)."""
+class AdhesiveKind(StressEffects, Contact):
+    """An axisymmetric contact with adhesion (numeric/adhesion.py's AdhesiveContact).
+
+    Its stresses are the superposition of the point-force field under the adhesive pressure
+    (kinds/stresses.py); the pressure is unbounded at the edge, so are the largest stresses
+    (+inf for nu < 0.5; refused for nu = 0.5, where the surface stress there is hydrostatic to
+    leading order, as for the flat punch)."""
 
     why_not = WHY_NOT
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
@@ -255,7 +260,25 @@ class AdhesiveKind(Contact):
             raise ValueError(f"{self.label} has no radius of curvature")
         return Value(R, "the radius of curvature of the tip", CLOSED_FORM_RTOL)
 
+    def stress_solver(self, st):
+        from hertzmdr.numeric.scene.kinds.stresses import SuperposedStresses
+
+        d = self.last(st)
+        a = self.extent(d)
+        solver = SuperposedStresses(lambda r, d=d: np.asarray(self.p(r, d), float), a,
+                                    self.materials.stressed.nu)
+        if self.interface.work_of_adhesion > 0:
+            solver.unbounded = (UNBOUNDED, a)
+        return solver
+
     def has(self, effect):
+        if effect in ("max_shear", "max_von_mises") and self.materials.stressed.nu >= 0.5 \
+                and self.interface.work_of_adhesion > 0:
+            self.why_not = {**self.why_not, effect: (
+                f"{UNBOUNDED}; with nu = 0.5 the stress there is hydrostatic to leading order "
+                "and the maximum is not computed (ask for 'axis_stresses' or "
+                "'von_mises_field')")}
+            return False
         if isinstance(self.shape, ad.Sampled) and effect in SAMPLED_NOT:
             self.why_not = {**self.why_not, effect: SAMPLED_NOT[effect]}
             return False
