@@ -59,6 +59,12 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "g_integral": ("m^2", "integral of the MDR profile g(x) over [0, a] (5.57)"),
     "lam": ("1", "atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), "
             "d = R lam tanh(lam)"),
+    # adhesion family (derive/adhesion.py)
+    "dgamma": ("J/m^2", "work of adhesion Delta gamma (energy per unit area to separate)"),
+    "g_a": ("m", "MDR profile g(a) at the contact radius (5.55)"),
+    "g_slope": ("1", "slope g'(a) of the MDR profile at the contact radius"),
+    "F_load": ("N", "normal force, negative when adhesion pulls (adhesive contact)"),
+    "z0": ("m", "range of the adhesive forces (equilibrium distance) of the Tabor parameter"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

@@ -324,7 +324,45 @@ def stress_superposition() -> Quantity:
                     "route every non-Hertz pressure takes).", truth, ways)
 
 
+def adhesive_pull_off() -> Quantity:
+    import numpy as np
+
+    from hertzmdr.numeric import _generated_mp as gen_mp
+
+    E, dg, c, n = 3e6, 0.04, 1e9, 2.5  # a soft sample; n = 2.5: no spline is exact
+
+    def truth():
+        import mpmath as mp
+
+        return gen_mp.adhesion_powerlaw_pull_off_force_fc(
+            mp.mpf(E), mp.mpf(dg), mp.mpf(c), gen_mp.powerlaw_kappa(mp.mpf(n)), mp.mpf(n))
+
+    def ways():
+        from hertzmdr.numeric import adhesion, mdr
+
+        shape = adhesion.PowerLaw(c, n)
+        a_c = adhesion.AdhesiveContact(shape, E, dg).pull_off("force").contact_radius
+        out = [Way("closed form (derive/adhesion.py)", "float64",
+                   lambda: adhesion.AdhesiveContact(shape, E, dg).pull_off("force").force),
+               Way("bracketed root of the derived dF/da", "float64",
+                   lambda: adhesion.AdhesiveContact(shape, E, dg).pull_off(
+                       "force", a_from=100 * a_c).force)]
+        for N in (50, 100, 200, 400):
+            r = np.linspace(0, 10 * a_c, N + 1)
+            prof = mdr.Profile.from_samples(r, c * r**n)
+            out.append(Way("numerical MDR of samples, with adhesion", f"{N} samples",
+                           lambda prof=prof: adhesion.AdhesiveContact(
+                               adhesion.Sampled(prof), E, dg).pull_off("force").force))
+        return out
+
+    return Quantity("adhesive pull-off force of f = c r^2.5 (force control)",
+                    "The pull-off force of an adhesive contact (numeric/adhesion.py): the "
+                    "derived closed form, the bracketed root of the derived dF/da, and the "
+                    "numerical MDR of the profile sampled on [0, 10 a_c] (an AFM tip given as "
+                    "samples).", truth, ways)
+
+
 def all_quantities() -> list[Quantity]:
     return [hertz_force(), hertz_far_displacement(), kappa_large_n(), worn_small_depth(),
             powerlaw_pressure_large_n(), numerical_mdr_force(), impact_time(),
-            stress_superposition()]
+            stress_superposition(), adhesive_pull_off()]

@@ -10,6 +10,35 @@ hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
 import numpy
 
 __all__ = [
+    'adhesion_cone_depth',
+    'adhesion_cone_force_from_radius',
+    'adhesion_cone_pull_off_depth_dc',
+    'adhesion_cone_pull_off_depth_fc',
+    'adhesion_cone_pull_off_force_dc',
+    'adhesion_cone_pull_off_force_fc',
+    'adhesion_cone_pull_off_radius_dc',
+    'adhesion_cone_pull_off_radius_fc',
+    'adhesion_cone_zero_load_radius',
+    'adhesion_critical_elongation',
+    'adhesion_depth',
+    'adhesion_depth_slope',
+    'adhesion_displacement_outside_edge',
+    'adhesion_energy_release_rate',
+    'adhesion_force_slope',
+    'adhesion_powerlaw_depth',
+    'adhesion_powerlaw_force_from_radius',
+    'adhesion_powerlaw_pull_off_depth_dc',
+    'adhesion_powerlaw_pull_off_depth_fc',
+    'adhesion_powerlaw_pull_off_force_dc',
+    'adhesion_powerlaw_pull_off_force_fc',
+    'adhesion_powerlaw_pull_off_radius_dc',
+    'adhesion_powerlaw_pull_off_radius_fc',
+    'adhesion_powerlaw_zero_load_radius',
+    'adhesion_pressure_edge',
+    'adhesion_punch_pull_off_force',
+    'adhesion_sphere_g_slope',
+    'adhesion_tabor_parameter',
+    'adhesion_worn_g_slope',
     'bodies_crossed_cylinders_curvature_1',
     'bodies_crossed_cylinders_curvature_2',
     'bodies_crossed_cylinders_gaussian_radius',
@@ -93,6 +122,17 @@ __all__ = [
     'impact_max_pressure',
     'impact_max_pressure_density',
     'impact_sphere_mass',
+    'jkr_contact_radius_from_force',
+    'jkr_depth',
+    'jkr_force_from_radius',
+    'jkr_pressure',
+    'jkr_pull_off_depth_dc',
+    'jkr_pull_off_depth_fc',
+    'jkr_pull_off_force_dc',
+    'jkr_pull_off_force_fc',
+    'jkr_pull_off_radius_dc',
+    'jkr_pull_off_radius_fc',
+    'jkr_zero_load_radius',
     'line_depth_from_force',
     'line_force',
     'line_force_per_length_from_half_width',
@@ -203,6 +243,35 @@ __all__ = [
 
 #: every relation: (name, equation, family, derived formula, erratum or "")
 RELATIONS = (
+    ('adhesion_cone_depth', '(5.55), adhesive', 'adhesion', 'pi*a*tan(theta)/2 - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
+    ('adhesion_cone_force_from_radius', '(5.57), adhesive', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma) + pi*E_star*a**2*tan(theta)/2', ''),
+    ('adhesion_cone_pull_off_depth_dc', '(5.55), adhesive', 'adhesion', '-dgamma/(E_star*tan(theta))', ''),
+    ('adhesion_cone_pull_off_depth_fc', '(5.55), adhesive', 'adhesion', '3*dgamma/(E_star*tan(theta))', ''),
+    ('adhesion_cone_pull_off_force_dc', '(5.57), adhesive', 'adhesion', '-6*dgamma**2/(pi*E_star*tan(theta)**3)', ''),
+    ('adhesion_cone_pull_off_force_fc', '(5.57), adhesive', 'adhesion', '-54*dgamma**2/(pi*E_star*tan(theta)**3)', ''),
+    ('adhesion_cone_pull_off_radius_dc', '(5.57), adhesive', 'adhesion', '2*dgamma/(pi*E_star*tan(theta)**2)', ''),
+    ('adhesion_cone_pull_off_radius_fc', '(5.57), adhesive', 'adhesion', '18*dgamma/(pi*E_star*tan(theta)**2)', ''),
+    ('adhesion_cone_zero_load_radius', '(5.57), adhesive', 'adhesion', '32*dgamma/(pi*E_star*tan(theta)**2)', ''),
+    ('adhesion_critical_elongation', '(5.55), energy balance', 'adhesion', 'sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
+    ('adhesion_depth', '(5.55), adhesive', 'adhesion', 'g_a - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
+    ('adhesion_depth_slope', '(5.55), adhesive', 'adhesion', 'g_slope - sqrt(2)*sqrt(pi)*sqrt(dgamma)/(2*sqrt(E_star)*sqrt(a))', ''),
+    ('adhesion_displacement_outside_edge', '(5.60), adhesive', 'adhesion', '-2*sqrt(2)*sqrt(a)*sqrt(dgamma)*asin(a/r)/(sqrt(pi)*sqrt(E_star))', ''),
+    ('adhesion_energy_release_rate', '(5.57), energy balance', 'adhesion', 'E_star*(d - g_a)**2/(2*pi*a)', ''),
+    ('adhesion_force_slope', '(5.57), adhesive', 'adhesion', '-3*sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(a)*sqrt(dgamma) + 2*E_star*a*g_slope', ''),
+    ('adhesion_powerlaw_depth', '(5.55), adhesive', 'adhesion', 'a**n*c_n*kappa_n - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
+    ('adhesion_powerlaw_force_from_radius', '(5.57), adhesive', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)*n/(n + 1) - 2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)', ''),
+    ('adhesion_powerlaw_pull_off_depth_dc', '(5.55), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(dgamma)*(2*n - 1)*sqrt((pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))/(2*sqrt(E_star)*n)', ''),
+    ('adhesion_powerlaw_pull_off_depth_fc', '(5.55), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(dgamma)*(2*n - 3)*sqrt((9*pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))/(2*sqrt(E_star)*n)', ''),
+    ('adhesion_powerlaw_pull_off_force_dc', '(5.57), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(dgamma)*(2*n + 1)*((pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))**(3/2)/(n + 1)', ''),
+    ('adhesion_powerlaw_pull_off_force_fc', '(5.57), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(dgamma)*(2*n - 1)*((9*pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))**(3/2)/(n + 1)', ''),
+    ('adhesion_powerlaw_pull_off_radius_dc', '(5.57), adhesive', 'adhesion', '(pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
+    ('adhesion_powerlaw_pull_off_radius_fc', '(5.57), adhesive', 'adhesion', '(9*pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
+    ('adhesion_powerlaw_zero_load_radius', '(5.57), adhesive', 'adhesion', '(2*pi*dgamma*(n**2 + 2*n + 1)/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
+    ('adhesion_pressure_edge', '(5.59), adhesive', 'adhesion', '-sqrt(2)*sqrt(E_star)*sqrt(a)*sqrt(dgamma)/(sqrt(pi)*sqrt(a**2 - r**2))', ''),
+    ('adhesion_punch_pull_off_force', '(5.57), Kendall', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)', ''),
+    ('adhesion_sphere_g_slope', "(5.52), Sneddon's sphere", 'adhesion', '(R*x + (R**2 - x**2)*atanh(x/R))/(R**2 - x**2)', ''),
+    ('adhesion_tabor_parameter', 'Tabor (1977)', 'adhesion', 'R**(1/3)*dgamma**(2/3)/(E_star**(2/3)*z0)', ''),
+    ('adhesion_worn_g_slope', '(5.52), Problem 8', 'adhesion', '(-b**2 + 2*x**2)/(R*sqrt(-b**2 + x**2))', ''),
     ('bodies_crossed_cylinders_curvature_1', '(5.32), (5.33), any angle', 'bodies', 'sqrt((cos(2*alpha)/R2 + 1/R1)**2 + sin(2*alpha)**2/R2**2)/2 + 1/(2*R2) + 1/(2*R1)', ''),
     ('bodies_crossed_cylinders_curvature_2', '(5.32), (5.33), any angle', 'bodies', '-sqrt((cos(2*alpha)/R2 + 1/R1)**2 + sin(2*alpha)**2/R2**2)/2 + 1/(2*R2) + 1/(2*R1)', ''),
     ('bodies_crossed_cylinders_gaussian_radius', '(5.33), any angle', 'bodies', 'sqrt(R1)*sqrt(R2)/Abs(sin(alpha))', ''),
@@ -286,6 +355,17 @@ RELATIONS = (
     ('impact_max_pressure', 'Problem 4', 'impact', '30**(1/5)*E_star**(4/5)*m**(1/5)*v0**(2/5)/(pi*R**(3/5))', ''),
     ('impact_max_pressure_density', 'Problem 4', 'impact', '2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/pi**(4/5)', ''),
     ('impact_sphere_mass', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '4*pi*R**3*rho/3', ''),
+    ('jkr_contact_radius_from_force', '(5.57), JKR, inverted', 'adhesion', '(sqrt(3)*sqrt(R)*sqrt(2*F_load + 3*pi*R*dgamma) + 3*sqrt(pi)*R*sqrt(dgamma))**(2/3)/(2*E_star**(1/3))', ''),
+    ('jkr_depth', '(5.55), JKR', 'adhesion', 'a**2/R - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
+    ('jkr_force_from_radius', '(5.57), JKR', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma) + 4*E_star*a**3/(3*R)', ''),
+    ('jkr_pressure', '(5.59), JKR', 'adhesion', '(-sqrt(2)*pi*sqrt(E_star)*R*sqrt(a)*sqrt(dgamma) + 2*sqrt(pi)*E_star*(a**2 - r**2))/(pi**(3/2)*R*sqrt(a**2 - r**2))', ''),
+    ('jkr_pull_off_depth_dc', '(5.55), adhesive', 'adhesion', '-3*pi**(2/3)*R**(1/3)*dgamma**(2/3)/(4*E_star**(2/3))', ''),
+    ('jkr_pull_off_depth_fc', '(5.55), adhesive', 'adhesion', '-3**(1/3)*pi**(2/3)*R**(1/3)*dgamma**(2/3)/(4*E_star**(2/3))', ''),
+    ('jkr_pull_off_force_dc', '(5.57), adhesive', 'adhesion', '-5*pi*R*dgamma/6', ''),
+    ('jkr_pull_off_force_fc', '(5.57), adhesive', 'adhesion', '-3*pi*R*dgamma/2', ''),
+    ('jkr_pull_off_radius_dc', '(5.57), adhesive', 'adhesion', 'pi**(1/3)*R**(2/3)*dgamma**(1/3)/(2*E_star**(1/3))', ''),
+    ('jkr_pull_off_radius_fc', '(5.57), adhesive', 'adhesion', '3**(2/3)*pi**(1/3)*R**(2/3)*dgamma**(1/3)/(2*E_star**(1/3))', ''),
+    ('jkr_zero_load_radius', '(5.57), adhesive', 'adhesion', '6**(2/3)*pi**(1/3)*R**(2/3)*dgamma**(1/3)/(2*E_star**(1/3))', ''),
     ('line_depth_from_force', '(5.34), inverted', 'line', '4*F/(pi*E_star*L)', ''),
     ('line_force', '(5.34)', 'line', 'pi*E_star*L*d/4', ''),
     ('line_force_per_length_from_half_width', '(5.34), from the matching', 'line', 'pi*E_star*a**2/(4*R)', ''),
@@ -393,6 +473,656 @@ RELATIONS = (
     ('worn_pressure', 'Problem 8, (5.59)', 'worn', 'E_star*(2*a*sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r))))/sqrt((Max(b, r) - Min(b, r))*(Max(b, r) + Min(b, r)) + Max(0, (a - Max(b, r))*(a + Max(b, r)))) + (-b**2 + 2*Max(b, r)**2)*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/Max(b, r) - 2*elliptic_e(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)*Max(b, r))/(pi*R)', ''),
     ('worn_profile', 'Problem 8', 'worn', 'Max(0, (-b + r)*(b + r))/(2*R)', ''),
 )
+
+
+def adhesion_cone_depth(E_star, a, dgamma, theta):
+    """Indentation depth d [m] of a cone in adhesive contact of radius a.
+
+    Chapter: (5.55), adhesive. Derived from: (5.52), (5.55) with Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return (1/2)*numpy.pi*a*numpy.tan(theta) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
+
+
+def adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
+    """Normal force F [N] of a cone in adhesive contact of radius a.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the adhesive depth.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma) + (1/2)*numpy.pi*E_star*a**2*numpy.tan(theta)
+
+
+def adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
+    """Depth d_c [m] at pull-off of a cone under depth control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return -dgamma/(E_star*numpy.tan(theta))
+
+
+def adhesion_cone_pull_off_depth_fc(E_star, dgamma, theta):
+    """Depth d_c [m] at pull-off of a cone under force control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 3*dgamma/(E_star*numpy.tan(theta))
+
+
+def adhesion_cone_pull_off_force_dc(E_star, dgamma, theta):
+    """Pull-off force F_c [N] (negative) of a cone under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return -6*dgamma**2/(numpy.pi*E_star*numpy.tan(theta)**3)
+
+
+def adhesion_cone_pull_off_force_fc(E_star, dgamma, theta):
+    """Pull-off force F_c [N] (negative) of a cone under force control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return -54*dgamma**2/(numpy.pi*E_star*numpy.tan(theta)**3)
+
+
+def adhesion_cone_pull_off_radius_dc(E_star, dgamma, theta):
+    """Contact radius a_c [m] at pull-off of a cone under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: dd/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*dgamma/(numpy.pi*E_star*numpy.tan(theta)**2)
+
+
+def adhesion_cone_pull_off_radius_fc(E_star, dgamma, theta):
+    """Contact radius a_c [m] at pull-off of a cone under force control.
+
+    Chapter: (5.57), adhesive. Derived from: dF/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 18*dgamma/(numpy.pi*E_star*numpy.tan(theta)**2)
+
+
+def adhesion_cone_zero_load_radius(E_star, dgamma, theta):
+    """Contact radius a_0 [m] of a cone at zero load.
+
+    Chapter: (5.57), adhesive. Derived from: F(a) = 0 of (5.57).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 32*dgamma/(numpy.pi*E_star*numpy.tan(theta)**2)
+
+
+def adhesion_critical_elongation(E_star, a, dgamma):
+    """Critical elongation Delta l [m] of the boundary spring, g(a) - d.
+
+    Chapter: (5.55), energy balance. Derived from: G = Delta gamma solved for d.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_energy_release_rate_by_3d_route``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
+
+
+def adhesion_depth(E_star, a, dgamma, g_a):
+    """Indentation depth d [m] of an adhesive contact of radius a, g(a) - Delta l.
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with the stretched boundary spring.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    """
+    return g_a - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
+
+
+def adhesion_depth_slope(E_star, a, dgamma, g_slope):
+    """Dd/da [1] along an adhesive contact; 0 at pull-off under depth control.
+
+    Chapter: (5.55), adhesive. Derived from: the derivative of d = g(a) - Delta l(a).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    """
+    return g_slope - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(dgamma)/(numpy.sqrt(E_star)*numpy.sqrt(a))
+
+
+def adhesion_displacement_outside_edge(E_star, a, dgamma, r):
+    """Adhesive term of the surface displacement u_z(r) [m] outside the contact (r > a); add the non-adhesive displacement of radius a.
+
+    Chapter: (5.60), adhesive. Derived from: (5.60) of the constant u_z = -Delta l on |x| <
+    a.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return -2*numpy.sqrt(2)*numpy.sqrt(a)*numpy.sqrt(dgamma)*numpy.arcsin(a/r)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star))
+
+
+def adhesion_energy_release_rate(E_star, a, d, g_a):
+    """Energy release rate G [J/m^2] at the edge of a contact of radius a at depth d.
+
+    Chapter: (5.57), energy balance. Derived from: dU/da at fixed d over 2 pi a, U the work
+    of (5.57) along the non-adhesive path plus a flat punch.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_energy_release_rate_by_3d_route``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    """
+    return (1/2)*E_star*(d - g_a)**2/(numpy.pi*a)
+
+
+def adhesion_force_slope(E_star, a, dgamma, g_slope):
+    """DF/da [N/m] along an adhesive contact; 0 at pull-off under force control.
+
+    Chapter: (5.57), adhesive. Derived from: the derivative of (5.57) along d = g(a) - Delta
+    l(a).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    """
+    return -3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma) + 2*E_star*a*g_slope
+
+
+def adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law profile c_n r^n (n > 1/2) in adhesive contact of radius a.
+
+    Chapter: (5.55), adhesive. Derived from: (5.52), (5.55) with Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return a**n*c_n*kappa_n - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
+
+
+def adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
+    """Normal force F [N] of a power-law profile c_n r^n (n > 1/2) in adhesive contact of radius a.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the adhesive depth.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)*n/(n + 1) - 2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)
+
+
+def adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
+    """Depth d_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under depth control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(dgamma)*(2*n - 1)*numpy.sqrt(((1/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))/(numpy.sqrt(E_star)*n)
+
+
+def adhesion_powerlaw_pull_off_depth_fc(E_star, dgamma, c_n, kappa_n, n):
+    """Depth d_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under force control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(dgamma)*(2*n - 3)*numpy.sqrt(((9/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))/(numpy.sqrt(E_star)*n)
+
+
+def adhesion_powerlaw_pull_off_force_dc(E_star, dgamma, c_n, kappa_n, n):
+    """Pull-off force F_c [N] (negative) of a power-law profile c_n r^n (n > 1/2) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(dgamma)*(2*n + 1)*(((1/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))**(3/2)/(n + 1)
+
+
+def adhesion_powerlaw_pull_off_force_fc(E_star, dgamma, c_n, kappa_n, n):
+    """Pull-off force F_c [N] (negative) of a power-law profile c_n r^n (n > 1/2) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(dgamma)*(2*n - 1)*(((9/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))**(3/2)/(n + 1)
+
+
+def adhesion_powerlaw_pull_off_radius_dc(E_star, dgamma, c_n, kappa_n, n):
+    """Contact radius a_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: dd/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((1/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0))
+
+
+def adhesion_powerlaw_pull_off_radius_fc(E_star, dgamma, c_n, kappa_n, n):
+    """Contact radius a_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: dF/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((9/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0))
+
+
+def adhesion_powerlaw_zero_load_radius(E_star, dgamma, c_n, kappa_n, n):
+    """Contact radius a_0 [m] of a power-law profile c_n r^n (n > 1/2) at zero load.
+
+    Chapter: (5.57), adhesive. Derived from: F(a) = 0 of (5.57).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return (2*numpy.pi*dgamma*(n**2 + 2*n + 1)/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0))
+
+
+def adhesion_pressure_edge(E_star, a, dgamma, r):
+    """Adhesive term of the contact pressure p(r) [Pa] for r < a (negative: tension; add the non-adhesive pressure of radius a).
+
+    Chapter: (5.59), adhesive. Derived from: (5.59) with the jump of q(x) at x = a.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Printed in a stable form: a^2 - r^2 loses the digits of a - r next to the edge, where
+    the term is largest; written (a - r)(a + r).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a - r)*numpy.sqrt(a + r))
+
+
+def adhesion_punch_pull_off_force(E_star, a, dgamma):
+    """Pull-off force F_c [N] of a flat punch of radius a (Kendall), negative.
+
+    Chapter: (5.57), Kendall. Derived from: (5.57) with g = 0 at d = -Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_kendall_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)
+
+
+def adhesion_sphere_g_slope(R, x):
+    """Slope g'(x) [1] of the MDR profile of the exact sphere, 0 <= x < R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the derivative of (5.52) for the
+    spherical cap.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Printed in a stable form: atanh(x/R) as log1p(2x/(R - x))/2 and R^2 - x^2 as (R - x)(R +
+    x), exact as x -> R where the slope is largest.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return R*x/((R - x)*(R + x)) + (1/2)*numpy.log1p(2*x/(R - x))
+
+
+def adhesion_tabor_parameter(E_star, R, dgamma, z0):
+    """Tabor parameter mu_T [1]: JKR holds for mu_T > 5, DMT for mu_T < 0.1.
+
+    Chapter: Tabor (1977). Derived from: the ratio of the JKR neck height to the range z0 (a
+    definition).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_tabor_parameter``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    z0 : float or ndarray
+        range of the adhesive forces (equilibrium distance) of the Tabor parameter [m]
+    """
+    return R**(1/3)*dgamma**(2/3)/(E_star**(2/3)*z0)
+
+
+def adhesion_worn_g_slope(R, b, x):
+    """Slope g'(x) [1] of the MDR profile of the worn paraboloid for x > b (0 for x < b; infinite at the kink x = b+).
+
+    Chapter: (5.52), Problem 8. Derived from: the derivative of (5.52) for f = (r^2 -
+    b^2)/(2R), r > b.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Printed in a stable form: x^2 - b^2 as (x - b)(x + b), exact next to the kink.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (-b**2 + 2*x**2)/(R*numpy.sqrt(-b + x)*numpy.sqrt(b + x))
 
 
 def bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
@@ -2282,6 +3012,241 @@ def impact_sphere_mass(R, rho):
         density [kg/m^3]
     """
     return (4/3)*numpy.pi*R**3*rho
+
+
+def jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
+    """Contact radius a [m] of a paraboloid in JKR contact under the force F_load >= -3 pi R dgamma/2 (the stable branch).
+
+    Chapter: (5.57), JKR, inverted. Derived from: (5.57) as a quadratic in a^(3/2), larger
+    root.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    F_load : float or ndarray
+        normal force, negative when adhesion pulls (adhesive contact) [N]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return (1/2)*(numpy.sqrt(3)*numpy.sqrt(R)*numpy.sqrt(2*F_load + 3*numpy.pi*R*dgamma) + 3*numpy.sqrt(numpy.pi)*R*numpy.sqrt(dgamma))**(2/3)/E_star**(1/3)
+
+
+def jkr_depth(E_star, R, a, dgamma):
+    """Indentation depth d [m] of a paraboloid in JKR contact of radius a.
+
+    Chapter: (5.55), JKR. Derived from: (5.52) of r^2/(2R), (5.55) with Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return a**2/R - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
+
+
+def jkr_force_from_radius(E_star, R, a, dgamma):
+    """Normal force F [N] of a paraboloid in JKR contact of radius a.
+
+    Chapter: (5.57), JKR. Derived from: (5.57) at the adhesive depth.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma) + (4/3)*E_star*a**3/R
+
+
+def jkr_pressure(E_star, R, a, dgamma, r):
+    """Contact pressure p(r) [Pa] of a paraboloid in JKR contact, r < a.
+
+    Chapter: (5.59), JKR. Derived from: (5.59): Hertz's pressure of radius a plus the edge
+    term.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Printed in a stable form: Hertz's part and the edge term apart, each with (a - r)(a + r)
+    for a^2 - r^2, which loses the digits of a - r next to the edge.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a - r)*numpy.sqrt(a + r)) + 2*E_star*numpy.sqrt(a - r)*numpy.sqrt(a + r)/(numpy.pi*R)
+
+
+def jkr_pull_off_depth_dc(E_star, dgamma, R):
+    """Depth d_c [m] at pull-off of a paraboloid (JKR) under depth control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -3/4*numpy.pi**(2/3)*R**(1/3)*dgamma**(2/3)/E_star**(2/3)
+
+
+def jkr_pull_off_depth_fc(E_star, dgamma, R):
+    """Depth d_c [m] at pull-off of a paraboloid (JKR) under force control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -1/4*3**(1/3)*numpy.pi**(2/3)*R**(1/3)*dgamma**(2/3)/E_star**(2/3)
+
+
+def jkr_pull_off_force_dc(E_star, dgamma, R):
+    """Pull-off force F_c [N] (negative) of a paraboloid (JKR) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -5/6*numpy.pi*R*dgamma
+
+
+def jkr_pull_off_force_fc(E_star, dgamma, R):
+    """Pull-off force F_c [N] (negative) of a paraboloid (JKR) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -3/2*numpy.pi*R*dgamma
+
+
+def jkr_pull_off_radius_dc(E_star, dgamma, R):
+    """Contact radius a_c [m] at pull-off of a paraboloid (JKR) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: dd/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (1/2)*numpy.pi**(1/3)*R**(2/3)*dgamma**(1/3)/E_star**(1/3)
+
+
+def jkr_pull_off_radius_fc(E_star, dgamma, R):
+    """Contact radius a_c [m] at pull-off of a paraboloid (JKR) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: dF/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (1/2)*3**(2/3)*numpy.pi**(1/3)*R**(2/3)*dgamma**(1/3)/E_star**(1/3)
+
+
+def jkr_zero_load_radius(E_star, dgamma, R):
+    """Contact radius a_0 [m] of a paraboloid (JKR) at zero load.
+
+    Chapter: (5.57), adhesive. Derived from: F(a) = 0 of (5.57).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (1/2)*6**(2/3)*numpy.pi**(1/3)*R**(2/3)*dgamma**(1/3)/E_star**(1/3)
 
 
 def line_depth_from_force(E_star, F, L):
@@ -4684,6 +5649,68 @@ def worn_profile(R, b, r):
     return (1/2)*functools.reduce(numpy.maximum, [0, (-b + r)*(b + r)])/R
 
 
+def textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
+    """Adhesive term of the contact pressure p(r) [Pa] for r < a (negative: tension; add the non-adhesive pressure of radius a), in the derived (textbook) form; use adhesion_pressure_edge: a^2 - r^2 loses the digits of a - r next to the edge, where the term is largest; written (a - r)(a + r).
+
+    Chapter: (5.59), adhesive. Derived from: (5.59) with the jump of q(x) at x = a.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a**2 - r**2))
+
+
+def textbook_adhesion_sphere_g_slope(R, x):
+    """Slope g'(x) [1] of the MDR profile of the exact sphere, 0 <= x < R, in the derived (textbook) form; use adhesion_sphere_g_slope: atanh(x/R) as log1p(2x/(R - x))/2 and R^2 - x^2 as (R - x)(R + x), exact as x -> R where the slope is largest.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the derivative of (5.52) for the
+    spherical cap.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (R*x + (R**2 - x**2)*numpy.arctanh(x/R))/(R**2 - x**2)
+
+
+def textbook_adhesion_worn_g_slope(R, b, x):
+    """Slope g'(x) [1] of the MDR profile of the worn paraboloid for x > b (0 for x < b; infinite at the kink x = b+), in the derived (textbook) form; use adhesion_worn_g_slope: x^2 - b^2 as (x - b)(x + b), exact next to the kink.
+
+    Chapter: (5.52), Problem 8. Derived from: the derivative of (5.52) for f = (r^2 -
+    b^2)/(2R), r > b.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    return (-b**2 + 2*x**2)/(R*numpy.sqrt(-b**2 + x**2))
+
+
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
 
@@ -5112,6 +6139,31 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
+
+
+def textbook_jkr_pressure(E_star, R, a, dgamma, r):
+    """Contact pressure p(r) [Pa] of a paraboloid in JKR contact, r < a, in the derived (textbook) form; use jkr_pressure: Hertz's part and the edge term apart, each with (a - r)(a + r) for a^2 - r^2, which loses the digits of a - r next to the edge.
+
+    Chapter: (5.59), JKR. Derived from: (5.59): Hertz's pressure of radius a plus the edge
+    term.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    return (-numpy.sqrt(2)*numpy.pi*numpy.sqrt(E_star)*R*numpy.sqrt(a)*numpy.sqrt(dgamma) + 2*numpy.sqrt(numpy.pi)*E_star*(a**2 - r**2))/(numpy.pi**(3/2)*R*numpy.sqrt(a**2 - r**2))
 
 
 def textbook_line_stress_axis_sigma_xx(a, p0, z):

@@ -10,6 +10,35 @@ result carries the working precision. The accuracy report (``hertzmdr accuracy``
 import mpmath
 
 __all__ = [
+    'adhesion_cone_depth',
+    'adhesion_cone_force_from_radius',
+    'adhesion_cone_pull_off_depth_dc',
+    'adhesion_cone_pull_off_depth_fc',
+    'adhesion_cone_pull_off_force_dc',
+    'adhesion_cone_pull_off_force_fc',
+    'adhesion_cone_pull_off_radius_dc',
+    'adhesion_cone_pull_off_radius_fc',
+    'adhesion_cone_zero_load_radius',
+    'adhesion_critical_elongation',
+    'adhesion_depth',
+    'adhesion_depth_slope',
+    'adhesion_displacement_outside_edge',
+    'adhesion_energy_release_rate',
+    'adhesion_force_slope',
+    'adhesion_powerlaw_depth',
+    'adhesion_powerlaw_force_from_radius',
+    'adhesion_powerlaw_pull_off_depth_dc',
+    'adhesion_powerlaw_pull_off_depth_fc',
+    'adhesion_powerlaw_pull_off_force_dc',
+    'adhesion_powerlaw_pull_off_force_fc',
+    'adhesion_powerlaw_pull_off_radius_dc',
+    'adhesion_powerlaw_pull_off_radius_fc',
+    'adhesion_powerlaw_zero_load_radius',
+    'adhesion_pressure_edge',
+    'adhesion_punch_pull_off_force',
+    'adhesion_sphere_g_slope',
+    'adhesion_tabor_parameter',
+    'adhesion_worn_g_slope',
     'bodies_crossed_cylinders_curvature_1',
     'bodies_crossed_cylinders_curvature_2',
     'bodies_crossed_cylinders_gaussian_radius',
@@ -93,6 +122,17 @@ __all__ = [
     'impact_max_pressure',
     'impact_max_pressure_density',
     'impact_sphere_mass',
+    'jkr_contact_radius_from_force',
+    'jkr_depth',
+    'jkr_force_from_radius',
+    'jkr_pressure',
+    'jkr_pull_off_depth_dc',
+    'jkr_pull_off_depth_fc',
+    'jkr_pull_off_force_dc',
+    'jkr_pull_off_force_fc',
+    'jkr_pull_off_radius_dc',
+    'jkr_pull_off_radius_fc',
+    'jkr_zero_load_radius',
     'line_depth_from_force',
     'line_force',
     'line_force_per_length_from_half_width',
@@ -200,6 +240,656 @@ __all__ = [
     'worn_pressure',
     'worn_profile',
 ]
+
+
+def adhesion_cone_depth(E_star, a, dgamma, theta):
+    """Indentation depth d [m] of a cone in adhesive contact of radius a.
+
+    Chapter: (5.55), adhesive. Derived from: (5.52), (5.55) with Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*a*mpmath.tan(theta) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/mpmath.sqrt(E_star)
+
+
+def adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
+    """Normal force F [N] of a cone in adhesive contact of radius a.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the adhesive depth.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*E_star*a**2*mpmath.tan(theta)
+
+
+def adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
+    """Depth d_c [m] at pull-off of a cone under depth control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return -dgamma/(E_star*mpmath.tan(theta))
+
+
+def adhesion_cone_pull_off_depth_fc(E_star, dgamma, theta):
+    """Depth d_c [m] at pull-off of a cone under force control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 3*dgamma/(E_star*mpmath.tan(theta))
+
+
+def adhesion_cone_pull_off_force_dc(E_star, dgamma, theta):
+    """Pull-off force F_c [N] (negative) of a cone under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return -6*dgamma**2/(mpmath.pi*E_star*mpmath.tan(theta)**3)
+
+
+def adhesion_cone_pull_off_force_fc(E_star, dgamma, theta):
+    """Pull-off force F_c [N] (negative) of a cone under force control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return -54*dgamma**2/(mpmath.pi*E_star*mpmath.tan(theta)**3)
+
+
+def adhesion_cone_pull_off_radius_dc(E_star, dgamma, theta):
+    """Contact radius a_c [m] at pull-off of a cone under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: dd/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*dgamma/(mpmath.pi*E_star*mpmath.tan(theta)**2)
+
+
+def adhesion_cone_pull_off_radius_fc(E_star, dgamma, theta):
+    """Contact radius a_c [m] at pull-off of a cone under force control.
+
+    Chapter: (5.57), adhesive. Derived from: dF/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 18*dgamma/(mpmath.pi*E_star*mpmath.tan(theta)**2)
+
+
+def adhesion_cone_zero_load_radius(E_star, dgamma, theta):
+    """Contact radius a_0 [m] of a cone at zero load.
+
+    Chapter: (5.57), adhesive. Derived from: F(a) = 0 of (5.57).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 32*dgamma/(mpmath.pi*E_star*mpmath.tan(theta)**2)
+
+
+def adhesion_critical_elongation(E_star, a, dgamma):
+    """Critical elongation Delta l [m] of the boundary spring, g(a) - d.
+
+    Chapter: (5.55), energy balance. Derived from: G = Delta gamma solved for d.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_energy_release_rate_by_3d_route``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/mpmath.sqrt(E_star)
+
+
+def adhesion_depth(E_star, a, dgamma, g_a):
+    """Indentation depth d [m] of an adhesive contact of radius a, g(a) - Delta l.
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with the stretched boundary spring.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    """
+    return g_a - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/mpmath.sqrt(E_star)
+
+
+def adhesion_depth_slope(E_star, a, dgamma, g_slope):
+    """Dd/da [1] along an adhesive contact; 0 at pull-off under depth control.
+
+    Chapter: (5.55), adhesive. Derived from: the derivative of d = g(a) - Delta l(a).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    """
+    return g_slope - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(dgamma)/(mpmath.sqrt(E_star)*mpmath.sqrt(a))
+
+
+def adhesion_displacement_outside_edge(E_star, a, dgamma, r):
+    """Adhesive term of the surface displacement u_z(r) [m] outside the contact (r > a); add the non-adhesive displacement of radius a.
+
+    Chapter: (5.60), adhesive. Derived from: (5.60) of the constant u_z = -Delta l on |x| <
+    a.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)*mpmath.asin(a/r)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star))
+
+
+def adhesion_energy_release_rate(E_star, a, d, g_a):
+    """Energy release rate G [J/m^2] at the edge of a contact of radius a at depth d.
+
+    Chapter: (5.57), energy balance. Derived from: dU/da at fixed d over 2 pi a, U the work
+    of (5.57) along the non-adhesive path plus a flat punch.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_energy_release_rate_by_3d_route``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*(d - g_a)**2/(mpmath.pi*a)
+
+
+def adhesion_force_slope(E_star, a, dgamma, g_slope):
+    """DF/da [N/m] along an adhesive contact; 0 at pull-off under force control.
+
+    Chapter: (5.57), adhesive. Derived from: the derivative of (5.57) along d = g(a) - Delta
+    l(a).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    """
+    return -3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma) + 2*E_star*a*g_slope
+
+
+def adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
+    """Indentation depth d [m] of a power-law profile c_n r^n (n > 1/2) in adhesive contact of radius a.
+
+    Chapter: (5.55), adhesive. Derived from: (5.52), (5.55) with Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return a**n*c_n*kappa_n - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/mpmath.sqrt(E_star)
+
+
+def adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
+    """Normal force F [N] of a power-law profile c_n r^n (n > 1/2) in adhesive contact of radius a.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the adhesive depth.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma)*n/(n + 1) - 2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)
+
+
+def adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
+    """Depth d_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under depth control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(dgamma)*(2*n - 1)*mpmath.sqrt(((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))/(mpmath.sqrt(E_star)*n)
+
+
+def adhesion_powerlaw_pull_off_depth_fc(E_star, dgamma, c_n, kappa_n, n):
+    """Depth d_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under force control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(dgamma)*(2*n - 3)*mpmath.sqrt(((mpmath.mpf(9)/mpmath.mpf(2))*mpmath.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))/(mpmath.sqrt(E_star)*n)
+
+
+def adhesion_powerlaw_pull_off_force_dc(E_star, dgamma, c_n, kappa_n, n):
+    """Pull-off force F_c [N] (negative) of a power-law profile c_n r^n (n > 1/2) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*mpmath.sqrt(dgamma)*(2*n + 1)*(((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))**(mpmath.mpf(3)/mpmath.mpf(2))/(n + 1)
+
+
+def adhesion_powerlaw_pull_off_force_fc(E_star, dgamma, c_n, kappa_n, n):
+    """Pull-off force F_c [N] (negative) of a power-law profile c_n r^n (n > 1/2) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return -mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*mpmath.sqrt(dgamma)*(2*n - 1)*(((mpmath.mpf(9)/mpmath.mpf(2))*mpmath.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))**(mpmath.mpf(3)/mpmath.mpf(2))/(n + 1)
+
+
+def adhesion_powerlaw_pull_off_radius_dc(E_star, dgamma, c_n, kappa_n, n):
+    """Contact radius a_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: dd/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))
+
+
+def adhesion_powerlaw_pull_off_radius_fc(E_star, dgamma, c_n, kappa_n, n):
+    """Contact radius a_c [m] at pull-off of a power-law profile c_n r^n (n > 1/2) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: dF/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return ((mpmath.mpf(9)/mpmath.mpf(2))*mpmath.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))
+
+
+def adhesion_powerlaw_zero_load_radius(E_star, dgamma, c_n, kappa_n, n):
+    """Contact radius a_0 [m] of a power-law profile c_n r^n (n > 1/2) at zero load.
+
+    Chapter: (5.57), adhesive. Derived from: F(a) = 0 of (5.57).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_pull_off_by_mpmath_minimization``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return (2*mpmath.pi*dgamma*(n**2 + 2*n + 1)/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))
+
+
+def adhesion_pressure_edge(E_star, a, dgamma, r):
+    """Adhesive term of the contact pressure p(r) [Pa] for r < a (negative: tension; add the non-adhesive pressure of radius a).
+
+    Chapter: (5.59), adhesive. Derived from: (5.59) with the jump of q(x) at x = a.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Printed in a stable form: a^2 - r^2 loses the digits of a - r next to the edge, where
+    the term is largest; written (a - r)(a + r).
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return -mpmath.sqrt(2)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a - r)*mpmath.sqrt(a + r))
+
+
+def adhesion_punch_pull_off_force(E_star, a, dgamma):
+    """Pull-off force F_c [N] of a flat punch of radius a (Kendall), negative.
+
+    Chapter: (5.57), Kendall. Derived from: (5.57) with g = 0 at d = -Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_kendall_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma)
+
+
+def adhesion_sphere_g_slope(R, x):
+    """Slope g'(x) [1] of the MDR profile of the exact sphere, 0 <= x < R.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the derivative of (5.52) for the
+    spherical cap.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Printed in a stable form: atanh(x/R) as log1p(2x/(R - x))/2 and R^2 - x^2 as (R - x)(R +
+    x), exact as x -> R where the slope is largest.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return R*x/((R - x)*(R + x)) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.log1p(2*x/(R - x))
+
+
+def adhesion_tabor_parameter(E_star, R, dgamma, z0):
+    """Tabor parameter mu_T [1]: JKR holds for mu_T > 5, DMT for mu_T < 0.1.
+
+    Chapter: Tabor (1977). Derived from: the ratio of the JKR neck height to the range z0 (a
+    definition).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_tabor_parameter``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    z0 : mpmath.mpf
+        range of the adhesive forces (equilibrium distance) of the Tabor parameter [m]
+    """
+    return R**(mpmath.mpf(1)/mpmath.mpf(3))*dgamma**(mpmath.mpf(2)/mpmath.mpf(3))/(E_star**(mpmath.mpf(2)/mpmath.mpf(3))*z0)
+
+
+def adhesion_worn_g_slope(R, b, x):
+    """Slope g'(x) [1] of the MDR profile of the worn paraboloid for x > b (0 for x < b; infinite at the kink x = b+).
+
+    Chapter: (5.52), Problem 8. Derived from: the derivative of (5.52) for f = (r^2 -
+    b^2)/(2R), r > b.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Printed in a stable form: x^2 - b^2 as (x - b)(x + b), exact next to the kink.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (-b**2 + 2*x**2)/(R*mpmath.sqrt(-b + x)*mpmath.sqrt(b + x))
 
 
 def bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
@@ -2056,6 +2746,241 @@ def impact_sphere_mass(R, rho):
         density [kg/m^3]
     """
     return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.pi*R**3*rho
+
+
+def jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
+    """Contact radius a [m] of a paraboloid in JKR contact under the force F_load >= -3 pi R dgamma/2 (the stable branch).
+
+    Chapter: (5.57), JKR, inverted. Derived from: (5.57) as a quadratic in a^(3/2), larger
+    root.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    F_load : mpmath.mpf
+        normal force, negative when adhesion pulls (adhesive contact) [N]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*(mpmath.sqrt(3)*mpmath.sqrt(R)*mpmath.sqrt(2*F_load + 3*mpmath.pi*R*dgamma) + 3*mpmath.sqrt(mpmath.pi)*R*mpmath.sqrt(dgamma))**(mpmath.mpf(2)/mpmath.mpf(3))/E_star**(mpmath.mpf(1)/mpmath.mpf(3))
+
+
+def jkr_depth(E_star, R, a, dgamma):
+    """Indentation depth d [m] of a paraboloid in JKR contact of radius a.
+
+    Chapter: (5.55), JKR. Derived from: (5.52) of r^2/(2R), (5.55) with Delta l.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return a**2/R - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/mpmath.sqrt(E_star)
+
+
+def jkr_force_from_radius(E_star, R, a, dgamma):
+    """Normal force F [N] of a paraboloid in JKR contact of radius a.
+
+    Chapter: (5.57), JKR. Derived from: (5.57) at the adhesive depth.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma) + (mpmath.mpf(4)/mpmath.mpf(3))*E_star*a**3/R
+
+
+def jkr_pressure(E_star, R, a, dgamma, r):
+    """Contact pressure p(r) [Pa] of a paraboloid in JKR contact, r < a.
+
+    Chapter: (5.59), JKR. Derived from: (5.59): Hertz's pressure of radius a plus the edge
+    term.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Printed in a stable form: Hertz's part and the edge term apart, each with (a - r)(a + r)
+    for a^2 - r^2, which loses the digits of a - r next to the edge.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return -mpmath.sqrt(2)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a - r)*mpmath.sqrt(a + r)) + 2*E_star*mpmath.sqrt(a - r)*mpmath.sqrt(a + r)/(mpmath.pi*R)
+
+
+def jkr_pull_off_depth_dc(E_star, dgamma, R):
+    """Depth d_c [m] at pull-off of a paraboloid (JKR) under depth control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -mpmath.mpf(3)/mpmath.mpf(4)*mpmath.pi**(mpmath.mpf(2)/mpmath.mpf(3))*R**(mpmath.mpf(1)/mpmath.mpf(3))*dgamma**(mpmath.mpf(2)/mpmath.mpf(3))/E_star**(mpmath.mpf(2)/mpmath.mpf(3))
+
+
+def jkr_pull_off_depth_fc(E_star, dgamma, R):
+    """Depth d_c [m] at pull-off of a paraboloid (JKR) under force control (negative: the surface is pulled up).
+
+    Chapter: (5.55), adhesive. Derived from: (5.55) with Delta l at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(4)*3**(mpmath.mpf(1)/mpmath.mpf(3))*mpmath.pi**(mpmath.mpf(2)/mpmath.mpf(3))*R**(mpmath.mpf(1)/mpmath.mpf(3))*dgamma**(mpmath.mpf(2)/mpmath.mpf(3))/E_star**(mpmath.mpf(2)/mpmath.mpf(3))
+
+
+def jkr_pull_off_force_dc(E_star, dgamma, R):
+    """Pull-off force F_c [N] (negative) of a paraboloid (JKR) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -mpmath.mpf(5)/mpmath.mpf(6)*mpmath.pi*R*dgamma
+
+
+def jkr_pull_off_force_fc(E_star, dgamma, R):
+    """Pull-off force F_c [N] (negative) of a paraboloid (JKR) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: (5.57) at the pull-off radius.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return -mpmath.mpf(3)/mpmath.mpf(2)*mpmath.pi*R*dgamma
+
+
+def jkr_pull_off_radius_dc(E_star, dgamma, R):
+    """Contact radius a_c [m] at pull-off of a paraboloid (JKR) under depth control.
+
+    Chapter: (5.57), adhesive. Derived from: dd/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi**(mpmath.mpf(1)/mpmath.mpf(3))*R**(mpmath.mpf(2)/mpmath.mpf(3))*dgamma**(mpmath.mpf(1)/mpmath.mpf(3))/E_star**(mpmath.mpf(1)/mpmath.mpf(3))
+
+
+def jkr_pull_off_radius_fc(E_star, dgamma, R):
+    """Contact radius a_c [m] at pull-off of a paraboloid (JKR) under force control.
+
+    Chapter: (5.57), adhesive. Derived from: dF/da = 0.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*3**(mpmath.mpf(2)/mpmath.mpf(3))*mpmath.pi**(mpmath.mpf(1)/mpmath.mpf(3))*R**(mpmath.mpf(2)/mpmath.mpf(3))*dgamma**(mpmath.mpf(1)/mpmath.mpf(3))/E_star**(mpmath.mpf(1)/mpmath.mpf(3))
+
+
+def jkr_zero_load_radius(E_star, dgamma, R):
+    """Contact radius a_0 [m] of a paraboloid (JKR) at zero load.
+
+    Chapter: (5.57), adhesive. Derived from: F(a) = 0 of (5.57).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_literature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*6**(mpmath.mpf(2)/mpmath.mpf(3))*mpmath.pi**(mpmath.mpf(1)/mpmath.mpf(3))*R**(mpmath.mpf(2)/mpmath.mpf(3))*dgamma**(mpmath.mpf(1)/mpmath.mpf(3))/E_star**(mpmath.mpf(1)/mpmath.mpf(3))
 
 
 def line_depth_from_force(E_star, F, L):
@@ -4415,6 +5340,68 @@ def worn_profile(R, b, r):
     return (mpmath.mpf(1)/mpmath.mpf(2))*max(0, (-b + r)*(b + r))/R
 
 
+def textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
+    """Adhesive term of the contact pressure p(r) [Pa] for r < a (negative: tension; add the non-adhesive pressure of radius a), in the derived (textbook) form; use adhesion_pressure_edge: a^2 - r^2 loses the digits of a - r next to the edge, where the term is largest; written (a - r)(a + r).
+
+    Chapter: (5.59), adhesive. Derived from: (5.59) with the jump of q(x) at x = a.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return -mpmath.sqrt(2)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a**2 - r**2))
+
+
+def textbook_adhesion_sphere_g_slope(R, x):
+    """Slope g'(x) [1] of the MDR profile of the exact sphere, 0 <= x < R, in the derived (textbook) form; use adhesion_sphere_g_slope: atanh(x/R) as log1p(2x/(R - x))/2 and R^2 - x^2 as (R - x)(R + x), exact as x -> R where the slope is largest.
+
+    Chapter: (5.52), Sneddon's sphere. Derived from: the derivative of (5.52) for the
+    spherical cap.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (R*x + (R**2 - x**2)*mpmath.atanh(x/R))/(R**2 - x**2)
+
+
+def textbook_adhesion_worn_g_slope(R, b, x):
+    """Slope g'(x) [1] of the MDR profile of the worn paraboloid for x > b (0 for x < b; infinite at the kink x = b+), in the derived (textbook) form; use adhesion_worn_g_slope: x^2 - b^2 as (x - b)(x + b), exact next to the kink.
+
+    Chapter: (5.52), Problem 8. Derived from: the derivative of (5.52) for f = (r^2 -
+    b^2)/(2R), r > b.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (-b**2 + 2*x**2)/(R*mpmath.sqrt(-b**2 + x**2))
+
+
 def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     """Smaller principal curvature [1/m] of the gap of two cylinders crossed at alpha, in the derived (textbook) form; use bodies_crossed_cylinders_curvature_2: written with the curvatures 1/R so that R = inf (flat) works; the discriminant as a sum of two squares and the smaller root as 2 det/(tr + s) with det a sum of products, positive for convex bodies: no cancellation.
 
@@ -4820,6 +5807,31 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
+
+
+def textbook_jkr_pressure(E_star, R, a, dgamma, r):
+    """Contact pressure p(r) [Pa] of a paraboloid in JKR contact, r < a, in the derived (textbook) form; use jkr_pressure: Hertz's part and the edge term apart, each with (a - r)(a + r) for a^2 - r^2, which loses the digits of a - r next to the edge.
+
+    Chapter: (5.59), JKR. Derived from: (5.59): Hertz's pressure of radius a plus the edge
+    term.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_jkr_pressure_by_boussinesq``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (-mpmath.sqrt(2)*mpmath.pi*mpmath.sqrt(E_star)*R*mpmath.sqrt(a)*mpmath.sqrt(dgamma) + 2*mpmath.sqrt(mpmath.pi)*E_star*(a**2 - r**2))/(mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*R*mpmath.sqrt(a**2 - r**2))
 
 
 def textbook_line_stress_axis_sigma_xx(a, p0, z):

@@ -44,7 +44,7 @@ def test_registries_agree():
 
 def test_materials_and_interface():
     """E* (5.26) from both bodies or the elastic one; the stressed body is the first elastic
-    one; both objects are frozen; the interface has no properties yet."""
+    one; both objects are frozen; the interface holds the work of adhesion (0: none)."""
     steel, glass = Material("a", 210e9, 0.3), Material("b", 70e9, 0.22)
     m = Materials.of(steel, glass)
     ref = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.22**2) / 70e9)
@@ -54,7 +54,9 @@ def test_materials_and_interface():
     assert rigid.stressed.body == "b"
     with pytest.raises(dataclasses.FrozenInstanceError):
         m.E_star = 1.0
-    assert dataclasses.fields(Interface) == () and Interface.KEYS == {}
+    adhesion = {"work_of_adhesion": "surface_energy", "range": "length"}
+    assert {f.name for f in dataclasses.fields(Interface)} >= set(adhesion)
+    assert Interface.KEYS.items() >= adhesion.items() and not Interface().adhesive
     with pytest.raises(ValueError, match="rigid"):
         Materials.of(Material("x", None, None), Material("y", None, None))
 

@@ -60,6 +60,18 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
            needs=("impact",)),
     Effect("max_impact_pressure", "Pa", "largest pressure during an impact (Problem 4)",
            needs=("impact",)),
+    Effect("pull_off_force", "{force_control: N, depth_control: N}", "the force at which an "
+           "adhesive contact lets go, under force and under depth control (needs "
+           "[interface] work_of_adhesion)", needs=()),
+    Effect("pull_off_depth", "{force_control: m, depth_control: m}", "the depth at pull-off, "
+           "under force and under depth control (negative: pulled above the free surface)",
+           needs=()),
+    Effect("zero_load_contact_radius", "m", "contact radius of an adhesive contact at zero "
+           "force", needs=()),
+    Effect("adhesive_force_depth_curve", "{depth: m, force: N, contact_radius: m, "
+           "loading: 1, jump_depth: m, jump_force: N, jump_contact_radius: m, hysteresis: J}",
+           "approach-push-retract history of an adhesive contact with its jumps into and out "
+           "of contact, and the work lost per cycle", field=True),
 ]}
 
 

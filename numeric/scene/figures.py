@@ -103,7 +103,42 @@ def von_mises_field(value, title, path):
                          clabel=clabel, title=f"{title}\nvon Mises stress (5.50), Fig. 5.9")
 
 
+def adhesive_force_depth_curve(value, title, path):
+    """Approach (solid) and retract (dashed) of an adhesive contact, the jumps as dotted
+    segments with markers."""
+    import numpy as np
+
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6.0, 4.0), dpi=120)
+    d, dlabel = _scaled(value["depth"], "depth", "m")
+    F, Flabel = _scaled(value["force"], "force", "N")
+
+    def factor(raw, scaled):  # the factor _scaled applied, for the jumps' end points
+        i = int(np.argmax(np.abs(raw)))
+        return float(scaled[i] / raw[i]) if raw[i] else 1.0
+
+    fd = factor(np.asarray(value["depth"], float), d)
+    fF = factor(np.asarray(value["force"], float), F)
+    load = np.asarray(value["loading"], bool)
+    ax.plot(d[load], F[load], lw=1.8, label="approach and push")
+    ax.plot(d[~load], F[~load], lw=1.8, ls="--", label="retract")
+    jd, jF = np.asarray(value["jump_depth"], float), np.asarray(value["jump_force"], float)
+    for k in range(len(jd)):
+        ax.plot(jd[k] * fd, jF[k] * fF, ls=":", color="k", marker="o", ms=3,
+                label="jumps" if k == 0 else None)
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel(dlabel)
+    ax.set_ylabel(Flabel)
+    ax.set_title(f"{title}\nadhesive approach-retract", fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
 FIGURES = {
+    "adhesive_force_depth_curve": adhesive_force_depth_curve,
     "axis_stresses": axis_stresses,
     "von_mises_field": von_mises_field,
     "mdr_profile": mdr_profile,

@@ -6,14 +6,14 @@ E* (5.26) derived from them by :func:`hertzmdr.numeric.bodies.effective_modulus`
 the stress effects report (the first elastic one). A kind that needs more material data (G* for
 tangential contact, say) reads it from here: no kind constructor changes.
 
-:class:`Interface` holds the properties of the interface between the bodies. It has none yet:
-the contact is frictionless and non-adhesive, and the ``[interface]`` table of a scene accepts no
-keys. Adhesion (the work of adhesion) and friction (the coefficient of friction) plug in here as
-fields with their keys in :data:`Interface.KEYS`.
+:class:`Interface` holds the properties of the interface between the bodies: the work of
+adhesion Delta gamma (0: no adhesion) and the range z0 of the adhesive forces (for the Tabor
+parameter); each field has its key in :data:`Interface.KEYS`.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -66,10 +66,31 @@ class Materials:
 
 @dataclass(frozen=True)
 class Interface:
-    """Properties of the interface between the two bodies: none yet (frictionless, no adhesion).
+    """Properties of the interface between the two bodies.
 
     A scene's optional ``[interface]`` table fills it; :data:`KEYS` (key -> dimension) lists
-    the keys it accepts, none today, so any key there is an error naming the allowed ones.
+    the keys it accepts, any other key is an error naming the allowed ones.
+
+    Attributes
+    ----------
+    work_of_adhesion : float
+        Delta gamma [J/m^2], >= 0; 0 (the default) is the non-adhesive contact, exactly.
+    range : float or None
+        z0 [m] > 0, the range of the adhesive forces (equilibrium distance): with it, the
+        Tabor parameter is computed and a scene where JKR does not hold gets a warning.
     """
 
-    KEYS: ClassVar[dict[str, str]] = {}
+    work_of_adhesion: float = 0.0
+    range: float | None = None
+
+    KEYS: ClassVar[dict[str, str]] = {"work_of_adhesion": "surface_energy", "range": "length"}
+
+    def __post_init__(self):
+        if not (math.isfinite(self.work_of_adhesion) and self.work_of_adhesion >= 0):
+            raise ValueError(f"work_of_adhesion = {self.work_of_adhesion!r} J/m^2; valid: >= 0")
+        if self.range is not None and not (math.isfinite(self.range) and self.range > 0):
+            raise ValueError(f"range = {self.range!r} m; valid: > 0")
+
+    @property
+    def adhesive(self) -> bool:
+        return self.work_of_adhesion > 0

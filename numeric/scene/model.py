@@ -4,6 +4,8 @@
 - The kind: the first row of :data:`~.kinds.KINDS` whose loads include the scene's load and
   whose name both bodies' shapes list (a flat partners any kind); its builder makes the contact
   from the shapes' geometry (principal radii, an MDR closed form, samples, a height map).
+- Adhesion: with ``[interface] work_of_adhesion`` > 0 (or a ``[load] cycle``), the contact
+  is made adhesive (:mod:`.kinds.adhesive`); 0 leaves it exactly as it is.
 - The accuracy contract: ``[accuracy] rtol`` must lie in the range of every method the
   requested effects use (:mod:`.accuracy`), else a SceneError names the range.
 """
@@ -25,10 +27,14 @@ def build(spec: SceneSpec) -> Contact:
     """The contact of the scene, its rtol checked against the methods it will use."""
     setup = Setup(spec, materials(spec))
     shapes = [SHAPES[b.shape] for b in spec.bodies]
-    load = spec.load.kind
+    load = spec.load.kind if spec.load.kind != "cycle" else spec.load.control
     for row in KINDS:
         if load in row.loads and row.takes(shapes):
             contact = row.build(setup)
+            if spec.interface.adhesive or spec.load.kind == "cycle":
+                from hertzmdr.numeric.scene.kinds.adhesive import adhesive
+
+                contact = adhesive(setup, contact)
             check_rtol(spec, contact)
             return contact
     only = [row for row in KINDS if row.loads == (load,)]

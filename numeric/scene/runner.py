@@ -11,6 +11,7 @@ import numpy as np
 from hertzmdr.numeric.scene.assumptions import check as check_assumptions
 from hertzmdr.numeric.scene.effects import EFFECTS
 from hertzmdr.numeric.scene.kinds import Contact
+from hertzmdr.numeric.scene.kinds.adhesive import ADHESIVE_EFFECTS
 from hertzmdr.numeric.scene.model import build
 from hertzmdr.numeric.scene.schema import SceneError, SceneSpec
 
@@ -71,6 +72,9 @@ def check_applicable(spec: SceneSpec, contact) -> None:
         if contact.has(name):
             continue
         why = contact.why_not.get(name, f"{contact.label} has no {name.replace('_', ' ')}")
+        if name in ADHESIVE_EFFECTS and not spec.interface.adhesive:
+            why = ("it needs adhesion: give [interface] work_of_adhesion = \"... J/m^2\" "
+                   "(> 0)")
         alt = contact.instead.get(name)
         hint = f"; use {alt!r}" if alt else ""
         raise SceneError(spec.source, "effects",

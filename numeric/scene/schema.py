@@ -54,6 +54,8 @@ class Load:
     distribution: str | None = None  # a prescribed pressure: "uniform", "hertzian", "punch"
     p0: float | None = None
     radius: float | None = None
+    control: str | None = None  # a cycle: "depth" or "force"
+    points: int | None = None  # a cycle: its number of points
 
 
 @dataclass
@@ -127,6 +129,22 @@ class _Reader:
             self.fail(key, f"must be > 0, got {value!r}")
         return out
 
+    def cycle(self, cy: dict) -> Load:
+        """``cycle = {to = ..., control = "depth" | "force", points = N}``: approach, push to
+        ``to`` (a depth or a force, by ``control``; default "depth"), retract to separation."""
+        self.extra_keys(cy, {"to", "control", "points"}, "load.cycle")
+        if "to" not in cy:
+            self.fail("load.cycle.to", "missing: the largest depth (or force) of the cycle")
+        control = cy.get("control", "depth")
+        if control not in ("depth", "force"):
+            self.fail("load.cycle.control", f"must be \"depth\" or \"force\", got {control!r}")
+        n = cy.get("points", 1000)
+        if isinstance(n, bool) or not isinstance(n, int) or not 20 <= n <= 100_000:
+            self.fail("load.cycle.points", f"must be an integer in [20, 100000], got {n!r}")
+        dim = "length" if control == "depth" else "force"
+        to = self.positive(cy["to"], dim, "load.cycle.to")
+        return Load("cycle", [to], control=control, points=n)
+
     def scene(self, data: dict, default_title: str = "scene") -> SceneSpec:
         self.extra_keys(data, TOP_KEYS, "")
         title = data.get("title", default_title)
@@ -167,6 +185,13 @@ class _Reader:
         if "interface" in data:
             table = self.table(data["interface"], "interface")
             self.extra_keys(table, Interface.KEYS, "interface")
+            values = {k: self.quantity(table[k], dim, f"interface.{k}")
+                      for k, dim in Interface.KEYS.items() if k in table}
+            try:
+                interface = Interface(**values)
+            except ValueError as exc:
+                key = str(exc).split(" ")[0]
+                self.fail(f"interface.{key}", str(exc))
         elliptic = "exact"
         if "model" in data:
             model = self.table(data["model"], "model")
@@ -254,13 +279,15 @@ class _Reader:
         raise AssertionError(kind)
 
     def load(self, ld: dict) -> Load:
-        kinds = ("depth", "force", "impact", "pressure")
+        kinds = ("depth", "force", "impact", "pressure", "cycle")
         self.extra_keys(ld, set(kinds), "load")
         given = [k for k in kinds if k in ld]
         if len(given) != 1:
-            self.fail("load", "give exactly one of depth, force, [load.impact] or "
+            self.fail("load", "give exactly one of depth, force, cycle, [load.impact] or "
                       "[load.pressure]" + (f", not {' and '.join(given)}" if given else ""))
         kind = given[0]
+        if kind == "cycle":
+            return self.cycle(self.table(ld["cycle"], "load.cycle"))
         if kind == "pressure":
             pr = self.table(ld["pressure"], "load.pressure")
             self.extra_keys(pr, {"distribution", "p0", "radius"}, "load.pressure")

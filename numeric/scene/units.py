@@ -20,6 +20,7 @@ DIMENSIONS = {
     "mass": ("kg", "a mass"),
     "density": ("kg/m^3", "a density"),
     "velocity": ("m/s", "a velocity"),
+    "surface_energy": ("J/m^2", "an energy per area (work of adhesion)"),
 }
 
 #: the SI prefixes, largest first: the one table for reading units (:data:`FAST`) and for
@@ -41,6 +42,8 @@ for _p, _f in _PREFIX.items():
     FAST[("force", _p + "N")] = _f
     FAST[("pressure", _p + "Pa")] = _f
     FAST[("mass", _p + "g")] = _f * 1e-3
+    FAST[("surface_energy", _p + "J/m^2")] = _f
+    FAST[("surface_energy", _p + "N/m")] = _f
 FAST.update({
     ("angle", "rad"): 1.0, ("angle", "deg"): math.pi / 180, ("angle", "degree"): math.pi / 180,
     ("mass", "kg"): 1.0, ("velocity", "m/s"): 1.0, ("velocity", "km/h"): 1 / 3.6,

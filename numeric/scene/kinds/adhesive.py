@@ -1,0 +1,345 @@
+"""Adhesive contacts: an axisymmetric contact with ``[interface] work_of_adhesion`` (JKR-type
+MDR, numeric/adhesion.py).
+
+:func:`adhesive` turns the contact the registry built for the bodies into an
+:class:`AdhesiveKind`: the Hertz contact becomes the JKR paraboloid, the closed-form MDR
+profiles their adhesive counterparts (cone, power law n > 1/2, flat punch, exact sphere, worn
+parabola). Other contacts (elliptical, line, BEM, sampled profiles, prescribed pressures,
+impacts) are refused with the reason. Delta gamma = 0 is never made adhesive (the model keeps
+the non-adhesive contact, exactly), unless the load is a ``cycle``, whose history it walks.
+
+The state at a depth (force) is the stable equilibrium under depth (force) control: the
+branch dd/da > 0 (dF/da > 0), beyond the pull-off. The adhesive effects report both controls.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric import adhesion as ad
+from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
+from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import StressEffects
+
+#: the effects only an adhesive contact has
+ADHESIVE_EFFECTS = ("pull_off_force", "pull_off_depth", "zero_load_contact_radius",
+                    "adhesive_force_depth_curve")
+#: effects of the non-adhesive kinds that an adhesive contact does not compute, and why
+#: the adhesive pressure is unbounded at the edge (a tension like 1/sqrt(a - r), (5.59))
+UNBOUNDED = "the adhesive pressure is unbounded (a tension) at the edge of the contact"
+WHY_NOT = {
+    "max_pressure": f"{UNBOUNDED}: its extreme is not computed; ask for 'pressure_profile'",
+    "elastic_energy": "the elastic energy of an adhesive contact is not computed (the "
+                      "'adhesive_force_depth_curve' reports the work lost per cycle)",
+}
+
+
+#: effects of a sampled profile's adhesive contact that are not computed
+SAMPLED_NOT = dict.fromkeys(
+    ("pressure_profile", "surface_displacement", "axis_stresses", "max_shear",
+     "von_mises_field", "max_von_mises"),
+    "the adhesive pressure and displacement of a sampled profile are not computed (its "
+    "force, depth, contact radius, pull-off and cycle are, by the numerical MDR)")
+
+
+def _shape(contact) -> ad.Shape:
+    """The adhesion.Shape of a non-adhesive contact, or ValueError saying why there is none."""
+    from hertzmdr.numeric.scene.kinds.axisym import ClosedFormContact, NumericalMDR
+    from hertzmdr.numeric.scene.kinds.hertz import HertzContact
+
+    if isinstance(contact, HertzContact) and contact.striker_radius is None:
+        return ad.Paraboloid(contact.R)
+    if isinstance(contact, NumericalMDR):
+        return ad.Sampled(contact.profile)
+    if isinstance(contact, ClosedFormContact):
+        p, kind = contact.form.params, contact.form.kind
+        if kind == "cone":
+            return ad.Cone(p["angle"])
+        if kind == "power_law":
+            if not p["exponent"] > 0.5:
+                raise ValueError(f"a power law with exponent {p['exponent']:g} <= 1/2 has no "
+                                 "pull-off: the adhesive force falls without bound as the "
+                                 "contact grows")
+            return ad.PowerLaw(p["coefficient"], p["exponent"])
+        if kind == "flat_punch":
+            return ad.FlatPunch(p["radius"])
+        if kind == "exact_sphere":
+            return ad.Sphere(p["radius"])
+        if kind == "flattened_parabola":
+            return ad.Worn(p["radius"], p["flat_radius"])
+    raise ValueError(f"adhesion is derived for axisymmetric profiles on a flat (sphere, cone, "
+                     f"power law, flat punch, exact sphere, flattened parabola, a sampled "
+                     f"profile); this scene is a {contact.label}")
+
+
+def adhesive(setup: Setup, contact: Contact) -> AdhesiveKind:
+    """The adhesive form of ``contact`` (see the module docstring); SceneError if none."""
+    try:
+        shape = _shape(contact)
+    except ValueError as exc:
+        key = "interface.work_of_adhesion" if setup.interface.adhesive else "load.cycle"
+        setup.fail(key, str(exc))
+    return AdhesiveKind(setup.materials, setup.interface, setup.rtol, contact, shape)
+
+
+class AdhesiveKind(StressEffects, Contact):
+    """An axisymmetric contact with adhesion (numeric/adhesion.py's AdhesiveContact).
+
+    Its stresses are the superposition of the point-force field under the adhesive pressure
+    (kinds/stresses.py); the pressure is unbounded at the edge, so are the largest stresses
+    (+inf for nu < 0.5; refused for nu = 0.5, where the surface stress there is hydrostatic to
+    leading order, as for the flat punch)."""
+
+    why_not = WHY_NOT
+    instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
+    rel = CLOSED_FORM_RTOL
+    curve_from_zero = True
+
+    def __init__(self, materials, interface, rtol, inner: Contact, shape: ad.Shape):
+        super().__init__(materials, interface, rtol)
+        self.inner, self.shape = inner, shape
+        self.model = ad.AdhesiveContact(shape, self.E_star, interface.work_of_adhesion)
+        self.kind = f"adhesive {inner.kind}"
+        dg = interface.work_of_adhesion
+        self.label = f"{inner.label}, adhesive (JKR-type MDR, work of adhesion {dg:g} J/m^2)"
+        closed = shape.closed_pull_off("force", self.E_star, max(dg, 1e-300)) is not None
+        if isinstance(shape, ad.Sampled):
+            from hertzmdr.numeric import mdr
+
+            self.method = "adhesive numerical MDR (error: coarse vs fine samples)"
+            self.state_method = "the numerical MDR"
+            self.state_range = mdr.RTOL_RANGE
+        else:
+            self.method = ("adhesive MDR, closed form" if closed else
+                           "adhesive MDR, closed form; pull-off by bracketed roots")
+        self.curve_method = self.method
+
+    # -- the JSON's model: with the Tabor parameter and its warning ------------------------
+    def warnings(self) -> list[str]:
+        z0, dg = self.interface.range, self.interface.work_of_adhesion
+        R = self._radius_of_curvature()
+        if z0 is None or dg == 0 or R is None:
+            return []
+        mu = float(ad.tabor_parameter(R, self.E_star, dg, z0))
+        if mu >= ad.TABOR_JKR:
+            return []
+        regime = "DMT (mu_T < 0.1)" if mu < 0.1 else "Maugis-Dugdale (0.1 < mu_T < 5)"
+        return [f"Tabor parameter mu_T = {mu:.3g} < {ad.TABOR_JKR:g}: JKR does not hold here "
+                f"(the contact is {regime}); the adhesive results are those of JKR"]
+
+    def _radius_of_curvature(self):
+        if isinstance(self.shape, (ad.Paraboloid, ad.Sphere, ad.Worn)):
+            return self.shape.R
+        if isinstance(self.shape, ad.PowerLaw) and self.shape.n == 2:
+            return 1 / (2 * self.shape.c_n)
+        return None
+
+    def info(self):
+        out = {**self.inner.info(), "kind": self.kind, "description": self.label,
+               "work_of_adhesion": self.interface.work_of_adhesion}
+        z0 = self.interface.range
+        R = self._radius_of_curvature()
+        if z0 is not None and R is not None:
+            out["range"] = z0
+            out["tabor_parameter"] = float(ad.tabor_parameter(
+                R, self.E_star, self.interface.work_of_adhesion, z0))
+        warn = self.warnings()
+        if warn:
+            out["warnings"] = warn
+        return out
+
+    # -- the state ----------------------------------------------------------------------
+    def _control(self, load) -> str:
+        return load.control if load.kind == "cycle" else load.kind
+
+    def state(self, load) -> State:
+        v = np.asarray(load.values, dtype=float)
+        control = self._control(load)
+        a = self._radius(control, v)
+        d, F = np.asarray(self.model.depth(a), float), np.asarray(self.model.force(a), float)
+        if isinstance(self.shape, ad.FlatPunch):  # the punch: F = 2 E* a d (5.12) in contact
+            k = 2 * self.E_star * self.shape.radius
+            d, F = (v, k * v) if control == "depth" else (v / k, v)
+        return State(d, F, self._state_error(control, v, a, d, F), self.method)
+
+    def _state_error(self, control, v, a, d, F) -> float:
+        """Closed forms: CLOSED_FORM_RTOL. The numerical MDR: the largest relative difference
+        of a, d, F from the same state on the coarse samples, plus the closed-form floor."""
+        twin = self.shape.companion()
+        if twin is None:
+            return self.rel
+        other = ad.AdhesiveContact(twin, self.E_star, self.interface.work_of_adhesion)
+        a2 = np.atleast_1d(np.asarray(other.contact_radius(**{control: v}), float))
+        d2, F2 = np.asarray(other.depth(a2), float), np.asarray(other.force(a2), float)
+        diffs = [np.abs(a2 - a) / a, np.abs(d2 - d) / np.abs(d), np.abs(F2 - F) / np.abs(F)]
+        return float(max(np.max(x) for x in diffs)) + self.rel
+
+    def _radius(self, control, v):
+        if isinstance(self.shape, ad.FlatPunch):
+            return np.full(v.shape, self.shape.radius)
+        kw = {control: v}
+        return np.atleast_1d(np.asarray(self.model.contact_radius(**kw), float))
+
+    def _a_last(self, st) -> float:
+        if isinstance(self.shape, ad.FlatPunch):
+            return self.shape.radius
+        return float(self.model.contact_radius(depth=self.last(st)))
+
+    # -- the effects ----------------------------------------------------------------------
+    def effect_contact_radius(self, st):
+        a = (np.full(np.shape(st.depth), self.shape.radius) if isinstance(
+            self.shape, ad.FlatPunch) else self.model.contact_radius(depth=st.depth))
+        return Value(np.atleast_1d(np.asarray(a, float)), "d = g(a) - Delta l(a) (5.55), "
+                     "adhesive, the stable branch", st.rel_error)
+
+    def effect_mean_pressure(self, st):
+        a = self.effect_contact_radius(st).value
+        return Value(st.force / (np.pi * a**2), "F/(pi a^2)", st.rel_error)
+
+    def effect_stiffness(self, st):
+        """dF/dd = (dF/da)/(dd/da) along the curve; 2 E* a for the punch (5.12)."""
+        a = self.effect_contact_radius(st).value
+        if isinstance(self.shape, ad.FlatPunch):
+            return Value(2 * self.E_star * a, "2 a E* (5.12)", st.rel_error)
+        dg, E, gs = self.interface.work_of_adhesion, self.E_star, self.shape.g_slope(a)
+        k = gen.adhesion_force_slope(E, a, dg, gs) / gen.adhesion_depth_slope(E, a, dg, gs)
+        return Value(k, "(dF/da)/(dd/da), adhesive", st.rel_error)
+
+    def force_of(self, d):
+        """F(d) on the stable branch under depth control [N]."""
+        d = np.atleast_1d(np.asarray(d, float))
+        if isinstance(self.shape, ad.FlatPunch):
+            return 2 * self.E_star * self.shape.radius * d
+        return self.model.force(self.model.contact_radius(depth=d))
+
+    def p(self, r, d):
+        a = (self.shape.radius if isinstance(self.shape, ad.FlatPunch)
+             else float(self.model.contact_radius(depth=d)))
+        if isinstance(self.shape, ad.FlatPunch):
+            return gen.powerlaw_punch_pressure(self.E_star, a, d, np.minimum(r, a * (1 - 1e-16))) \
+                * (np.asarray(r) < a)
+        return self.model.pressure(r, a)
+
+    def extent(self, d):
+        if isinstance(self.shape, ad.FlatPunch):
+            return self.shape.radius
+        return float(self.model.contact_radius(depth=d))
+
+    pressure_method = "(5.59): the non-adhesive pressure of radius a plus -E* Delta l/(pi " \
+                      "sqrt(a^2 - r^2))"
+
+    def pressure_radii(self, a):
+        r = super().pressure_radii(a)
+        return r[np.abs(r - a) > 1e-12 * a]  # p is -inf at the edge itself
+
+    def effect_surface_displacement(self, st):
+        a = self._a_last(st)
+        r = np.linspace(0.0, 4.0 * a, FIELD_POINTS)
+        if isinstance(self.shape, ad.FlatPunch):
+            d = self.last(st)
+            u = np.where(r <= a, d, gen.powerlaw_punch_displacement_outside(
+                a, d, np.maximum(r, a)))
+        else:
+            u = self.model.surface_displacement(r, a)
+        return Value({"r": r, "u": np.asarray(u, float)}, "d - f(r) inside, (5.60) outside "
+                     "with the edge term -(2/pi) Delta l asin(a/r)", st.rel_error)
+
+    def effect_mdr_profile(self, st):
+        if isinstance(self.shape, ad.FlatPunch):
+            return self.inner.effect_mdr_profile(st)
+        a = self._a_last(st)
+        top = 1.2 * a if np.isinf(self.shape.a_limit) else min(  # the exact sphere: x < R
+            1.2 * a, self.shape.a_limit * (1 - 1e-9))
+        x = np.linspace(0.0, top, FIELD_POINTS)
+        return Value({"x": x, "g": np.asarray(self.shape.g(x), float)}, "(5.52)", st.rel_error)
+
+    def effect_effective_radius(self):
+        R = self._radius_of_curvature()
+        if R is None:
+            raise ValueError(f"{self.label} has no radius of curvature")
+        return Value(R, "the radius of curvature of the tip", CLOSED_FORM_RTOL)
+
+    def stress_solver(self, st):
+        from hertzmdr.numeric.scene.kinds.stresses import SuperposedStresses
+
+        d = self.last(st)
+        a = self.extent(d)
+        solver = SuperposedStresses(lambda r, d=d: np.asarray(self.p(r, d), float), a,
+                                    self.materials.stressed.nu)
+        if self.interface.work_of_adhesion > 0:
+            solver.unbounded = (UNBOUNDED, a)
+        return solver
+
+    def has(self, effect):
+        if effect in ("max_shear", "max_von_mises") and self.materials.stressed.nu >= 0.5 \
+                and self.interface.work_of_adhesion > 0:
+            self.why_not = {**self.why_not, effect: (
+                f"{UNBOUNDED}; with nu = 0.5 the stress there is hydrostatic to leading order "
+                "and the maximum is not computed (ask for 'axis_stresses' or "
+                "'von_mises_field')")}
+            return False
+        if isinstance(self.shape, ad.Sampled) and effect in SAMPLED_NOT:
+            self.why_not = {**self.why_not, effect: SAMPLED_NOT[effect]}
+            return False
+        if effect == "effective_radius":
+            return self._radius_of_curvature() is not None
+        if effect in ("contact_time", "max_impact_depth", "max_impact_pressure"):
+            return False
+        return super().has(effect)
+
+    def _both(self, what):
+        out, errs, methods = {}, [], set()
+        for control in ad.CONTROLS[::-1]:  # force control first
+            po = self.model.pull_off(control)
+            out[f"{control}_control"] = getattr(po, what)
+            errs.append(po.rel_error)
+            methods.add(po.method)
+        return Value(out, " / ".join(sorted(methods)), max(errs))
+
+    def effect_pull_off_force(self):
+        return self._both("force")
+
+    def effect_pull_off_depth(self):
+        return self._both("depth")
+
+    def effect_zero_load_contact_radius(self):
+        a0 = self.model.zero_load_contact_radius()
+        err = self.rel
+        twin = self.shape.companion()
+        if twin is not None:  # the numerical MDR: coarse vs fine samples
+            other = ad.AdhesiveContact(twin, self.E_star, self.interface.work_of_adhesion)
+            err += abs(other.zero_load_contact_radius() / a0 - 1)
+        return Value(a0, "F(a) = 0 on the stable branch", err)
+
+    def effect_adhesive_force_depth_curve(self, st):
+        """The approach-push-retract history: to the scene's cycle, or to its largest load
+        under its own control."""
+        load = self._load
+        if load.kind == "cycle":
+            control, to, n = load.control, load.values[0], load.points
+        else:
+            control, n = load.kind, 1000
+            to = float(np.max(st.depth if control == "depth" else st.force))
+        cyc = self.model.cycle(to, control, n)
+        # each jump as [before, after] of depth, force and contact radius: rows in the order
+        # met (into contact first, the pull-off last)
+        jumps = np.array([[j.before, j.after] for j in cyc.jumps], float).reshape(-1, 2, 3)
+        value = {"depth": cyc.depth, "force": cyc.force, "contact_radius": cyc.contact_radius,
+                 "loading": cyc.loading, "jump_depth": jumps[:, :, 0],
+                 "jump_force": jumps[:, :, 1], "jump_contact_radius": jumps[:, :, 2],
+                 "hysteresis": cyc.hysteresis}
+        err = cyc.hysteresis_error / cyc.hysteresis if cyc.hysteresis > 0 else 0.0
+        return Value(value, f"{control}-controlled cycle on the adhesive MDR curve, jumps at "
+                     "its instabilities; hysteresis: Gauss-Legendre of F dd",
+                     max(err, st.rel_error))
+
+    def node_state(self, run):
+        self._load = run.spec.load
+        return self.state(run.spec.load)
+
+    def effect_force(self, st):
+        return Value(st.force, self.method, st.rel_error)
+
+    def effect_depth(self, st):
+        return Value(st.depth, self.method, st.rel_error)
