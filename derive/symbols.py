@@ -59,6 +59,11 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "g_integral": ("m^2", "integral of the MDR profile g(x) over [0, a] (5.57)"),
     "lam": ("1", "atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), "
             "d = R lam tanh(lam)"),
+    # fit family (derive/fit.py): a measured force curve F(z_p)
+    "z_p": ("m", "position of the tip's base (piezo), increasing into the sample"),
+    "z_0": ("m", "contact point: the position z_p where the tip first touches the sample"),
+    "F_0": ("N", "force baseline: the force at z_p = 0 before contact"),
+    "s_0": ("N/m", "slope of the force baseline before contact (drift, drag)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "
