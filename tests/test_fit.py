@@ -294,8 +294,12 @@ def test_example_curve_is_its_recipe():
 
 def test_cli_fits_the_example(tmp_path, capsys):
     out = tmp_path / "fit.png"
-    assert main(["fit", str(EXAMPLE_CURVE), "--scene", str(EXAMPLE_SCENE), "--out", str(out)]) == 0
+    assert main(["fit", str(EXAMPLE_CURVE), "--scene", str(EXAMPLE_SCENE), "--out", str(out),
+                 "--sigma", "0.5 nN"]) == 0
     text = capsys.readouterr().out
+    chi2 = float(text.split("reduced chi^2 = ")[1].split(",")[0])
+    # the recipe's noise is 0.5 nN: chi^2/476 has the standard deviation sqrt(2/476) = 0.065
+    assert abs(chi2 - 1) < 0.3, chi2
     assert out.stat().st_size > 10_000 and out.read_bytes()[:4] == b"\x89PNG"
     line = next(ln for ln in text.splitlines() if ln.startswith("E_star "))
     value, err = float(line.split()[1]), float(line.split()[2])
