@@ -34,7 +34,7 @@ import sympy as sp
 
 from hertzmdr.derive import bodies, cone, hertz, powerlaw, sphere
 from hertzmdr.derive.relation import Relation
-from hertzmdr.derive.symbols import E, E_star, R, a, d, nu, symbol
+from hertzmdr.derive.symbols import E, E_star, R, a, d, nu, symbol, unit_interval
 
 TEST = "tests/test_fit.py"
 JAC_TEST = f"{TEST}::test_jacobian_by_mpmath_derivative"
@@ -147,6 +147,7 @@ def relations() -> list[Relation]:
         ]
     sm = sphere_model()
     lam = sphere.lam
+    lam_dom = {lam: sp.atanh(unit_interval("t_lam"))}  # lam in (0, inf): a/R = t_lam
     rels += [
         Relation("fit_sphere_force", "(5.57), fit model", sm["F"],
                  (E_star, R, lam, z_p, F_0, s_0),
@@ -156,12 +157,13 @@ def relations() -> list[Relation]:
                  stable=sm["F_stable"],
                  stable_why="the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels as "
                  "lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as "
-                 "sphere_lam_force"),
+                 "sphere_lam_force", domain=lam_dom),
         Relation("fit_sphere_force_dE", "(5.57), fit model", sm["dE"], (R, lam),
                  "derivative dF/dE* [m^2] of the fit model of the exact sphere",
                  "(5.57) differentiated in E*", JAC_TEST,
                  stable=sp.diff(sm["F_stable"], E_star),
-                 stable_why="as fit_sphere_force: the 2F1 form below lam = 1/2"),
+                 stable_why="as fit_sphere_force: the 2F1 form below lam = 1/2",
+                 domain=lam_dom),
         Relation("fit_sphere_force_dz0", "(5.55), (5.57), fit model", sm["dz0"],
                  (E_star, R, lam),
                  "derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0)",
