@@ -65,6 +65,11 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "g_slope": ("1", "slope g'(a) of the MDR profile at the contact radius"),
     "F_load": ("N", "normal force, negative when adhesion pulls (adhesive contact)"),
     "z0": ("m", "range of the adhesive forces (equilibrium distance) of the Tabor parameter"),
+    # fit family (derive/fit.py): a measured force curve F(z_p)
+    "z_p": ("m", "position of the tip's base (piezo), increasing into the sample"),
+    "z_0": ("m", "contact point: the position z_p where the tip first touches the sample"),
+    "F_0": ("N", "force baseline: the force at z_p = 0 before contact"),
+    "s_0": ("N/m", "slope of the force baseline before contact (drift, drag)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

@@ -15,6 +15,9 @@ the domain where it is guaranteed finite and accurate):
 - Numerical methods: ``mdr`` (the numerical MDR of any sampled or callable profile, with its
   error bound), ``abel`` ((5.59) and (5.61) from samples), ``bem`` (non-axisymmetric contacts
   on a grid).
+- Inverse problem: ``fit`` (a force curve F(z) fitted for E*, the contact point and the
+  baseline, with the derived Jacobians of ``hertzmdr.derive.fit``; ``fit_io`` its files,
+  ``hertzmdr fit``).
 - ``scene``: a TOML scene in, exactly the asked effects out (``hertzmdr run``); ``cli`` the
   ``hertzmdr`` command; ``accuracy`` what each digit costs (``hertzmdr accuracy``).
 """

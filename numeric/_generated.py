@@ -93,6 +93,25 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'fit_cone_force',
+    'fit_cone_force_dE',
+    'fit_cone_force_dz0',
+    'fit_hertz_force',
+    'fit_hertz_force_dE',
+    'fit_hertz_force_dz0',
+    'fit_powerlaw_force',
+    'fit_powerlaw_force_dE',
+    'fit_powerlaw_force_dz0',
+    'fit_punch_force',
+    'fit_punch_force_dE',
+    'fit_punch_force_dz0',
+    'fit_sample_modulus',
+    'fit_sample_modulus_dE',
+    'fit_sample_modulus_rigid',
+    'fit_sample_modulus_rigid_dE',
+    'fit_sphere_force',
+    'fit_sphere_force_dE',
+    'fit_sphere_force_dz0',
     'flamant_sigma_xx',
     'flamant_sigma_zz',
     'flamant_tau_xz',
@@ -326,6 +345,25 @@ RELATIONS = (
     ('ellipse_semi_major', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
     ('ellipse_semi_minor', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
     ('ellipse_stiffness', '(5.13), exact', 'ellipse', 'sqrt(2)*pi*E_star*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(3/2)', ''),
+    ('fit_cone_force', '(5.40), fit model', 'fit', '2*E_star*Max(0, -z_0 + z_p)**2/(pi*tan(theta)) + F_0 + s_0*z_p', ''),
+    ('fit_cone_force_dE', '(5.40), fit model', 'fit', '2*Max(0, -z_0 + z_p)**2/(pi*tan(theta))', ''),
+    ('fit_cone_force_dz0', '(5.40), fit model', 'fit', '-4*E_star*Heaviside(-z_0 + z_p, 0)*Max(0, -z_0 + z_p)/(pi*tan(theta))', ''),
+    ('fit_hertz_force', '(5.23), fit model', 'fit', '4*E_star*sqrt(R)*Max(0, -z_0 + z_p)**(3/2)/3 + F_0 + s_0*z_p', ''),
+    ('fit_hertz_force_dE', '(5.23), fit model', 'fit', '4*sqrt(R)*Max(0, -z_0 + z_p)**(3/2)/3', ''),
+    ('fit_hertz_force_dz0', '(5.23), fit model', 'fit', '-2*E_star*sqrt(R)*Heaviside(-z_0 + z_p, 0)*sqrt(Max(0, -z_0 + z_p))', ''),
+    ('fit_powerlaw_force', 'Problem 7(d), fit model', 'fit', '2*E_star*n*(Max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*Max(0, -z_0 + z_p)/(n + 1) + F_0 + s_0*z_p', ''),
+    ('fit_powerlaw_force_dE', 'Problem 7(d), fit model', 'fit', '2*n*(Max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*Max(0, -z_0 + z_p)/(n + 1)', ''),
+    ('fit_powerlaw_force_dz0', 'Problem 7(d), fit model', 'fit', '-2*E_star*(Max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*Heaviside(-z_0 + z_p, 0)', ''),
+    ('fit_punch_force', 'Problem 7(a), fit model', 'fit', '2*E_star*a*Max(0, -z_0 + z_p) + F_0 + s_0*z_p', ''),
+    ('fit_punch_force_dE', 'Problem 7(a), fit model', 'fit', '2*a*Max(0, -z_0 + z_p)', ''),
+    ('fit_punch_force_dz0', 'Problem 7(a), fit model', 'fit', '-2*E_star*a*Heaviside(-z_0 + z_p, 0)', ''),
+    ('fit_sample_modulus', '(5.26), inverted', 'fit', 'E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)', ''),
+    ('fit_sample_modulus_dE', '(5.26), inverted', 'fit', '-E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2', ''),
+    ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
+    ('fit_sample_modulus_rigid_dE', '(5.8), inverted', 'fit', '1 - nu**2', ''),
+    ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*R**2*(lam*tanh(lam)**2 + lam - tanh(lam)) + F_0 + s_0*z_p', ''),
+    ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'R**2*(lam*tanh(lam)**2 + lam - tanh(lam))', ''),
+    ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*R*tanh(lam)', ''),
     ('flamant_sigma_xx', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x**2*z/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_tau_xz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x*z**2/(pi*(x**2 + z**2)**2)', ''),
@@ -2395,6 +2433,472 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
     import scipy.special
 
     return (1/2)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
+
+
+def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
+    """Force F [N] on a rigid cone at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.40), fit model. Derived from: (5.40) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    import functools
+
+    return 2*E_star*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**2/(numpy.pi*numpy.tan(theta)) + F_0 + s_0*z_p
+
+
+def fit_cone_force_dE(theta, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a rigid cone.
+
+    Chapter: (5.40), fit model. Derived from: (5.40) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return 2*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**2/(numpy.pi*numpy.tan(theta))
+
+
+def fit_cone_force_dz0(E_star, theta, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a rigid cone (0 for d <= 0).
+
+    Chapter: (5.40), fit model. Derived from: (5.40) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return -4*E_star*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(numpy.pi*numpy.tan(theta))
+
+
+def fit_hertz_force(E_star, R, z_p, z_0, F_0, s_0):
+    """Force F [N] on a paraboloidal (Hertz) tip at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.23), fit model. Derived from: (5.23) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    import functools
+
+    return (4/3)*E_star*numpy.sqrt(R)*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**(3/2) + F_0 + s_0*z_p
+
+
+def fit_hertz_force_dE(R, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a paraboloidal (Hertz) tip.
+
+    Chapter: (5.23), fit model. Derived from: (5.23) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return (4/3)*numpy.sqrt(R)*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**(3/2)
+
+
+def fit_hertz_force_dz0(E_star, R, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a paraboloidal (Hertz) tip (0 for d <= 0).
+
+    Chapter: (5.23), fit model. Derived from: (5.23) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return -2*E_star*numpy.sqrt(R)*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*numpy.sqrt(functools.reduce(numpy.maximum, [0, -z_0 + z_p]))
+
+
+def fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):
+    """Force F [N] on a power-law tip at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: Problem 7(d), fit model. Derived from: Problem 7(d) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    import functools
+
+    return 2*E_star*n*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(n + 1) + F_0 + s_0*z_p
+
+
+def fit_powerlaw_force_dE(c_n, kappa_n, n, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a power-law tip.
+
+    Chapter: Problem 7(d), fit model. Derived from: Problem 7(d) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return 2*n*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(n + 1)
+
+
+def fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a power-law tip (0 for d <= 0).
+
+    Chapter: Problem 7(d), fit model. Derived from: Problem 7(d) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return -2*E_star*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
+
+
+def fit_punch_force(E_star, a, z_p, z_0, F_0, s_0):
+    """Force F [N] on a flat punch at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: Problem 7(a), fit model. Derived from: Problem 7(a) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    import functools
+
+    return 2*E_star*a*functools.reduce(numpy.maximum, [0, -z_0 + z_p]) + F_0 + s_0*z_p
+
+
+def fit_punch_force_dE(a, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a flat punch.
+
+    Chapter: Problem 7(a), fit model. Derived from: Problem 7(a) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    import functools
+
+    return 2*a*functools.reduce(numpy.maximum, [0, -z_0 + z_p])
+
+
+def fit_punch_force_dz0(E_star, a, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a flat punch (0 for d <= 0).
+
+    Chapter: Problem 7(a), fit model. Derived from: Problem 7(a) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : float or ndarray
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return -2*E_star*a*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
+
+
+def fit_sample_modulus(E_star, nu1, E2, nu2):
+    """Young's modulus E1 [Pa] of the sample (body 1) under an elastic tip (body 2, E2, nu2), from the fitted E*.
+
+    Chapter: (5.26), inverted. Derived from: (5.26) solved for E1.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    E2 : float or ndarray
+        Young's modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)
+
+
+def fit_sample_modulus_dE(E_star, nu1, E2, nu2):
+    """Derivative dE1/dE* [1] of the sample's modulus under an elastic tip.
+
+    Chapter: (5.26), inverted. Derived from: (5.26) solved for E1, differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    E2 : float or ndarray
+        Young's modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return -E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2
+
+
+def fit_sample_modulus_rigid(E_star, nu):
+    """Young's modulus E [Pa] of the sample under a rigid tip, from the fitted E*.
+
+    Chapter: (5.8), inverted. Derived from: (5.8) solved for E.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return E_star*(1 - nu**2)
+
+
+def fit_sample_modulus_rigid_dE(nu):
+    """Derivative dE/dE* [1] of the sample's modulus under a rigid tip.
+
+    Chapter: (5.8), inverted. Derived from: (5.8) solved for E, differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return 1 - nu**2
+
+
+def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+    """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Printed in a stable form: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels
+    as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    import scipy.special
+
+    return F_0 + s_0*z_p + numpy.select([numpy.less(lam, 1/2),True], [E_star*R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),E_star*R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+
+
+def fit_sphere_force_dE(R, lam):
+    """Derivative dF/dE* [m^2] of the fit model of the exact sphere.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Printed in a stable form: as fit_sphere_force: the 2F1 form below lam = 1/2.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    import scipy.special
+
+    return numpy.select([numpy.less(lam, 1/2),True], [R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+
+
+def fit_sphere_force_dz0(E_star, R, lam):
+    """Derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0).
+
+    Chapter: (5.55), (5.57), fit model. Derived from: -(dF/dlam)/(dd/dlam) of (5.57) and
+    (5.55).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return -2*E_star*R*numpy.tanh(lam)
 
 
 def flamant_sigma_xx(F_L, x, z):
@@ -6118,6 +6622,50 @@ def textbook_ellipse_stiffness(E_star, R1, d, t_ba):
     import scipy.special
 
     return numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(3/2)
+
+
+def textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+    """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p, in the derived (textbook) form; use fit_sphere_force: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return E_star*R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam)) + F_0 + s_0*z_p
+
+
+def textbook_fit_sphere_force_dE(R, lam):
+    """Derivative dF/dE* [m^2] of the fit model of the exact sphere, in the derived (textbook) form; use fit_sphere_force_dE: as fit_sphere_force: the 2F1 form below lam = 1/2.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
 
 
 def textbook_hertz_displacement_outside(R, d, r):

@@ -93,6 +93,25 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'fit_cone_force',
+    'fit_cone_force_dE',
+    'fit_cone_force_dz0',
+    'fit_hertz_force',
+    'fit_hertz_force_dE',
+    'fit_hertz_force_dz0',
+    'fit_powerlaw_force',
+    'fit_powerlaw_force_dE',
+    'fit_powerlaw_force_dz0',
+    'fit_punch_force',
+    'fit_punch_force_dE',
+    'fit_punch_force_dz0',
+    'fit_sample_modulus',
+    'fit_sample_modulus_dE',
+    'fit_sample_modulus_rigid',
+    'fit_sample_modulus_rigid_dE',
+    'fit_sphere_force',
+    'fit_sphere_force_dE',
+    'fit_sphere_force_dz0',
     'flamant_sigma_xx',
     'flamant_sigma_zz',
     'flamant_tau_xz',
@@ -2137,6 +2156,446 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
         axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
     """
     return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*E_star*mpmath.sqrt(R1)*mpmath.sqrt(d)*mpmath.sqrt(mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))/((mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(1)/mpmath.mpf(2)), (2,), 1 - t_ba**2) + (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
+    """Force F [N] on a rigid cone at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.40), fit model. Derived from: (5.40) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return 2*E_star*max(0, -z_0 + z_p)**2/(mpmath.pi*mpmath.tan(theta)) + F_0 + s_0*z_p
+
+
+def fit_cone_force_dE(theta, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a rigid cone.
+
+    Chapter: (5.40), fit model. Derived from: (5.40) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return 2*max(0, -z_0 + z_p)**2/(mpmath.pi*mpmath.tan(theta))
+
+
+def fit_cone_force_dz0(E_star, theta, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a rigid cone (0 for d <= 0).
+
+    Chapter: (5.40), fit model. Derived from: (5.40) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return -4*E_star*(((0) if (z_0 - z_p >= 0) else (1)))*max(0, -z_0 + z_p)/(mpmath.pi*mpmath.tan(theta))
+
+
+def fit_hertz_force(E_star, R, z_p, z_0, F_0, s_0):
+    """Force F [N] on a paraboloidal (Hertz) tip at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.23), fit model. Derived from: (5.23) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*E_star*mpmath.sqrt(R)*max(0, -z_0 + z_p)**(mpmath.mpf(3)/mpmath.mpf(2)) + F_0 + s_0*z_p
+
+
+def fit_hertz_force_dE(R, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a paraboloidal (Hertz) tip.
+
+    Chapter: (5.23), fit model. Derived from: (5.23) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.sqrt(R)*max(0, -z_0 + z_p)**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def fit_hertz_force_dz0(E_star, R, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a paraboloidal (Hertz) tip (0 for d <= 0).
+
+    Chapter: (5.23), fit model. Derived from: (5.23) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return -2*E_star*mpmath.sqrt(R)*(((0) if (z_0 - z_p >= 0) else (1)))*mpmath.sqrt(max(0, -z_0 + z_p))
+
+
+def fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):
+    """Force F [N] on a power-law tip at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: Problem 7(d), fit model. Derived from: Problem 7(d) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return 2*E_star*n*(max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*max(0, -z_0 + z_p)/(n + 1) + F_0 + s_0*z_p
+
+
+def fit_powerlaw_force_dE(c_n, kappa_n, n, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a power-law tip.
+
+    Chapter: Problem 7(d), fit model. Derived from: Problem 7(d) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return 2*n*(max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*max(0, -z_0 + z_p)/(n + 1)
+
+
+def fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a power-law tip (0 for d <= 0).
+
+    Chapter: Problem 7(d), fit model. Derived from: Problem 7(d) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return -2*E_star*(max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*(((0) if (z_0 - z_p >= 0) else (1)))
+
+
+def fit_punch_force(E_star, a, z_p, z_0, F_0, s_0):
+    """Force F [N] on a flat punch at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
+
+    Chapter: Problem 7(a), fit model. Derived from: Problem 7(a) at d = max(0, z_p - z_0).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return 2*E_star*a*max(0, -z_0 + z_p) + F_0 + s_0*z_p
+
+
+def fit_punch_force_dE(a, z_p, z_0):
+    """Derivative dF/dE* [m^2] of the fit model of a flat punch.
+
+    Chapter: Problem 7(a), fit model. Derived from: Problem 7(a) at d = max(0, z_p - z_0),
+    differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return 2*a*max(0, -z_0 + z_p)
+
+
+def fit_punch_force_dz0(E_star, a, z_p, z_0):
+    """Derivative dF/dz_0 [N/m] of the fit model of a flat punch (0 for d <= 0).
+
+    Chapter: Problem 7(a), fit model. Derived from: Problem 7(a) at d = max(0, z_p - z_0),
+    differentiated in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    z_0 : mpmath.mpf
+        contact point: the position z_p where the tip first touches the sample [m]
+    """
+    return -2*E_star*a*(((0) if (z_0 - z_p >= 0) else (1)))
+
+
+def fit_sample_modulus(E_star, nu1, E2, nu2):
+    """Young's modulus E1 [Pa] of the sample (body 1) under an elastic tip (body 2, E2, nu2), from the fitted E*.
+
+    Chapter: (5.26), inverted. Derived from: (5.26) solved for E1.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    nu1 : mpmath.mpf
+        Poisson's ratio of body 1 [1]
+    E2 : mpmath.mpf
+        Young's modulus of body 2 [Pa]
+    nu2 : mpmath.mpf
+        Poisson's ratio of body 2 [1]
+    """
+    return E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)
+
+
+def fit_sample_modulus_dE(E_star, nu1, E2, nu2):
+    """Derivative dE1/dE* [1] of the sample's modulus under an elastic tip.
+
+    Chapter: (5.26), inverted. Derived from: (5.26) solved for E1, differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    nu1 : mpmath.mpf
+        Poisson's ratio of body 1 [1]
+    E2 : mpmath.mpf
+        Young's modulus of body 2 [Pa]
+    nu2 : mpmath.mpf
+        Poisson's ratio of body 2 [1]
+    """
+    return -E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2
+
+
+def fit_sample_modulus_rigid(E_star, nu):
+    """Young's modulus E [Pa] of the sample under a rigid tip, from the fitted E*.
+
+    Chapter: (5.8), inverted. Derived from: (5.8) solved for E.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return E_star*(1 - nu**2)
+
+
+def fit_sample_modulus_rigid_dE(nu):
+    """Derivative dE/dE* [1] of the sample's modulus under a rigid tip.
+
+    Chapter: (5.8), inverted. Derived from: (5.8) solved for E, differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sample_modulus``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return 1 - nu**2
+
+
+def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+    """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Printed in a stable form: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels
+    as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return F_0 + s_0*z_p + ((E_star*R**2*(lam*mpmath.tanh(lam)**2 + (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.tanh(lam)**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), mpmath.tanh(lam)**2))) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (E_star*R**2*(lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))))
+
+
+def fit_sphere_force_dE(R, lam):
+    """Derivative dF/dE* [m^2] of the fit model of the exact sphere.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Printed in a stable form: as fit_sphere_force: the 2F1 form below lam = 1/2.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return ((R**2*(lam*mpmath.tanh(lam)**2 + (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.tanh(lam)**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), mpmath.tanh(lam)**2))) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (R**2*(lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))))
+
+
+def fit_sphere_force_dz0(E_star, R, lam):
+    """Derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0).
+
+    Chapter: (5.55), (5.57), fit model. Derived from: -(dF/dlam)/(dd/dlam) of (5.57) and
+    (5.55).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return -2*E_star*R*mpmath.tanh(lam)
 
 
 def flamant_sigma_xx(F_L, x, z):
@@ -5786,6 +6245,50 @@ def textbook_ellipse_stiffness(E_star, R1, d, t_ba):
         axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
     """
     return mpmath.sqrt(2)*mpmath.pi*E_star*mpmath.sqrt(R1)*mpmath.sqrt(d)*mpmath.sqrt((-mpmath.ellipe(1 - t_ba**2) + mpmath.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*mpmath.ellipk(1 - t_ba**2) + mpmath.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-mpmath.ellipe(1 - t_ba**2) + mpmath.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+    """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p, in the derived (textbook) form; use fit_sphere_force: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_model_by_forward_models``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return E_star*R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam)) + F_0 + s_0*z_p
+
+
+def textbook_fit_sphere_force_dE(R, lam):
+    """Derivative dF/dE* [m^2] of the fit model of the exact sphere, in the derived (textbook) form; use fit_sphere_force_dE: as fit_sphere_force: the 2F1 form below lam = 1/2.
+
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam))
 
 
 def textbook_hertz_displacement_outside(R, d, r):

@@ -2,6 +2,7 @@
 
     hertzmdr run [SCENE] [--json] [--out DIR [--force]]
     hertzmdr effects
+    hertzmdr fit CURVE.csv --scene TIP.toml [--out FIGURE.png] [--z0 GUESS] [--sigma NOISE]
 
 ``hertzmdr run`` with no SCENE runs the built-in tour (the chapter's Problems 1-8 and figures).
 A malformed scene prints one message naming the file, the key and the problem, and exits 2.
@@ -31,6 +32,16 @@ p_run.add_argument("--json", action="store_true", help="print one JSON document 
 p_run.add_argument("--out", type=Path, help="write result.json and a PNG per field effect here")
 p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
+p_fit = sub.add_parser("fit", help="fit a force curve for the sample's modulus, the contact "
+                       "point and the baseline (docs/fitting.md)")
+p_fit.add_argument("curve", type=Path, help="CSV: a header `z [um], F [nN]` (any length and "
+                   "force units), then one position and force per line")
+p_fit.add_argument("--scene", type=Path, required=True,
+                   help="scene (TOML) with the tip and the flat sample (its nu converts E* to E)")
+p_fit.add_argument("--out", type=Path, help="write the figure of data, fit and residuals (PNG)")
+p_fit.add_argument("--z0", help="a guess of the contact point, with a unit (e.g. \"1.2 um\")")
+p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a unit "
+                   "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
 p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")
 p_acc.add_argument("--out", type=Path, default=Path("docs/accuracy.md"),
                    help="the Markdown report to write, its plot beside it as .png (default: "
@@ -144,6 +155,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         if args.command == "accuracy":
             return cmd_accuracy(args)
+        if args.command == "fit":
+            return cmd_fit(args)
         from hertzmdr.numeric.scene.schema import SceneError
 
         try:
@@ -159,6 +172,39 @@ def main(argv: list[str] | None = None) -> int:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         return 0
+
+
+def cmd_fit(args) -> int:
+    from hertzmdr.numeric import fit, fit_io
+    from hertzmdr.numeric.scene.schema import SceneError
+    from hertzmdr.numeric.scene.units import UnitError, to_si
+
+    try:
+        tip, nu, scene_E, tip_E, tip_nu = fit_io.tip_from_scene(args.scene)
+        z, F = fit_io.read_curve(args.curve)
+        z0 = None if args.z0 is None else to_si(args.z0, "length")
+        sigma = None if args.sigma is None else to_si(args.sigma, "force")
+        if args.out is not None and args.out.is_dir():
+            raise UsageError(f"--out {args.out}: is a folder; give the figure's file name")
+        result = fit.fit_curve(z, F, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
+                               sigma=sigma)
+    except SceneError as exc:
+        raise UsageError(str(exc)) from None
+    except UnitError as exc:
+        raise UsageError(f"--z0/--sigma: {exc}") from None
+    except ValueError as exc:  # CurveError, NoContactError and the validators' messages
+        raise UsageError(f"{args.curve}: {exc}" if not isinstance(exc, fit_io.CurveError)
+                         else str(exc)) from None
+    print(fit_io.report(result, scene_E))
+    if args.out is not None:
+        try:
+            fit_io.figure(result, args.out)
+        except ImportError:
+            raise UsageError("--out needs matplotlib: pip install 'hertzmdr[plot]'") from None
+        except OSError as exc:
+            raise UsageError(f"--out {args.out}: cannot write ({exc})") from None
+        print(f"wrote {args.out}")
+    return 0
 
 
 def cmd_accuracy(args) -> int:

@@ -10,9 +10,9 @@ What is where (SI units throughout):
 - ``hertzmdr.numeric``: the runtime (NumPy and SciPy): the generated closed forms, validated
   and vectorized (``hertz``, ``cone``, ``powerlaw``, ``worn``, ``sphere``, ``line``,
   ``ellipse``, ...), the stresses, the numerical methods (``mdr``, ``abel``, ``bem``), scenes
-  (``hertzmdr.numeric.scene``: a TOML scene in, exactly the asked effects out) and the
-  command line (``hertzmdr.numeric.cli``). Its own docstring lists every module.
-- ``python -m hertzmdr`` is the ``hertzmdr`` command (``run``, ``effects``, ``accuracy``).
+  (``hertzmdr.numeric.scene``: a TOML scene in, exactly the asked effects out), the fit of
+  measured force curves (``fit``) and the command line (``hertzmdr.numeric.cli``). Its own docstring lists every module.
+- ``python -m hertzmdr`` is the ``hertzmdr`` command (``run``, ``effects``, ``fit``, ``accuracy``).
 
 >>> import hertzmdr
 >>> hertzmdr.__version__            # doctest: +SKIP

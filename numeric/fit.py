@@ -1,0 +1,465 @@
+"""Fit a measured force curve F(z_p) for the sample's modulus, contact point and baseline.
+
+The model (generated from :mod:`hertzmdr.derive.fit`) is
+
+    F(z_p; E*, z_0, F_0, s_0) = F_tip(E*, d = max(0, z_p - z_0)) + F_0 + s_0 z_p,
+
+with z_p the position of the tip's base (increasing into the sample, the cantilever's
+deflection already subtracted), z_0 the contact point, F_0 + s_0 z_p the baseline before
+contact, and F_tip the force law of a closed-form tip: the paraboloid (Hertz, (5.23)), the exact
+spherical cap (Sneddon's sphere by the MDR, (5.55) and (5.57)), the cone (5.40), the flat punch
+and the power law (Problem 7). Its derivatives in E* and z_0 are derived by SymPy (dF/dz_0 = 0
+where d <= 0); F is linear in F_0 and s_0.
+
+Method: the model is linear in (E*, F_0, s_0) at a fixed z_0, so a scan of trial contact points
+over the curve, each solved by linear least squares, gives a start that needs no guess from the
+user; :func:`scipy.optimize.least_squares` (Levenberg-Marquardt, MINPACK) then refines all four
+parameters with the generated Jacobian. The standard errors are the square roots of the diagonal
+of (J^T J)^-1 s^2 at the solution, s^2 = sum(r^2)/(N - 4) the residual variance (of the weighted
+residuals when ``sigma`` is given): the linearised covariance, which is what the coverage test
+of tests/test_fit.py checks against the nominal 68 % per standard error.
+
+Not yet (issue 17): sampled tips through the numerical MDR, the pyramid as its equivalent
+cone, adhesion, batches and force maps, a comparison with nanite, speed figures
+(docs/fitting.md).
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric._validate import as_float, between, poisson, positive
+from hertzmdr.numeric.powerlaw import kappa
+from hertzmdr.numeric.scene.assumptions import check as check_assumptions
+from hertzmdr.numeric.sphere import _lam_from_depth
+
+__all__ = ["Paraboloid", "ExactSphere", "Cone", "FlatPunch", "PowerLaw", "FitResult",
+           "NoContactError", "fit_curve", "PARAMETERS"]
+
+#: names of the fitted parameters, in the order of :attr:`FitResult.values`
+PARAMETERS = ("E_star", "z_0", "F_0", "s_0")
+#: their SI units
+UNITS = ("Pa", "m", "N", "N/m")
+#: fewest points the fit accepts: four parameters and at least two degrees of freedom
+MIN_POINTS = 6
+#: fewest points in contact (d > 0) for the tip's two parameters (E*, z_0) to be determined
+MIN_CONTACT_POINTS = 3
+#: trial contact points of the start scan, spread evenly over the curve
+N_SCAN = 64
+#: a contact is detected when the tip's force at the deepest point exceeds this many standard
+#: deviations of the residuals (5 sigma: a false contact in pure noise is then a 3e-7 event)
+CONTACT_SIGNIFICANCE = 5.0
+#: sigma(z_0) above this fraction of the deepest indentation: the contact point is poorly
+#: determined (the modulus then inherits its uncertainty through their correlation)
+Z0_POOR = 0.1
+
+
+class NoContactError(ValueError):
+    """The curve shows no contact with the sample: nothing to fit."""
+
+
+@dataclass(frozen=True)
+class _Tip(ABC):
+    """What every tip provides: its force model, the model's derivatives, its limit ratios."""
+
+    @abstractmethod
+    def force(self, E_star, z, z0, F0, s0):
+        """Model force F [N] at the positions z [m] (E* [Pa], z0 [m], F0 [N], s0 [N/m])."""
+
+    @abstractmethod
+    def derivatives(self, E_star, z, z0):
+        """(dF/dE* [m^2], dF/dz_0 [N/m]) at the positions z [m]."""
+
+    @abstractmethod
+    def ratios(self, d_max: float) -> dict[str, float]:
+        """The chapter's limit ratios at the deepest indentation d_max [m] (assumptions.py)."""
+
+    @abstractmethod
+    def describe(self) -> str:
+        """The tip in words, with its geometry in SI units."""
+
+
+@dataclass(frozen=True)
+class Paraboloid(_Tip):
+    """Paraboloidal tip f = r^2/(2R) (Hertz, (5.23)); R [m] its radius of curvature, > 0."""
+
+    R: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "R", float(positive("R", self.R)))
+
+    def force(self, E_star, z, z0, F0, s0):
+        return gen.fit_hertz_force(E_star, self.R, z, z0, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        return (gen.fit_hertz_force_dE(self.R, z, z0),
+                gen.fit_hertz_force_dz0(E_star, self.R, z, z0))
+
+    def ratios(self, d_max):
+        return {"a/R": float(gen.hertz_contact_radius(self.R, d_max)) / self.R}
+
+    def describe(self):
+        return f"paraboloid (Hertz), R = {self.R:.6g} m"
+
+
+@dataclass(frozen=True)
+class ExactSphere(_Tip):
+    """Spherical cap f = R - sqrt(R^2 - r^2) (Sneddon's sphere, (5.55), (5.57)); R [m] > 0."""
+
+    R: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "R", float(positive("R", self.R)))
+
+    def _lam(self, z, z0):
+        return _lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R)
+
+    def force(self, E_star, z, z0, F0, s0):
+        return gen.fit_sphere_force(E_star, self.R, self._lam(z, z0), z, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        lam = self._lam(z, z0)
+        return (gen.fit_sphere_force_dE(self.R, lam), gen.fit_sphere_force_dz0(E_star, self.R, lam))
+
+    def ratios(self, d_max):
+        lam = _lam_from_depth(np.float64(d_max), self.R)
+        return {"a/R": float(gen.sphere_lam_contact_radius(self.R, lam)) / self.R}
+
+    def describe(self):
+        return f"exact sphere (spherical cap), R = {self.R:.6g} m"
+
+
+@dataclass(frozen=True)
+class Cone(_Tip):
+    """Rigid cone f = r tan(theta) ((5.40)); theta [rad] between its surface and the plane."""
+
+    theta: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "theta", float(between("theta", self.theta, 0.0, np.pi / 2)))
+
+    def force(self, E_star, z, z0, F0, s0):
+        return gen.fit_cone_force(E_star, self.theta, z, z0, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        return (gen.fit_cone_force_dE(self.theta, z, z0),
+                gen.fit_cone_force_dz0(E_star, self.theta, z, z0))
+
+    def ratios(self, d_max):
+        return {"tan(theta)": float(np.tan(self.theta))}
+
+    def describe(self):
+        return f"cone, theta = {self.theta:.6g} rad"
+
+
+@dataclass(frozen=True)
+class FlatPunch(_Tip):
+    """Flat cylindrical punch of radius a [m] > 0 (Problem 7(a))."""
+
+    a: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "a", float(positive("a", self.a)))
+
+    def force(self, E_star, z, z0, F0, s0):
+        return gen.fit_punch_force(E_star, self.a, z, z0, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        return (gen.fit_punch_force_dE(self.a, z, z0),
+                gen.fit_punch_force_dz0(E_star, self.a, z, z0))
+
+    def ratios(self, d_max):
+        return {"d/a": d_max / self.a}
+
+    def describe(self):
+        return f"flat punch, a = {self.a:.6g} m"
+
+
+@dataclass(frozen=True)
+class PowerLaw(_Tip):
+    """Power-law tip f = c_n r^n (Problem 7(d)); c_n [m^(1-n)] > 0, n > 0."""
+
+    c_n: float
+    n: float
+    kappa_n: float = field(init=False, repr=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "c_n", float(positive("c_n", self.c_n)))
+        object.__setattr__(self, "n", float(positive("n", self.n)))
+        object.__setattr__(self, "kappa_n", float(kappa(self.n)))
+
+    def force(self, E_star, z, z0, F0, s0):
+        return gen.fit_powerlaw_force(E_star, self.c_n, self.kappa_n, self.n, z, z0, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        return (gen.fit_powerlaw_force_dE(self.c_n, self.kappa_n, self.n, z, z0),
+                gen.fit_powerlaw_force_dz0(E_star, self.c_n, self.kappa_n, self.n, z, z0))
+
+    def ratios(self, d_max):
+        a = float(gen.powerlaw_contact_radius(self.c_n, d_max / self.kappa_n, 1.0, self.n))
+        return {"d/a": d_max / a}
+
+    def describe(self):
+        return f"power law f = c_n r^n, c_n = {self.c_n:.6g} m^(1-n), n = {self.n:.6g}"
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """The fitted parameters of a force curve, their uncertainties and the fit's diagnostics.
+
+    Attributes
+    ----------
+    tip
+        The tip the curve was fitted with.
+    values, errors
+        (E* [Pa], z_0 [m], F_0 [N], s_0 [N/m]) and their standard errors, in the order of
+        :data:`PARAMETERS`.
+    correlation
+        4 x 4 correlation matrix of the parameters.
+    E, E_error
+        The sample's Young's modulus [Pa] and its standard error, when its Poisson's ratio was
+        given (``None`` otherwise).
+    z, F, fitted, residuals
+        The data sorted by position [m], [N], the model at the data and F - model [N].
+    reduced_chi2
+        sum(weighted residuals^2)/(N - 4): about 1 when ``sigma`` was the noise's standard
+        deviation; the residual variance [N^2] when no ``sigma`` was given.
+    weighted
+        Whether ``sigma`` was given.
+    n_contact
+        Number of points in contact (z > z_0).
+    max_depth
+        Deepest indentation max(z) - z_0 [m].
+    warnings
+        One sentence per problem found (limits of the chapter's assumptions exceeded, a poorly
+        determined contact point, few points in contact).
+    """
+
+    tip: _Tip
+    values: np.ndarray
+    errors: np.ndarray
+    correlation: np.ndarray
+    E: float | None
+    E_error: float | None
+    z: np.ndarray
+    F: np.ndarray
+    fitted: np.ndarray
+    residuals: np.ndarray
+    reduced_chi2: float
+    weighted: bool
+    n_contact: int
+    max_depth: float
+    warnings: tuple[str, ...]
+
+    @property
+    def E_star(self) -> float:
+        """Fitted effective modulus E* [Pa]."""
+        return float(self.values[0])
+
+    @property
+    def z_0(self) -> float:
+        """Fitted contact point [m]."""
+        return float(self.values[1])
+
+    def table(self) -> str:
+        """The parameters with their standard errors, one per line, in SI units."""
+        rows = [f"{'parameter':<10} {'value':>14} {'std. error':>12}  unit"]
+        for name, v, e, u in zip(PARAMETERS, self.values, self.errors, UNITS, strict=True):
+            rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
+        if self.E is not None:
+            rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
+        fit = (f"reduced chi^2 = {self.reduced_chi2:.4g}" if self.weighted else
+               f"residuals' std = {np.sqrt(self.reduced_chi2):.4g} N")
+        rows.append(f"{fit}, {self.F.size} points, {self.n_contact} in contact, deepest "
+                    f"indentation {self.max_depth:.4g} m")
+        return "\n".join(rows)
+
+
+def _curve(z, F, sigma):
+    z = as_float("z", z)
+    F = as_float("F", F)
+    if z.ndim != 1 or F.ndim != 1 or z.size != F.size:
+        raise ValueError(f"z and F must be 1-D arrays of the same length; got shapes "
+                         f"{z.shape} and {F.shape}")
+    if z.size < MIN_POINTS:
+        raise ValueError(f"the curve has {z.size} points; at least {MIN_POINTS} are needed "
+                         "(four parameters and two degrees of freedom)")
+    for name, arr in (("z", z), ("F", F)):
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise ValueError(f"{name}[{i}] = {float(arr[i])!r} is out of range; valid: a "
+                             "finite number")
+    w = np.broadcast_to(positive("sigma", 1.0 if sigma is None else sigma), z.shape)
+    order = np.argsort(z, kind="stable")
+    z, F, w = z[order], F[order], w[order]
+    if not np.ptp(z) > 0:
+        raise ValueError(f"z spans no range (every z = {z[0]!r}): the curve has one position")
+    return z, F, w
+
+
+def _linear_at(tip, z, F, w, z0):
+    """(E*, F_0, s_0) by linear least squares at the fixed contact point z0, and sum(r^2)."""
+    dE, _ = tip.derivatives(1.0, z, z0)  # dF/dE* does not depend on E*
+    A = np.column_stack([dE, np.ones_like(z), z]) / w[:, None]
+    norms = np.linalg.norm(A, axis=0)
+    if not (norms > 0).all():  # no point in contact at this z0
+        return None
+    coef, *_ = np.linalg.lstsq(A / norms, F / w, rcond=None)
+    coef = coef / norms
+    res = A @ coef - F / w
+    return coef, float(res @ res)
+
+
+def _start(tip, z, F, w, z0_guess):
+    """The best start over trial contact points (and the user's guess): E* > 0, least sum(r^2)."""
+    # trial points leave at least MIN_CONTACT_POINTS points in contact
+    trials = list(np.linspace(z[0] - 0.1 * np.ptp(z), z[-MIN_CONTACT_POINTS - 1], N_SCAN))
+    if z0_guess is not None:
+        trials.append(z0_guess)
+    best = None
+    for z0 in trials:
+        out = _linear_at(tip, z, F, w, z0)
+        if out is None or not out[0][0] > 0:
+            continue
+        if best is None or out[1] < best[1]:
+            best = (np.array([out[0][0], z0, out[0][1], out[0][2]]), out[1])
+    return None if best is None else best[0]
+
+
+def _no_contact(why: str):
+    raise NoContactError(f"no contact in the curve: {why}; check that z increases into the "
+                         "sample and F is the force on the tip (positive in compression)")
+
+
+def _covariance(J):
+    """(J^T J)^-1 by the SVD of the column-scaled J, and whether J is of full rank."""
+    norms = np.linalg.norm(J, axis=0)
+    norms = np.where(norms > 0, norms, 1.0)
+    _, s, vt = np.linalg.svd(J / norms, full_matrices=False)
+    full = s[-1] > s[0] * 1e-12
+    s_inv = np.where(s > s[0] * 1e-12, 1 / s, 0.0)
+    cov = (vt.T * s_inv**2) @ vt
+    return cov / np.outer(norms, norms), bool(full)
+
+
+def _sample_modulus(E_star, err, nu, tip_modulus, tip_nu):
+    if nu is None:
+        if tip_modulus is not None:
+            raise ValueError("tip_modulus is given without nu: the sample's Poisson's ratio is "
+                             "needed to compute its Young's modulus")
+        return None, None
+    nu = float(poisson("nu", nu))
+    if tip_modulus is None:  # rigid tip
+        return (float(gen.fit_sample_modulus_rigid(E_star, nu)),
+                float(abs(gen.fit_sample_modulus_rigid_dE(nu)) * err))
+    E2 = float(positive("tip_modulus", tip_modulus))
+    nu2 = float(poisson("tip_nu", 0.0 if tip_nu is None else tip_nu))
+    if not E_star < E2 / (1 - nu2**2):
+        raise ValueError(f"the fitted E* = {E_star:.6g} Pa is not below the tip's own "
+                         f"E2/(1 - nu2^2) = {E2 / (1 - nu2**2):.6g} Pa: no sample modulus "
+                         "gives it (5.26); is the tip softer than the sample?")
+    return (float(gen.fit_sample_modulus(E_star, nu, E2, nu2)),
+            float(abs(gen.fit_sample_modulus_dE(E_star, nu, E2, nu2)) * err))
+
+
+def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=None,
+              sigma=None) -> FitResult:
+    """Fit the force curve F(z) with a tip's force law, a contact point and a linear baseline.
+
+    Parameters
+    ----------
+    z : array_like
+        Positions of the tip's base [m], increasing into the sample (any order; sorted here),
+        the cantilever's deflection subtracted.
+    F : array_like
+        Force on the tip [N], positive in compression, one per position.
+    tip : Paraboloid, ExactSphere, Cone, FlatPunch or PowerLaw
+        The tip's shape.
+    nu : float, optional
+        Poisson's ratio of the sample, -1 < nu <= 0.5: when given, the sample's Young's modulus
+        E is reported beside E* ((5.8) for a rigid tip, (5.26) for an elastic one).
+    tip_modulus, tip_nu : float, optional
+        Young's modulus [Pa] and Poisson's ratio of an elastic tip (default: a rigid tip;
+        tip_nu defaults to 0 when only tip_modulus is given).
+    z0 : float, optional
+        A guess of the contact point [m], added to the scan of trial contact points.
+    sigma : float or array_like, optional
+        Standard deviation of the force noise [N] (a number, or one per point): the residuals
+        are weighted by 1/sigma and the reduced chi^2 is then about 1 for a good fit.
+
+    Returns
+    -------
+    FitResult
+
+    Raises
+    ------
+    NoContactError
+        When the curve shows no contact (no contact point gives a positive modulus, or the
+        tip's force at the deepest point is below 5 standard deviations of the residuals).
+    ValueError
+        For invalid input, naming it, its value and the valid range.
+    """
+    if not isinstance(tip, _Tip):
+        raise ValueError(f"tip = {tip!r} is not a tip; valid: Paraboloid, ExactSphere, Cone, "
+                         "FlatPunch or PowerLaw of hertzmdr.numeric.fit")
+    z, F, w = _curve(z, F, sigma)
+    if z0 is not None:
+        z0 = float(as_float("z0", z0))
+    p0 = _start(tip, z, F, w, z0)
+    if p0 is None:
+        _no_contact("no contact point makes the force rise with a positive modulus")
+
+    def residuals(p):
+        return (tip.force(p[0], z, p[1], p[2], p[3]) - F) / w
+
+    def jacobian(p):
+        dE, dz0 = tip.derivatives(p[0], z, p[1])
+        return np.column_stack([dE, dz0, np.ones_like(z), z]) / w[:, None]
+
+    scale = np.array([abs(p0[0]), np.ptp(z), max(np.ptp(F), np.abs(F).max()),
+                      max(np.ptp(F), np.abs(F).max()) / np.ptp(z)])
+    with np.errstate(invalid="ignore"):  # numpy.select evaluates both branches of a Piecewise
+        sol = least_squares(residuals, p0, jac=jacobian, method="lm", x_scale=scale,
+                            xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
+    p = sol.x
+    res = sol.fun
+    dof = z.size - len(PARAMETERS)
+    chi2 = float(res @ res) / dof
+    d = z - p[1]
+    n_contact = int((d > 0).sum())
+    if not p[0] > 0 or n_contact < MIN_CONTACT_POINTS:
+        _no_contact(f"the best fit has E* = {p[0]:.3g} Pa and {n_contact} point(s) in contact")
+    d_max = float(d[-1])
+    tip_force = float(tip.force(p[0], z[-1:], p[1], 0.0, 0.0)[0])
+    noise = np.sqrt(chi2) * float(w[-1])
+    if tip_force < CONTACT_SIGNIFICANCE * noise:
+        _no_contact(f"the tip's force at the deepest point, {tip_force:.3g} N, is below "
+                    f"{CONTACT_SIGNIFICANCE:g} standard deviations of the residuals "
+                    f"({noise:.3g} N)")
+    cov, full = _covariance(jacobian(p))
+    cov = cov * chi2
+    err = np.sqrt(np.diag(cov))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(err, err)
+    warn = [w_["message"] for w_ in check_assumptions(tip.ratios(d_max))]
+    if not full:
+        warn.append("the Jacobian is singular: the parameters are not all determined by the "
+                    "curve (their errors are not meaningful)")
+    if err[1] > Z0_POOR * d_max:
+        warn.append(f"contact point poorly determined: sigma(z_0) = {err[1]:.3g} m is "
+                    f"{100 * err[1] / d_max:.3g} % of the deepest indentation {d_max:.3g} m")
+    if p[1] < z[0]:
+        warn.append(f"the contact point z_0 = {p[1]:.6g} m lies before the first position "
+                    f"{z[0]:.6g} m: the baseline before contact is not measured")
+    E, E_err = _sample_modulus(float(p[0]), float(err[0]), nu, tip_modulus, tip_nu)
+    fitted = tip.force(p[0], z, p[1], p[2], p[3])
+    return FitResult(tip=tip, values=p, errors=err, correlation=corr, E=E, E_error=E_err,
+                     z=z, F=F, fitted=fitted, residuals=F - fitted, reduced_chi2=chi2,
+                     weighted=sigma is not None,
+                     n_contact=n_contact, max_depth=d_max, warnings=tuple(warn))
