@@ -174,6 +174,9 @@ __all__ = [
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
     'stress_axis_sigma_zz',
+    'stress_hertz_max_orthogonal_shear',
+    'stress_hertz_max_orthogonal_shear_r',
+    'stress_hertz_max_orthogonal_shear_z',
     'stress_hertz_sigma_rr',
     'stress_hertz_sigma_rr_far',
     'stress_hertz_sigma_tt',
@@ -367,6 +370,9 @@ RELATIONS = (
     ('stress_axis_sigma_xx', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_xx_deep', '(5.49)', 'stress', 'p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*atan(a/z))/(2*a*(a**2 + z**2))', ''),
     ('stress_axis_sigma_zz', '(5.48)', 'stress', '-a**2*p0/(a**2 + z**2)', ''),
+    ('stress_hertz_max_orthogonal_shear', 'Fig. 5.9', 'stress', 'p0*sqrt(1 + sqrt(17))*(-7*sqrt(34) + 31*sqrt(2))/32', ''),
+    ('stress_hertz_max_orthogonal_shear_r', 'Fig. 5.9', 'stress', 'a*sqrt(7/4 - sqrt(17)/4)', ''),
+    ('stress_hertz_max_orthogonal_shear_z', 'Fig. 5.9', 'stress', 'a*sqrt(-4 + sqrt(17))', ''),
     ('stress_hertz_sigma_rr', 'Fig. 5.9', 'stress', 'p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))', ''),
     ('stress_hertz_sigma_rr_far', 'Fig. 5.9', 'stress', 'p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*atan(1/xi) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))', ''),
     ('stress_hertz_sigma_tt', 'Fig. 5.9', 'stress', 'p0*(-eta*(nu + 1)*(-xi*(-atan(xi) + pi/2) + 1 - 1/(3*(xi**2 + 1))) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))', ''),
@@ -4091,6 +4097,63 @@ def stress_axis_sigma_zz(a, p0, z):
     return -a**2*p0/(a**2 + z**2)
 
 
+def stress_hertz_max_orthogonal_shear(p0):
+    """The largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu).
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Printed in a stable form: the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor
+    14 of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst.
+
+    Parameters
+    ----------
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return (1/2)*numpy.sqrt(2)*p0*(5 - numpy.sqrt(17))**(3/2)/numpy.sqrt(-5 + 3*numpy.sqrt(17))
+
+
+def stress_hertz_max_orthogonal_shear_r(a):
+    """Distance r [m] from the axis of the largest |tau_rz| under the Hertz pressure.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    """
+    return a*numpy.sqrt(7/4 - 1/4*numpy.sqrt(17))
+
+
+def stress_hertz_max_orthogonal_shear_z(a):
+    """Depth z [m] of the largest |tau_rz| under the Hertz pressure.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Printed in a stable form: 17^(1/2) - 4 = 0.12 cancels a factor 33; it is 1/(17^(1/2) +
+    4).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    """
+    return a/numpy.sqrt(4 + numpy.sqrt(17))
+
+
 def stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
     """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta) (for xi < 1).
 
@@ -5477,6 +5540,40 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
         depth below the surface [m]
     """
     return -a**2*p0/(a**2 + z**2)
+
+
+def textbook_stress_hertz_max_orthogonal_shear(p0):
+    """The largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu), in the derived (textbook) form; use stress_hertz_max_orthogonal_shear: the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor 14 of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return (1/32)*p0*numpy.sqrt(1 + numpy.sqrt(17))*(-7*numpy.sqrt(34) + 31*numpy.sqrt(2))
+
+
+def textbook_stress_hertz_max_orthogonal_shear_z(a):
+    """Depth z [m] of the largest |tau_rz| under the Hertz pressure, in the derived (textbook) form; use stress_hertz_max_orthogonal_shear_z: 17^(1/2) - 4 = 0.12 cancels a factor 33; it is 1/(17^(1/2) + 4).
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    """
+    return a*numpy.sqrt(-4 + numpy.sqrt(17))
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):

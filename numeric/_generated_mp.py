@@ -174,6 +174,9 @@ __all__ = [
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
     'stress_axis_sigma_zz',
+    'stress_hertz_max_orthogonal_shear',
+    'stress_hertz_max_orthogonal_shear_r',
+    'stress_hertz_max_orthogonal_shear_z',
     'stress_hertz_sigma_rr',
     'stress_hertz_sigma_rr_far',
     'stress_hertz_sigma_tt',
@@ -3841,6 +3844,63 @@ def stress_axis_sigma_zz(a, p0, z):
     return -a**2*p0/(a**2 + z**2)
 
 
+def stress_hertz_max_orthogonal_shear(p0):
+    """The largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu).
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Printed in a stable form: the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor
+    14 of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst.
+
+    Parameters
+    ----------
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*p0*(5 - mpmath.sqrt(17))**(mpmath.mpf(3)/mpmath.mpf(2))/mpmath.sqrt(-5 + 3*mpmath.sqrt(17))
+
+
+def stress_hertz_max_orthogonal_shear_r(a):
+    """Distance r [m] from the axis of the largest |tau_rz| under the Hertz pressure.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*mpmath.sqrt(mpmath.mpf(7)/mpmath.mpf(4) - mpmath.mpf(1)/mpmath.mpf(4)*mpmath.sqrt(17))
+
+
+def stress_hertz_max_orthogonal_shear_z(a):
+    """Depth z [m] of the largest |tau_rz| under the Hertz pressure.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Printed in a stable form: 17^(1/2) - 4 = 0.12 cancels a factor 33; it is 1/(17^(1/2) +
+    4).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a/mpmath.sqrt(4 + mpmath.sqrt(17))
+
+
 def stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
     """Radial stress sigma_rr [Pa] under the Hertz pressure at the spheroidal coordinates (xi, beta) of the contact disc, eta = cos(beta), chi = sin(beta) (for xi < 1).
 
@@ -5185,6 +5245,40 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
         depth below the surface [m]
     """
     return -a**2*p0/(a**2 + z**2)
+
+
+def textbook_stress_hertz_max_orthogonal_shear(p0):
+    """The largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu), in the derived (textbook) form; use stress_hertz_max_orthogonal_shear: the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor 14 of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(32))*p0*mpmath.sqrt(1 + mpmath.sqrt(17))*(-7*mpmath.sqrt(34) + 31*mpmath.sqrt(2))
+
+
+def textbook_stress_hertz_max_orthogonal_shear_z(a):
+    """Depth z [m] of the largest |tau_rz| under the Hertz pressure, in the derived (textbook) form; use stress_hertz_max_orthogonal_shear_z: 17^(1/2) - 4 = 0.12 cancels a factor 33; it is 1/(17^(1/2) + 4).
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*mpmath.sqrt(-4 + mpmath.sqrt(17))
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):

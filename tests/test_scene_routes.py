@@ -42,7 +42,7 @@ import pytest
 
 from hertzmdr.numeric import scene
 
-from kernels import hertz_reference, uz_axisymmetric
+from kernels import hertz_reference, tau_rz_rings, uz_axisymmetric
 from oracle import FULL
 from test_ellipse import ref_force, ref_state, ref_t
 
@@ -353,7 +353,8 @@ AXI = ("depth", "force", "contact_radius", "mean_pressure", "stiffness", "effect
 HERTZ = ("depth", "force", "contact_radius", "max_pressure", "mean_pressure", "stiffness",
          "elastic_energy", "effective_modulus", "effective_radius", "principal_radii",
          "pressure_profile", "surface_displacement", "force_depth_curve", "mdr_profile",
-         "axis_stresses", "max_shear", "von_mises_field", "max_von_mises")
+         "axis_stresses", "max_shear", "von_mises_field", "max_von_mises",
+         "max_orthogonal_shear")
 
 CASES: dict[str, Case] = {
     # a rigid sphere on glass, force-controlled
@@ -379,7 +380,8 @@ CASES: dict[str, Case] = {
                                          lambda r: 0, punch=1e-3), AXI, nu=0.22),
     "power_law": Case([body("power_law", coefficient=1e6, exponent=3), body("flat", STEEL)],
                       {"depth": {"from": 1e-7, "to": 1e-6, "points": 3}}, None,
-                      lambda: PowerLaw(e_star(STEEL), 1e6, 3), AXI + ("max_pressure",)),
+                      lambda: PowerLaw(e_star(STEEL), 1e6, 3),
+                      AXI + ("max_pressure", "max_orthogonal_shear")),
     "worn": Case([body("flattened_parabola", radius=50e-6, flat_radius=2e-6),
                   body("flat", STEEL)], {"depth": 5e-8}, None,
                  lambda: MDR(e_star(STEEL),
@@ -557,7 +559,8 @@ CASES.update({
     "profile": Case([body("profile", r=SAMPLES_R, f=[r * r / (2 * PARABOLOID_R)
                                                     for r in SAMPLES_R]),
                      body("flat", STEEL)], {"depth": 1e-6}, None,
-                    lambda: Hertz(e_star(STEEL), PARABOLOID_R), AXI + ("max_pressure",)),
+                    lambda: Hertz(e_star(STEEL), PARABOLOID_R),
+                    AXI + ("max_pressure", "max_orthogonal_shear")),
     "line": Case([body("cylinder", STEEL, radius=5e-3, axis=0.0, length=10e-3),
                   body("cylinder", STEEL, radius=25e-3, axis=0.0, length=12e-3)],
                  {"force": 5e3}, None,
@@ -804,6 +807,33 @@ def check_max_von_mises(case, route, eff, name, ds):
     close(v["z"], z, 10 * math.sqrt(tol_of(eff)), "depth of max von Mises")
 
 
+def check_max_orthogonal_shear(case, route, eff, name, ds):
+    """|tau_rz| at the reported place against the point-force field superposed over rings of
+    the route's pressure (tests/kernels.py, elliptic integrals in the ring angle, 20 digits);
+    for Hertz the place is the maximum: the superposed gradient vanishes there."""
+    d = max(ds)
+    a = route.radius(d)
+    v = eff["value"]
+
+    @cache
+    def pressure(rho):  # at the route's 30 digits, as everywhere else
+        with mp.workdps(DPS):
+            return route.pressure(rho, d)
+
+    with mp.workdps(20):
+        tau, dr, dz = tau_rz_rings(pressure, v["x"], v["z"], a)
+    close(v["value"], abs(tau), stress_tol(case, eff), "|tau_rz| at its place")
+    if case.key not in SUPERPOSED:
+        # the closed form's place is exact to a few ulp of a: the gradient there is the
+        # Hessian (~2 p0/a^2) times ~1e-16 a
+        assert max(abs(dr), abs(dz)) * a < 1e-13 * abs(tau), (float(dr), float(dz))
+    else:
+        # the largest of a 13 x 12 grid (spacing a/6): the place is on the grid, the value at
+        # most the true maximum, which lies within a grid spacing; the maximum under the
+        # Hertz-like pressures here is near (0.85 a, 0.35 a)
+        assert abs(v["x"] - 0.85 * a) <= a / 6 and abs(v["z"] - 0.35 * a) <= a / 6, v
+
+
 def point_force(X, Y, z, nu):
     """The stresses at (X, Y, z) under a unit compressive force at the origin of the surface,
     tension positive (Johnson, Contact Mechanics, (3.21), turned from cylindrical axes about
@@ -938,7 +968,7 @@ CHECKS = {
     "max_von_mises": check_max_von_mises, "von_mises_field": check_von_mises_field,
     "effective_modulus": check_constant, "effective_radius": check_constant,
     "principal_radii": check_constant, "semi_axes": check_semi_axes,
-    "half_width": check_half_width,
+    "half_width": check_half_width, "max_orthogonal_shear": check_max_orthogonal_shear,
 }
 
 
@@ -1037,7 +1067,8 @@ BUGS = {
 #: run with HERTZMDR_SWEEP=full; one superposed kind (the power law) runs in every run
 #: (the maxima under a singular pressure are +inf without superposition: every run checks them)
 SLOW = {("profile", "axis_stresses"), ("power_law", "max_shear"),
-        ("power_law", "max_von_mises")} | {
+        ("power_law", "max_von_mises"), ("power_law", "max_orthogonal_shear"),
+        ("profile", "max_orthogonal_shear")} | {
     (k, e) for k in ("cone", "flat_punch", "worn", "profile") for e in STRESS_GRID
     if k == "profile" or e == "von_mises_field"}
 

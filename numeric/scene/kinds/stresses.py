@@ -15,6 +15,7 @@ from functools import cached_property
 
 import numpy as np
 
+from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
 from hertzmdr.numeric.scene.kinds.base import Value
 
 AXIS_POINTS_CLOSED, AXIS_POINTS_SUPERPOSED = 201, 31
@@ -39,7 +40,8 @@ class HertzStresses:
     """Closed forms: the Hertz pressure of contact radius a and maximum pressure p0."""
 
     ranges = {"axis_stresses": FIELD_RTOL, "von_mises_field": FIELD_RTOL,
-              "max_shear": MAXIMUM_RTOL, "max_von_mises": MAXIMUM_RTOL}
+              "max_shear": MAXIMUM_RTOL, "max_von_mises": MAXIMUM_RTOL,
+              "max_orthogonal_shear": CLOSED_FORM_RTOL}
 
     def __init__(self, a, p0, nu):
         self.a, self.p0, self.nu = a, p0, nu
@@ -76,6 +78,14 @@ class HertzStresses:
         value, r, z = stress.hertz_maximum(self.nu, "von_mises")
         return Value({"value": value * self.p0, "x": r * self.a, "z": z * self.a},
                      "maximum of (5.50) in the body (grid, then Nelder-Mead)", MAXIMUM_RTOL)
+
+    def max_orthogonal_shear(self):
+        from hertzmdr.numeric import stress
+
+        value, r, z = stress.hertz_max_orthogonal_shear()
+        return Value({"value": value * self.p0, "x": r * self.a, "z": z * self.a},
+                     "closed form: the root of the gradient of Huber's tau_rz, derived "
+                     "(any nu)", CLOSED_FORM_RTOL)
 
 
 class SuperposedStresses:
@@ -146,12 +156,20 @@ class SuperposedStresses:
                      f"largest on a {GRID_SUPERPOSED}x{GRID_SUPERPOSED - 1} grid, "
                      + self.method, f.rel_error + self.pressure_error)
 
+    def max_orthogonal_shear(self):
+        f = self._plane
+        value, x, z = f.maximum("orthogonal_shear")
+        return Value({"value": value, "x": x, "z": z},
+                     f"largest |tau_rz| on a {GRID_SUPERPOSED}x{GRID_SUPERPOSED - 1} grid, "
+                     + self.method, f.rel_error + self.pressure_error)
+
 
 class StressEffects:
-    """Mixin for contact kinds: the four stress effects, through the ``stress`` node. A kind
+    """Mixin for contact kinds: the five stress effects, through the ``stress`` node. A kind
     defines ``stress_solver(state)`` (:class:`HertzStresses` or :class:`SuperposedStresses`)."""
 
-    STRESS_EFFECTS = ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises")
+    STRESS_EFFECTS = ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises",
+                      "max_orthogonal_shear")
 
     def node_stress(self, run):
         return self.stress_solver(run.node("state"))
@@ -173,6 +191,9 @@ class StressEffects:
 
     def effect_max_von_mises(self, solver):
         return solver.max_von_mises()
+
+    def effect_max_orthogonal_shear(self, solver):
+        return solver.max_orthogonal_shear()
 
 
 __all__ = ["HertzStresses", "StressEffects", "SuperposedStresses"]
