@@ -152,6 +152,17 @@ def principal_in_plane() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     return hi, lo, tau1
 
 
+def _radius() -> sp.Expr:
+    """Mohr's circle radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2): a sum of squares."""
+    return sp.sqrt((sxx - szz) ** 2 / 4 + sxz**2)
+
+
+_WHY_RADIUS = ("the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + "
+               "sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded "
+               "surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + "
+               "tau_xz^2)^(1/2) is a sum of squares")
+
+
 @cache
 def cauchy() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """F, F', F'' of the semi-ellipse, with (zeta^2 - a^2)^(1/2) = n + i m."""
@@ -292,15 +303,18 @@ def relations() -> list[Relation]:
         Relation("line_stress_principal_max", "plane stress state x-z", hi, (sxx, szz, sxz),
                  "largest principal stress [Pa] in the x-z plane",
                  "eigenvalues of the 2x2 stress tensor",
-                 f"{TEST}::test_plane_strain_and_principal_stresses"),
+                 f"{TEST}::test_plane_strain_and_principal_stresses",
+                 stable=(sxx + szz) / 2 + _radius(), stable_why=_WHY_RADIUS),
         Relation("line_stress_principal_min", "plane stress state x-z", lo, (sxx, szz, sxz),
                  "smallest principal stress [Pa] in the x-z plane",
                  "eigenvalues of the 2x2 stress tensor",
-                 f"{TEST}::test_plane_strain_and_principal_stresses"),
+                 f"{TEST}::test_plane_strain_and_principal_stresses",
+                 stable=(sxx + szz) / 2 - _radius(), stable_why=_WHY_RADIUS),
         Relation("line_stress_principal_shear", "plane stress state x-z", tau1,
                  (sxx, szz, sxz), "principal shear stress tau_1 [Pa] in the x-z plane",
                  "half the difference of the principal stresses",
-                 f"{TEST}::test_plane_strain_and_principal_stresses"),
+                 f"{TEST}::test_plane_strain_and_principal_stresses",
+                 stable=_radius(), stable_why=_WHY_RADIUS),
     ]
     where = {"core": "x^2 + z^2 <= a^2", "deep": "x^2 + z^2 > a^2 and x^2 <= a^2 + z^2",
              "side": "x^2 > a^2 + z^2"}

@@ -2660,6 +2660,11 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : float or ndarray
@@ -2669,7 +2674,7 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
-    return (1/2)*sigma_xx + (1/2)*sigma_zz + (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return (1/2)*sigma_xx + (1/2)*sigma_zz + numpy.sqrt(tau_xz**2 + (1/4)*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
@@ -2680,6 +2685,11 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : float or ndarray
@@ -2689,7 +2699,7 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
-    return (1/2)*sigma_xx + (1/2)*sigma_zz - 1/2*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return (1/2)*sigma_xx + (1/2)*sigma_zz - numpy.sqrt(tau_xz**2 + (1/4)*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
@@ -2701,6 +2711,11 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : float or ndarray
@@ -2710,7 +2725,7 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
-    return (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return numpy.sqrt(tau_xz**2 + (1/4)*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_sigma_xx_core(a, p0, x, z):
@@ -5219,6 +5234,67 @@ def textbook_line_stress_axis_von_mises(a, nu, p0, z):
         depth below the surface [m]
     """
     return numpy.sqrt(a**6*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/numpy.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """Largest principal stress [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_max: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return (1/2)*sigma_xx + (1/2)*sigma_zz + (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def textbook_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """Smallest principal stress [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_min: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return (1/2)*sigma_xx + (1/2)*sigma_zz - 1/2*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def textbook_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """Principal shear stress tau_1 [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_shear: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: half the difference of the principal
+    stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : float or ndarray
+        normal stress component sigma_xx [Pa]
+    sigma_zz : float or ndarray
+        normal stress component sigma_zz [Pa]
+    tau_xz : float or ndarray
+        shear stress component tau_xz [Pa]
+    """
+    return (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
 
 
 def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):

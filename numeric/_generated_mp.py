@@ -2429,6 +2429,11 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -2438,7 +2443,7 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + mpmath.sqrt(tau_xz**2 + (mpmath.mpf(1)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
@@ -2449,6 +2454,11 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -2458,7 +2468,7 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.sqrt(tau_xz**2 + (mpmath.mpf(1)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
@@ -2470,6 +2480,11 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -2479,7 +2494,7 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return mpmath.sqrt(tau_xz**2 + (mpmath.mpf(1)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_sigma_xx_core(a, p0, x, z):
@@ -4924,6 +4939,67 @@ def textbook_line_stress_axis_von_mises(a, nu, p0, z):
         depth below the surface [m]
     """
     return mpmath.sqrt(a**6*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/mpmath.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))**2)
+
+
+def textbook_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """Largest principal stress [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_max: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def textbook_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """Smallest principal stress [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_min: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def textbook_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """Principal shear stress tau_1 [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_shear: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: half the difference of the principal
+    stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
 
 
 def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):

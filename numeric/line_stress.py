@@ -17,7 +17,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
 
 __all__ = ["stresses", "principal_shear", "von_mises", "axis_stresses", "max_shear",
-           "max_von_mises", "max_orthogonal_shear"]
+           "max_shear_3d", "max_von_mises", "max_orthogonal_shear"]
 
 #: below this depth (in units of b) z^2 underflows in the printed forms; the stresses there
 #: are the surface values to within O(z/b) * p0 < 1e-140 p0
@@ -174,6 +174,54 @@ def max_shear():
     """
     s = _brent(lambda t: gen.line_stress_axis_max_shear_slope(1.0, 1.0, t), 0.1, 3.0)
     return float(gen.line_stress_axis_max_shear(1.0, 1.0, s)), s
+
+
+def max_shear_3d(nu):
+    """The largest shear stress (sigma_1 - sigma_3)/2 of the 3-D stress tensor under a line
+    contact (sigma_yy = nu (sigma_xx + sigma_zz), plane strain) and its depth.
+
+    It lies on the axis, where the principal stresses are sigma_xx, sigma_yy, sigma_zz:
+    the largest of the three half-differences' maxima. (sigma_xx - sigma_zz)/2 peaks at
+    :func:`max_shear` (phi^(-5/2) p0 at z = phi^(-1/2) b); |sigma_yy - sigma_zz|/2 and
+    |sigma_xx - sigma_yy|/2 are located on a grid of 400 depths 0 <= z <= 4 b and refined by
+    bounded Brent (a flat maximum: the value to ~eps, the depth to ~1e-8 b). For
+    nu >= 0.24227 it is the in-plane maximum (0.30028 p0 at 0.78615 b); for smaller nu the
+    sigma_yy pair is larger (0.40850 p0 at 0.17337 b for nu = 0.1, p0/2 at the surface for
+    nu = 0). ``tests/test_line_stress.py``
+    checks on a grid that no point off the axis is higher.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+
+    Returns
+    -------
+    (float, float)
+        tau_max/p0 and its depth z/b (x = 0).
+    """
+    from scipy.optimize import minimize_scalar
+
+    nu = float(poisson("nu", nu))
+    best = max_shear()
+
+    def pairs(t):
+        sxx, szz, syy = axis_stresses(t, 1.0, 1.0, nu)
+        return np.abs(syy - szz) / 2, np.abs(sxx - syy) / 2
+
+    grid = np.linspace(0.0, 4.0, 401)
+    for k, column in enumerate(pairs(grid)):
+        i = int(np.argmax(column))
+        t, v = float(grid[i]), float(column[i])
+        if 0 < i < grid.size - 1:
+            res = minimize_scalar(lambda s, k=k: -float(pairs(s)[k]),
+                                  bounds=(grid[i - 1], grid[i + 1]), method="bounded",
+                                  options={"xatol": 1e-12})
+            if -res.fun > v:
+                t, v = float(res.x), -float(res.fun)
+        if v > best[0]:
+            best = (v, t)
+    return best
 
 
 def max_von_mises(nu):

@@ -266,6 +266,49 @@ def test_axis_maxima_by_superposition():
             # of the quadrature is good to ~1e-25, far below this
 
 
+def test_max_shear_3d_by_superposition():
+    """The 3-D maximum shear: for nu = 0.1 the sigma_yy pair governs; mp.findroot of the
+    slope of (sigma_yy - sigma_zz)/2 on the axis by the 30-digit superposition (kernel
+    differentiated under the integral) against max_shear_3d (bounded Brent on a flat maximum:
+    value ~eps, 1e-14; depth to xatol 1e-12 plus the flatness, sqrt(eps) ~ 1e-8 relative:
+    1e-7). For nu = 0.3 it is the in-plane maximum, exactly."""
+    with mp.workdps(30):
+        nu = mp.mpf("0.1")
+
+        def slope(zz):
+            dx, dz = superposed("xx", 0, zz, "z"), superposed("zz", 0, zz, "z")
+            return (nu * dx + (nu - 1) * dz) / 2
+
+        depth = mp.findroot(slope, mp.mpf("0.17"))
+        sx, sz = superposed("xx", 0, depth), superposed("zz", 0, depth)
+        value = (nu * (sx + sz) - sz) / 2
+    v, d = ls.max_shear_3d(0.1)
+    assert abs(v - value) < 1e-14 * value and abs(d - depth) < 1e-7 * depth, (v, d)
+    assert round(v, 4) == 0.4085 and round(d, 4) == 0.1734
+    assert ls.max_shear_3d(0.3) == ls.max_shear()
+    assert ls.max_shear_3d(0.0) == (0.5, 0.0)  # the surface centre: sigma_yy = 0
+
+
+@pytest.mark.parametrize("nu", [-0.9, 0.0, 0.1, 0.2, 0.24, 0.25, 0.3, 0.5])
+def test_max_shear_3d_is_the_global_one(nu):
+    """No point of a 241 x 181 grid (|x| <= 3 b, z <= 3 b) has a larger 3-D maximum shear
+    (1e-13: the field's rounding), and the field at the returned depth is the value."""
+    v, d = ls.max_shear_3d(nu)
+    x, z = np.meshgrid(np.linspace(-3, 3, 241), np.linspace(0, 3, 181))
+    assert ls.principal_shear(x, z, 1.0, 1.0, nu)[1].max() <= v * (1 + 1e-13)
+    assert abs(ls.principal_shear(0.0, d, 1.0, 1.0, nu)[1] - v) < 1e-14
+
+
+def test_principal_stresses_at_the_loaded_surface():
+    """sigma_xx = sigma_zz = -p, tau_xz = 0 on the loaded surface: the in-plane principal
+    stresses are -p (Mohr's radius 0; the expanded discriminant went below 0: NaN)."""
+    x = np.linspace(-0.999, 0.999, 101)
+    tau1, tmax = ls.principal_shear(x, 0.0, 1.0, 1.0, 0.3)
+    p = np.sqrt((1 - x) * (1 + x))
+    assert np.all(np.isfinite(tau1)) and np.max(np.abs(tau1)) < 1e-15
+    np.testing.assert_allclose(tmax, 0.2 * p, rtol=1e-14)  # (sigma_yy - sigma_zz)/2, nu = 0.3
+
+
 @pytest.mark.parametrize("nu", [0.0, 0.1, 0.25, 0.3, 0.5, -0.5, -1 + 1e-9])
 def test_von_mises_maximum_is_the_global_one(nu):
     """No point of a 241 x 181 grid (|x| <= 3 b, z <= 3 b) exceeds max_von_mises(nu); for
