@@ -42,7 +42,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
     Effect("force_depth_curve", "{depth: m, force: N}", "force against depth from 0 to the load",
            field=True),
     Effect("axis_stresses", "{z: m, sigma_zz: Pa, sigma_rr: Pa, tau_1: Pa}",
-           "stresses on the axis under the contact (5.48), (5.49), and tau_1 (Fig. 5.8)",
+           "stresses on the axis under the contact (5.48), (5.49), and tau_1 (Fig. 5.8); "
+           "a line contact: sigma_rr is sigma_xx, plus sigma_yy (plane strain)",
            needs=("stress",), field=True),
     Effect("max_shear", "{value: Pa, depth: m}", "the largest shear stress in the body and its "
            "depth (Fig. 5.8)", needs=("stress",)),
