@@ -11,6 +11,8 @@ maxima by root finding on generated derivatives.
 
 from __future__ import annotations
 
+from functools import cache, lru_cache
+
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
@@ -200,9 +202,14 @@ def max_shear_3d(nu):
     (float, float)
         tau_max/p0 and its depth z/b (x = 0).
     """
+    return _max_shear_3d(float(poisson("nu", nu)))
+
+
+@lru_cache(maxsize=256)
+def _max_shear_3d(nu: float) -> tuple[float, float]:
+    """:func:`max_shear_3d` for a validated nu, computed once per nu (~2 ms)."""
     from scipy.optimize import minimize_scalar
 
-    nu = float(poisson("nu", nu))
     best = max_shear()
 
     def pairs(t):
@@ -255,11 +262,12 @@ def max_von_mises(nu):
     return best[0], 0.0, best[1]
 
 
+@cache
 def max_orthogonal_shear():
     """The largest orthogonal shear |tau_xz| under a line contact and where it is.
 
     The root of the generated gradient (d(tau_xz)/dx, d(tau_xz)/dz) by MINPACK's hybrid
-    method from (0.85 b, 0.5 b). Exactly |tau_xz| = p0/4 at x = (3^(1/2)/2) b, z = b/2
+    method from (0.85 b, 0.5 b), found once (~10 ms) and kept. Exactly |tau_xz| = p0/4 at x = (3^(1/2)/2) b, z = b/2
     (zeta = b e^(i pi/6), see :mod:`hertzmdr.derive.line_stress`); independent of nu.
 
     Returns
