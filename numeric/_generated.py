@@ -120,12 +120,16 @@ __all__ = [
     'line_stress_sigma_zz_core',
     'line_stress_sigma_zz_deep',
     'line_stress_sigma_zz_side',
+    'line_stress_tau_1_core',
+    'line_stress_tau_1_deep',
+    'line_stress_tau_1_side',
     'line_stress_tau_xz_core',
     'line_stress_tau_xz_deep',
     'line_stress_tau_xz_side',
     'line_stress_tau_xz_slope_x',
     'line_stress_tau_xz_slope_z',
     'line_stress_von_mises',
+    'line_stress_von_mises_c_tau',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
@@ -316,12 +320,16 @@ RELATIONS = (
     ('line_stress_sigma_zz_core', '(5.36), Flamant', 'line_stress', '-p0*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(a*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_sigma_zz_deep', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_sigma_zz_side', '(5.36), Flamant', 'line_stress', '-2*a*p0*x*z**3/(sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_1_core', '(5.36), Flamant', 'line_stress', 'p0*sqrt(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))/(a*(z + sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))*sqrt(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_1_deep', '(5.36), Flamant', 'line_stress', '2*a*p0*z**2*sqrt(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2)/((z + sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*sqrt(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
+    ('line_stress_tau_1_side', '(5.36), Flamant', 'line_stress', '2*a*p0*z**2*sqrt(z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((x*z/sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*sqrt(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_tau_xz_core', '(5.36), Flamant', 'line_stress', '-p0*x*z*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + (a - x)*(a + x))/(a*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_tau_xz_deep', '(5.36), Flamant', 'line_stress', '-2*a*p0*x*z**3/(sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_tau_xz_side', '(5.36), Flamant', 'line_stress', '-2*a*p0*z**2*sqrt(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/((z**2 + (-a + x)*(a + x) + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) - z**2/2 - (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))', ''),
     ('line_stress_tau_xz_slope_x', '(5.36), Flamant', 'line_stress', '-a*p0*z*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(-3*x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3', ''),
     ('line_stress_tau_xz_slope_z', '(5.36), Flamant', 'line_stress', '(pi*a*p0*x*z**2*(-x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + 3*z**2/2 + 3*(a - x)*(a + x)/2 + 3*sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3) - pi*p0*(-x*z**2/sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + x*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))/(a*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)))/pi', ''),
     ('line_stress_von_mises', '(5.50), plane strain', 'line_stress', 'sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)', ''),
+    ('line_stress_von_mises_c_tau', '(5.50), plane strain', 'line_stress', 'sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)', ''),
     ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
@@ -2887,6 +2895,75 @@ def line_stress_sigma_zz_side(a, p0, x, z):
     return -2*a*p0*x*z**3/(numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
+def line_stress_tau_1_core(a, p0, x, z):
+    """Principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms; tau_1^2 factored.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return p0*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z**2)*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*(z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_1_deep(a, p0, x, z):
+    """Principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms; tau_1^2 factored.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return 2*a*p0*z**2*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z**2)/((z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_1_side(a, p0, x, z):
+    """Principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms; tau_1^2 factored.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return 2*a*p0*z**2*numpy.sqrt((1/2)*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*numpy.sqrt(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
 def line_stress_tau_xz_core(a, p0, x, z):
     """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
 
@@ -3026,6 +3103,27 @@ def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
         shear stress component tau_xz [Pa]
     """
     return numpy.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((1/2)*sigma_xx + (1/2)*sigma_zz)**2 + (3/4)*(sigma_xx - sigma_zz)**2)
+
+
+def line_stress_von_mises_c_tau(nu, c_mean, tau_1):
+    """Von Mises stress [Pa] of a plane-strain state from its mean in-plane stress c = (sigma_xx + sigma_zz)/2 and tau_1.
+
+    Chapter: (5.50), plane strain. Derived from: line_stress_von_mises with sigma_xx,
+    sigma_zz = c +- tau_1, tau_xz = 0 (the same Mohr circle).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    c_mean : float or ndarray
+        mean in-plane normal stress (sigma_xx + sigma_zz)/2 (plane strain) [Pa]
+    tau_1 : float or ndarray
+        principal shear stress in the x-z plane, the radius of Mohr's circle [Pa]
+    """
+    return numpy.sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)
 
 
 def mdr_force(E_star, a, d, g_integral):

@@ -108,6 +108,24 @@ def test_field_by_superposition(x, z):
             assert err < 2e-14, (comp, x, z, float(val), ref)
 
 
+@pytest.mark.parametrize(("x", "z"), [(0.0, 1e-6), (0.3, 1e-8), (0.5, 1e-8), (0.99, 1e-3),
+                                      (1 - 1e-6, 1e-7), (1 + 1e-6, 1e-7), (1.2, 0.3),
+                                      (0.866, 0.5), (5.0, 20.0), (2.0, 1e6)])
+def test_tau_1_by_superposition(x, z):
+    """tau_1 (its own form, (p0/b) h ((n^2 + z^2)/D)^(1/2)) and the von Mises stress at
+    nu = 1/2 (3^(1/2) tau_1 there) against the 30-digit superposition, including just below
+    the loaded surface, where tau_1 ~ z/b is a small difference of sigma_xx and sigma_zz
+    (~ -p0): products and quotients of positive terms, 2e-14 as the components."""
+    tau1, _ = ls.principal_shear(x, z, 1.0, 1.0, 0.3)
+    vm = ls.von_mises(x, z, 1.0, 1.0, 0.5)
+    with mp.workdps(30):
+        sx, sz, t = (superposed(c, x, z) for c in ("xx", "zz", "xz"))
+        ref = mp.sqrt((sx - sz) ** 2 / 4 + t * t)
+        for got, want, what in ((tau1, ref, "tau_1"), (vm, mp.sqrt(3) * ref, "von Mises")):
+            err = float(abs((mp.mpf(float(got)) - want) / want))
+            assert err < 2e-14, (what, x, z, float(got), want)
+
+
 def _closed_form_mp(comp, x, z):
     """The generated mpmath form, the region chosen as numeric/line_stress.py does."""
     ax, q = abs(x), (1 - abs(x)) * (1 + abs(x)) + z * z
