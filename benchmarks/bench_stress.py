@@ -1,4 +1,5 @@
-"""Benchmark of the stress fields; writes docs/stress.md (with the figures and the maxima).
+"""Benchmark of the stress fields; writes docs/stress.md (with the figures and the maxima),
+keeping its line-contact section (bench_line_stress.py's) as it was.
 
 Run: ``.venv/bin/python benchmarks/bench_stress.py [--quick] [--out DIR]`` (``make benchmark``
 runs it; ``--quick``: a 40 x 40 grid, two superposition settings at 5 points). Timings by
@@ -195,7 +196,13 @@ def main(argv=None):
         "the rays through the centre and converges more slowly, as the estimate shows. The route "
         "takes z > 0: on the surface sigma_zz = -p(r) and the tangential stresses need the "
         "principal value of the kernel.\n")
-    (run.docs / "stress.md").write_text("".join(lines))
+    out = run.docs / "stress.md"
+    # the line-contact section is bench_line_stress.py's: carried over from the old file
+    from bench_line_stress import BEGIN, END
+    old = out.read_text() if out.exists() else ""
+    if BEGIN in old and END in old:
+        lines.append("\n" + BEGIN + old.split(BEGIN, 1)[1].split(END, 1)[0] + END + "\n")
+    out.write_text("".join(lines))
     print("".join(lines))
 
 

@@ -66,6 +66,8 @@ _m = sp.Symbol("m_mcewen", nonnegative=True)
 _n = sp.Symbol("n_mcewen", real=True)
 _g = sp.Symbol("g_aux", nonnegative=True)  # m^2 - z^2
 _h = sp.Symbol("h_aux", nonnegative=True)  # m - z = g/(m + z)
+_c = symbol("c_mean", real=True)  # (sigma_xx + sigma_zz)/2
+_t1 = symbol("tau_1", nonnegative=True)
 
 
 def airy() -> sp.Expr:
@@ -152,6 +154,17 @@ def principal_in_plane() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     return hi, lo, tau1
 
 
+def _radius() -> sp.Expr:
+    """Mohr's circle radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2): a sum of squares."""
+    return sp.sqrt((sxx - szz) ** 2 / 4 + sxz**2)
+
+
+_WHY_RADIUS = ("the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + "
+               "sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded "
+               "surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + "
+               "tau_xz^2)^(1/2) is a sum of squares")
+
+
 @cache
 def cauchy() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """F, F', F'' of the semi-ellipse, with (zeta^2 - a^2)^(1/2) = n + i m."""
@@ -185,6 +198,26 @@ def field_stable_mn() -> dict[str, sp.Expr]:
     D = _m**2 + _n**2
     return {"zz": -p0 / a * _m * _g / D, "xx": -p0 / a * _h * (_m * _h + 2 * _n**2) / D,
             "xz": -p0 / a * _n * _g / D}
+
+
+def tau1_stable_mn() -> sp.Expr:
+    """tau_1 = (((sigma_xx - sigma_zz)/2)^2 + tau_xz^2)^(1/2) of :func:`field_stable_mn`.
+
+    With g = m^2 - z^2 and h = m - z, SymPy factors its square into
+    (p0/a)^2 h^2 (n^2 + z^2)/(m^2 + n^2) (checked here), so
+    tau_1 = (p0/a) h ((n^2 + z^2)/D)^(1/2), D = m^2 + n^2: a product of positive terms. The
+    route through the components subtracts sigma_zz from sigma_xx, which are both ~ -p0 near
+    the surface under the contact where tau_1 ~ z/b (the von Mises stress at nu = 1/2 lost
+    digits in proportion).
+    """
+    f = field_stable_mn()
+    sq = ((f["xx"] - f["zz"]) / 2) ** 2 + f["xz"] ** 2
+    sq = sq.subs({_h: _m - z, _g: (_m - z) * (_m + z)})
+    D = _m**2 + _n**2
+    target = (p0 / a) ** 2 * (_m - z) ** 2 * (_n**2 + z**2) / D
+    if sp.simplify(sp.factor(sq) - target) != 0:  # pragma: no cover - an identity
+        raise AssertionError("tau_1^2 does not factor as (p0/a)^2 h^2 (n^2 + z^2)/D")
+    return p0 / a * _h * sp.sqrt((_n**2 + z**2) / D)
 
 
 def johnson_mn() -> dict[str, sp.Expr]:
@@ -292,15 +325,18 @@ def relations() -> list[Relation]:
         Relation("line_stress_principal_max", "plane stress state x-z", hi, (sxx, szz, sxz),
                  "largest principal stress [Pa] in the x-z plane",
                  "eigenvalues of the 2x2 stress tensor",
-                 f"{TEST}::test_plane_strain_and_principal_stresses"),
+                 f"{TEST}::test_plane_strain_and_principal_stresses",
+                 stable=(sxx + szz) / 2 + _radius(), stable_why=_WHY_RADIUS),
         Relation("line_stress_principal_min", "plane stress state x-z", lo, (sxx, szz, sxz),
                  "smallest principal stress [Pa] in the x-z plane",
                  "eigenvalues of the 2x2 stress tensor",
-                 f"{TEST}::test_plane_strain_and_principal_stresses"),
+                 f"{TEST}::test_plane_strain_and_principal_stresses",
+                 stable=(sxx + szz) / 2 - _radius(), stable_why=_WHY_RADIUS),
         Relation("line_stress_principal_shear", "plane stress state x-z", tau1,
                  (sxx, szz, sxz), "principal shear stress tau_1 [Pa] in the x-z plane",
                  "half the difference of the principal stresses",
-                 f"{TEST}::test_plane_strain_and_principal_stresses"),
+                 f"{TEST}::test_plane_strain_and_principal_stresses",
+                 stable=_radius(), stable_why=_WHY_RADIUS),
     ]
     where = {"core": "x^2 + z^2 <= a^2", "deep": "x^2 + z^2 > a^2 and x^2 <= a^2 + z^2",
              "side": "x^2 > a^2 + z^2"}
@@ -315,7 +351,19 @@ def relations() -> list[Relation]:
                 name, "(5.36), Flamant", fld[comp], (a, p0, x, z),
                 f"{what} [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 "
                 f"and {where[region]}", lit, f"{TEST}::test_field_by_superposition"))
+        rels.append(Relation(
+            f"line_stress_tau_1_{region}", "(5.36), Flamant",
+            tau1_stable_mn().subs(regions()[region], simultaneous=True), (a, p0, x, z),
+            f"principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line "
+            f"pressure of half-width a, for x >= 0 and {where[region]}",
+            lit + "; tau_1^2 factored", f"{TEST}::test_tau_1_by_superposition"))
     rels += [
+        Relation("line_stress_von_mises_c_tau", "(5.50), plane strain", vm_ps[1].subs(
+            {sxx: _c + _t1, szz: _c - _t1, sxz: 0}), (nu, _c, _t1),
+                 "von Mises stress [Pa] of a plane-strain state from its mean in-plane "
+                 "stress c = (sigma_xx + sigma_zz)/2 and tau_1",
+                 "line_stress_von_mises with sigma_xx, sigma_zz = c +- tau_1, tau_xz = 0 "
+                 "(the same Mohr circle)", f"{TEST}::test_tau_1_by_superposition"),
         Relation("line_stress_tau_xz_slope_x", "(5.36), Flamant", gx, (a, p0, x, z),
                  "d(tau_xz)/dx [Pa/m] under the line pressure, x >= 0, x^2 <= a^2 + z^2",
                  "-(z/pi) Im F'' of the Cauchy integral F of the pressure",

@@ -25,6 +25,14 @@ Starting points:
   superposition of the derived (5.41)-(5.46) over the pressure, against Johnson's form at
   50 digits, by equilibrium and the surface tractions on grids, and symbolically: on the axis
   (eta = 1, chi = 0) it is the derived (5.48), (5.49).
+- The orthogonal shear |tau_rz| (the quantity of rolling-contact fatigue) is, in these
+  variables, p0 xi eta^2 chi/((xi^2 + eta^2)(1 + xi^2)^(1/2)), free of nu. It vanishes on the
+  axis (chi = 0), on the surface (xi = 0 under the contact, eta = 0 outside it) and far away,
+  so its maximum is an interior critical point; (xi, beta) -> (r, z) is a diffeomorphism of
+  the interior, so it is a critical point in (X, C) = (xi^2, eta^2) too. The logarithmic
+  derivatives are rational in X, C: SymPy solves them (:func:`orthogonal_shear_maximum`),
+  X = (17^(1/2) - 3)/4, C = (5 - 17^(1/2))/2, i.e. r^2 = (7 - 17^(1/2)) a^2/4,
+  z^2 = (17^(1/2) - 4) a^2: |tau_rz| = 0.21389 p0 at r = 0.84807 a, z = 0.35087 a.
 """
 
 from __future__ import annotations
@@ -196,6 +204,28 @@ def hertz_field(far: bool | str = False) -> dict[str, sp.Expr]:
     }
 
 
+@cache
+def orthogonal_shear_maximum() -> dict[str, sp.Expr]:
+    """The largest |tau_rz| under the Hertz pressure: value/p0, r/a and z/a at it, exactly.
+
+    |tau_rz|/p0 of :func:`hertz_field` in X = xi^2 and C = eta^2 = cos^2(beta) (chi^2 = 1 - C)
+    is X^(1/2) C (1 - C)^(1/2)/((X + C)(1 + X)^(1/2)); the numerators of d(log)/dX and
+    d(log)/dC are polynomials, whose one root with X, C in (0, 1) SymPy finds. The point is
+    r = a ((1 + X)(1 - C))^(1/2), z = a (X C)^(1/2) (the spheroidal map).
+    """
+    X, C = sp.symbols("X_sq C_sq", positive=True)
+    tau = -hertz_field()["rz"] / p0
+    tau = tau.subs(chi, sp.sqrt(1 - C)).subs({xi: sp.sqrt(X), eta: sp.sqrt(C)})
+    log_tau = sp.expand_log(sp.log(tau), force=True)
+    eqs = [sp.numer(sp.together(sp.diff(log_tau, v))) for v in (X, C)]
+    (sol,) = [s_ for s_ in sp.solve(eqs, [X, C], dict=True)
+              if all(0 < s_[v] < 1 for v in (X, C))]
+    xs, cs = (sp.radsimp(sp.expand(sol[v])) for v in (X, C))
+    return {"value": sp.radsimp(sp.simplify(tau.subs({X: xs, C: cs}))),
+            "r": sp.sqrt(sp.expand((1 + xs) * (1 - cs))), "z": sp.sqrt(sp.expand(xs * cs)),
+            "X": xs, "C": cs}
+
+
 def johnson_field() -> dict[str, sp.Expr]:
     """Johnson's (3.44) as printed there, in (r, z, u) with u = u(r, z) (for the axis check)."""
     u = spheroidal_u()
@@ -289,6 +319,24 @@ def relations() -> list[Relation]:
                  "cos(beta) = z/u^(1/2) [1] for r^2 + z^2 < a^2 (finite at z = 0)",
                  "z/u^(1/2) with u = 2 a^2 z^2/(D - q) (stress_spheroidal_u_inside): z cancels",
                  f"{TEST}::test_spheroidal_coordinates"),
+    ]
+    tmax = orthogonal_shear_maximum()
+    ortho = f"{TEST}::test_orthogonal_shear_maximum_by_superposition"
+    origin = "the root of the gradient of tau_rz (Huber's field in spheroidal variables)"
+    rels += [
+        Relation("stress_hertz_max_orthogonal_shear", "Fig. 5.9", p0 * tmax["value"], (p0,),
+                 "the largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu)",
+                 origin, ortho, stable=p0 * sp.sqrt(2) * (5 - sp.sqrt(17)) ** sp.Rational(3, 2)
+                 / (2 * sp.sqrt(3 * sp.sqrt(17) - 5)),
+                 stable_why="the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor 14 "
+                 "of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst"),
+        Relation("stress_hertz_max_orthogonal_shear_r", "Fig. 5.9", a * tmax["r"], (a,),
+                 "distance r [m] from the axis of the largest |tau_rz| under the Hertz "
+                 "pressure", origin, ortho),
+        Relation("stress_hertz_max_orthogonal_shear_z", "Fig. 5.9", a * tmax["z"], (a,),
+                 "depth z [m] of the largest |tau_rz| under the Hertz pressure", origin, ortho,
+                 stable=a / sp.sqrt(4 + sp.sqrt(17)), stable_why="17^(1/2) - 4 = 0.12 cancels "
+                 "a factor 33; it is 1/(17^(1/2) + 4)"),
     ]
     for comp, what in (("rr", "radial stress sigma_rr"), ("tt", "hoop stress sigma_theta"),
                        ("zz", "normal stress sigma_zz"), ("rz", "shear stress tau_rz")):

@@ -81,6 +81,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "tau_xy": ("Pa", "shear stress component tau_xy"),
     "tau_yz": ("Pa", "shear stress component tau_yz"),
     "tau_xz": ("Pa", "shear stress component tau_xz"),
+    "c_mean": ("Pa", "mean in-plane normal stress (sigma_xx + sigma_zz)/2 (plane strain)"),
+    "tau_1": ("Pa", "principal shear stress in the x-z plane, the radius of Mohr's circle"),
 }
 
 

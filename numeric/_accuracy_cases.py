@@ -362,7 +362,64 @@ def adhesive_pull_off() -> Quantity:
                     "samples).", truth, ways)
 
 
+def line_stress_near_edge() -> Quantity:
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import _generated_mp as gen_mp
+    from hertzmdr.numeric import line_stress as ls
+
+    b, p0, nu, x, z = 1e-4, 1e9, 0.3, 0.99e-4, 1e-6  # just below the surface by the edge
+
+    def von_mises(sxx, szz, txz, sqrt):
+        syy = nu * (sxx + szz)  # plane strain
+        return sqrt(((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) / 2 + 3 * txz**2)
+
+    def truth():
+        import mpmath as mp
+
+        # Flamant's load (generated) superposed over (5.36) by tanh-sinh, split at the edges
+        # and around the field point (the kernel's peak of width z)
+        bb, xx, zz, pp = (mp.mpf(v) for v in (b, x, z, p0))
+        pts = sorted({-bb, bb, *(xx + w * zz for w in (0, 1, -1, 10, -10)
+                                if -bb < xx + w * zz < bb)})
+        comps = [mp.quad(lambda s, f=f: pp * mp.sqrt((1 - s / bb) * (1 + s / bb))
+                         * f(1, xx - s, zz), pts)
+                 for f in (gen_mp.flamant_sigma_xx, gen_mp.flamant_sigma_zz,
+                           gen_mp.flamant_tau_xz)]
+        return von_mises(*comps, mp.sqrt)
+
+    def ways():
+        import numpy as np
+
+        def gauss(n):
+            # s = b sin(theta) removes the pressure's square-root edges; n Gauss-Legendre
+            # points in theta on each side of the field point
+            t, w = np.polynomial.legendre.leggauss(n)
+            th0 = np.arcsin(x / b)
+            nodes, weights = [], []
+            for lo, hi in ((-np.pi / 2, th0), (th0, np.pi / 2)):
+                nodes.append(lo + (hi - lo) * (t + 1) / 2)
+                weights.append(w * (hi - lo) / 2)
+            th, wt = np.concatenate(nodes), np.concatenate(weights)
+            s = b * np.sin(th)
+            f = p0 * b * np.cos(th) ** 2 * wt  # p(s) ds
+            return lambda: von_mises(*(np.sum(f * k(1.0, x - s, z)) for k in (
+                gen.flamant_sigma_xx, gen.flamant_sigma_zz, gen.flamant_tau_xz)), np.sqrt)
+
+        out = [Way("closed form (derive/line_stress.py)", "float64",
+                   lambda: ls.von_mises(x, z, b, p0, nu))]
+        out += [Way("Gauss-Legendre of Flamant's load", f"{n} points a side", gauss(n))
+                for n in (16, 64, 256, 1024)]
+        return out
+
+    return Quantity("line-contact von Mises stress by the contact edge",
+                    "(5.50) with the plane-strain sigma_yy at x = 0.99 b, z = 0.01 b under a "
+                    "line contact: the closed form of the field against float64 quadrature of "
+                    "Flamant's line load over the pressure (the route without a closed form), "
+                    "whose kernel peak of width z next to the square-root edge needs many "
+                    "points.", truth, ways)
+
+
 def all_quantities() -> list[Quantity]:
     return [hertz_force(), hertz_far_displacement(), kappa_large_n(), worn_small_depth(),
             powerlaw_pressure_large_n(), numerical_mdr_force(), impact_time(),
-            stress_superposition(), adhesive_pull_off()]
+            stress_superposition(), adhesive_pull_off(), line_stress_near_edge()]

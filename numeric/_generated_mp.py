@@ -179,12 +179,16 @@ __all__ = [
     'line_stress_sigma_zz_core',
     'line_stress_sigma_zz_deep',
     'line_stress_sigma_zz_side',
+    'line_stress_tau_1_core',
+    'line_stress_tau_1_deep',
+    'line_stress_tau_1_side',
     'line_stress_tau_xz_core',
     'line_stress_tau_xz_deep',
     'line_stress_tau_xz_side',
     'line_stress_tau_xz_slope_x',
     'line_stress_tau_xz_slope_z',
     'line_stress_von_mises',
+    'line_stress_von_mises_c_tau',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
@@ -233,6 +237,9 @@ __all__ = [
     'stress_axis_sigma_xx',
     'stress_axis_sigma_xx_deep',
     'stress_axis_sigma_zz',
+    'stress_hertz_max_orthogonal_shear',
+    'stress_hertz_max_orthogonal_shear_r',
+    'stress_hertz_max_orthogonal_shear_z',
     'stress_hertz_sigma_rr',
     'stress_hertz_sigma_rr_far',
     'stress_hertz_sigma_tt',
@@ -3810,6 +3817,11 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -3819,7 +3831,7 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + mpmath.sqrt(tau_xz**2 + (mpmath.mpf(1)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
@@ -3830,6 +3842,11 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -3839,7 +3856,7 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.sqrt(tau_xz**2 + (mpmath.mpf(1)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
@@ -3851,6 +3868,11 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     Derivation: ``hertzmdr.derive.line_stress``. Verified by
     ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
 
+    Printed in a stable form: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx
+    sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded
+    surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is
+    a sum of squares.
+
     Parameters
     ----------
     sigma_xx : mpmath.mpf
@@ -3860,7 +3882,7 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     tau_xz : mpmath.mpf
         shear stress component tau_xz [Pa]
     """
-    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+    return mpmath.sqrt(tau_xz**2 + (mpmath.mpf(1)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
 
 
 def line_stress_sigma_xx_core(a, p0, x, z):
@@ -4022,6 +4044,75 @@ def line_stress_sigma_zz_side(a, p0, x, z):
     return -2*a*p0*x*z**3/(mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
+def line_stress_tau_1_core(a, p0, x, z):
+    """Principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms; tau_1^2 factored.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return p0*mpmath.sqrt(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z**2)*(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*(z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*mpmath.sqrt(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_1_deep(a, p0, x, z):
+    """Principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 > a^2 and x^2 <= a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms; tau_1^2 factored.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return 2*a*p0*z**2*mpmath.sqrt(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z**2)/((z + mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*mpmath.sqrt(x**2*z**2/((mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (mpmath.mpf(1)/mpmath.mpf(2))*z**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
+def line_stress_tau_1_side(a, p0, x, z):
+    """Principal shear stress tau_1 [Pa] in the x-z plane at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 > a^2 + z^2.
+
+    Chapter: (5.36), Flamant. Derived from: Flamant superposed over (5.36) by the Cauchy
+    integral of the pressure (McEwen's m, n), in positive terms; tau_1^2 factored.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return 2*a*p0*z**2*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/mpmath.sqrt(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*mpmath.sqrt(x**2*z**2/(-mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - mpmath.mpf(1)/mpmath.mpf(2)*z**2 - mpmath.mpf(1)/mpmath.mpf(2)*(a - x)*(a + x) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
+
+
 def line_stress_tau_xz_core(a, p0, x, z):
     """Shear stress tau_xz [Pa] at (x, z) under the line pressure of half-width a, for x >= 0 and x^2 + z^2 <= a^2.
 
@@ -4161,6 +4252,27 @@ def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
         shear stress component tau_xz [Pa]
     """
     return mpmath.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz)**2 + (mpmath.mpf(3)/mpmath.mpf(4))*(sigma_xx - sigma_zz)**2)
+
+
+def line_stress_von_mises_c_tau(nu, c_mean, tau_1):
+    """Von Mises stress [Pa] of a plane-strain state from its mean in-plane stress c = (sigma_xx + sigma_zz)/2 and tau_1.
+
+    Chapter: (5.50), plane strain. Derived from: line_stress_von_mises with sigma_xx,
+    sigma_zz = c +- tau_1, tau_xz = 0 (the same Mohr circle).
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_tau_1_by_superposition``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    c_mean : mpmath.mpf
+        mean in-plane normal stress (sigma_xx + sigma_zz)/2 (plane strain) [Pa]
+    tau_1 : mpmath.mpf
+        principal shear stress in the x-z plane, the radius of Mohr's circle [Pa]
+    """
+    return mpmath.sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)
 
 
 def mdr_force(E_star, a, d, g_integral):
@@ -5223,6 +5335,63 @@ def stress_axis_sigma_zz(a, p0, z):
         depth below the surface [m]
     """
     return -a**2*p0/(a**2 + z**2)
+
+
+def stress_hertz_max_orthogonal_shear(p0):
+    """The largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu).
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Printed in a stable form: the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor
+    14 of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst.
+
+    Parameters
+    ----------
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*p0*(5 - mpmath.sqrt(17))**(mpmath.mpf(3)/mpmath.mpf(2))/mpmath.sqrt(-5 + 3*mpmath.sqrt(17))
+
+
+def stress_hertz_max_orthogonal_shear_r(a):
+    """Distance r [m] from the axis of the largest |tau_rz| under the Hertz pressure.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*mpmath.sqrt(mpmath.mpf(7)/mpmath.mpf(4) - mpmath.mpf(1)/mpmath.mpf(4)*mpmath.sqrt(17))
+
+
+def stress_hertz_max_orthogonal_shear_z(a):
+    """Depth z [m] of the largest |tau_rz| under the Hertz pressure.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Printed in a stable form: 17^(1/2) - 4 = 0.12 cancels a factor 33; it is 1/(17^(1/2) +
+    4).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a/mpmath.sqrt(4 + mpmath.sqrt(17))
 
 
 def stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
@@ -6381,6 +6550,67 @@ def textbook_line_stress_axis_von_mises(a, nu, p0, z):
     return mpmath.sqrt(a**6*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))/mpmath.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(mpmath.sqrt(a**2 + z**2)*(z + mpmath.sqrt(a**2 + z**2))**2) - a*p0/mpmath.sqrt(a**2 + z**2))**2)
 
 
+def textbook_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """Largest principal stress [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_max: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def textbook_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """Smallest principal stress [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_min: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: eigenvalues of the 2x2 stress tensor.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*sigma_xx + (mpmath.mpf(1)/mpmath.mpf(2))*sigma_zz - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
+def textbook_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """Principal shear stress tau_1 [Pa] in the x-z plane, in the derived (textbook) form; use line_stress_principal_shear: the eigenvalues' expanded discriminant sigma_xx^2 - 2 sigma_xx sigma_zz + sigma_zz^2 + 4 tau_xz^2 rounds below 0 where sigma_xx = sigma_zz (the loaded surface: sqrt gives NaN); Mohr's radius ((sigma_xx - sigma_zz)^2/4 + tau_xz^2)^(1/2) is a sum of squares.
+
+    Chapter: plane stress state x-z. Derived from: half the difference of the principal
+    stresses.
+
+    Derivation: ``hertzmdr.derive.line_stress``. Verified by
+    ``tests/test_line_stress.py::test_plane_strain_and_principal_stresses``.
+
+    Parameters
+    ----------
+    sigma_xx : mpmath.mpf
+        normal stress component sigma_xx [Pa]
+    sigma_zz : mpmath.mpf
+        normal stress component sigma_zz [Pa]
+    tau_xz : mpmath.mpf
+        shear stress component tau_xz [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
+
+
 def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
     """Von Mises stress [Pa] of a plane-strain state (sigma_yy = nu (sigma_xx + sigma_zz), tau_xy = tau_yz = 0), in the derived (textbook) form; use line_stress_von_mises: (5.50) expanded subtracts products of size p0^2 (it goes negative at the surface for nu = 1/2, where it is 0); ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2), c = (sigma_xx + sigma_zz)/2, has only squares.
 
@@ -6700,6 +6930,40 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
         depth below the surface [m]
     """
     return -a**2*p0/(a**2 + z**2)
+
+
+def textbook_stress_hertz_max_orthogonal_shear(p0):
+    """The largest orthogonal shear |tau_rz| [Pa] under the Hertz pressure (any nu), in the derived (textbook) form; use stress_hertz_max_orthogonal_shear: the solved form subtracts 7 34^(1/2) from 31 2^(1/2) (a factor 14 of cancellation); this one has 5 - 17^(1/2) = 0.88 at worst.
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(32))*p0*mpmath.sqrt(1 + mpmath.sqrt(17))*(-7*mpmath.sqrt(34) + 31*mpmath.sqrt(2))
+
+
+def textbook_stress_hertz_max_orthogonal_shear_z(a):
+    """Depth z [m] of the largest |tau_rz| under the Hertz pressure, in the derived (textbook) form; use stress_hertz_max_orthogonal_shear_z: 17^(1/2) - 4 = 0.12 cancels a factor 33; it is 1/(17^(1/2) + 4).
+
+    Chapter: Fig. 5.9. Derived from: the root of the gradient of tau_rz (Huber's field in
+    spheroidal variables).
+
+    Derivation: ``hertzmdr.derive.stress``. Verified by
+    ``tests/test_stress.py::test_orthogonal_shear_maximum_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*mpmath.sqrt(-4 + mpmath.sqrt(17))
 
 
 def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):

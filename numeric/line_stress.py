@@ -11,13 +11,15 @@ maxima by root finding on generated derivatives.
 
 from __future__ import annotations
 
+from functools import cache, lru_cache
+
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
 
 __all__ = ["stresses", "principal_shear", "von_mises", "axis_stresses", "max_shear",
-           "max_von_mises", "max_orthogonal_shear"]
+           "max_shear_3d", "max_von_mises", "max_orthogonal_shear"]
 
 #: below this depth (in units of b) z^2 underflows in the printed forms; the stresses there
 #: are the surface values to within O(z/b) * p0 < 1e-140 p0
@@ -43,11 +45,15 @@ def _inputs(x, z, b, p0, nu):
     return x, z, b, p0, nu
 
 
-def _in_plane(x, z, b, p0):
-    """sigma_xx, sigma_zz, tau_xz [Pa] (broadcast float arrays in)."""
+def _in_plane(x, z, b, p0, tau_1=False, tau_xz=True):
+    """sigma_xx, sigma_zz, tau_xz [Pa] (broadcast float arrays in), and with ``tau_1`` the
+    principal shear in the x-z plane from its own cancellation-free form; without ``tau_xz``
+    (not needed for the von Mises stress) it is returned as None."""
     X, Z = np.abs(x) / b, z / b  # dimensionless; the field is even in x, tau_xz odd
     Z = np.where(Z < _Z_SURFACE, 0.0, Z)
-    out = [np.zeros(X.shape) for _ in range(3)]
+    comps = ("sigma_xx", "sigma_zz") + (("tau_xz",) if tau_xz else ()) \
+        + (("tau_1",) if tau_1 else ())
+    out = [np.zeros(X.shape) for _ in comps]
     free = (Z == 0) & (X >= 1)  # the surface outside the strip is traction-free
     core = (X * X + Z * Z <= 1) & ~free
     side = ((1 - X) * (1 + X) + Z * Z < 0) & ~free
@@ -56,10 +62,12 @@ def _in_plane(x, z, b, p0):
         if not mask.any():
             continue
         xs, zs = X[mask], Z[mask]
-        for k, comp in enumerate(("sigma_xx", "sigma_zz", "tau_xz")):
+        for k, comp in enumerate(comps):
             out[k][mask] = getattr(gen, f"line_stress_{comp}_{region}")(1.0, 1.0, xs, zs)
-    sxx, szz, txz = (v * p0 for v in out)
-    return sxx, szz, np.where(x < 0, -txz, txz)
+    sxx, szz, *rest = (v * p0 for v in out)
+    txz = np.where(x < 0, -rest[0], rest[0]) if tau_xz else None
+    # on the free surface outside the strip every stress is 0, tau_1 too (zeros above)
+    return (sxx, szz, txz, *rest[1 if tau_xz else 0:])
 
 
 def stresses(x, z, b, p0, nu):
@@ -110,12 +118,13 @@ def principal_shear(x, z, b, p0, nu):
         The 3-D maximum shear (Tresca/2) [Pa], sigma_yy included.
     """
     x, z, b, p0, nu = _inputs(x, z, b, p0, nu)
-    sxx, szz, txz = _in_plane(x, z, b, p0)
+    sxx, szz, txz, tau1 = _in_plane(x, z, b, p0, tau_1=True)
     syy = gen.line_stress_sigma_yy(nu, sxx, szz)
     hi = gen.line_stress_principal_max(sxx, szz, txz)
     lo = gen.line_stress_principal_min(sxx, szz, txz)
-    tau1 = gen.line_stress_principal_shear(sxx, szz, txz)
-    tmax = 0.5 * (np.maximum(hi, syy) - np.minimum(lo, syy))
+    # (max(hi, syy) - min(lo, syy))/2, with the in-plane part from tau_1's own form (hi - lo
+    # loses digits where tau_1 << p0: just below the centre)
+    tmax = np.maximum(tau1, 0.5 * np.maximum(hi - syy, syy - lo))
     return result(tau1), result(tmax)
 
 
@@ -128,9 +137,10 @@ def von_mises(x, z, b, p0, nu):
         As in :func:`stresses`.
     """
     x, z, b, p0, nu = _inputs(x, z, b, p0, nu)
-    sxx, szz, txz = _in_plane(x, z, b, p0)
-    # (5.50) with sigma_yy = nu (sigma_xx + sigma_zz), printed as a sum of squares
-    return result(gen.line_stress_von_mises(nu, sxx, szz, txz))
+    sxx, szz, _, tau1 = _in_plane(x, z, b, p0, tau_1=True, tau_xz=False)
+    # (5.50) with sigma_yy = nu (sigma_xx + sigma_zz), as ((1 - 2 nu)^2 c^2 + 3 tau_1^2)^(1/2),
+    # c the mean in-plane stress, tau_1 from its own cancellation-free form
+    return result(gen.line_stress_von_mises_c_tau(nu, (sxx + szz) / 2, tau1))
 
 
 def axis_stresses(z, b, p0, nu):
@@ -176,6 +186,59 @@ def max_shear():
     return float(gen.line_stress_axis_max_shear(1.0, 1.0, s)), s
 
 
+def max_shear_3d(nu):
+    """The largest shear stress (sigma_1 - sigma_3)/2 of the 3-D stress tensor under a line
+    contact (sigma_yy = nu (sigma_xx + sigma_zz), plane strain) and its depth.
+
+    It lies on the axis, where the principal stresses are sigma_xx, sigma_yy, sigma_zz:
+    the largest of the three half-differences' maxima. (sigma_xx - sigma_zz)/2 peaks at
+    :func:`max_shear` (phi^(-5/2) p0 at z = phi^(-1/2) b); |sigma_yy - sigma_zz|/2 and
+    |sigma_xx - sigma_yy|/2 are located on a grid of 400 depths 0 <= z <= 4 b and refined by
+    bounded Brent (a flat maximum: the value to ~eps, the depth to ~1e-8 b). For
+    nu >= 0.24227 it is the in-plane maximum (0.30028 p0 at 0.78615 b); for smaller nu the
+    sigma_yy pair is larger (0.40850 p0 at 0.17337 b for nu = 0.1, p0/2 at the surface for
+    nu = 0). ``tests/test_line_stress.py``
+    checks on a grid that no point off the axis is higher.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+
+    Returns
+    -------
+    (float, float)
+        tau_max/p0 and its depth z/b (x = 0).
+    """
+    return _max_shear_3d(float(poisson("nu", nu)))
+
+
+@lru_cache(maxsize=256)
+def _max_shear_3d(nu: float) -> tuple[float, float]:
+    """:func:`max_shear_3d` for a validated nu, computed once per nu (~2 ms)."""
+    from scipy.optimize import minimize_scalar
+
+    best = max_shear()
+
+    def pairs(t):
+        sxx, szz, syy = axis_stresses(t, 1.0, 1.0, nu)
+        return np.abs(syy - szz) / 2, np.abs(sxx - syy) / 2
+
+    grid = np.linspace(0.0, 4.0, 401)
+    for k, column in enumerate(pairs(grid)):
+        i = int(np.argmax(column))
+        t, v = float(grid[i]), float(column[i])
+        if 0 < i < grid.size - 1:
+            res = minimize_scalar(lambda s, k=k: -float(pairs(s)[k]),
+                                  bounds=(grid[i - 1], grid[i + 1]), method="bounded",
+                                  options={"xatol": 1e-12})
+            if -res.fun > v:
+                t, v = float(res.x), -float(res.fun)
+        if v > best[0]:
+            best = (v, t)
+    return best
+
+
 def max_von_mises(nu):
     """The largest von Mises stress under a line contact (plane strain) and where it is.
 
@@ -194,7 +257,12 @@ def max_von_mises(nu):
     (float, float, float)
         sigma_vM,max/p0, x/b (= 0) and z/b at the maximum.
     """
-    nu = float(poisson("nu", nu))
+    return _max_von_mises(float(poisson("nu", nu)))
+
+
+@lru_cache(maxsize=256)
+def _max_von_mises(nu: float) -> tuple[float, float, float]:
+    """:func:`max_von_mises` for a validated nu, computed once per nu (~0.2 ms)."""
     best = (float(gen.line_stress_axis_von_mises(1.0, nu, 1.0, 0.0)), 0.0)
     grid = np.linspace(0.02, 4.0, 200)
     slope = gen.line_stress_axis_von_mises_slope(1.0, nu, 1.0, grid)
@@ -207,12 +275,14 @@ def max_von_mises(nu):
     return best[0], 0.0, best[1]
 
 
+@cache
 def max_orthogonal_shear():
     """The largest orthogonal shear |tau_xz| under a line contact and where it is.
 
     The root of the generated gradient (d(tau_xz)/dx, d(tau_xz)/dz) by MINPACK's hybrid
-    method from (0.85 b, 0.5 b). Exactly |tau_xz| = p0/4 at x = (3^(1/2)/2) b, z = b/2
-    (zeta = b e^(i pi/6), see :mod:`hertzmdr.derive.line_stress`); independent of nu.
+    method from (0.85 b, 0.5 b), found once (~10 ms) and kept. Exactly |tau_xz| = p0/4 at
+    x = (3^(1/2)/2) b, z = b/2 (zeta = b e^(i pi/6), see :mod:`hertzmdr.derive.line_stress`);
+    independent of nu.
 
     Returns
     -------

@@ -59,14 +59,22 @@ def axis_stresses_figure(path, nu: float = 0.33, z_max: float = 3.0) -> Path:
 
 
 def draw_axis_stresses(path, z, szz, sxx, tau1, *, xlabel, ylabel, title, mark=None,
-                       ylim=None) -> Path:
+                       ylim=None, syy=None) -> Path:
     """Draw sigma_zz, sigma_xx = sigma_yy and tau_1 against depth (the layout of Fig. 5.8),
-    from arrays in any units; ``mark`` = (z, tau, text) annotates the maximum."""
+    from arrays in any units; ``mark`` = (z, tau, text) annotates the maximum. With ``syy``
+    (a line contact, plane strain) sigma_xx and sigma_yy differ: both are drawn, and tau_1 is
+    the 3-D (sigma_1 - sigma_3)/2."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6.0, 4.2), dpi=120)
-    ax.plot(z, szz, label=r"$\sigma_{zz}$ (5.48)")
-    ax.plot(z, sxx, label=r"$\sigma_{xx}=\sigma_{yy}$ (5.49)")
-    ax.plot(z, tau1, label=r"$\tau_1=|\sigma_{zz}-\sigma_{xx}|/2$")
+    if syy is None:
+        ax.plot(z, szz, label=r"$\sigma_{zz}$ (5.48)")
+        ax.plot(z, sxx, label=r"$\sigma_{xx}=\sigma_{yy}$ (5.49)")
+        ax.plot(z, tau1, label=r"$\tau_1=|\sigma_{zz}-\sigma_{xx}|/2$")
+    else:
+        ax.plot(z, szz, label=r"$\sigma_{zz}$")
+        ax.plot(z, sxx, label=r"$\sigma_{xx}$")
+        ax.plot(z, syy, label=r"$\sigma_{yy}=\nu(\sigma_{xx}+\sigma_{zz})$")
+        ax.plot(z, tau1, label=r"$(\sigma_1-\sigma_3)/2$")
     if mark is not None:
         zm, tm, text = mark
         ax.plot([zm], [tm], "ko", ms=4)

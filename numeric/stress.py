@@ -27,6 +27,7 @@ from hertzmdr.numeric._validate import (
 __all__ = [
     "spheroidal", "hertz_stress_cylindrical", "hertz_stress", "axis_stresses",
     "axis_max_shear", "von_mises", "tresca", "max_shear", "hertz_maximum",
+    "hertz_max_orthogonal_shear",
     "superposed_stress", "superposed_plane", "PlaneField", "MAX_DISTANCE",
 ]
 
@@ -342,6 +343,25 @@ def hertz_maximum(nu, criterion: str = "von_mises"):
     return float(field(r_best, z_best)), r_best, z_best
 
 
+def hertz_max_orthogonal_shear():
+    """The largest orthogonal shear |tau_rz| under the Hertz pressure and where it is.
+
+    Exact (derived in :mod:`hertzmdr.derive.stress`, the one interior root of the gradient of
+    Huber's tau_rz): |tau_rz| = 0.213891 p0 at r = ((7 - 17^(1/2))/4)^(1/2) a = 0.848071 a,
+    z = (17^(1/2) - 4)^(1/2) a = 0.350864 a, for every nu (tau_rz does not depend on nu). It
+    is the largest shear stress on planes normal to the surface, the one of rolling-contact
+    fatigue under a rolling ball.
+
+    Returns
+    -------
+    (float, float, float)
+        |tau_rz|max/p0, r/a and z/a at the maximum (on the circle of that radius and depth).
+    """
+    return (float(gen.stress_hertz_max_orthogonal_shear(1.0)),
+            float(gen.stress_hertz_max_orthogonal_shear_r(1.0)),
+            float(gen.stress_hertz_max_orthogonal_shear_z(1.0)))
+
+
 # -- superposition of the point-force field (5.41)-(5.46) over an axisymmetric pressure --------
 
 def _tanh_sinh(level: int):
@@ -463,14 +483,15 @@ def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int =
 
 @dataclass(frozen=True)
 class PlaneField:
-    """The von Mises stress (5.50) and the largest shear stress (sigma_1 - sigma_3)/2 [Pa] on a
-    grid of the x-z plane (y = 0), indexed [z][x], with a relative error estimate.
+    """The von Mises stress (5.50), the largest shear stress (sigma_1 - sigma_3)/2 and the
+    orthogonal shear |tau_xz| (= |tau_rz| at y = 0) [Pa] on a grid of the x-z plane (y = 0),
+    indexed [z][x], with a relative error estimate.
 
     Attributes
     ----------
     x, z : ndarray
         The grid's coordinates [m].
-    von_mises, max_shear : ndarray
+    von_mises, max_shear, orthogonal_shear : ndarray
         Shape (len(z), len(x)) [Pa].
     rel_error : float
         The largest estimated absolute error of any stress component over the largest
@@ -481,13 +502,15 @@ class PlaneField:
     z: np.ndarray
     von_mises: np.ndarray
     max_shear: np.ndarray
+    orthogonal_shear: np.ndarray
     rel_error: float
 
     def maximum(self, criterion: str) -> tuple[float, float, float]:
-        """(value [Pa], x [m], z [m]) of the largest ``"von_mises"`` or ``"max_shear"`` on the
-        grid (located to the grid's spacing)."""
-        if criterion not in ("von_mises", "max_shear"):
-            raise ValueError(f"criterion = {criterion!r}; valid: 'von_mises', 'max_shear'")
+        """(value [Pa], x [m], z [m]) of the largest ``"von_mises"``, ``"max_shear"`` or
+        ``"orthogonal_shear"`` on the grid (located to the grid's spacing)."""
+        valid = ("von_mises", "max_shear", "orthogonal_shear")
+        if criterion not in valid:
+            raise ValueError(f"criterion = {criterion!r}; valid: {', '.join(map(repr, valid))}")
         field = getattr(self, criterion)
         k = np.unravel_index(int(np.argmax(field)), field.shape)
         return float(field[k]), float(self.x[k[1]]), float(self.z[k[0]])
@@ -521,4 +544,5 @@ def superposed_plane(pressure, a, nu, *, n: int = 13) -> PlaneField:
     X, Z = np.meshgrid(x, z)
     sig, err = superposed_stress(X, 0.0 * X, Z, pressure, a, nu)
     rel = float(np.max(np.abs(err))) / float(np.max(np.abs(sig)))
-    return PlaneField(x, z, np.asarray(von_mises(sig)), np.asarray(max_shear(sig)), rel)
+    return PlaneField(x, z, np.asarray(von_mises(sig)), np.asarray(max_shear(sig)),
+                      np.abs(sig[..., 0, 2]), rel)

@@ -462,3 +462,52 @@ def test_not_representable_is_an_error(call):
     with pytest.raises(OverflowError, match="exceeds the float64 range") as info:
         call()
     assert " = " in str(info.value)  # the inputs are named
+
+
+# -- issue 14: the line-contact field (plane strain) --------------------------------------------
+
+def _line(quantity, x, z, nu=0.3):
+    """A line-contact stress (b = p0 = 1) by the public float64 API, against the 35-digit
+    superposition of the derived Flamant load over the pressure (tests/test_line_stress.py's
+    ``superposed``, split at the strip's edges and around the field point)."""
+    from test_line_stress import superposed
+
+    from hertzmdr.numeric import line_stress as ls
+
+    def compute():
+        if quantity == "von_mises":
+            return ls.von_mises(x, z, 1.0, 1.0, nu)
+        return ls.stresses(x, z, 1.0, 1.0, nu)[("xx", "zz", "xz").index(quantity)]
+
+    def ref():
+        if quantity != "von_mises":
+            return superposed(quantity, x, z)
+        sx, sz, t = (superposed(c, x, z) for c in ("xx", "zz", "xz"))
+        sy = mp.mpf(nu) * (sx + sz)
+        return mp.sqrt(((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2 + 3 * t * t)
+    return compute, ref
+
+
+CASES += [
+    Case("line von Mises just below the surface inside the edge (x = b(1 - 1e-6), z = 1e-7 b)",
+         "the pressure's square-root edge: m^2 - z^2 and (a - x)(a + x) + n^2 are differences "
+         "of nearly equal numbers in the textbook forms", *_line("von_mises", 1 - 1e-6, 1e-7),
+         WELL),
+    Case("line sigma_xx just below the surface outside the edge (x = b(1 + 1e-6), z = 1e-7 b)",
+         "outside the strip the surface is traction-free: sigma_xx ~ z is what is left of "
+         "terms of size p0 (the g = 2 a^2 z^2/(D + e) form keeps it)",
+         *_line("xx", 1 + 1e-6, 1e-7), WELL),
+    Case("line tau_xz near the surface far outside (x = 2 b, z = 1e-8 b)",
+         "tau_xz ~ z/b vanishes on the free surface: a small difference in the textbook form",
+         *_line("xz", 2.0, 1e-8), WELL),
+    Case("line sigma_xx on the axis far below (z = 1e6 b)",
+         "far field: the textbook 2z/b - (b^2 + 2 z^2)/(b s) cancels to O(b^3/z^3), 18 digits "
+         "lost; -p0 b^3/(s (s + z)^2) has no cancellation", *_line("xx", 0.0, 1e6), WELL),
+    Case("line von Mises at nu = 1/2 just below the centre (z = 1e-6 b)",
+         "incompressible: the hydrostatic part (1 - 2 nu) c vanishes exactly and sigma_v = "
+         "3^(1/2) tau_1 ~ z/b is all that is left of stresses of size p0",
+         *_line("von_mises", 0.0, 1e-6, 0.5), WELL),
+    Case("line von Mises at nu = 1/2 far away (x = z = 1e3 b)",
+         "far field and incompressible: every stress ~ b/r, sigma_v a difference of them",
+         *_line("von_mises", 1e3, 1e3, 0.5), WELL),
+]

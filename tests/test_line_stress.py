@@ -108,6 +108,24 @@ def test_field_by_superposition(x, z):
             assert err < 2e-14, (comp, x, z, float(val), ref)
 
 
+@pytest.mark.parametrize(("x", "z"), [(0.0, 1e-6), (0.3, 1e-8), (0.5, 1e-8), (0.99, 1e-3),
+                                      (1 - 1e-6, 1e-7), (1 + 1e-6, 1e-7), (1.2, 0.3),
+                                      (0.866, 0.5), (5.0, 20.0), (2.0, 1e6)])
+def test_tau_1_by_superposition(x, z):
+    """tau_1 (its own form, (p0/b) h ((n^2 + z^2)/D)^(1/2)) and the von Mises stress at
+    nu = 1/2 (3^(1/2) tau_1 there) against the 30-digit superposition, including just below
+    the loaded surface, where tau_1 ~ z/b is a small difference of sigma_xx and sigma_zz
+    (~ -p0): products and quotients of positive terms, 2e-14 as the components."""
+    tau1, _ = ls.principal_shear(x, z, 1.0, 1.0, 0.3)
+    vm = ls.von_mises(x, z, 1.0, 1.0, 0.5)
+    with mp.workdps(30):
+        sx, sz, t = (superposed(c, x, z) for c in ("xx", "zz", "xz"))
+        ref = mp.sqrt((sx - sz) ** 2 / 4 + t * t)
+        for got, want, what in ((tau1, ref, "tau_1"), (vm, mp.sqrt(3) * ref, "von Mises")):
+            err = float(abs((mp.mpf(float(got)) - want) / want))
+            assert err < 2e-14, (what, x, z, float(got), want)
+
+
 def _closed_form_mp(comp, x, z):
     """The generated mpmath form, the region chosen as numeric/line_stress.py does."""
     ax, q = abs(x), (1 - abs(x)) * (1 + abs(x)) + z * z
@@ -224,17 +242,37 @@ def test_plane_strain_and_principal_stresses():
 
 # -- maxima -----------------------------------------------------------------------------------
 
+@cache
+def _tau1_root():
+    """(z/b, tau_1/p0) at the root of d(tau_1)/dz on the axis: mp.findroot on the 30-digit
+    superposition (computed once, shared by the tests below)."""
+    with mp.workdps(30):
+        def tau1_slope(zz):
+            return (superposed("xx", 0, zz, "z") - superposed("zz", 0, zz, "z")) / 2
+
+        depth = mp.findroot(tau1_slope, mp.mpf("0.78"))
+        return depth, (superposed("xx", 0, depth) - superposed("zz", 0, depth)) / 2
+
+
+@cache
+def _orthogonal_root():
+    """(x/b, z/b, |tau_xz|/p0) at the root of the gradient of tau_xz, x > 0: mp.findroot on the
+    30-digit superposition (computed once, shared)."""
+    with mp.workdps(30):
+        def grad(xx, zz):
+            return superposed("xz", xx, zz, "x"), superposed("xz", xx, zz, "z")
+
+        xr, zr = mp.findroot(grad, (mp.mpf("0.86"), mp.mpf("0.5")))
+        return xr, zr, -superposed("xz", xr, zr)
+
+
 def test_axis_maxima_by_superposition():
     """tau_1 and von Mises maxima on the axis: mp.findroot of the derivative of the 30-digit
     superposition (kernel differentiated under the integral), against the exact golden-ratio
     values and max_shear()/max_von_mises(). float64: the value at a maximum is flat (error
     ~ eps), the depth is a simple root of a slope computed to ~eps: 1e-14 both."""
     with mp.workdps(30):
-        def tau1_slope(zz):
-            return (superposed("xx", 0, zz, "z") - superposed("zz", 0, zz, "z")) / 2
-
-        depth = mp.findroot(tau1_slope, mp.mpf("0.78"))
-        value = (superposed("xx", 0, depth) - superposed("zz", 0, depth)) / 2
+        depth, value = _tau1_root()
         gold = (1 + mp.sqrt(5)) / 2
         assert abs(depth - gold ** mp.mpf(-0.5)) < mp.mpf(10) ** -28
         assert abs(value - gold ** mp.mpf(-2.5)) < mp.mpf(10) ** -28
@@ -266,6 +304,49 @@ def test_axis_maxima_by_superposition():
             # of the quadrature is good to ~1e-25, far below this
 
 
+def test_max_shear_3d_by_superposition():
+    """The 3-D maximum shear: for nu = 0.1 the sigma_yy pair governs; mp.findroot of the
+    slope of (sigma_yy - sigma_zz)/2 on the axis by the 30-digit superposition (kernel
+    differentiated under the integral) against max_shear_3d (bounded Brent on a flat maximum:
+    value ~eps, 1e-14; depth to xatol 1e-12 plus the flatness, sqrt(eps) ~ 1e-8 relative:
+    1e-7). For nu = 0.3 it is the in-plane maximum, exactly."""
+    with mp.workdps(30):
+        nu = mp.mpf("0.1")
+
+        def slope(zz):
+            dx, dz = superposed("xx", 0, zz, "z"), superposed("zz", 0, zz, "z")
+            return (nu * dx + (nu - 1) * dz) / 2
+
+        depth = mp.findroot(slope, mp.mpf("0.17"))
+        sx, sz = superposed("xx", 0, depth), superposed("zz", 0, depth)
+        value = (nu * (sx + sz) - sz) / 2
+    v, d = ls.max_shear_3d(0.1)
+    assert abs(v - value) < 1e-14 * value and abs(d - depth) < 1e-7 * depth, (v, d)
+    assert round(v, 4) == 0.4085 and round(d, 4) == 0.1734
+    assert ls.max_shear_3d(0.3) == ls.max_shear()
+    assert ls.max_shear_3d(0.0) == (0.5, 0.0)  # the surface centre: sigma_yy = 0
+
+
+@pytest.mark.parametrize("nu", [-0.9, 0.0, 0.1, 0.2, 0.24, 0.25, 0.3, 0.5])
+def test_max_shear_3d_is_the_global_one(nu):
+    """No point of a 241 x 181 grid (|x| <= 3 b, z <= 3 b) has a larger 3-D maximum shear
+    (1e-13: the field's rounding), and the field at the returned depth is the value."""
+    v, d = ls.max_shear_3d(nu)
+    x, z = np.meshgrid(np.linspace(-3, 3, 241), np.linspace(0, 3, 181))
+    assert ls.principal_shear(x, z, 1.0, 1.0, nu)[1].max() <= v * (1 + 1e-13)
+    assert abs(ls.principal_shear(0.0, d, 1.0, 1.0, nu)[1] - v) < 1e-14
+
+
+def test_principal_stresses_at_the_loaded_surface():
+    """sigma_xx = sigma_zz = -p, tau_xz = 0 on the loaded surface: the in-plane principal
+    stresses are -p (Mohr's radius 0; the expanded discriminant went below 0: NaN)."""
+    x = np.linspace(-0.999, 0.999, 101)
+    tau1, tmax = ls.principal_shear(x, 0.0, 1.0, 1.0, 0.3)
+    p = np.sqrt((1 - x) * (1 + x))
+    assert np.all(np.isfinite(tau1)) and np.max(np.abs(tau1)) < 1e-15
+    np.testing.assert_allclose(tmax, 0.2 * p, rtol=1e-14)  # (sigma_yy - sigma_zz)/2, nu = 0.3
+
+
 @pytest.mark.parametrize("nu", [0.0, 0.1, 0.25, 0.3, 0.5, -0.5, -1 + 1e-9])
 def test_von_mises_maximum_is_the_global_one(nu):
     """No point of a 241 x 181 grid (|x| <= 3 b, z <= 3 b) exceeds max_von_mises(nu); for
@@ -284,11 +365,7 @@ def test_orthogonal_shear_maximum():
     p0/4 at (3^(1/2)/2 b, b/2) and max_orthogonal_shear() (hybr to xtol 1e-14: 1e-13 in the
     location; the value is flat there: 1e-15)."""
     with mp.workdps(30):
-        def grad(xx, zz):
-            return superposed("xz", xx, zz, "x"), superposed("xz", xx, zz, "z")
-
-        xr, zr = mp.findroot(grad, (mp.mpf("0.86"), mp.mpf("0.5")))
-        value = -superposed("xz", xr, zr)
+        xr, zr, value = _orthogonal_root()
         assert abs(xr - mp.sqrt(3) / 2) < mp.mpf(10) ** -28
         assert abs(zr - mp.mpf(1) / 2) < mp.mpf(10) ** -28
         assert abs(value - mp.mpf(1) / 4) < mp.mpf(10) ** -28
@@ -349,3 +426,71 @@ def test_far_field_limit():
     assert all(np.isfinite(v) for v in ls.axis_stresses(D, 1.0, 1.0, 0.3))
     with pytest.raises(ValueError, match="half-widths"):
         ls.axis_stresses(1e300, 1.0, 1.0, 0.3)
+
+
+# -- the roller scene (issue 14) ----------------------------------------------------------------
+
+def test_roller_scene_by_superposition():
+    """examples/roller_pair_stresses.toml (steel rollers of radii 10 mm and 20 mm, 30 mm long,
+    5 kN): max shear, max von Mises and max orthogonal shear with their places, against an
+    independent route at 30 digits: the half-width and p0 from the half-plane's Hilbert
+    transform (tests/test_scene_routes.py's Line), the maxima by mp.findroot on the Flamant
+    field superposed over the pressure (the kernel differentiated under the integral). The
+    scene's values are products of closed forms (1e-14) with maxima found to ~eps in value:
+    1e-13; places: roots to ~1e-15 b (hybr for tau_xz: 1e-13 b), times b: 1e-12."""
+    from pathlib import Path
+
+    from test_scene_routes import Line, e_star
+
+    from hertzmdr.numeric import scene
+
+    path = Path(__file__).parents[1] / "examples" / "roller_pair_stresses.toml"
+    eff = scene.load(path).run()["effects"]
+    nu = mp.mpf("0.3")
+    with mp.workdps(30):
+        R = mp.mpf("0.01") * mp.mpf("0.02") / mp.mpf("0.03")
+        route = Line(e_star((210e9, 0.3), (210e9, 0.3)), R, mp.mpf("0.03"))
+        d = route.depth_of(5e3, eff["half_width"]["value"] ** 2 / float(R))
+        b, p0 = route.radius(d), route.p0(d)
+
+        # the largest shear: the in-plane (sigma_xx - sigma_zz)/2 on the axis (for nu = 0.3
+        # sigma_yy lies between sigma_xx and sigma_zz there: it is the 3-D maximum too)
+        zt, tau = _tau1_root()
+        sx, sz = superposed("xx", 0, zt), superposed("zz", 0, zt)
+        assert sz < nu * (sx + sz) < sx
+
+        # von Mises on the axis: the root of d(sigma_v^2)/dz, sigma_yy = nu (sx + sz)
+        def vm2_slope(t):
+            sx, sz = superposed("xx", 0, t), superposed("zz", 0, t)
+            dx, dz = superposed("xx", 0, t, "z"), superposed("zz", 0, t, "z")
+            sy, dy = nu * (sx + sz), nu * (dx + dz)
+            return (sx - sy) * (dx - dy) + (sy - sz) * (dy - dz) + (sz - sx) * (dz - dx)
+
+        zv = mp.findroot(vm2_slope, mp.mpf("0.7"))
+        sx, sz = superposed("xx", 0, zv), superposed("zz", 0, zv)
+        sy = nu * (sx + sz)
+        vm = mp.sqrt(((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2)
+        assert vm > abs(1 - 2 * nu)  # above the surface centre's value
+
+        # |tau_xz|: the root of its gradient
+        xo, zo, txz = _orthogonal_root()
+
+        def near(got, ref, rtol, what):
+            assert abs(mp.mpf(got) - ref) <= rtol * abs(ref), (what, got, ref)
+
+        ms, mv, mo = (eff[k]["value"] for k in ("max_shear", "max_von_mises",
+                                                  "max_orthogonal_shear"))
+        near(eff["half_width"]["value"], b, 1e-13, "half-width")
+        near(eff["max_pressure"]["value"], p0, 1e-13, "p0")
+        near(ms["value"], tau * p0, 1e-13, "max shear")
+        near(ms["depth"], zt * b, 1e-12, "depth of max shear")
+        near(mv["value"], vm * p0, 1e-13, "max von Mises")
+        near(mv["z"], zv * b, 1e-12, "depth of max von Mises")
+        assert mv["x"] == 0.0
+        near(mo["value"], txz * p0, 1e-13, "max orthogonal shear")
+        near(mo["x"], xo * b, 1e-12, "x of max orthogonal shear")
+        near(mo["z"], zo * b, 1e-12, "depth of max orthogonal shear")
+    # the figures quoted in docs/line_stress.md and the scene's comment
+    assert round(ms["value"] / 1e6, 1) == 287.7 and round(ms["depth"] * 1e6, 1) == 87.0
+    assert round(mv["value"] / 1e6, 1) == 534.2 and round(mv["z"] * 1e6, 1) == 78.0
+    assert round(mo["value"] / 1e6, 1) == 239.6 and round(mo["z"] * 1e6, 1) == 55.4

@@ -127,6 +127,11 @@ def _equal(rel, x, y):
     if sp.simplify(ratio) == 1:
         return True  # products of powers regrouped (positive factors; the 50-digit check below
         # catches a sign or a branch)
+    const = sp.simplify(ratio)
+    if not const.free_symbols and const.is_algebraic:
+        # nested radicals (the Hertz maximum of |tau_rz|) that simplify leaves apart: a
+        # constant ratio is 1 exactly when the minimal polynomial of ratio - 1 is X
+        return sp.minimal_polynomial(const - 1, sp.Symbol("X")) == sp.Symbol("X")
     if x.has(expm1) or y.has(expm1):
         # 1 - exp(k log1p(q)) against 1 - B^k: write exp(k log(1 + q)) as (1 + q)^k with the
         # base simplified (B > 0 on the domain; the 50-digit check below catches a sign)

@@ -97,6 +97,26 @@ def test_field_effects_write_pngs(tmp_path):
         assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
 
 
+def test_roller_scene_writes_its_stress_figures(tmp_path, monkeypatch):
+    """The tour's roller scene draws its axis stresses with the plane-strain sigma_yy (four
+    curves, the line contact's labels) and its von Mises map."""
+    from hertzmdr.numeric import plots
+
+    drawn = {}
+    original = plots.draw_axis_stresses
+
+    def spy(path, z, szz, sxx, tau1, **kw):
+        drawn.update(kw)
+        return original(path, z, szz, sxx, tau1, **kw)
+
+    monkeypatch.setattr(plots, "draw_axis_stresses", spy)
+    out = tmp_path / "out"
+    assert main(["run", str(EXAMPLES / "roller_pair_stresses.toml"), "--out", str(out)]) == 0
+    for name in ("axis_stresses", "von_mises_field"):
+        assert (out / f"{name}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
+    assert drawn["syy"] is not None and "plane strain" in drawn["title"]
+
+
 def test_every_effect_is_documented():
     text = (Path(__file__).parents[1] / "docs" / "scenes.md").read_text()
     for name, eff in EFFECTS.items():

@@ -459,3 +459,61 @@ def test_more_inputs_named_and_the_criteria_by_name():
     tres, r_t, z_t = stress.hertz_maximum(0.3, "tresca")
     # the same peak found twice by Nelder-Mead (flat there: 1e-13 in value, as above)
     assert abs(2 * shear / tres - 1) < 1e-13
+
+
+def test_orthogonal_shear_maximum_by_superposition():
+    """The derived largest |tau_rz| and its place against Newton's method on the gradient of
+    tau_rz superposed from the point-force field (tests/kernels.py's rings, no closed form),
+    at 35 digits, from the float64 answer; compared to 30 digits with the derivation."""
+    from kernels import hertz_tau_rz
+
+    value, r0, z0 = stress.hertz_max_orthogonal_shear()
+    with mp.workdps(20):  # the Hessian only steers Newton (its root is where the gradient
+        h = mp.mpf(10) ** -6  # vanishes): central differences, ~1e-12 relative, suffice
+        cols = []
+        for dr, dz in ((h, 0), (0, h)):
+            gp = hertz_tau_rz(r0 + dr, z0 + dz, degree=4)[1:]
+            gm = hertz_tau_rz(r0 - dr, z0 - dz, degree=4)[1:]
+            cols.append([(p - m) / (2 * h) for p, m in zip(gp, gm, strict=True)])
+        hess = mp.matrix([[cols[0][0], cols[1][0]], [cols[0][1], cols[1][1]]])
+    with mp.workdps(35):
+        pt = mp.matrix([r0, z0])
+        for _ in range(3):  # 1e-16 -> ~1e-28 -> below 1e-35: the third step checks it
+            tau, *grad = hertz_tau_rz(pt[0], pt[1])
+            step = mp.lu_solve(hess, mp.matrix(grad))
+            pt -= step
+            if mp.norm(step) < mp.mpf(10) ** -32:
+                break
+        assert mp.norm(step) < mp.mpf(10) ** -32  # converged: the gradient is 0 to ~1e-32
+        exact = {k: v.evalf(40) for k, v in ds.orthogonal_shear_maximum().items()}
+        # Gauss-Legendre at 35 digits resolves the rings' smooth integrands to ~1e-33 (the
+        # result is unchanged from degree 5 to 6 to 32 digits): 30 digits is the claim
+        for got, key in ((pt[0], "r"), (pt[1], "z"), (-tau, "value")):
+            assert abs(got - mp.mpf(str(exact[key]))) < mp.mpf(10) ** -30 * abs(got), key
+    # float64: a few roundings of sqrt(17) and its powers
+    for got, key in ((value, "value"), (r0, "r"), (z0, "z")):
+        assert_close(got, mp.mpf(str(exact[key])), 4e-16, key)
+    assert round(value, 4) == 0.2139 and round(r0, 3) == 0.848 and round(z0, 3) == 0.351
+
+
+def test_point_force_shear_is_the_ring_routes_kernel():
+    """tests/kernels.py's rings integrate tau_xz = -3 x z^2/(2 pi R^5) of a unit force: the
+    derived (5.46) is that."""
+    k = b.stresses()["xz"].subs(F, 1)
+    R2 = b.x**2 + b.y**2 + b.z**2
+    assert sp.simplify(k * R2 ** sp.Rational(5, 2) / (b.x * b.z**2) + 3 / (2 * sp.pi)) == 0
+
+
+def test_orthogonal_shear_maximum_is_the_largest_in_the_body():
+    """No point of a 200 x 200 grid over 0 <= r, z <= 3a has a larger |tau_rz| (the boundaries
+    of the quadrant and infinity have tau_rz = 0; nu does not enter)."""
+    value, r0, z0 = stress.hertz_max_orthogonal_shear()
+    rr, zz = np.meshgrid(np.linspace(0, 3, 200), np.linspace(0, 3, 200))
+    for nu_ in (-0.5, 0.3, 0.5):
+        trz = stress.hertz_stress_cylindrical(rr, zz, 1.0, 1.0, nu_)[3]
+        assert np.max(np.abs(trz)) <= value * (1 + 1e-15)
+        # at the maximum the closed form's field gives the same value (to its rounding)
+        at = stress.hertz_stress_cylindrical(r0, z0, 1.0, 1.0, nu_)[3]
+        assert_close(-float(at), mp.mpf(value), 1e-14, f"tau_rz at the maximum, nu={nu_}")
+    # the grid comes within its spacing (0.015 a) of the maximum: tau_rz is flat there
+    assert np.max(np.abs(trz)) > value * (1 - 1e-3)

@@ -42,7 +42,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
     Effect("force_depth_curve", "{depth: m, force: N}", "force against depth from 0 to the load",
            field=True),
     Effect("axis_stresses", "{z: m, sigma_zz: Pa, sigma_rr: Pa, tau_1: Pa}",
-           "stresses on the axis under the contact (5.48), (5.49), and tau_1 (Fig. 5.8)",
+           "stresses on the axis under the contact (5.48), (5.49), and tau_1 (Fig. 5.8); "
+           "a line contact: sigma_rr is sigma_xx, plus sigma_yy (plane strain)",
            needs=("stress",), field=True),
     Effect("max_shear", "{value: Pa, depth: m}", "the largest shear stress in the body and its "
            "depth (Fig. 5.8)", needs=("stress",)),
@@ -50,6 +51,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
            "x-z plane (Fig. 5.9)", needs=("stress",), field=True),
     Effect("max_von_mises", "{value: Pa, x: m, z: m}", "the largest von Mises stress (5.50) in "
            "the body and where it is", needs=("stress",)),
+    Effect("max_orthogonal_shear", "{value: Pa, x: m, z: m}", "the largest orthogonal shear "
+           "|tau_xz| (line contact) or |tau_rz| (circular contact) in the body and where it is "
+           "(the shear of rolling-contact fatigue)", needs=("stress",)),
     Effect("mdr_profile", "{x: m, g: m}", "the MDR's one-dimensional profile g(x) (5.52), "
            "Figs. 5.11 and 5.19", field=True),
     Effect("edge_displacement", "m", "surface displacement at the edge of a loaded disc "

@@ -82,10 +82,13 @@ def axis_stresses(value, title, path):
     top = max(float(np.max(np.abs(value[k]))) for k in ("sigma_zz", "sigma_rr", "tau_1"))
     scale, slabel = _scaled([top], "stress", "Pa")
     f = float(scale[0]) / top
+    line = "sigma_yy" in value  # a line contact (plane strain): sigma_rr is sigma_xx
     plots.draw_axis_stresses(path, z, np.asarray(value["sigma_zz"]) * f,
                              np.asarray(value["sigma_rr"]) * f, np.asarray(value["tau_1"]) * f,
                              xlabel=zlabel, ylabel=slabel,
-                             title=f"{title}\nstresses on the axis (Fig. 5.8)")
+                             title=f"{title}\nstresses on the axis "
+                             + ("(plane strain)" if line else "(Fig. 5.8)"),
+                             syy=np.asarray(value["sigma_yy"]) * f if line else None)
 
 
 def von_mises_field(value, title, path):

@@ -209,14 +209,24 @@ class ClosedFormContact(Axisymmetric):
             return False
         if effect in ("max_shear", "max_von_mises") and self._unbounded_at_half():
             return False
+        if effect == "max_orthogonal_shear" and self._singular():
+            self.why_not = {**self.why_not, "max_orthogonal_shear": (
+                f"{self.form.no_max_pressure}; the largest |tau_rz| is at that point or "
+                "unbounded toward it, which the stress grid cannot resolve (ask for "
+                "'von_mises_field')")}
+            return False
         return super().has(effect)
+
+    def _singular(self) -> bool:
+        """Whether the pressure is unbounded somewhere (cone, flat punch, worn parabola, power
+        law n <= 1)."""
+        return bool(self.form.no_max_pressure) and self.form.singular_at is not None
 
     def _unbounded_at_half(self) -> bool:
         """A singular pressure in an incompressible body (nu = 0.5): the surface stress is
         hydrostatic to leading order, so the maxima may be finite, and the grid cannot bound
         them: refused (:meth:`stress_solver` says +inf for nu < 0.5)."""
-        singular = self.form.no_max_pressure and self.form.singular_at is not None
-        if singular and self.materials.stressed.nu >= 0.5:
+        if self._singular() and self.materials.stressed.nu >= 0.5:
             self.why_not = {**self.why_not, **dict.fromkeys(
                 ("max_shear", "max_von_mises"),
                 f"{self.form.no_max_pressure}; with nu = 0.5 the stress there is hydrostatic to "

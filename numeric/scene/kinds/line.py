@@ -1,4 +1,5 @@
-"""Line contact of two parallel cylinders, (5.34)-(5.37): the 2-D Hertz problem. The depth of
+"""Line contact of two parallel cylinders, (5.34)-(5.37): the 2-D Hertz problem, and the stresses
+under it (plane strain, :class:`~.stresses.LineStresses`). The depth of
 a line contact is defined by the chapter's convention a = sqrt(R d) (5.35); force-controlled
 scenes avoid it."""
 
@@ -9,9 +10,10 @@ import numpy as np
 from hertzmdr.numeric import line
 from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
 from hertzmdr.numeric.scene.kinds.base import Contact, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 
 
-class LineContact(Contact):
+class LineContact(StressEffects, Contact):
     kind = "line"
     label = "line contact of parallel cylinders (5.34)-(5.37)"
     instead = {"contact_radius": "half_width", "semi_axes": "half_width",
@@ -36,6 +38,23 @@ class LineContact(Contact):
         d = self.last(st)
         a = self.extent(d)
         return {"a/R": a / self.R, "d/R": d / self.R, "a/L": a / self.L}
+
+    def rtol_ranges(self, effects):
+        from hertzmdr.numeric.scene.kinds.stresses import LineStresses
+
+        return super().rtol_ranges(effects) + self.stress_ranges(effects, True,
+                                                                  LineStresses.ranges)
+
+    def stress_solver(self, st):
+        """The line-contact stresses at the largest load (plane strain, the first elastic
+        body's nu)."""
+        from hertzmdr.numeric.scene.kinds.stresses import LineStresses
+
+        F = self.last(st, "force")
+        return LineStresses(float(line.half_width_from_force(F, self.L, self.R, self.E_star)),
+                            float(line.max_pressure_from_force(F, self.L, self.R,
+                                                               self.E_star)),
+                            self.materials.stressed.nu)
 
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)

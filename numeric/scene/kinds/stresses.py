@@ -1,4 +1,5 @@
-"""Stress effects for axisymmetric contacts (section 5.5, Figs. 5.8 and 5.9).
+"""Stress effects for axisymmetric contacts (section 5.5, Figs. 5.8 and 5.9) and for line
+contacts (plane strain, the Flamant superposition of numeric/line_stress.py).
 
 The stresses are those in the first elastic body of the scene (its Poisson's ratio, from the
 kind's :class:`~..materials.Materials`). Under the
@@ -15,6 +16,7 @@ from functools import cached_property
 
 import numpy as np
 
+from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
 from hertzmdr.numeric.scene.kinds.base import Value
 
 AXIS_POINTS_CLOSED, AXIS_POINTS_SUPERPOSED = 201, 31
@@ -39,7 +41,8 @@ class HertzStresses:
     """Closed forms: the Hertz pressure of contact radius a and maximum pressure p0."""
 
     ranges = {"axis_stresses": FIELD_RTOL, "von_mises_field": FIELD_RTOL,
-              "max_shear": MAXIMUM_RTOL, "max_von_mises": MAXIMUM_RTOL}
+              "max_shear": MAXIMUM_RTOL, "max_von_mises": MAXIMUM_RTOL,
+              "max_orthogonal_shear": CLOSED_FORM_RTOL}
 
     def __init__(self, a, p0, nu):
         self.a, self.p0, self.nu = a, p0, nu
@@ -76,6 +79,14 @@ class HertzStresses:
         value, r, z = stress.hertz_maximum(self.nu, "von_mises")
         return Value({"value": value * self.p0, "x": r * self.a, "z": z * self.a},
                      "maximum of (5.50) in the body (grid, then Nelder-Mead)", MAXIMUM_RTOL)
+
+    def max_orthogonal_shear(self):
+        from hertzmdr.numeric import stress
+
+        value, r, z = stress.hertz_max_orthogonal_shear()
+        return Value({"value": value * self.p0, "x": r * self.a, "z": z * self.a},
+                     "closed form: the root of the gradient of Huber's tau_rz, derived "
+                     "(any nu)", CLOSED_FORM_RTOL)
 
 
 class SuperposedStresses:
@@ -146,20 +157,92 @@ class SuperposedStresses:
                      f"largest on a {GRID_SUPERPOSED}x{GRID_SUPERPOSED - 1} grid, "
                      + self.method, f.rel_error + self.pressure_error)
 
+    def max_orthogonal_shear(self):
+        f = self._plane
+        value, x, z = f.maximum("orthogonal_shear")
+        return Value({"value": value, "x": x, "z": z},
+                     f"largest |tau_rz| on a {GRID_SUPERPOSED}x{GRID_SUPERPOSED - 1} grid, "
+                     + self.method, f.rel_error + self.pressure_error)
+
+
+class LineStresses:
+    """Line contact: the 2-D Hertz pressure of half-width b and maximum pressure p0 (5.36),
+    plane strain (sigma_yy = nu (sigma_xx + sigma_zz)); closed forms of
+    numeric/line_stress.py, maxima by root finding on their generated derivatives."""
+
+    #: the tolerances to which tests/test_line_stress.py verifies the field (2e-14 per
+    #: component against 30-digit superposition; von Mises and tau_max a few roundings more)
+    #: and the maxima (values to 1e-14)
+    ranges = {"axis_stresses": 1e-13, "von_mises_field": 1e-13, "max_shear": MAXIMUM_RTOL,
+              "max_von_mises": MAXIMUM_RTOL, "max_orthogonal_shear": MAXIMUM_RTOL}
+
+    def __init__(self, b, p0, nu):
+        self.b, self.p0, self.nu = b, p0, nu
+        self.method = "closed form (Flamant superposed over (5.36), plane strain)"
+
+    def axis(self):
+        from hertzmdr.numeric import line_stress as ls
+
+        z = np.linspace(0.0, 3.0 * self.b, AXIS_POINTS_CLOSED)
+        sxx, szz, syy = ls.axis_stresses(z, self.b, self.p0, self.nu)
+        tau = ls.principal_shear(0.0, z, self.b, self.p0, self.nu)[1]
+        return Value({"z": z, "sigma_zz": szz, "sigma_rr": sxx, "sigma_yy": syy,
+                      "tau_1": np.asarray(tau, float)},
+                     self.method + "; sigma_rr is sigma_xx (across the strip), tau_1 the 3-D "
+                     "(sigma_1 - sigma_3)/2", self.ranges["axis_stresses"])
+
+    def max_shear(self):
+        from hertzmdr.numeric import line_stress as ls
+
+        value, z = ls.max_shear_3d(self.nu)
+        return Value({"value": value * self.p0, "depth": z * self.b},
+                     "maximum of (sigma_1 - sigma_3)/2 on the axis (root of the generated "
+                     "slope; bounded Brent for the sigma_yy pairs)", MAXIMUM_RTOL)
+
+    def field(self):
+        from hertzmdr.numeric import line_stress as ls
+
+        x = np.linspace(-2.0 * self.b, 2.0 * self.b, GRID_CLOSED)
+        z = np.linspace(0.0, 2.0 * self.b, GRID_CLOSED)
+        X, Z = np.meshgrid(x, z)
+        sv = np.asarray(ls.von_mises(X, Z, self.b, self.p0, self.nu), float)
+        return Value({"x": x, "z": z, "sigma_v": sv}, self.method + ", (5.50)",
+                     self.ranges["von_mises_field"])
+
+    def max_von_mises(self):
+        from hertzmdr.numeric import line_stress as ls
+
+        value, x, z = ls.max_von_mises(self.nu)
+        return Value({"value": value * self.p0, "x": x * self.b, "z": z * self.b},
+                     "maximum of (5.50) on the axis (the surface centre or the root of the "
+                     "generated slope)", MAXIMUM_RTOL)
+
+    def max_orthogonal_shear(self):
+        from hertzmdr.numeric import line_stress as ls
+
+        value, x, z = ls.max_orthogonal_shear()
+        return Value({"value": value * self.p0, "x": x * self.b, "z": z * self.b},
+                     "root of the generated gradient of tau_xz (exactly p0/4 at "
+                     "(3^(1/2)/2 b, b/2); mirrored at -x)", MAXIMUM_RTOL)
+
 
 class StressEffects:
-    """Mixin for contact kinds: the four stress effects, through the ``stress`` node. A kind
+    """Mixin for contact kinds: the five stress effects, through the ``stress`` node. A kind
     defines ``stress_solver(state)`` (:class:`HertzStresses` or :class:`SuperposedStresses`)."""
 
-    STRESS_EFFECTS = ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises")
+    STRESS_EFFECTS = ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises",
+                      "max_orthogonal_shear")
 
     def node_stress(self, run):
         return self.stress_solver(run.node("state"))
 
-    def stress_ranges(self, effects, closed: bool) -> list[tuple[str, tuple[float, float]]]:
+    def stress_ranges(self, effects, closed: bool,
+                      table: dict[str, float] | None = None) -> list[tuple[str,
+                                                                     tuple[float, float]]]:
         """The rtol each requested stress effect can deliver (closed forms only; superposition
-        reports its estimate)."""
-        table = HertzStresses.ranges if closed else SuperposedStresses.ranges
+        reports its estimate); ``table`` (effect -> rtol) overrides the Hertz one."""
+        if table is None:
+            table = HertzStresses.ranges if closed else SuperposedStresses.ranges
         return [(f"{e} (closed form)", (table[e], 1.0)) for e in effects if e in table]
 
     def effect_axis_stresses(self, solver):
@@ -174,5 +257,8 @@ class StressEffects:
     def effect_max_von_mises(self, solver):
         return solver.max_von_mises()
 
+    def effect_max_orthogonal_shear(self, solver):
+        return solver.max_orthogonal_shear()
 
-__all__ = ["HertzStresses", "StressEffects", "SuperposedStresses"]
+
+__all__ = ["HertzStresses", "LineStresses", "StressEffects", "SuperposedStresses"]
