@@ -11,7 +11,8 @@ What is where (SI units throughout):
   and vectorized (``hertz``, ``cone``, ``powerlaw``, ``worn``, ``sphere``, ``line``,
   ``ellipse``, ...), the stresses, the numerical methods (``mdr``, ``abel``, ``bem``), scenes
   (``hertzmdr.numeric.scene``: a TOML scene in, exactly the asked effects out), the fit of
-  measured force curves (``fit``) and the command line (``hertzmdr.numeric.cli``). Its own docstring lists every module.
+  measured force curves (``fit``) and the command line (``hertzmdr.numeric.cli``). Its own
+  docstring lists every module.
 - ``python -m hertzmdr`` is the ``hertzmdr`` command (``run``, ``effects``, ``fit``, ``accuracy``).
 
 >>> import hertzmdr
