@@ -41,6 +41,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 NUMERIC = ROOT / "numeric"
 NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
+# the last run of each module, one JSON file each (committed: --report-only assembles the page
+# from them when build/mutation/ holds no newer run of the module)
+RUNS = ROOT / "benchmarks" / "mutation_runs"
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
 
 # the stable closed-form modules, most physics first, each with the test files written for it
@@ -208,32 +211,52 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> 
     date = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
     run = Run(module, tests, again, seconds, date, counts, survivors)
     (work / "result.json").write_text(json.dumps(asdict(run), indent=1))
+    save_run(run)
     return run
 
 
+def run_path(module: str) -> Path:
+    return RUNS / (module.replace("/", "_").removesuffix(".py") + ".json")
+
+
+def save_run(run: Run) -> None:
+    """Keep ``run`` in benchmarks/mutation_runs/ (its notes are read anew on loading)."""
+    data = asdict(run)
+    for s in data["survivors"]:
+        del s["note"]
+    RUNS.mkdir(exist_ok=True)
+    run_path(run.module).write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
+
+
 def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run | None:
-    """The result of an earlier run of ``module`` (``--report-only``), its notes read anew;
-    None if there is none with these test files."""
+    """The result of the last run of ``module`` (``--report-only``), its notes read anew: the
+    run in ``base`` (complete, or stopped before its end: what it checked, the rest counted as
+    not checked; either is kept in benchmarks/mutation_runs/), else the one kept there; None if
+    there is none with these test files."""
     work = base / module.replace("/", "_").removesuffix(".py")
     path = work / "result.json"
-    if not path.exists():
-        if not (work / "mutants").is_dir():
-            return None
-        # a run stopped before its end: what it checked, the rest counted as not checked
+    if not path.exists() and (work / "mutants").is_dir():
         cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
-        if cfg["pytest_add_cli_args_test_selection"] != list(tests):
-            return None
-        counts, survivors = survivors_of(work, module, notes)
-        stopped = datetime.datetime.fromtimestamp((work / "run.log").stat().st_mtime,
-                                                  datetime.UTC)
-        again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
-        return Run(module, list(tests), again, 0.0,
-                   stopped.strftime("%Y-%m-%d %H:%M UTC") + " (stopped before the end)",
-                   counts, survivors)
+        if cfg["pytest_add_cli_args_test_selection"] == list(tests):
+            counts, survivors = survivors_of(work, module, notes)
+            stopped = datetime.datetime.fromtimestamp((work / "run.log").stat().st_mtime,
+                                                      datetime.UTC)
+            again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
+            run = Run(module, list(tests), again, 0.0,
+                      stopped.strftime("%Y-%m-%d %H:%M UTC") + " (stopped before the end)",
+                      counts, survivors)
+            save_run(run)
+            return run
+    if not path.exists():
+        path = run_path(module)
+    if not path.exists():
+        return None
     data = json.loads(path.read_text())
     if data["tests"] != list(tests):
         return None
     run = Run(**{**data, "survivors": [Survivor(**x) for x in data["survivors"]]})
+    if path.parent == work:
+        save_run(run)
     for s in run.survivors:
         s.note = find_note(module, s, notes)
     return run
