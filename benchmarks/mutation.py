@@ -331,7 +331,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--module", action="append", default=[],
                     help="path under numeric/ (file or folder); repeatable")
     ap.add_argument("--tests", action="append", nargs="+", default=[],
-                    help="test files for the --module before it")
+                    help="test files (or tests: file::name) for the --module before it")
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "mutation.md")
     ap.add_argument("--work", type=Path, default=ROOT / "build" / "mutation")
     ap.add_argument("--report-only", action="store_true",
@@ -348,7 +348,7 @@ def main(argv: list[str] | None = None) -> int:
         if not (NUMERIC / m).exists():
             ap.error(f"--module {m}: numeric/{m} does not exist")
         for t in tests:
-            if not (ROOT / t).is_file():
+            if not (ROOT / t.partition("::")[0]).is_file():  # a file, or a test in it
                 ap.error(f"--tests {t}: no such file")
     notes = load_notes()
     t0 = time.perf_counter()
