@@ -9,6 +9,8 @@ import pytest
 
 from hertzmdr.numeric import contact, pressures
 
+from named import assert_inputs_named
+
 # a handful of correctly rounded float64 operations against a 30-digit reference
 TOL_FLOAT = 1e-14
 
@@ -101,3 +103,13 @@ def test_disc_pressure_refuses_bad_input():
         pressures.pressure(0.0, "triangular", 1e6, 1e-3)
     with pytest.raises(ValueError, match="a > 0"):
         pressures.force("uniform", 1e6, -1e-3)
+
+
+def test_each_input_named_in_its_error():
+    """Every input of the shared relations is named in its error (tests/named.py)."""
+    assert_inputs_named(contact.mean_pressure, {"F": 1.0, "A": 1e-6})
+    assert_inputs_named(contact.mean_pressure_disc, {"F": 1.0, "a": 1e-3})
+    assert_inputs_named(contact.mean_pressure_strip, {"F": 1.0, "a": 1e-3, "L": 0.01})
+    assert_inputs_named(contact.stiffness, {"a": 1e-3, "E_star": 1e11})
+    assert_inputs_named(contact.punch_force, {"d": 1e-6, "a": 1e-3, "E_star": 1e11})
+    assert_inputs_named(contact.punch_depth_from_force, {"F": 1.0, "a": 1e-3, "E_star": 1e11})
