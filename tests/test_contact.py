@@ -9,6 +9,7 @@ import pytest
 
 from hertzmdr.numeric import contact, pressures
 
+from kernels import uz_axisymmetric
 from named import assert_inputs_named
 
 # a handful of correctly rounded float64 operations against a 30-digit reference
@@ -113,3 +114,43 @@ def test_each_input_named_in_its_error():
     assert_inputs_named(contact.stiffness, {"a": 1e-3, "E_star": 1e11})
     assert_inputs_named(contact.punch_force, {"d": 1e-6, "a": 1e-3, "E_star": 1e11})
     assert_inputs_named(contact.punch_depth_from_force, {"F": 1.0, "a": 1e-3, "E_star": 1e11})
+
+
+@pytest.mark.parametrize("name, n", [("uniform", 0), ("hertzian", 0.5), ("punch", -0.5)])
+def test_disc_surface_displacement_by_the_kernel(name, n):
+    """pressures.surface_displacement inside and outside the disc (arrays of r and of p0 in one
+    call) against u_z of (5.7): the Boussinesq kernel integrated over p0 (1 - rho^2/a^2)^n by
+    2-D Gauss-Legendre at 20 digits (tests/kernels.py, ~1e-18 for these pressures)."""
+    a, E = 2e-3, 7e10
+    r = np.array([0.0, 0.6e-3, 3e-3, 2e-2])
+    p0 = np.array([[4e6], [9e6]])
+    got = pressures.surface_displacement(r, name, p0, a, E)
+    assert got.shape == (2, 4)
+    with mp.workdps(20):
+        for k, ri in enumerate(r):
+            u = uz_axisymmetric(lambda gap: (gap / mp.mpf(a) ** 2) ** n, ri, a, E)  # p0 = 1
+            # inside: a few correctly rounded operations; outside, the n = 1/2 form cancels
+            # terms of relative size (r/a)^2 (test_pressures.py::test_outside_displacement_...)
+            tol = TOL_FLOAT * max(1.0, (ri / a) ** 2)
+            for j in range(2):
+                assert abs(got[j, k] / (p0[j, 0] * u) - 1) < tol, (name, ri, got[j, k])
+    # r = a belongs to the inside form; the outside one meets it there (u_z is continuous)
+    edge = pressures.surface_displacement(np.array([a, a * (1 + 1e-12)]), name, 4e6, a, E)
+    # 1e-12 a outside the rim u_z has moved by ~1e-12 of itself where u_z' is finite (n >= 0);
+    # the punch's u_z = d (2/pi) asin(a/r) falls as sqrt(r - a): by (2/pi) sqrt(2e-12) = 9e-7
+    assert abs(edge[1] / edge[0] - 1) < (1e-6 if n < 0 else 1e-10)
+
+
+def test_disc_pressures_name_their_inputs():
+    """Every input of numeric/pressures.py is named in its error (tests/named.py), and an
+    unknown distribution is named with the valid ones."""
+    def u(r, p0, a, E_star):
+        return pressures.surface_displacement(r, "hertzian", p0, a, E_star)
+
+    assert_inputs_named(u, {"r": 1e-3, "p0": 1e6, "a": 2e-3, "E_star": 1e11})
+    assert_inputs_named(lambda r, p0, a: pressures.pressure(r, "punch", p0, a),
+                        {"r": 1e-3, "p0": 1e6, "a": 2e-3})
+    assert_inputs_named(lambda p0, a: pressures.force("uniform", p0, a), {"p0": 1e6, "a": 2e-3})
+    with pytest.raises(ValueError, match=r"^distribution = 'cone' is not one of uniform, "
+                                         r"hertzian, punch$"):
+        pressures.surface_displacement(0.0, "cone", 1e6, 2e-3, 1e11)
