@@ -262,6 +262,24 @@ def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Ru
     return run
 
 
+def tests_cell(tests: list[str]) -> str:
+    """The test files of a run for the table: a file, ``file::test``, or a file with the
+    number of its tests chosen (the command below the table lists them)."""
+    files: dict[str, list[str]] = {}
+    for t in tests:
+        name, _, test = t.partition("::")
+        files.setdefault(Path(name).name, []).append(test)
+    cells = []
+    for name, chosen in files.items():
+        if "" in chosen:
+            cells.append(f"`{name}`")
+        elif len(chosen) == 1:
+            cells.append(f"`{name}::{chosen[0]}`")
+        else:
+            cells.append(f"`{name}` ({len(chosen)} tests)")
+    return ", ".join(cells)
+
+
 def report(runs: list[Run], argv: list[str], total: float, assembled: bool = False) -> str:
     import mutmut
 
@@ -289,7 +307,7 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
     ]
     for r in runs:
         cells = [str(r.counts.get(c, 0)) for c in ["mutants", *columns]]
-        tests = ", ".join(f"`{Path(t).name}`" for t in r.tests)
+        tests = tests_cell(r.tests)
         lines.append(f"| `{r.module}` | {tests} | " + " | ".join(cells)
                      + f" | {f'{r.seconds:.0f} s' if r.seconds else '-'} | {r.date} |")
     lines += ["", "Each module again alone (its report only, hence `--out`):", ""]
