@@ -300,7 +300,10 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "the scratch folder that `benchmarks/mutation.py` lays out (see its docstring).",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
-        "`tests/test_generated.py` and by the mpmath oracles.",
+        "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
+        "(a demonstration and figures: nothing they compute is a result, and their tests check "
+        "that they run). The scene layer, `numeric/scene/`, has its own page, "
+        "[mutation_scene.md](mutation_scene.md).",
         "",
         "| module | test files | mutants | " + " | ".join(columns) + " | time | run on |",
         "|---|---|---:|" + "---:|" * len(columns) + "---:|---|",

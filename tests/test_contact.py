@@ -118,23 +118,27 @@ def test_each_input_named_in_its_error():
 
 @pytest.mark.parametrize("name, n", [("uniform", 0), ("hertzian", 0.5), ("punch", -0.5)])
 def test_disc_surface_displacement_by_the_kernel(name, n):
-    """pressures.surface_displacement inside and outside the disc (arrays of r and of p0 in one
-    call) against u_z of (5.7): the Boussinesq kernel integrated over p0 (1 - rho^2/a^2)^n by
-    2-D Gauss-Legendre at 20 digits (tests/kernels.py, ~1e-18 for these pressures)."""
-    a, E = 2e-3, 7e10
-    r = np.array([0.0, 0.6e-3, 3e-3, 2e-2])
+    """pressures.surface_displacement inside and outside the disc (r, a and E* arrays that
+    differ along the row, p0 along the column, three points inside and two outside) against
+    u_z of (5.7): the Boussinesq kernel integrated over p0 (1 - rho^2/a^2)^n by 2-D
+    Gauss-Legendre at 20 digits (tests/kernels.py, ~1e-18 for these pressures)."""
+    r = np.array([0.0, 0.6e-3, 2.4e-3, 3e-3, 2e-2])
+    a = np.array([2e-3, 1e-3, 2.5e-3, 1.5e-3, 2e-3])
+    E = np.array([7e10, 2e11, 1e9, 3e10, 7e10])
     p0 = np.array([[4e6], [9e6]])
     got = pressures.surface_displacement(r, name, p0, a, E)
-    assert got.shape == (2, 4)
+    assert got.shape == (2, 5)
     with mp.workdps(20):
-        for k, ri in enumerate(r):
-            u = uz_axisymmetric(lambda gap: (gap / mp.mpf(a) ** 2) ** n, ri, a, E)  # p0 = 1
+        for k in range(5):
+            u = uz_axisymmetric(lambda gap, k=k: (gap / mp.mpf(a[k]) ** 2) ** n, r[k], a[k],
+                                E[k])  # p0 = 1
             # inside: a few correctly rounded operations; outside, the n = 1/2 form cancels
             # terms of relative size (r/a)^2 (test_pressures.py::test_outside_displacement_...)
-            tol = TOL_FLOAT * max(1.0, (ri / a) ** 2)
+            tol = TOL_FLOAT * max(1.0, (r[k] / a[k]) ** 2)
             for j in range(2):
-                assert abs(got[j, k] / (p0[j, 0] * u) - 1) < tol, (name, ri, got[j, k])
+                assert abs(got[j, k] / (p0[j, 0] * u) - 1) < tol, (name, k, got[j, k])
     # r = a belongs to the inside form; the outside one meets it there (u_z is continuous)
+    a, E = 2e-3, 7e10
     edge = pressures.surface_displacement(np.array([a, a * (1 + 1e-12)]), name, 4e6, a, E)
     # 1e-12 a outside the rim u_z has moved by ~1e-12 of itself where u_z' is finite (n >= 0);
     # the punch's u_z = d (2/pi) asin(a/r) falls as sqrt(r - a): by (2/pi) sqrt(2e-12) = 9e-7
