@@ -98,9 +98,16 @@ def mutmut_config(module: str, tests: list[str]) -> dict:
             "pytest_add_cli_args_test_selection": list(tests)}
 
 
-def scratch(module: str, tests: list[str], base: Path) -> Path:
-    """A fresh scratch folder laying out numeric/ as hertzmdr/numeric for mutmut."""
+def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> Path:
+    """A fresh scratch folder laying out numeric/ as hertzmdr/numeric for mutmut; with
+    ``resume``, the folder of a run of the same module and tests stopped before its end is
+    kept (mutmut then checks only the mutants it has no result for, and those of functions
+    changed since)."""
     work = base / module.replace("/", "_").removesuffix(".py")
+    if resume and (work / "mutants").is_dir() and not (work / "result.json").exists():
+        cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
+        if cfg == mutmut_config(module, tests):
+            return work
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
     (work / PACKAGE).symlink_to(NUMERIC, target_is_directory=True)
@@ -194,12 +201,14 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
     return counts, sorted(found, key=lambda s: s.line)
 
 
-def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run:
-    work = scratch(module, tests, base)
+def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
+               resume: bool = False) -> Run:
+    work = scratch(module, tests, base, resume)
+    resumed = (work / "run.log").exists()
     mutmut = str(Path(sys.executable).with_name("mutmut"))
     cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", "1"]
     t = time.perf_counter()
-    with open(work / "run.log", "w") as log:
+    with open(work / "run.log", "a" if resumed else "w") as log:
         proc = subprocess.run(cmd, cwd=work, stdout=log, stderr=subprocess.STDOUT,
                               env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1"})
     seconds = time.perf_counter() - t
@@ -209,6 +218,8 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> 
     counts, survivors = survivors_of(work, module, notes)
     again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
     date = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    if resumed:  # the time is that of the part run now
+        date += " (resumed)"
     run = Run(module, tests, again, seconds, date, counts, survivors)
     (work / "result.json").write_text(json.dumps(asdict(run), indent=1))
     save_run(run)
@@ -355,6 +366,8 @@ def main(argv: list[str] | None = None) -> int:
                     help="test files (or tests: file::name) for the --module before it")
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "mutation.md")
     ap.add_argument("--work", type=Path, default=ROOT / "build" / "mutation")
+    ap.add_argument("--resume", action="store_true",
+                    help="continue a module's run stopped before its end (same tests)")
     ap.add_argument("--report-only", action="store_true",
                     help="write the report from the last run of each module (in --work)")
     args = ap.parse_args(argv)
@@ -384,11 +397,12 @@ def main(argv: list[str] | None = None) -> int:
                 runs.append(run)
             continue
         print(f"mutating numeric/{m} with {' '.join(tests)} ...", flush=True)
-        runs.append(run_module(m, tests, args.work.resolve(), notes))
+        runs.append(run_module(m, tests, args.work.resolve(), notes, args.resume))
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
-    text = report(runs, [a for a in argv if a != "--report-only"], total, args.report_only)
+    text = report(runs, [a for a in argv if a not in ("--report-only", "--resume")], total,
+                  args.report_only)
     if missing:
         text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)
                  + " with these test files yet.\n")
