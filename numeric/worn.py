@@ -176,7 +176,7 @@ def surface_displacement(r, d, R, b):
         As in :func:`force`, d > 0.
     """
     r, d, R, b = np.broadcast_arrays(nonnegative("r", r), positive("d", d), *_geometry(R, b))
-    a = np.asarray(gen.worn_contact_radius(R, b, d), dtype=float)
+    a = np.asarray(gen.worn_contact_radius(R, b, d))
     out = np.empty(r.shape)
     ins = r <= a
     out[ins] = gen.worn_displacement_inside(R[ins], b[ins], d[ins], r[ins])  # (5.60), r <= a

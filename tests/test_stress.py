@@ -459,3 +459,32 @@ def test_more_inputs_named_and_the_criteria_by_name():
     tres, r_t, z_t = stress.hertz_maximum(0.3, "tresca")
     # the same peak found twice by Nelder-Mead (flat there: 1e-13 in value, as above)
     assert abs(2 * shear / tres - 1) < 1e-13
+
+
+def test_plane_field_maximum_is_located_on_its_grid():
+    """PlaneField.maximum on a field whose largest value lies off the grid's first row, column
+    and diagonal: the value and its (x, z) (field indexed [z][x])."""
+    x, z = np.array([0.0, 1.0, 2.0]), np.array([10.0, 20.0, 30.0, 40.0])
+    vm = np.zeros((4, 3))
+    vm[2, 1] = 5.0  # z = 30, x = 1
+    tau = np.zeros((4, 3))
+    tau[3, 0] = 7.0  # z = 40, x = 0
+    f = stress.PlaneField(x, z, vm, tau, 0.0)
+    assert f.maximum("von_mises") == (5.0, 1.0, 30.0)
+    assert f.maximum("max_shear") == (7.0, 0.0, 40.0)
+
+
+def test_superposed_plane_on_its_smallest_grid():
+    """n = 2, the smallest grid: x = 0, 2a and z = 2a, the closed-form Hertz field there
+    (a = 2 mm, p0 = 1 Pa); n = 1, 1.5 and True refused by name."""
+    a = 2e-3
+    f = stress.superposed_plane(lambda rho: np.sqrt(np.maximum(1 - (rho / a) ** 2, 0.0)), a,
+                                0.3, n=2)
+    assert f.x.tolist() == [0.0, 2 * a] and f.z.tolist() == [2 * a]
+    ref = stress.hertz_stress(f.x, 0.0 * f.x, 2 * a + 0.0 * f.x, a, 1.0, 0.3)
+    # superposition to ~1e-12 of the largest component (test_superposition_route)
+    assert np.max(np.abs(f.von_mises[0] - stress.von_mises(ref))) < 1e-11
+    for bad in (1, 1.5, True):
+        with pytest.raises(ValueError, match=rf"^n = {bad!r} is out of range; valid: an "
+                                             r"integer >= 2$"):
+            stress.superposed_plane(lambda rho: rho, a, 0.3, n=bad)

@@ -180,6 +180,8 @@ def test_radius_below_the_flat_refused_with_its_value():
 def test_g_profile_refuses_a_non_number_naming_x():
     with pytest.raises(ValueError, match=r"^x = 'abc' is not a number"):
         worn.g_profile("abc", 50e-6, 2e-6)
+    with pytest.raises(ValueError, match=r"^x = inf is out of range; valid: 0 <= x < inf$"):
+        worn.g_profile(-np.inf, 50e-6, 2e-6)
     # g is even and 0 on the flat: integers are read as floats
     assert worn.g_profile(np.array([-3, 0, 1]), 1.0, 1.0).tolist() == \
         [float(3 * mp.sqrt(8)), 0.0, 0.0]
