@@ -74,6 +74,13 @@ _POWERLAW_TESTS = [f"tests/test_powerlaw.py::test_{t}" for t in """
     normalized_pressure_of_the_punch special_cases_are_hertz_cone_and_punch
     mean_pressure_needs_a_positive_depth""".split()]
 
+# test_sphere.py but its sweeps (the 3-D elasticity check, decades), the symbolic check and
+# the report's regeneration
+_SPHERE_TESTS = [f"tests/test_sphere.py::test_{t}" for t in """
+    profile_and_g depth_and_force_by_quadrature contact_radius_and_force_at_depth stiffness
+    pressure_by_quadrature_of_59 force_is_integral_of_pressure hard_cases_and_vectors
+    bad_input force_increases_and_inverts hertz_limit""".split()]
+
 # the modules of numeric/ but the generated ones, demo.py, plots.py and scene/ (its own page),
 # most physics first, each with the (fast) test files written for it
 MODULES: dict[str, list[str]] = {
@@ -91,6 +98,7 @@ MODULES: dict[str, list[str]] = {
             "", "_edge_cases", "_in_the_first_and_last_cells",
             "_a_narrow_peak_and_an_increasing_pressure", "_names_its_inputs")],
     "line_stress.py": ["tests/test_line_stress.py"],
+    "sphere.py": _SPHERE_TESTS,
     "impact.py": ["tests/test_impact.py"],
     "motion.py": ["tests/test_impact.py"],
     "bem.py": ["tests/test_bem.py"],
