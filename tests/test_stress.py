@@ -488,3 +488,20 @@ def test_superposed_plane_on_its_smallest_grid():
         with pytest.raises(ValueError, match=rf"^n = {bad!r} is out of range; valid: an "
                                              r"integer >= 2$"):
             stress.superposed_plane(lambda rho: rho, a, 0.3, n=bad)
+
+
+def test_superposed_plane_error_is_relative():
+    """rel_error is the error estimate over the largest stress: the same for the Hertz pressure
+    at p0 = 1 Pa and at p0 = 1 GPa (the field is linear in p), and as small as the
+    superposition's accuracy (1e-12 of the largest component, test_superposition_route)."""
+    a = 2e-3
+
+    def hp(rho, p0):
+        return p0 * np.sqrt(np.maximum(1 - (rho / a) ** 2, 0.0))
+
+    unit = stress.superposed_plane(lambda rho: hp(rho, 1.0), a, 0.3, n=2)
+    giga = stress.superposed_plane(lambda rho: hp(rho, 1e9), a, 0.3, n=2)
+    assert 0 < unit.rel_error < 1e-11
+    # the same quadrature on a pressure 1e9 times larger; both estimates are at the rounding
+    # level here (~2e-15), which differs between the two scalings by a few tenths of itself
+    assert 0.5 < giga.rel_error / unit.rel_error < 2
