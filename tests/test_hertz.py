@@ -246,3 +246,23 @@ def test_surface_displacement_where_rounding_puts_r_on_both_sides_of_a():
         for ri, di, Ri, ui in zip(r[pick], d[pick], R[pick], got, strict=True):
             ref = _hertz_u_mp(ri, di, Ri)
             assert abs(ui / ref - 1) < 1e-15, (ri, di, Ri, ui, ref)
+
+
+def test_pressure_of_a_contact_wider_than_a_metre_and_zero_outside():
+    """hertz.pressure against p0 sqrt(1 - r^2/a^2) at 30 digits with a = sqrt(R d) = 3.2 m
+    (R = 1e4 m, d = 1 mm: the contact of a very large radius, inside the documented domain),
+    where a test for r < 2a must not become r < 2/a; outside it is 0.0, a float."""
+    R, d, E = 1e4, 1e-3, 2e11
+    a = np.sqrt(R * d)
+    r = a * np.array([0.0, 0.5, 0.9, 1.5, 3.0, 1e150])
+    got = hertz.pressure(r, d, R, E)
+    assert got.dtype == np.float64
+    with mp.workdps(30):
+        am = mp.sqrt(mp.mpf(R) * mp.mpf(d))
+        p0 = 2 * mp.mpf(E) / mp.pi * mp.sqrt(mp.mpf(d) / R)  # (5.19) with a = sqrt(R d)
+        for ri, pi in zip(r, got, strict=True):
+            if mp.mpf(ri) >= am:
+                assert pi == 0.0
+            else:
+                ref = p0 * mp.sqrt(1 - (mp.mpf(ri) / am) ** 2)
+                assert abs(pi / ref - 1) < TOL, (ri / a, pi, ref)
