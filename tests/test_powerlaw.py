@@ -408,3 +408,17 @@ def test_g_profile_of_a_steep_power_law_at_a_small_x():
             # (c^(1/n) x)^n: the two roundings of c^(1/n) x grow n-fold (measured 240 ulps at
             # n = 123), kappa a few ulps
             assert abs(gi / ref - 1) < (4 * ni + 8) * 2.2e-16, (ni, gi, ref)
+
+
+def test_punch_pressure_is_zero_outside_its_radius():
+    """n = inf (the flat punch of radius c_n): p = E* d/(pi sqrt(a^2 - r^2)) inside (5.9),
+    (5.11) at 30 digits, and 0 at and beyond the rim, with a finite n in the same call."""
+    a, d, E = 2e-3, 1e-6, 1e11
+    r = np.array([0.0, 0.7 * a, a, 2 * a, 5e-5])  # the paraboloid's a = sqrt(R d) = 1e-4 m
+    n = np.array([np.inf, np.inf, np.inf, np.inf, 2.0])
+    got = powerlaw.pressure(r, d, np.where(np.isinf(n), a, 1 / (2 * 0.01)), n, E)
+    with mp.workdps(30):
+        for k in range(2):
+            ref = E * d / (mp.pi * mp.sqrt(mp.mpf(a) ** 2 - mp.mpf(r[k]) ** 2))
+            assert abs(got[k] / ref - 1) < 1e-14, (k, got[k], ref)
+    assert got[2] == 0.0 and got[3] == 0.0 and got[4] > 0

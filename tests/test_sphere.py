@@ -420,11 +420,13 @@ def _u_outside_ref(r, d, R):
     """u_z(r) outside the contact by (5.60), (2/pi) integral_0^a (d - g(x))/sqrt(r^2 - x^2) dx,
     by tanh-sinh in x (not numeric/sphere.py's Gauss-Legendre in mu = atanh(x/R)), with
     g(x) = x atanh(x/R), the closed form of (5.52) that g_ref's quadrature checks
-    (test_profile_and_g), and a from d = g(a) by findroot at the working precision. The
+    (test_profile_and_g), and a = R tanh(lam) from d = g(a) = R lam tanh(lam) by findroot
+    at the working precision (in lam, whose equation is tame up to a -> R). The
     interval is split at a - (r - a) 2^k, toward the near-singularity at x = r just beyond a
     (unsplit, tanh-sinh keeps only 14 digits at r = a (1 + 1e-6))."""
     r, d, R = mp.mpf(r), mp.mpf(d), mp.mpf(R)
-    a = mp.re(mp.findroot(lambda t: t * mp.atanh(t / R) - d, R * mp.tanh(mp.sqrt(d / R))))
+    lam = mp.findroot(lambda v: v * mp.tanh(v) - d / R, max(mp.sqrt(d / R), d / R))
+    a = R * mp.tanh(lam)
     pts = [mp.mpf(0)] + [a - (r - a) * 2**k for k in range(60, -1, -1) if a > (r - a) * 2**k]
     return 2 / mp.pi * mp.quad(lambda x: (d - x * mp.atanh(x / R)) / mp.sqrt((r - x) * (r + x)),
                                pts + [a])
@@ -434,14 +436,15 @@ def test_surface_displacement_outside_by_the_mdr_integral():
     """sphere.surface_displacement in one call over depths and radii: inside d - f(r) from the
     cap (30 digits); outside against (5.60) by tanh-sinh (20 digits), from just beyond the rim
     to r = R (where the numerical form's substitution point atanh(r/R) is infinite) and
-    beyond R; d = 0 (no contact: u = 0 everywhere) in the same call."""
+    beyond R, and a contact 1e-5 short of R; d = 0 (no contact: u = 0 everywhere) in the same
+    call."""
     R = 2e-3
-    beta = np.array([0.01, 0.5, 0.9, 0.5, 0.5, 0.5, 0.0, 0.3])
+    beta = np.array([0.01, 0.5, 0.9, 0.5, 0.5, 0.5, 0.0, 0.3, 0.99999])
     with mp.workdps(30):
         d = np.array([float(R * b * mp.atanh(b)) for b in beta])  # d = g(a) at a = beta R
     a = beta * R
     r = np.array([1.3 * a[0], a[1] * (1 + 1e-6), 3 * a[2], R, 3 * R, 0.2 * a[5], 0.7 * R,
-                  0.6 * a[7]])
+                  0.6 * a[7], 2 * R])  # the last: mu up to atanh(0.99999) = 6.1, unit panels
     got = sphere.surface_displacement(r, d, R)
     with mp.workdps(20):
         for k in range(len(r)):
