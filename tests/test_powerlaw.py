@@ -422,4 +422,3 @@ def test_punch_pressure_is_zero_outside_its_radius():
             ref = E * d / (mp.pi * mp.sqrt(mp.mpf(a) ** 2 - mp.mpf(r[k]) ** 2))
             assert abs(got[k] / ref - 1) < 1e-14, (k, got[k], ref)
     assert got[2] == 0.0 and got[3] == 0.0 and got[4] > 0
-
