@@ -153,8 +153,12 @@ def mutmut_config(module: str, tests: list[str]) -> dict:
     shared = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"].get("mutmut", {})
     target = f"{PACKAGE}/{module}".rstrip("/")
     only = [target if target.endswith(".py") else target + "/*"]
+    # hypothesis's "mutation" profile (tests/conftest.py): no deadline (on a loaded machine a
+    # test's time says nothing: DeadlineExceeded would count as a kill) and the same examples
+    # for every mutant
+    args = shared.get("pytest_add_cli_args", []) + ["--hypothesis-profile=mutation"]
     return {**shared, "source_paths": [PACKAGE], "only_mutate": only,
-            "pytest_add_cli_args_test_selection": list(tests)}
+            "pytest_add_cli_args": args, "pytest_add_cli_args_test_selection": list(tests)}
 
 
 def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> Path:
