@@ -136,6 +136,7 @@ class Survivor:
     original: str
     mutant: str
     note: str | None = None
+    file: str = ""  # the file under numeric/, for a module that is a folder
 
 
 @dataclass
@@ -278,11 +279,13 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
                 s = Survivor(name, status, lineno + offset - 1 + first - skipped,
                              " / ".join(x[1:].strip() for x in body if x.startswith("-")),
                              " / ".join(x[1:].strip() for x in body if x.startswith("+")))
+                if not module.endswith(".py"):
+                    s.file = str(source.relative_to(PACKAGE))
                 s.note = find_note(module, s, notes)
                 found.append(s)
     finally:
         os.chdir(here)
-    return counts, sorted(found, key=lambda s: s.line)
+    return counts, sorted(found, key=lambda s: (s.file, s.line))
 
 
 def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
@@ -420,7 +423,8 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         lines += [f"### `{r.module}`", ""]
         for s in r.survivors:
             why = s.note if s.note else "**unexplained**"
-            lines.append(f"- line {s.line} ({s.status}): `{s.original}` → `{s.mutant}`: {why}")
+            where = f"`{s.file}` line {s.line}" if s.file else f"line {s.line}"
+            lines.append(f"- {where} ({s.status}): `{s.original}` → `{s.mutant}`: {why}")
         lines.append("")
     if not any_left:
         lines += ["None: every mutant was killed.", ""]
