@@ -394,7 +394,13 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "Each module is mutated alone and tested with its own test files only (a mutant killed "
         "elsewhere in the suite counts as a survivor here). For each mutant, mutmut runs the tests "
         "of those files that reach the mutated function, with `-x`; the command below runs in "
-        "the scratch folder that `benchmarks/mutation.py` lays out (see its docstring).",
+        "the scratch folder that `benchmarks/mutation.py` lays out (see its docstring). Where a "
+        "file's slowest tests (2-D or 3-D quadrature references, minutes for each mutant they "
+        "reach) are left out, the table gives the number of tests run and the command lists "
+        "them. Functions under `@representable` are mutated too (mutmut 3 skips decorated "
+        "functions: the scratch copy applies the decorator after the function); runs before "
+        "2026-11-23 17:00 UTC did not mutate them. *not checked*: the run was stopped before "
+        "mutmut reached those mutants (it checks the cheapest first); `--resume` continues it.",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
