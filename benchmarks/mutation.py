@@ -115,6 +115,8 @@ MODULES: dict[str, list[str]] = {
     "_mdr": _MDR_TESTS,
     "abel.py": ["tests/test_abel.py"],
     "_abel": ["tests/test_abel.py"],
+    "accuracy.py": ["tests/test_cli.py", "tests/test_domains.py"],
+    "cli.py": ["tests/test_cli.py"],
     "impact.py": ["tests/test_impact.py"],
     "motion.py": ["tests/test_impact.py"],
     "bem.py": ["tests/test_bem.py"],
