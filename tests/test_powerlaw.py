@@ -422,3 +422,11 @@ def test_punch_pressure_is_zero_outside_its_radius():
             ref = E * d / (mp.pi * mp.sqrt(mp.mpf(a) ** 2 - mp.mpf(r[k]) ** 2))
             assert abs(got[k] / ref - 1) < 1e-14, (k, got[k], ref)
     assert got[2] == 0.0 and got[3] == 0.0 and got[4] > 0
+
+
+def test_g_profile_refuses_a_non_number_naming_x():
+    """A non-number x is refused naming x (it was converted before validation: NumPy's bare
+    "could not convert" error); g is even in x."""
+    with pytest.raises(ValueError, match=r"^x = 'abc' is not a number"):
+        powerlaw.g_profile("abc", 3.0, 2.0)
+    assert powerlaw.g_profile(-0.5, 3.0, 2.0) == powerlaw.g_profile(0.5, 3.0, 2.0)
