@@ -64,13 +64,14 @@ _STRESS_TESTS = [f"tests/test_stress.py::test_{t}" for t in """
     superposed_plane_on_its_smallest_grid superposed_plane_error_is_relative""".split()]
 
 # test_powerlaw.py but its slow references (the 3-D elasticity check, kappa by quadrature: 170 s
-# for each mutant they reach) and three of the nine exponents of the outside displacement
+# for each mutant they reach) and five of the nine exponents of the outside displacement
 _POWERLAW_TESTS = [f"tests/test_powerlaw.py::test_{t}" for t in """
     g_by_quadrature general_n_pressure_forms pressure_large_n_by_quadrature
     pressure_has_no_nan_at_any_n centre_pressure_for_n_between_1_and_2 force_by_pressure
     normalized_pressure_by_quadrature punch force_roundtrip force_increases_with_depth
     bad_input_is_named displacement_outside_large_n[2.5] displacement_outside_large_n[41.0]
-    displacement_outside_large_n[343.5]
+    displacement_outside_large_n[343.5] displacement_outside_large_n[0.5]
+    displacement_outside_large_n[0.001]
     each_input_named_in_its_error pressure_large_n_at_si_scale_in_one_call
     normalized_pressure_of_the_punch special_cases_are_hertz_cone_and_punch
     mean_pressure_needs_a_positive_depth g_profile_of_a_steep_power_law_at_a_small_x
