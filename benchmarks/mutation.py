@@ -11,10 +11,12 @@ each ``--module`` is run with the ``--tests`` given after it (or MODULES' test f
 mutmut 3 copies the sources to ``mutants/`` and runs the tests there, choosing a mutant by the
 module's import name. numeric/ installs as ``hertzmdr.numeric`` (package-dir), so every module
 runs in a scratch folder ``build/mutation/<module>/`` that lays the sources out under that name
-(``hertzmdr/numeric`` -> numeric/, a link) beside ``tests`` (a link), with the repository's
+(``hertzmdr/numeric``, a copy of numeric/) beside ``tests`` (a link), with the repository's
 pyproject.toml whose ``[tool.mutmut]`` (the shared settings) gets this module's
 ``only_mutate`` and test files. mutmut runs the tests that reach a function with ``-x`` for
-each of its mutants, one worker, under ``nice -n 19``.
+each of its mutants, one worker, under ``nice -n 19``. mutmut 3 leaves decorated functions
+alone; in the copy of the module under test, ``@representable`` is applied after the function
+instead of above it (see :func:`undecorate`), so those functions are mutated too.
 
 Each surviving mutant is printed with its line; a note for it comes from
 benchmarks/mutation_notes.toml (why it cannot be killed), matched by module, original line and
@@ -41,17 +43,81 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 NUMERIC = ROOT / "numeric"
 NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
+# the last run of each module, one JSON file each (committed: --report-only assembles the page
+# from them when build/mutation/ holds no newer run of the module)
+RUNS = ROOT / "benchmarks" / "mutation_runs"
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
 
-# the stable closed-form modules, most physics first, each with the test files written for it
+# test_stress.py but its 2-D quadrature sweep test_hertz_field_by_superposition (60 s for each
+# mutant of the field; test_hertz_field_against_johnson_at_50_digits checks the same field)
+_STRESS_TESTS = [f"tests/test_stress.py::test_{t}" for t in """
+    axis_stresses_by_superposition axis_maximum_shear maximum_in_the_body
+    hertz_field_against_johnson_at_50_digits spheroidal_coordinates
+    field_on_the_axis_is_the_derived_axis_field von_mises_invariant
+    equilibrium_and_surface_traction point_load_limit no_nan_anywhere edge_of_contact
+    superposition_route superposed_plane_and_its_maxima
+    stress_modules_import_no_sympy_scipy_matplotlib bad_input_is_named
+    axis_maximum_shear_bracket each_input_named_in_its_error
+    max_shear_of_known_principal_stresses hertz_maximum_refuses_an_unknown_criterion
+    superposition_fills_both_rules_and_its_estimate_is_tight
+    more_inputs_named_and_the_criteria_by_name plane_field_maximum_is_located_on_its_grid
+    superposed_plane_on_its_smallest_grid superposed_plane_error_is_relative""".split()]
+
+# test_powerlaw.py but its slow references (the 3-D elasticity check, kappa by quadrature: 170 s
+# for each mutant they reach) and five of the nine exponents of the outside displacement
+_POWERLAW_TESTS = [f"tests/test_powerlaw.py::test_{t}" for t in """
+    g_by_quadrature general_n_pressure_forms pressure_large_n_by_quadrature
+    pressure_has_no_nan_at_any_n centre_pressure_for_n_between_1_and_2 force_by_pressure
+    normalized_pressure_by_quadrature punch force_roundtrip force_increases_with_depth
+    bad_input_is_named displacement_outside_large_n[2.5] displacement_outside_large_n[41.0]
+    displacement_outside_large_n[343.5] displacement_outside_large_n[0.5]
+    displacement_outside_large_n[0.001]
+    each_input_named_in_its_error pressure_large_n_at_si_scale_in_one_call
+    normalized_pressure_of_the_punch special_cases_are_hertz_cone_and_punch
+    mean_pressure_needs_a_positive_depth g_profile_of_a_steep_power_law_at_a_small_x
+    punch_pressure_is_zero_outside_its_radius g_profile_refuses_a_non_number_naming_x""".split()]
+
+# test_sphere.py but its sweeps (the 3-D elasticity check, decades), the symbolic check and
+# the report's regeneration
+_SPHERE_TESTS = [f"tests/test_sphere.py::test_{t}" for t in """
+    profile_and_g depth_and_force_by_quadrature contact_radius_and_force_at_depth stiffness
+    pressure_by_quadrature_of_59 force_is_integral_of_pressure hard_cases_and_vectors
+    bad_input force_increases_and_inverts hertz_limit
+    surface_displacement_outside_by_the_mdr_integral each_input_named_in_its_error""".split()]
+
+# the tests of test_mdr.py that call numeric/mdr.py (the others check derive/mdr.py, and one
+# of them, a SymPy solve given 10 s, fails when the machine is loaded)
+_MDR_TESTS = [f"tests/test_mdr.py::test_{t}" for t in """
+    bad_input_is_named mdr_force_by_the_pressure numeric_convergence_order
+    numeric_from_callable_and_force_control numeric_kinked_convergence_and_estimate
+    numeric_kinked_profile numeric_noisy_samples numeric_powerlaw numeric_worn_pressure
+    numeric_worn_with_and_without_breakpoint rtol_is_the_target
+    rtol_range_lower_end""".split()]
+
+# the modules of numeric/ but the generated ones, demo.py, plots.py and scene/ (its own page),
+# most physics first, each with the (fast) test files written for it
 MODULES: dict[str, list[str]] = {
     "hertz.py": ["tests/test_hertz.py"],
     "cone.py": ["tests/test_cone.py"],
-    "powerlaw.py": ["tests/test_powerlaw.py"],
+    "powerlaw.py": _POWERLAW_TESTS,
     "line.py": ["tests/test_line.py"],
     "bodies.py": ["tests/test_bodies.py"],
     "ellipse.py": ["tests/test_ellipse.py"],
-    "stress.py": ["tests/test_stress.py"],
+    "stress.py": _STRESS_TESTS,
+    "worn.py": ["tests/test_worn_numeric.py"],
+    "contact.py": ["tests/test_contact.py"],
+    "pressures.py": ["tests/test_contact.py"] + [
+        f"tests/test_pressures.py::test_max_pressure_of{t}" for t in (
+            "", "_edge_cases", "_in_the_first_and_last_cells",
+            "_a_narrow_peak_and_an_increasing_pressure", "_names_its_inputs")],
+    "line_stress.py": ["tests/test_line_stress.py"],
+    "sphere.py": _SPHERE_TESTS,
+    "mdr.py": _MDR_TESTS,
+    "_mdr": _MDR_TESTS,
+    "abel.py": ["tests/test_abel.py"],
+    "_abel": ["tests/test_abel.py"],
+    "accuracy.py": ["tests/test_cli.py", "tests/test_domains.py"],
+    "cli.py": ["tests/test_cli.py"],
     "impact.py": ["tests/test_impact.py"],
     "motion.py": ["tests/test_impact.py"],
     "bem.py": ["tests/test_bem.py"],
@@ -73,6 +139,7 @@ class Survivor:
     original: str
     mutant: str
     note: str | None = None
+    file: str = ""  # the file under numeric/, for a module that is a folder
 
 
 @dataclass
@@ -91,16 +158,30 @@ def mutmut_config(module: str, tests: list[str]) -> dict:
     shared = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"].get("mutmut", {})
     target = f"{PACKAGE}/{module}".rstrip("/")
     only = [target if target.endswith(".py") else target + "/*"]
+    # hypothesis's "mutation" profile (tests/conftest.py): no deadline (on a loaded machine a
+    # test's time says nothing: DeadlineExceeded would count as a kill) and the same examples
+    # for every mutant
+    args = shared.get("pytest_add_cli_args", []) + ["--hypothesis-profile=mutation"]
     return {**shared, "source_paths": [PACKAGE], "only_mutate": only,
-            "pytest_add_cli_args_test_selection": list(tests)}
+            "pytest_add_cli_args": args, "pytest_add_cli_args_test_selection": list(tests)}
 
 
-def scratch(module: str, tests: list[str], base: Path) -> Path:
-    """A fresh scratch folder laying out numeric/ as hertzmdr/numeric for mutmut."""
+def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> Path:
+    """A fresh scratch folder laying out numeric/ as hertzmdr/numeric for mutmut; with
+    ``resume``, the folder of a run of the same module and tests stopped before its end is
+    kept (mutmut then checks only the mutants it has no result for, and those of functions
+    changed since)."""
     work = base / module.replace("/", "_").removesuffix(".py")
+    if resume and (work / "mutants").is_dir() and not (work / "result.json").exists():
+        cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
+        if cfg == mutmut_config(module, tests):
+            return work
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
-    (work / PACKAGE).symlink_to(NUMERIC, target_is_directory=True)
+    shutil.copytree(NUMERIC, work / PACKAGE, ignore=shutil.ignore_patterns("__pycache__"))
+    target = work / PACKAGE / module
+    for path in [target] if target.is_file() else sorted(target.rglob("*.py")):
+        undecorate(path)
     (work / "tests").symlink_to(ROOT / "tests", target_is_directory=True)
     text = (ROOT / "pyproject.toml").read_text()
     text = re.sub(r"(?ms)^\[tool\.mutmut\]\n.*?(?=^\[|\Z)", "", text)  # replaced below
@@ -108,6 +189,23 @@ def scratch(module: str, tests: list[str], base: Path) -> Path:
     text += "\n[tool.mutmut]\n" + "".join(f"{k} = {json.dumps(v)}\n" for k, v in cfg.items())
     (work / "pyproject.toml").write_text(text)
     return work
+
+
+def undecorate(path: Path) -> None:
+    """Move ``@representable`` (numeric/_validate.py) from above each module-level function of
+    ``path`` to a rebinding ``f = representable(f)`` at the end of the module: mutmut 3 does not
+    mutate decorated functions, and this one only wraps the call. Its line becomes a comment,
+    so every line keeps its number."""
+    lines = path.read_text().splitlines(keepends=True)
+    names = []
+    for i, line in enumerate(lines[:-1]):
+        found = re.match(r"def (\w+)\(", lines[i + 1])
+        if line.rstrip() == "@representable" and found:
+            names.append(found.group(1))
+            lines[i] = "# @representable: applied at the end of the module (mutation run)\n"
+    if names:
+        lines.append("\n" + "".join(f"{n} = representable({n})\n" for n in names))
+        path.write_text("".join(lines))
 
 
 def function_lines(path: Path) -> dict[str, int]:
@@ -165,7 +263,7 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
     try:
         for meta in sorted(Path("mutants").rglob("*.py.meta")):
             source = Path(str(meta.relative_to("mutants"))[: -len(".meta")])
-            starts = function_lines(NUMERIC / source.relative_to(PACKAGE))
+            starts = function_lines(source)  # the scratch's copy, as mutmut mutated it
             codes = json.loads(meta.read_text())["exit_code_by_key"]
             for name, code in codes.items():
                 status = STATUS.get(code, "suspicious")
@@ -184,19 +282,23 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
                 s = Survivor(name, status, lineno + offset - 1 + first - skipped,
                              " / ".join(x[1:].strip() for x in body if x.startswith("-")),
                              " / ".join(x[1:].strip() for x in body if x.startswith("+")))
+                if not module.endswith(".py"):
+                    s.file = str(source.relative_to(PACKAGE))
                 s.note = find_note(module, s, notes)
                 found.append(s)
     finally:
         os.chdir(here)
-    return counts, sorted(found, key=lambda s: s.line)
+    return counts, sorted(found, key=lambda s: (s.file, s.line))
 
 
-def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run:
-    work = scratch(module, tests, base)
+def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
+               resume: bool = False) -> Run:
+    work = scratch(module, tests, base, resume)
+    resumed = (work / "run.log").exists()
     mutmut = str(Path(sys.executable).with_name("mutmut"))
     cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", "1"]
     t = time.perf_counter()
-    with open(work / "run.log", "w") as log:
+    with open(work / "run.log", "a" if resumed else "w") as log:
         proc = subprocess.run(cmd, cwd=work, stdout=log, stderr=subprocess.STDOUT,
                               env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1"})
     seconds = time.perf_counter() - t
@@ -206,37 +308,76 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> 
     counts, survivors = survivors_of(work, module, notes)
     again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
     date = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    if resumed:  # the time is that of the part run now
+        date += " (resumed)"
     run = Run(module, tests, again, seconds, date, counts, survivors)
     (work / "result.json").write_text(json.dumps(asdict(run), indent=1))
+    save_run(run)
     return run
 
 
-def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run | None:
-    """The result of an earlier run of ``module`` (``--report-only``), its notes read anew;
-    None if there is none with these test files."""
+def run_path(module: str) -> Path:
+    return RUNS / (module.replace("/", "_").removesuffix(".py") + ".json")
+
+
+def save_run(run: Run) -> None:
+    """Keep ``run`` in benchmarks/mutation_runs/ (its notes are read anew on loading)."""
+    data = asdict(run)
+    for s in data["survivors"]:
+        del s["note"]
+    RUNS.mkdir(exist_ok=True)
+    run_path(run.module).write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
+
+
+def load_run(module: str, base: Path, notes: list[dict]) -> Run | None:
+    """The result of the last run of ``module`` (``--report-only``), its notes read anew: the
+    run in ``base`` (complete, or stopped before its end: what it checked, the rest counted as
+    not checked; either is kept in benchmarks/mutation_runs/), else the one kept there; None if
+    there is none. The page shows the tests that run used (MODULES may have more since: their
+    kills are the "since" notes)."""
     work = base / module.replace("/", "_").removesuffix(".py")
     path = work / "result.json"
-    if not path.exists():
-        if not (work / "mutants").is_dir():
-            return None
-        # a run stopped before its end: what it checked, the rest counted as not checked
+    if not path.exists() and (work / "mutants").is_dir():
         cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
-        if cfg["pytest_add_cli_args_test_selection"] != list(tests):
-            return None
+        tests = cfg["pytest_add_cli_args_test_selection"]
         counts, survivors = survivors_of(work, module, notes)
         stopped = datetime.datetime.fromtimestamp((work / "run.log").stat().st_mtime,
                                                   datetime.UTC)
         again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
-        return Run(module, list(tests), again, 0.0,
-                   stopped.strftime("%Y-%m-%d %H:%M UTC") + " (stopped before the end)",
-                   counts, survivors)
-    data = json.loads(path.read_text())
-    if data["tests"] != list(tests):
+        run = Run(module, list(tests), again, 0.0,
+                  stopped.strftime("%Y-%m-%d %H:%M UTC") + " (stopped before the end)",
+                  counts, survivors)
+        save_run(run)
+        return run
+    if not path.exists():
+        path = run_path(module)
+    if not path.exists():
         return None
+    data = json.loads(path.read_text())
     run = Run(**{**data, "survivors": [Survivor(**x) for x in data["survivors"]]})
+    if path.parent == work:
+        save_run(run)
     for s in run.survivors:
         s.note = find_note(module, s, notes)
     return run
+
+
+def tests_cell(tests: list[str]) -> str:
+    """The test files of a run for the table: a file, ``file::test``, or a file with the
+    number of its tests chosen (the command below the table lists them)."""
+    files: dict[str, list[str]] = {}
+    for t in tests:
+        name, _, test = t.partition("::")
+        files.setdefault(Path(name).name, []).append(test)
+    cells = []
+    for name, chosen in files.items():
+        if "" in chosen:
+            cells.append(f"`{name}`")
+        elif len(chosen) == 1:
+            cells.append(f"`{name}::{chosen[0]}`")
+        else:
+            cells.append(f"`{name}` ({len(chosen)} tests)")
+    return ", ".join(cells)
 
 
 def report(runs: list[Run], argv: list[str], total: float, assembled: bool = False) -> str:
@@ -256,17 +397,26 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "Each module is mutated alone and tested with its own test files only (a mutant killed "
         "elsewhere in the suite counts as a survivor here). For each mutant, mutmut runs the tests "
         "of those files that reach the mutated function, with `-x`; the command below runs in "
-        "the scratch folder that `benchmarks/mutation.py` lays out (see its docstring).",
+        "the scratch folder that `benchmarks/mutation.py` lays out (see its docstring). Where a "
+        "file's slowest tests (2-D or 3-D quadrature references, minutes for each mutant they "
+        "reach) are left out, the table gives the number of tests run and the command lists "
+        "them. Functions under `@representable` are mutated too (mutmut 3 skips decorated "
+        "functions: the scratch copy applies the decorator after the function); runs before "
+        "2026-11-23 17:00 UTC did not mutate them. *not checked*: the run was stopped before "
+        "mutmut reached those mutants (it checks the cheapest first); `--resume` continues it.",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
-        "`tests/test_generated.py` and by the mpmath oracles.",
+        "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
+        "(a demonstration and figures: nothing they compute is a result, and their tests check "
+        "that they run). The scene layer, `numeric/scene/`, has its own page, "
+        "[mutation_scene.md](mutation_scene.md).",
         "",
         "| module | test files | mutants | " + " | ".join(columns) + " | time | run on |",
         "|---|---|---:|" + "---:|" * len(columns) + "---:|---|",
     ]
     for r in runs:
         cells = [str(r.counts.get(c, 0)) for c in ["mutants", *columns]]
-        tests = ", ".join(f"`{Path(t).name}`" for t in r.tests)
+        tests = tests_cell(r.tests)
         lines.append(f"| `{r.module}` | {tests} | " + " | ".join(cells)
                      + f" | {f'{r.seconds:.0f} s' if r.seconds else '-'} | {r.date} |")
     lines += ["", "Each module again alone (its report only, hence `--out`):", ""]
@@ -282,7 +432,8 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         lines += [f"### `{r.module}`", ""]
         for s in r.survivors:
             why = s.note if s.note else "**unexplained**"
-            lines.append(f"- line {s.line} ({s.status}): `{s.original}` → `{s.mutant}`: {why}")
+            where = f"`{s.file}` line {s.line}" if s.file else f"line {s.line}"
+            lines.append(f"- {where} ({s.status}): `{s.original}` → `{s.mutant}`: {why}")
         lines.append("")
     if not any_left:
         lines += ["None: every mutant was killed.", ""]
@@ -308,9 +459,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--module", action="append", default=[],
                     help="path under numeric/ (file or folder); repeatable")
     ap.add_argument("--tests", action="append", nargs="+", default=[],
-                    help="test files for the --module before it")
+                    help="test files (or tests: file::name) for the --module before it")
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "mutation.md")
     ap.add_argument("--work", type=Path, default=ROOT / "build" / "mutation")
+    ap.add_argument("--resume", action="store_true",
+                    help="continue a module's run stopped before its end (same tests)")
     ap.add_argument("--report-only", action="store_true",
                     help="write the report from the last run of each module (in --work)")
     args = ap.parse_args(argv)
@@ -325,7 +478,7 @@ def main(argv: list[str] | None = None) -> int:
         if not (NUMERIC / m).exists():
             ap.error(f"--module {m}: numeric/{m} does not exist")
         for t in tests:
-            if not (ROOT / t).is_file():
+            if not (ROOT / t.partition("::")[0]).is_file():  # a file, or a test in it
                 ap.error(f"--tests {t}: no such file")
     notes = load_notes()
     t0 = time.perf_counter()
@@ -333,21 +486,22 @@ def main(argv: list[str] | None = None) -> int:
     missing = []
     for m, tests in jobs:
         if args.report_only:
-            run = load_run(m, tests, args.work.resolve(), notes)
+            run = load_run(m, args.work.resolve(), notes)
             if run is None:
                 missing.append(m)
             else:
                 runs.append(run)
             continue
         print(f"mutating numeric/{m} with {' '.join(tests)} ...", flush=True)
-        runs.append(run_module(m, tests, args.work.resolve(), notes))
+        runs.append(run_module(m, tests, args.work.resolve(), notes, args.resume))
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
-    text = report(runs, [a for a in argv if a != "--report-only"], total, args.report_only)
+    text = report(runs, [a for a in argv if a not in ("--report-only", "--resume")], total,
+                  args.report_only)
     if missing:
         text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)
-                 + " with these test files yet.\n")
+                 + " yet.\n")
     args.out.write_text(text + "\n")
     print(f"wrote {args.out}")
     return 0

@@ -16,7 +16,14 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import nonnegative, positive, pow2_scale, representable, result
+from hertzmdr.numeric._validate import (
+    as_float,
+    nonnegative,
+    positive,
+    pow2_scale,
+    representable,
+    result,
+)
 
 __all__ = ["kappa", "g_profile", "contact_radius", "force", "force_from_radius",
            "depth_from_force", "mean_pressure", "pressure", "pressure_normalized",
@@ -73,7 +80,7 @@ def g_profile(x, c_n, n):
     n : float or array_like
         Exponent, > 0.
     """
-    x = np.abs(np.asarray(x, dtype=float))
+    x = np.abs(as_float("x", x))  # g is even in x
     x, c_n, n = np.broadcast_arrays(nonnegative("x", x), positive("c_n", c_n), positive("n", n))
     # g(x; c_n) = g(c_n^(1/n) x; 1): for n >= 1 the scaled x, not x^n, is formed (x^n
     # underflowed at x = 6e-4, n = 123 where c_n = 5e236 brings g back to 4e-160); for n < 1

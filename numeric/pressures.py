@@ -100,7 +100,8 @@ def max_pressure_of(p, a, *, points=2001):
 
     The pressure is evaluated on ``points`` radii 0, a/(points - 1), ... (the edge r = a
     excluded) and the largest value is refined by a bounded scalar search (Brent) over the two
-    cells beside it, to 1e-12 a in r; the result is the larger of the grid's and the search's.
+    cells beside it, to 1e-12 a + 1.5e-8 r in r (SciPy's bounded search adds sqrt(eps) r to
+    its xatol); the result is the larger of the grid's and the search's.
     A pressure that is +inf on the grid (a conical tip's axis) gives +inf.
 
     Parameters
@@ -122,7 +123,7 @@ def max_pressure_of(p, a, *, points=2001):
     from scipy.optimize import minimize_scalar
 
     a = float(nonnegative("a", a))
-    if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 3:
+    if not isinstance(points, (int, np.integer)) or points < 3:  # True, False < 3 too
         raise ValueError(f"points = {points!r} is out of range; valid: an integer >= 3")
     if a == 0.0:
         return float(np.asarray(p(np.zeros(1)), float)[0]), 0.0
@@ -131,7 +132,7 @@ def max_pressure_of(p, a, *, points=2001):
     k = int(np.argmax(values))
     best, where = float(values[k]), float(r[k])
     lo, hi = r[max(k - 1, 0)], r[min(k + 1, len(r) - 1)]
-    if np.isfinite(best) and hi > lo:
+    if np.isfinite(best):  # hi > lo: r has at least 2 radii
         res = minimize_scalar(lambda x: -float(np.asarray(p(np.array([x])), float)[0]),
                               bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * a})
         if -res.fun > best:

@@ -297,11 +297,10 @@ def surface_displacement(r, d, R):
     _deep(d, R)
     lam = _lam_from_depth(d, R)
     a = gen.sphere_lam_contact_radius(R, lam)
-    out = np.empty(r.shape)
+    out = np.zeros(r.shape)  # u = 0 outside where there is no contact (d = 0)
     inside = r <= a
     out[inside] = d[inside] - gen.sphere_profile(R[inside], r[inside])  # (5.54) in 3-D
     outside = ~inside & (d > 0)
-    out[~inside & (d == 0)] = 0.0
     if outside.any():
         ro, Ro, lo, do = (v[outside] for v in (r, R, lam, d))
         # mu of the zero of sqrt(r^2 - x^2) when r < R; none on the real axis otherwise

@@ -536,7 +536,7 @@ def superposed_plane(pressure, a, nu, *, n: int = 13) -> PlaneField:
     -------
     PlaneField
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+    if not isinstance(n, (int, np.integer)) or n < 2:  # True, False < 2 too
         raise ValueError(f"n = {n!r} is out of range; valid: an integer >= 2")
     a = float(positive("a", a))
     x = np.linspace(0.0, 2.0 * a, n)

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import nonnegative, positive, result
+from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
 
 __all__ = ["profile", "g_profile", "depth", "contact_radius", "force", "force_from_radius",
            "depth_from_force", "pressure", "surface_displacement"]
@@ -42,13 +42,9 @@ def profile(r, R, b):
 
 def g_profile(x, R, b):
     """MDR profile g(x) [m] (5.52): 0 for |x| < b. Parameters as :func:`profile` (x in m)."""
-    x = np.abs(np.asarray(x, dtype=float))
+    x = nonnegative("x", np.abs(as_float("x", x)))  # g is even in x
     R, b = _geometry(R, b)
-    x, R, b = np.broadcast_arrays(nonnegative("x", x), R, b)
-    out = np.zeros(x.shape)
-    out_ = x > b
-    out[out_] = gen.worn_g(R[out_], b[out_], x[out_])
-    return result(out)
+    return result(gen.worn_g(R, b, x))  # (5.52); the generated form is 0 for x <= b
 
 
 def depth(a, R, b):
@@ -70,7 +66,7 @@ def _radius(name, a, b):
     a = nonnegative(name, a)
     bad = a < b
     if np.any(bad):
-        first = np.asarray(a)[bad].flat[0]
+        first = float(np.broadcast_to(a, bad.shape)[bad].flat[0])
         raise ValueError(f"{name} = {first!r} is out of range; valid: {name} >= b (the contact "
                          "covers at least the flat)")
     return a
@@ -180,7 +176,7 @@ def surface_displacement(r, d, R, b):
         As in :func:`force`, d > 0.
     """
     r, d, R, b = np.broadcast_arrays(nonnegative("r", r), positive("d", d), *_geometry(R, b))
-    a = np.asarray(gen.worn_contact_radius(R, b, d), dtype=float)
+    a = np.asarray(gen.worn_contact_radius(R, b, d))
     out = np.empty(r.shape)
     ins = r <= a
     out[ins] = gen.worn_displacement_inside(R[ins], b[ins], d[ins], r[ins])  # (5.60), r <= a

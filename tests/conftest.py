@@ -1,7 +1,13 @@
 import mpmath as mp
 import pytest
+from hypothesis import settings
 
 from oracle import WORST
+
+# benchmarks/mutation.py runs the tests with --hypothesis-profile=mutation: on a loaded machine
+# a test's time says nothing (a missed deadline would count as killing the mutant), and every
+# mutant should meet the same examples
+settings.register_profile("mutation", deadline=None, derandomize=True)
 
 
 @pytest.fixture(autouse=True)

@@ -431,3 +431,14 @@ def test_matrices_are_the_transforms(N):
 def test_matrix_bad_input_raises(kwargs, match):
     with pytest.raises(ValueError, match=match):
         abel.pressure_matrix(**kwargs)
+
+
+def test_edge_on_the_last_sample_and_beyond_it():
+    """The edge may be the last sample, x = (N - 1) dx (both the matrix and the transform take
+    it); beyond it the error gives the grid's end (N - 1) dx."""
+    assert abel.pressure_matrix(5, 0.25, edge=1.0).shape == (5, 5)
+    p = abel.pressure_from_line_load(1 - np.linspace(0, 1, 5) ** 2, 0.25, edge=1.0)
+    assert p[-1] == 0.0 and np.all(p[:-1] > 0)
+    with pytest.raises(ValueError, match=r"^edge = 2.0 is out of range; valid: 0 < edge <= "
+                                         r"\(N-1\)\*dx = 1.0$"):
+        abel.pressure_matrix(5, 0.25, edge=2.0)

@@ -9,6 +9,9 @@ import pytest
 
 from hertzmdr.numeric import contact, pressures
 
+from kernels import uz_axisymmetric
+from named import assert_inputs_named
+
 # a handful of correctly rounded float64 operations against a 30-digit reference
 TOL_FLOAT = 1e-14
 
@@ -101,3 +104,57 @@ def test_disc_pressure_refuses_bad_input():
         pressures.pressure(0.0, "triangular", 1e6, 1e-3)
     with pytest.raises(ValueError, match="a > 0"):
         pressures.force("uniform", 1e6, -1e-3)
+
+
+def test_each_input_named_in_its_error():
+    """Every input of the shared relations is named in its error (tests/named.py)."""
+    assert_inputs_named(contact.mean_pressure, {"F": 1.0, "A": 1e-6})
+    assert_inputs_named(contact.mean_pressure_disc, {"F": 1.0, "a": 1e-3})
+    assert_inputs_named(contact.mean_pressure_strip, {"F": 1.0, "a": 1e-3, "L": 0.01})
+    assert_inputs_named(contact.stiffness, {"a": 1e-3, "E_star": 1e11})
+    assert_inputs_named(contact.punch_force, {"d": 1e-6, "a": 1e-3, "E_star": 1e11})
+    assert_inputs_named(contact.punch_depth_from_force, {"F": 1.0, "a": 1e-3, "E_star": 1e11})
+
+
+@pytest.mark.parametrize("name, n", [("uniform", 0), ("hertzian", 0.5), ("punch", -0.5)])
+def test_disc_surface_displacement_by_the_kernel(name, n):
+    """pressures.surface_displacement inside and outside the disc (r, a and E* arrays that
+    differ along the row, p0 along the column, three points inside and two outside) against
+    u_z of (5.7): the Boussinesq kernel integrated over p0 (1 - rho^2/a^2)^n by 2-D
+    Gauss-Legendre at 20 digits (tests/kernels.py, ~1e-18 for these pressures)."""
+    r = np.array([0.0, 0.6e-3, 2.4e-3, 3e-3, 2e-2])
+    a = np.array([2e-3, 1e-3, 2.5e-3, 1.5e-3, 2e-3])
+    E = np.array([7e10, 2e11, 1e9, 3e10, 7e10])
+    p0 = np.array([[4e6], [9e6]])
+    got = pressures.surface_displacement(r, name, p0, a, E)
+    assert got.shape == (2, 5)
+    with mp.workdps(20):
+        for k in range(5):
+            u = uz_axisymmetric(lambda gap, k=k: (gap / mp.mpf(a[k]) ** 2) ** n, r[k], a[k],
+                                E[k])  # p0 = 1
+            # inside: a few correctly rounded operations; outside, the n = 1/2 form cancels
+            # terms of relative size (r/a)^2 (test_pressures.py::test_outside_displacement_...)
+            tol = TOL_FLOAT * max(1.0, (r[k] / a[k]) ** 2)
+            for j in range(2):
+                assert abs(got[j, k] / (p0[j, 0] * u) - 1) < tol, (name, k, got[j, k])
+    # r = a belongs to the inside form; the outside one meets it there (u_z is continuous)
+    a, E = 2e-3, 7e10
+    edge = pressures.surface_displacement(np.array([a, a * (1 + 1e-12)]), name, 4e6, a, E)
+    # 1e-12 a outside the rim u_z has moved by ~1e-12 of itself where u_z' is finite (n >= 0);
+    # the punch's u_z = d (2/pi) asin(a/r) falls as sqrt(r - a): by (2/pi) sqrt(2e-12) = 9e-7
+    assert abs(edge[1] / edge[0] - 1) < (1e-6 if n < 0 else 1e-10)
+
+
+def test_disc_pressures_name_their_inputs():
+    """Every input of numeric/pressures.py is named in its error (tests/named.py), and an
+    unknown distribution is named with the valid ones."""
+    def u(r, p0, a, E_star):
+        return pressures.surface_displacement(r, "hertzian", p0, a, E_star)
+
+    assert_inputs_named(u, {"r": 1e-3, "p0": 1e6, "a": 2e-3, "E_star": 1e11})
+    assert_inputs_named(lambda r, p0, a: pressures.pressure(r, "punch", p0, a),
+                        {"r": 1e-3, "p0": 1e6, "a": 2e-3})
+    assert_inputs_named(lambda p0, a: pressures.force("uniform", p0, a), {"p0": 1e6, "a": 2e-3})
+    with pytest.raises(ValueError, match=r"^distribution = 'cone' is not one of uniform, "
+                                         r"hertzian, punch$"):
+        pressures.surface_displacement(0.0, "cone", 1e6, 2e-3, 1e11)

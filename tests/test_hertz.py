@@ -199,3 +199,70 @@ def test_public_functions_against_the_kernel_reference():
         assert_close(hertz.pressure(float(r), d, R, E), p_r, TOL, "(5.15)")
         assert_close(hertz.max_pressure(d, R, E), p0, TOL, "(5.22)")
 
+
+
+def _hertz_u_mp(r, d, R):
+    """u_z(r) of the Hertz contact at 30 digits from the textbook forms, with a = sqrt(R d)
+    exact: d - r^2/(2R) inside, (d/pi)((2 - rho^2) asin(1/rho) + sqrt(rho^2 - 1)), rho = r/a,
+    outside (Johnson, Contact Mechanics, (3.42b)), a route apart from the printed stable form."""
+    r, d, R = mp.mpf(r), mp.mpf(d), mp.mpf(R)
+    a = mp.sqrt(R * d)
+    if r <= a:
+        return d - r * r / (2 * R)
+    rho = r / a
+    return d / mp.pi * ((2 - rho**2) * mp.asin(1 / rho) + mp.sqrt(rho**2 - 1))
+
+
+@pytest.mark.parametrize("R, d", [(0.02, 1e-6), (3e-6, 1e-9), (7.0, 2e-3)])
+def test_surface_displacement_outside_against_the_textbook_form(R, d):
+    """hertz.surface_displacement on 60 radii from a to 4a (where its scaled outside form
+    changes scale, a power of 4) and far out, in one call, against the 30-digit textbook form."""
+    a = float(np.sqrt(R * d))
+    r = a * np.concatenate([1 + np.geomspace(1e-9, 3, 60), [10.0, 1e3, 1e6]])
+    got = hertz.surface_displacement(r, d, R)
+    with mp.workdps(30):
+        for ri, ui in zip(r, got, strict=True):
+            ref = _hertz_u_mp(ri, d, R)
+            # a few roundings and one 2F1 (1e-14); next to the rim the form's asin(a/r)
+            # amplifies the rounding of a/r by 1/sqrt(2 (rho - 1)) (5e-12 at rho = 1 + 1e-9,
+            # measured 1.5e-12). The textbook form's cancellation is mpmath's, at 30 digits
+            tol = 1e-14 + 2e-15 / np.sqrt(ri / a - 1)
+            assert abs(ui / ref - 1) < tol, (ri / a, ui, ref)
+
+
+def test_surface_displacement_where_rounding_puts_r_on_both_sides_of_a():
+    """Radii r = nextafter(a, inf) just outside the rounded contact radius a = sqrt(R) sqrt(d)
+    but with r*r <= R*d in floats: the outside form's asin(sqrt(R d)/r) would see an argument
+    > 1 there, so they are taken as inside. Found by a scan of (R, d) over decades; each value
+    against the 30-digit displacement, d/2 to within a few ulps."""
+    rng = np.random.default_rng(1)
+    R = np.exp(rng.uniform(np.log(1e-4), np.log(10.0), 400))
+    d = R * np.exp(rng.uniform(np.log(1e-10), np.log(1e-2), 400))
+    r = np.nextafter(gen.hertz_contact_radius(R, d), np.inf)
+    pick = r * r <= R * d
+    assert pick.sum() >= 20  # the rounding disagrees for about a third of them
+    got = hertz.surface_displacement(r[pick], d[pick], R[pick])
+    with mp.workdps(30):
+        for ri, di, Ri, ui in zip(r[pick], d[pick], R[pick], got, strict=True):
+            ref = _hertz_u_mp(ri, di, Ri)
+            assert abs(ui / ref - 1) < 1e-15, (ri, di, Ri, ui, ref)
+
+
+def test_pressure_of_a_contact_wider_than_a_metre_and_zero_outside():
+    """hertz.pressure against p0 sqrt(1 - r^2/a^2) at 30 digits with a = sqrt(R d) = 3.2 m
+    (R = 1e4 m, d = 1 mm: the contact of a very large radius, inside the documented domain),
+    where a test for r < 2a must not become r < 2/a; outside it is 0.0, a float."""
+    R, d, E = 1e4, 1e-3, 2e11
+    a = np.sqrt(R * d)
+    r = a * np.array([0.0, 0.5, 0.9, 1.5, 3.0, 1e150])
+    got = hertz.pressure(r, d, R, E)
+    assert got.dtype == np.float64
+    with mp.workdps(30):
+        am = mp.sqrt(mp.mpf(R) * mp.mpf(d))
+        p0 = 2 * mp.mpf(E) / mp.pi * mp.sqrt(mp.mpf(d) / R)  # (5.19) with a = sqrt(R d)
+        for ri, pi in zip(r, got, strict=True):
+            if mp.mpf(ri) >= am:
+                assert pi == 0.0
+            else:
+                ref = p0 * mp.sqrt(1 - (mp.mpf(ri) / am) ** 2)
+                assert abs(pi / ref - 1) < TOL, (ri / a, pi, ref)

@@ -249,3 +249,55 @@ def test_max_pressure_of_edge_cases():
         pressures.max_pressure_of(_hertz_like, -1.0)
     with pytest.raises(ValueError, match="points"):
         pressures.max_pressure_of(_hertz_like, A_DISC, points=2)
+
+
+def _kink(r0):
+    """A pressure with a kink at r0: its maximum locates to ~eps, unlike a flat one."""
+    return lambda r: 1e6 * (1 - np.abs(r - r0) / A_DISC)
+
+
+def test_max_pressure_of_in_the_first_and_last_cells():
+    """Maxima in the grid's first cell (0, h) and last one (a - 2h, a - h), h = a/2000: the
+    search runs over the cells beside the best radius, at either end of the grid too. A kink
+    locates to the search's tolerance in r: SciPy's bounded Brent stops within
+    xatol/3 + sqrt(eps) |r| (xatol = 1e-12 a)."""
+    from hertzmdr.numeric import pressures
+
+    h = A_DISC / 2000
+    for r0 in (0.3 * h, A_DISC - 1.3 * h):
+        value, at = pressures.max_pressure_of(_kink(r0), A_DISC)
+        tol = 2 * (1e-12 / 3 * A_DISC + 1.5e-8 * r0)  # twice the search's tolerance
+        # the kink's value at r is 1e6 (1 - |r - r0|/a)
+        assert abs(at - r0) < tol, (r0, at)
+        assert abs(value / 1e6 - 1) < tol / A_DISC, (r0, value)
+
+
+def test_max_pressure_of_a_narrow_peak_and_an_increasing_pressure():
+    """A peak 1e-3 a wide between grid radii is found by the default 2001-point grid (a
+    coarser grid would miss it); a pressure increasing to the edge gives its value at the
+    last radius of the grid, a (1 - 1/(points - 1)); at a = 1 m as at a = 2 mm; the smallest
+    grid, points = 3."""
+    from hertzmdr.numeric import pressures
+
+    for a in (A_DISC, 1.0):
+        r0 = 0.4123 * a
+        value, at = pressures.max_pressure_of(
+            lambda r, a=a, r0=r0: 1 + np.exp(-(((r - r0) / (1e-3 * a)) ** 2)), a)
+        # a flat maximum: the search stops within sqrt(eps) r0 = 6e-9 a of it (see above),
+        # 6e-6 of the peak's width w = 1e-3 a: the value to (6e-6)^2 = 4e-11
+        assert abs(value - 2) < 1e-10 and abs(at - r0) < 1e-8 * a, (a, value, at)
+        value, at = pressures.max_pressure_of(lambda r, a=a: r / a, a, points=3)
+        assert (value, at) == (0.5, 0.5 * a)
+        value, at = pressures.max_pressure_of(lambda r, a=a: r / a, a)
+        assert abs(value - (1 - 1 / 2000)) < 1e-15 and abs(at / a - (1 - 1 / 2000)) < 1e-15
+
+
+def test_max_pressure_of_names_its_inputs():
+    from hertzmdr.numeric import pressures
+
+    with pytest.raises(ValueError, match=r"^a = nan"):
+        pressures.max_pressure_of(_hertz_like, float("nan"))
+    for bad in (True, 2.0, 2):
+        with pytest.raises(ValueError, match=rf"^points = {bad!r} is out of range; valid: an "
+                                             r"integer >= 3$"):
+            pressures.max_pressure_of(_hertz_like, A_DISC, points=bad)

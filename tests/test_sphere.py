@@ -414,3 +414,65 @@ def test_sweep_over_decades():
                             name="sphere force_from_radius")
         assert_mpmath_equal(force_d_num, force_d_mp, doms, rtol=TOL, n=n, dps=DPS,
                             name="sphere force(d)")
+
+
+def _u_outside_ref(r, d, R):
+    """u_z(r) outside the contact by (5.60), (2/pi) integral_0^a (d - g(x))/sqrt(r^2 - x^2) dx,
+    by tanh-sinh in x (not numeric/sphere.py's Gauss-Legendre in mu = atanh(x/R)), with
+    g(x) = x atanh(x/R), the closed form of (5.52) that g_ref's quadrature checks
+    (test_profile_and_g), and a = R tanh(lam) from d = g(a) = R lam tanh(lam) by findroot
+    at the working precision (in lam, whose equation is tame up to a -> R). The
+    interval is split at a - (r - a) 2^k, toward the near-singularity at x = r just beyond a
+    (unsplit, tanh-sinh keeps only 14 digits at r = a (1 + 1e-6))."""
+    r, d, R = mp.mpf(r), mp.mpf(d), mp.mpf(R)
+    lam = mp.findroot(lambda v: v * mp.tanh(v) - d / R, max(mp.sqrt(d / R), d / R))
+    a = R * mp.tanh(lam)
+    pts = [mp.mpf(0)] + [a - (r - a) * 2**k for k in range(60, -1, -1) if a > (r - a) * 2**k]
+    return 2 / mp.pi * mp.quad(lambda x: (d - x * mp.atanh(x / R)) / mp.sqrt((r - x) * (r + x)),
+                               pts + [a])
+
+
+def test_surface_displacement_outside_by_the_mdr_integral():
+    """sphere.surface_displacement in one call over depths and radii: inside d - f(r) from the
+    cap (30 digits); outside against (5.60) by tanh-sinh (20 digits), from just beyond the rim
+    to r = R (where the numerical form's substitution point atanh(r/R) is infinite) and
+    beyond R, and a contact 1e-5 short of R; d = 0 (no contact: u = 0 everywhere) in the same
+    call."""
+    R = 2e-3
+    beta = np.array([0.01, 0.5, 0.9, 0.5, 0.5, 0.5, 0.0, 0.3, 0.99999])
+    with mp.workdps(30):
+        d = np.array([float(R * b * mp.atanh(b)) for b in beta])  # d = g(a) at a = beta R
+    a = beta * R
+    r = np.array([1.3 * a[0], a[1] * (1 + 1e-6), 3 * a[2], R, 3 * R, 0.2 * a[5], 0.7 * R,
+                  0.6 * a[7], 2 * R])  # the last: mu up to atanh(0.99999) = 6.1, unit panels
+    got = sphere.surface_displacement(r, d, R)
+    with mp.workdps(20):
+        for k in range(len(r)):
+            if d[k] == 0:
+                assert got[k] == 0.0
+            elif r[k] < a[k]:
+                with mp.workdps(30):
+                    # d - f(r): the subtraction's rounding and f's few ulps, 2-4 ulps of d
+                    assert abs(got[k] - (d[k] - f(mp.mpf(r[k]), R))) < 1e-15 * d[k], k
+            else:
+                ref = _u_outside_ref(r[k], d[k], R)
+                # Gauss-Legendre panels to ~1e-15 (the module's error model); tanh-sinh at
+                # 20 digits to ~1e-18
+                assert abs(got[k] / ref - 1) < 1e-14, (k, got[k], ref)
+
+
+def test_each_input_named_in_its_error():
+    """Every input of every public function is named in its error (tests/named.py)."""
+    from named import assert_inputs_named
+
+    R, E, d = 2e-3, 1e11, 1e-5
+    assert_inputs_named(sphere.profile, {"r": 1e-4, "R": R})
+    assert_inputs_named(sphere.g_profile, {"x": 1e-4, "R": R})
+    assert_inputs_named(sphere.depth, {"a": 1e-4, "R": R})
+    assert_inputs_named(sphere.contact_radius, {"d": d, "R": R})
+    assert_inputs_named(sphere.force_from_radius, {"a": 1e-4, "R": R, "E_star": E})
+    assert_inputs_named(sphere.force, {"d": d, "R": R, "E_star": E})
+    assert_inputs_named(sphere.depth_from_force, {"F": 1.0, "R": R, "E_star": E})
+    assert_inputs_named(sphere.stiffness, {"d": d, "R": R, "E_star": E})
+    assert_inputs_named(sphere.pressure, {"r": 1e-4, "d": d, "R": R, "E_star": E})
+    assert_inputs_named(sphere.surface_displacement, {"r": 1e-4, "d": d, "R": R})

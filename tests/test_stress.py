@@ -517,3 +517,51 @@ def test_orthogonal_shear_maximum_is_the_largest_in_the_body():
         assert_close(-float(at), mp.mpf(value), 1e-14, f"tau_rz at the maximum, nu={nu_}")
     # the grid comes within its spacing (0.015 a) of the maximum: tau_rz is flat there
     assert np.max(np.abs(trz)) > value * (1 - 1e-3)
+
+def test_plane_field_maximum_is_located_on_its_grid():
+    """PlaneField.maximum on a field whose largest value lies off the grid's first row, column
+    and diagonal: the value and its (x, z) (field indexed [z][x])."""
+    x, z = np.array([0.0, 1.0, 2.0]), np.array([10.0, 20.0, 30.0, 40.0])
+    vm = np.zeros((4, 3))
+    vm[2, 1] = 5.0  # z = 30, x = 1
+    tau = np.zeros((4, 3))
+    tau[3, 0] = 7.0  # z = 40, x = 0
+    trz = np.zeros((4, 3))
+    trz[1, 2] = 3.0  # z = 20, x = 2
+    f = stress.PlaneField(x, z, vm, tau, trz, 0.0)
+    assert f.maximum("von_mises") == (5.0, 1.0, 30.0)
+    assert f.maximum("max_shear") == (7.0, 0.0, 40.0)
+    assert f.maximum("orthogonal_shear") == (3.0, 2.0, 20.0)
+
+
+def test_superposed_plane_on_its_smallest_grid():
+    """n = 2, the smallest grid: x = 0, 2a and z = 2a, the closed-form Hertz field there
+    (a = 2 mm, p0 = 1 Pa); n = 1, 1.5 and True refused by name."""
+    a = 2e-3
+    f = stress.superposed_plane(lambda rho: np.sqrt(np.maximum(1 - (rho / a) ** 2, 0.0)), a,
+                                0.3, n=2)
+    assert f.x.tolist() == [0.0, 2 * a] and f.z.tolist() == [2 * a]
+    ref = stress.hertz_stress(f.x, 0.0 * f.x, 2 * a + 0.0 * f.x, a, 1.0, 0.3)
+    # superposition to ~1e-12 of the largest component (test_superposition_route)
+    assert np.max(np.abs(f.von_mises[0] - stress.von_mises(ref))) < 1e-11
+    for bad in (1, 1.5, True):
+        with pytest.raises(ValueError, match=rf"^n = {bad!r} is out of range; valid: an "
+                                             r"integer >= 2$"):
+            stress.superposed_plane(lambda rho: rho, a, 0.3, n=bad)
+
+
+def test_superposed_plane_error_is_relative():
+    """rel_error is the error estimate over the largest stress: the same for the Hertz pressure
+    at p0 = 1 Pa and at p0 = 1 GPa (the field is linear in p), and as small as the
+    superposition's accuracy (1e-12 of the largest component, test_superposition_route)."""
+    a = 2e-3
+
+    def hp(rho, p0):
+        return p0 * np.sqrt(np.maximum(1 - (rho / a) ** 2, 0.0))
+
+    unit = stress.superposed_plane(lambda rho: hp(rho, 1.0), a, 0.3, n=2)
+    giga = stress.superposed_plane(lambda rho: hp(rho, 1e9), a, 0.3, n=2)
+    assert 0 < unit.rel_error < 1e-11
+    # the same quadrature on a pressure 1e9 times larger; both estimates are at the rounding
+    # level here (~2e-15), which differs between the two scalings by a few tenths of itself
+    assert 0.5 < giga.rel_error / unit.rel_error < 2

@@ -10,6 +10,8 @@ import pytest
 from hertzmdr.numeric import _generated_mp as gen_mp
 from hertzmdr.numeric import worn
 
+from named import assert_inputs_named
+
 # (R [m], b [m], E* [Pa]): a micro tip, a strongly worn one, a large one
 GEOMETRIES = [(50e-6, 2e-6, 1.4e11), (1e-3, 4e-4, 7e10), (0.2, 1e-3, 2.1e11)]
 
@@ -103,3 +105,83 @@ def test_bad_input_names_the_argument():
         worn.depth_from_force(-1.0, 50e-6, 2e-6, 1e11)
     with pytest.raises(ValueError, match="b"):
         worn.force(1e-8, 50e-6, 0.0, 1e11)
+
+
+def _force_mdr_mp(a, R, b, E):
+    """F(a) = 2 E* int_0^a (g(a) - g(x)) dx, (5.57), with g from the geometry by (5.52):
+    g(x) = |x| int_0^x f'(r)/sqrt(x^2 - r^2) dr = (x/R) sqrt(x^2 - b^2) beyond the flat, 0 on it;
+    tanh-sinh split at the kink x = b."""
+    a, R, b, E = (mp.mpf(v) for v in (a, R, b, E))
+
+    def g(x):
+        return x * mp.sqrt((x - b) * (x + b)) / R if x > b else mp.mpf(0)
+
+    return 2 * E * mp.quad(lambda x: g(a) - g(x), [0, b, a])
+
+
+@pytest.mark.parametrize("R, b, E", GEOMETRIES)
+def test_force_from_radius_by_the_mdr_integral(R, b, E):
+    """worn.force_from_radius on an array of radii (and a broadcast R) against the MDR force
+    integral (5.57) of g at 30 digits; F(b) = 0 exactly (the flat alone carries no force)."""
+    ratios = np.array([1.0, 1.001, 1.3, 3.0, 50.0])
+    got = worn.force_from_radius(ratios * b, np.full(2, R)[:, None], b, E)
+    assert got.shape == (2, 5)
+    assert np.all(got[:, 0] == 0.0)
+    with mp.workdps(30):
+        for k, ratio in enumerate(ratios[1:], start=1):
+            ref = _force_mdr_mp(ratio * b, R, b, E)
+            # closed form of a few correctly rounded factors and one square root of
+            # (a - b)(a + b): a few ulp; the quadrature gives ~25 digits
+            assert np.all(abs(got[:, k] / ref - 1) < 1e-15), (ratio, got[:, k], ref)
+
+
+def test_depth_from_force_at_the_nanoscale():
+    """A 50 nm tip worn to 5 nm under a micronewton, far from the metre scale: the root
+    a ~ 1e-8 m is found to ~eps relative (Brent's xtol is relative to the bracket, not in
+    metres). Reference: the 30-digit F(a) (the MDR integral of g, (5.57)), d = g(a) at a = 1.5 b."""
+    R, b, E = 50e-9, 5e-9, 1e11
+    with mp.workdps(30):
+        a = mp.mpf(1.5) * b
+        F = _force_mdr_mp(a, R, b, E)
+        d_ref = a * mp.sqrt((a - b) * (a + b)) / R  # (5.55)
+        d = worn.depth_from_force(float(F), R, b, E)
+        # Brent to 4 eps in a; d = g(a) amplifies it by 1 + 1/(1.5^2 - 1) = 1.8
+        assert abs(d / d_ref - 1) < 4e-15 * 1.8, (d, d_ref)
+
+
+def test_each_input_named_in_its_error():
+    """Every input of every public function is named in its error (tests/named.py)."""
+    R, b, E = 50e-6, 2e-6, 1e11
+    d = 2 * b * b / R
+    assert_inputs_named(worn.profile, {"r": 1e-6, "R": R, "b": b})
+    assert_inputs_named(worn.g_profile, {"x": 3e-6, "R": R, "b": b})
+    assert_inputs_named(worn.depth, {"a": 3e-6, "R": R, "b": b})
+    assert_inputs_named(worn.contact_radius, {"d": d, "R": R, "b": b})
+    assert_inputs_named(worn.force, {"d": d, "R": R, "b": b, "E_star": E})
+    assert_inputs_named(worn.force_from_radius, {"a": 3e-6, "R": R, "b": b, "E_star": E})
+    assert_inputs_named(worn.depth_from_force, {"F": 1e-3, "R": R, "b": b, "E_star": E})
+    assert_inputs_named(worn.pressure, {"r": 1e-6, "d": d, "R": R, "b": b, "E_star": E})
+    assert_inputs_named(worn.surface_displacement, {"r": 1e-6, "d": d, "R": R, "b": b})
+
+
+def test_radius_below_the_flat_refused_with_its_value():
+    """a < b is refused with the value as a plain number (one of an array, and a scalar a
+    against an array of b); a = b, the contact of the flat alone, is accepted (d = 0)."""
+    R, b = 50e-6, 2e-6
+    msg = r"^a = 1e-06 is out of range; valid: a >= b \(the contact covers at least the flat\)$"
+    with pytest.raises(ValueError, match=msg):
+        worn.depth(np.array([3e-6, 1e-6]), R, b)
+    with pytest.raises(ValueError, match=msg):
+        worn.force_from_radius(1e-6, R, np.array([5e-7, 2e-6]), 1e11)
+    assert worn.depth(b, R, b) == 0.0
+    assert worn.force_from_radius(b, R, b, 1e11) == 0.0
+
+
+def test_g_profile_refuses_a_non_number_naming_x():
+    with pytest.raises(ValueError, match=r"^x = 'abc' is not a number"):
+        worn.g_profile("abc", 50e-6, 2e-6)
+    with pytest.raises(ValueError, match=r"^x = inf is out of range; valid: 0 <= x < inf$"):
+        worn.g_profile(-np.inf, 50e-6, 2e-6)
+    # g is even and 0 on the flat: integers are read as floats
+    assert worn.g_profile(np.array([-3, 0, 1]), 1.0, 1.0).tolist() == \
+        [float(3 * mp.sqrt(8)), 0.0, 0.0]
