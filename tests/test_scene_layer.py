@@ -44,7 +44,7 @@ def test_registries_agree():
 
 def test_materials_and_interface():
     """E* (5.26) from both bodies or the elastic one; the stressed body is the first elastic
-    one; both objects are frozen; the interface has no properties yet."""
+    one; both objects are frozen; G* of the tangential springs; the interface's friction."""
     steel, glass = Material("a", 210e9, 0.3), Material("b", 70e9, 0.22)
     m = Materials.of(steel, glass)
     ref = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.22**2) / 70e9)
@@ -54,15 +54,18 @@ def test_materials_and_interface():
     assert rigid.stressed.body == "b"
     with pytest.raises(dataclasses.FrozenInstanceError):
         m.E_star = 1.0
-    assert dataclasses.fields(Interface) == () and Interface.KEYS == {}
+    assert Interface().friction is None and Interface.KEYS == {"friction": "number"}
+    G1, G2 = 210e9 / 2.6, 70e9 / 2.44  # G* (derive/tangential.py) from both bodies
+    assert abs(m.G_star * ((2 - 0.3) / (4 * G1) + (2 - 0.22) / (4 * G2)) - 1) < 1e-15
     with pytest.raises(ValueError, match="rigid"):
         Materials.of(Material("x", None, None), Material("y", None, None))
 
 
 def test_interface_table_accepts_no_keys_yet():
     scene.load({**SPHERE, "interface": {}}).run()
-    with pytest.raises(scene.SceneError, match=r"interface\.friction: unknown key"):
-        scene.load({**SPHERE, "interface": {"friction": 0.3}})
+    assert scene.load({**SPHERE, "interface": {"friction": 0.3}}).spec.interface.friction == 0.3
+    with pytest.raises(scene.SceneError, match=r"interface\.stickiness: unknown key"):
+        scene.load({**SPHERE, "interface": {"stickiness": 0.3}})
 
 
 SPHERE_TOML = """effects = ["force"]

@@ -6,10 +6,9 @@ E* (5.26) derived from them by :func:`hertzmdr.numeric.bodies.effective_modulus`
 the stress effects report (the first elastic one). A kind that needs more material data (G* for
 tangential contact, say) reads it from here: no kind constructor changes.
 
-:class:`Interface` holds the properties of the interface between the bodies. It has none yet:
-the contact is frictionless and non-adhesive, and the ``[interface]`` table of a scene accepts no
-keys. Adhesion (the work of adhesion) and friction (the coefficient of friction) plug in here as
-fields with their keys in :data:`Interface.KEYS`.
+:class:`Interface` holds the properties of the interface between the bodies: the coefficient
+of friction ``friction`` (mu, for the tangential effects; None: not given). Adhesion (the work
+of adhesion) plugs in here as a field with its key in :data:`Interface.KEYS`.
 """
 
 from __future__ import annotations
@@ -59,6 +58,20 @@ class Materials:
         return cls((first, second), float(bodies.effective_modulus(*args)))
 
     @property
+    def G_star(self) -> float:
+        """Tangential effective modulus G* [Pa]: 1/G* = sum over the elastic bodies of
+        (2 - nu_i)/(4 G_i), G_i = E_i/(2 (1 + nu_i)) (derive/tangential.py)."""
+        import math
+
+        from hertzmdr.numeric import tangential
+
+        el = [m for m in self.bodies if not m.rigid]
+        G = [float(tangential.shear_modulus(m.E, m.nu)) for m in el]
+        if len(el) == 1:
+            return float(tangential.effective_modulus(G[0], el[0].nu, math.inf, 0.0))
+        return float(tangential.effective_modulus(G[0], el[0].nu, G[1], el[1].nu))
+
+    @property
     def stressed(self) -> Material:
         """The body whose stresses the stress effects report: the first elastic one."""
         return next(m for m in self.bodies if not m.rigid)
@@ -66,10 +79,18 @@ class Materials:
 
 @dataclass(frozen=True)
 class Interface:
-    """Properties of the interface between the two bodies: none yet (frictionless, no adhesion).
+    """Properties of the interface between the two bodies.
 
     A scene's optional ``[interface]`` table fills it; :data:`KEYS` (key -> dimension) lists
-    the keys it accepts, none today, so any key there is an error naming the allowed ones.
+    the keys it accepts, any other key there is an error naming the allowed ones.
+
+    Attributes
+    ----------
+    friction : float or None
+        Coefficient of (Coulomb) friction mu >= 0, ``[interface] friction``; None when not
+        given (the tangential effects then say that they need it).
     """
 
-    KEYS: ClassVar[dict[str, str]] = {}
+    friction: float | None = None
+
+    KEYS: ClassVar[dict[str, str]] = {"friction": "number"}
