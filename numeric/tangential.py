@@ -541,13 +541,19 @@ def _series(name, value, n_steps=None):
     return arr
 
 
-def _depth_of_force(F, gv, w, E_star, step, x_max):
-    """d with E* sum_i w_i (d - g_i)_+ = F, exact for the piecewise-linear sum."""
+def _force_table(gv, w, E_star):
+    """The normal force at d = g_k (nodes i <= k in contact) and the running sums that give it:
+    E* sum_i w_i (d - g_i)_+ is piecewise linear in d, exact between nodes."""
     W = np.cumsum(w)
     S = np.cumsum(w * gv)
-    F_nodes = E_star * (gv * W - S)  # the force at d = g_k (nodes i <= k in contact)
+    return E_star * (gv * W - S), W, S
+
+
+def _depth_of_force(F, table, E_star, step, x_max):
+    """d with E* sum_i w_i (d - g_i)_+ = F."""
+    F_nodes, W, S = table
     k = int(np.searchsorted(F_nodes, F, side="right")) - 1
-    if k >= gv.size - 1:
+    if k >= F_nodes.size - 1:
         raise ValueError(f"normal_force[{step}] = {F!r} N needs a contact wider than the grid "
                          f"(x_max = {x_max!r} m); valid: a larger x_max")
     return (F / E_star + S[k]) / W[k]
@@ -588,6 +594,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
     out = {k: np.zeros(steps) for k in ("depth", "normal_force", "contact_radius", "u_x",
                                         "F_x", "stick_radius", "dissipated")}
     sliding = np.zeros(steps, bool)
+    table = _force_table(gv, w, E_star) if force is not None else None
     f = np.zeros(n + 1)  # tangential line load of each spring [N/m]
     u_prev, W_acc, d_prev = 0.0, 0.0, 0.0
     ones = np.ones(n + 1)
@@ -598,14 +605,15 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
                 raise ValueError(f"depth[{k}] = {d!r} m reaches beyond x_max = {x_max!r} m; "
                                  "valid: a larger x_max")
         else:
-            d = _depth_of_force(force[k], gv, w, E_star, k, x_max) if force[k] > 0 else 0.0
+            d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
         qz = E_star * np.maximum(d - gv, 0.0)  # (5.58)
         cap = mu * qz
+        wcap = w * cap
         # springs that lost contact or normal load release their shear by sliding
-        g_rel = np.clip(f, -cap, cap)
-        W_acc += float(np.sum(w * cap * np.abs(f - g_rel))) / G_star
+        g_rel = np.minimum(np.maximum(f, -cap), cap)
+        W_acc += float(wcap @ np.abs(f - g_rel)) / G_star
         f = g_rel
-        total = float(np.sum(w * cap))
+        total = float(wcap.sum())
         # both loads change linearly within the step: a spring that comes into contact at
         # the fraction theta of the step (g_i = d_prev + theta (d - d_prev)) takes only the
         # tangential increment after it, (1 - theta) D
@@ -623,33 +631,33 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
             D, full = _solve_shift(f, cap, w, m, G_star, F_ctrl[k], total, k) if total > 0 \
                 else (0.0, True)
         trial = f + G_star * m * D
-        f = np.clip(trial, -cap, cap)
-        W_acc += float(np.sum(w * cap * np.abs(trial - f))) / G_star
+        f = np.minimum(np.maximum(trial, -cap), cap)
+        W_acc += float(wcap @ np.abs(trial - f)) / G_star
         u_prev = u_prev + D
-        contact = qz > 0
-        stuck = contact & (np.abs(f) < cap)
+        j = int(np.searchsorted(gv, d, side="left"))  # nodes i < j are in contact (g_i < d)
+        slipping = np.abs(f[:j]) >= cap[:j]
+        i = int(slipping.argmax()) if j else 0  # the first slipping node, if any
+        any_slip = j > 0 and bool(slipping[i])
         out["depth"][k] = d
-        out["normal_force"][k] = E_star * float(np.sum(w * np.maximum(d - gv, 0.0)))
-        j = int(np.searchsorted(gv, d, side="left"))  # first node out of contact
+        out["normal_force"][k] = float(w @ qz)
         out["contact_radius"][k] = (x[j - 1] + h * (d - gv[j - 1]) / (gv[j] - gv[j - 1])
                                     if 0 < j <= n and gv[j] > gv[j - 1] else x[min(j, n)])
         out["u_x"][k] = u_prev
-        out["F_x"][k] = F_ctrl[k] if F_ctrl is not None and not full else float(np.sum(w * f))
+        out["F_x"][k] = F_ctrl[k] if F_ctrl is not None and not full else float(w @ f)
         out["dissipated"][k] = W_acc
-        sliding[k] = bool(contact.any()) and not bool(stuck.any())
+        sliding[k] = j > 0 and bool(slipping.all())
         # central stick zone: up to the first slipping node; edge where cap(x) = |f| (linear)
-        slip_idx = np.flatnonzero(contact & ~stuck)
-        if not contact.any() or (slip_idx.size and slip_idx[0] == 0):
+        if j == 0 or (any_slip and i == 0):
             c = 0.0
-        elif not slip_idx.size:
+        elif not any_slip:
             c = out["contact_radius"][k]
         else:
-            i = int(slip_idx[0])
             level = abs(f[i - 1])
             denom = cap[i - 1] - cap[i]
             c = x[i - 1] + (h * (cap[i - 1] - level) / denom if denom > 0 else 0.0)
         out["stick_radius"][k] = c
-    return out, sliding, x, E_star * np.maximum(d - gv, 0.0), f, stuck
+    stuck = (qz > 0) & (np.abs(f) < cap)
+    return out, sliding, x, qz, f, stuck
 
 
 def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=None,
