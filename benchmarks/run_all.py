@@ -61,6 +61,7 @@ STEPS = (
     Step("bench_line_stress.py", ("line_stress.md", "figures/line_stress_von_mises.png")),
     Step("bench_laws.py", ("laws_speed.md",)),
     Step("bench_scene.py", ("scene_speed.md",)),
+    Step("bench_tangential.py", ("tangential_speed.md",)),
     Step("sphere_bias.py", ("sphere.md", "sphere_bias.png"), out_file=True, quick=False),
     Step("hertzmdr accuracy", ("accuracy.md", "accuracy.png"),
          args=("-m", "hertzmdr.numeric.cli", "accuracy"), out_file=True),

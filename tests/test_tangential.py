@@ -434,3 +434,20 @@ def test_scene_tangential_errors():
         scene.load({**ok, "effects": ["dissipated_energy"]}).run()
     with pytest.raises(SceneError, match="load.tangential.speed: unknown key"):
         scene.load({**ok, "load": {"force": "1 N", "tangential": {"speed": 1}}})
+
+
+def test_history_of_a_sampled_profile():
+    """The history solver on a sampled paraboloid (mdr.Profile, quintic splines of 301
+    samples) reproduces the closed-form cycle within its own error estimate."""
+    from hertzmdr.numeric import mdr
+
+    ct = _sphere()
+    Fa = 30.0
+    r = np.linspace(0, 3e-4, 301)
+    prof = mdr.Profile.from_samples(r, r**2 / (2 * R))
+    u, ustar = _cycle(ct, Fa, 50)
+    h = tg.history(prof, E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.2 * ct.a,
+                   normal_force=np.full(u.size, F_N), u_x=u, n_grid=1000)
+    assert abs(h.F_x[50] - Fa) <= h.F_x_error
+    assert abs(h.dissipated[-1] - h.dissipated[50] - float(ct.energy(Fa))) <= (
+        2 * h.dissipated_error)
