@@ -451,3 +451,22 @@ def test_history_of_a_sampled_profile():
     assert abs(h.F_x[50] - Fa) <= h.F_x_error
     assert abs(h.dissipated[-1] - h.dissipated[50] - float(ct.energy(Fa))) <= (
         2 * h.dissipated_error)
+
+
+def test_history_traction():
+    """The traction of the history's final state ((5.59) of the springs' line load, abel)
+    against Cattaneo's: within 2e-4 of the peak away from the stick edge (4 nodes), within 2 %
+    next to it (the square-root cusp there, documented in History.traction)."""
+    ct = _sphere()
+    ustar = float(ct.displacement(30.0))
+    c = float(ct.stick_radius(ustar))
+    u = np.linspace(0, ustar, 51)
+    h = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.2 * ct.a,
+                   normal_force=np.full(u.size, F_N), u_x=u, n_grid=1000,
+                   estimate_error=False)
+    q, ref = h.traction(), ct.traction(h.x, ustar)
+    inside = h.x < 0.98 * ct.a
+    band = np.abs(h.x - c) < 4 * (h.x[1] - h.x[0])
+    err = np.abs(q - ref) / ref.max()
+    assert np.max(err[inside & ~band]) < 2e-4 and np.max(err[inside]) < 2e-2
+    assert np.all(q[h.x >= ct.a * 1.01] == 0)
