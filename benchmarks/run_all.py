@@ -64,6 +64,8 @@ STEPS = (
     Step("bench_laws.py", ("laws_speed.md",)),
     Step("bench_scene.py", ("scene_speed.md",)),
     Step("bench_adhesion.py", ("adhesion_speed.md",)),
+
+    Step("bench_tangential.py", ("tangential_speed.md",)),
     Step("sphere_bias.py", ("sphere.md", "sphere_bias.png"), out_file=True, quick=False),
     Step("hertzmdr accuracy", ("accuracy.md", "accuracy.png"),
          args=("-m", "hertzmdr.numeric.cli", "accuracy"), out_file=True),

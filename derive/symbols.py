@@ -83,6 +83,24 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "tau_xz": ("Pa", "shear stress component tau_xz"),
     "c_mean": ("Pa", "mean in-plane normal stress (sigma_xx + sigma_zz)/2 (plane strain)"),
     "tau_1": ("Pa", "principal shear stress in the x-z plane, the radius of Mohr's circle"),
+
+    # tangential family (derive/tangential.py, derive/cerruti.py)
+    "G": ("Pa", "shear modulus"),
+    "G1": ("Pa", "shear modulus of body 1"),
+    "G2": ("Pa", "shear modulus of body 2"),
+    "G_star": ("Pa", "tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2)"),
+    "mu_f": ("1", "coefficient of (Coulomb) friction mu"),
+    "Q": ("N", "tangential point force in +x at the origin of the surface"),
+    "u_x": ("m", "rigid tangential displacement of the indenter relative to the half-space"),
+    "u_amp": ("m", "amplitude of an oscillating tangential displacement"),
+    "F_x": ("N", "tangential force"),
+    "F_amp": ("N", "amplitude F_x* of an oscillating tangential force"),
+    "F_half": ("N", "tangential force of the monotonic loading at half the displacement "
+               "travelled since the turning point"),
+    "c": ("m", "radius of the stick zone"),
+    "c_a": ("1", "stick ratio c/a (stick radius over contact radius)"),
+    "d_c": ("1", "stick deficit 1 - c/a (c the stick radius, a the contact radius)"),
+    "s_x": ("1", "position (x - c)/(a - c) in the slip zone c < x < a, in (0, 1)"),
 }
 
 

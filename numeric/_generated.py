@@ -71,6 +71,18 @@ __all__ = [
     'boussinesq_ux',
     'boussinesq_uy',
     'boussinesq_uz',
+    'cattaneo_displacement',
+    'cattaneo_force',
+    'cattaneo_stick_radius',
+    'cattaneo_stick_radius_from_force',
+    'cattaneo_traction_slip',
+    'cattaneo_traction_stick',
+    'cerruti_surface_ux',
+    'cerruti_surface_uy',
+    'cerruti_surface_uz',
+    'cerruti_ux',
+    'cerruti_uy',
+    'cerruti_uz',
     'cone_contact_radius',
     'cone_contact_radius_from_force',
     'cone_depth',
@@ -115,6 +127,7 @@ __all__ = [
     'flamant_sigma_xx',
     'flamant_sigma_zz',
     'flamant_tau_xz',
+    'flat_punch_tangential_traction',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -189,11 +202,14 @@ __all__ = [
     'line_stress_tau_xz_slope_z',
     'line_stress_von_mises',
     'line_stress_von_mises_c_tau',
+    'masing_unloading_force',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
     'mdr_stiffness',
+    'mindlin_energy',
+    'mindlin_energy_small',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -221,6 +237,7 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'shear_modulus',
     'sphere_depth',
     'sphere_force_from_radius',
     'sphere_g',
@@ -251,6 +268,22 @@ __all__ = [
     'stress_spheroidal_u_inside',
     'stress_von_mises',
     'strip_mean_pressure',
+    'tangential_cone_displacement',
+    'tangential_cone_energy',
+    'tangential_cone_force',
+    'tangential_cone_stick_radius',
+    'tangential_modulus',
+    'tangential_powerlaw_displacement',
+    'tangential_powerlaw_energy',
+    'tangential_powerlaw_energy_density',
+    'tangential_powerlaw_energy_scale',
+    'tangential_powerlaw_energy_small',
+    'tangential_powerlaw_force',
+    'tangential_powerlaw_stick_deficit',
+    'tangential_powerlaw_stick_radius',
+    'tangential_powerlaw_stick_radius_from_force',
+    'tangential_stiffness',
+    'tangential_stiffness_ratio',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -330,6 +363,18 @@ RELATIONS = (
     ('boussinesq_ux', '(5.1)', 'boussinesq', 'F*(nu + 1)*(x*z/(x**2 + y**2 + z**2)**(3/2) - x*(1 - 2*nu)/((z + sqrt(x**2 + y**2 + z**2))*sqrt(x**2 + y**2 + z**2)))/(2*pi*E)', ''),
     ('boussinesq_uy', '(5.2)', 'boussinesq', 'F*(nu + 1)*(y*z/(x**2 + y**2 + z**2)**(3/2) - y*(1 - 2*nu)/((z + sqrt(x**2 + y**2 + z**2))*sqrt(x**2 + y**2 + z**2)))/(2*pi*E)', ''),
     ('boussinesq_uz', '(5.3)', 'boussinesq', 'F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(3/2) + (2 - 2*nu)/sqrt(x**2 + y**2 + z**2))/(2*pi*E)', ''),
+    ('cattaneo_displacement', 'Cattaneo-Mindlin (not in the chapter)', 'tangential', '3*(-F**(1/3)*mu_f**(1/3)*(F*mu_f - F_x)**(2/3) + F*mu_f)/(4*G_star*a)', ''),
+    ('cattaneo_force', 'Cattaneo-Mindlin (not in the chapter)', 'tangential', '4*(E_star**(3/2)*a**3*mu_f**(3/2) - E_star*a**2*mu_f*sqrt(E_star*a**2*mu_f - G_star*R*u_x) + G_star*R*u_x*sqrt(E_star*a**2*mu_f - G_star*R*u_x))/(3*sqrt(E_star)*R*sqrt(mu_f))', ''),
+    ('cattaneo_stick_radius', 'Cattaneo-Mindlin (not in the chapter)', 'tangential', 'sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(sqrt(E_star)*sqrt(mu_f))', ''),
+    ('cattaneo_stick_radius_from_force', 'Cattaneo-Mindlin (not in the chapter)', 'tangential', 'a*(F*mu_f - F_x)**(1/3)/(F**(1/3)*mu_f**(1/3))', ''),
+    ('cattaneo_traction_slip', 'Cattaneo-Mindlin (not in the chapter)', 'tangential', '2*E_star*mu_f*sqrt(a**2 - r**2)/(pi*R)', ''),
+    ('cattaneo_traction_stick', 'Cattaneo-Mindlin (not in the chapter)', 'tangential', '2*E_star*mu_f*(sqrt(a**2 - r**2) - sqrt(c**2 - r**2))/(pi*R)', ''),
+    ('cerruti_surface_ux', 'Cerruti (not in the chapter; Johnson (3.87))', 'cerruti', 'Q*(-nu*y**2 + x**2 + y**2)/(2*pi*G*(x**2 + y**2)**(3/2))', ''),
+    ('cerruti_surface_uy', 'Cerruti (not in the chapter; Johnson (3.87))', 'cerruti', 'Q*nu*x*y/(2*pi*G*(x**2 + y**2)**(3/2))', ''),
+    ('cerruti_surface_uz', 'Cerruti (not in the chapter; Johnson (3.87))', 'cerruti', '-Q*x*(2*nu - 1)/(4*pi*G*(x**2 + y**2))', ''),
+    ('cerruti_ux', 'Cerruti (not in the chapter; Johnson (3.86))', 'cerruti', 'Q*(x**2/(x**2 + y**2 + z**2)**(3/2) + (1 - 2*nu)*(-x**2/((z + sqrt(x**2 + y**2 + z**2))**2*sqrt(x**2 + y**2 + z**2)) + 1/(z + sqrt(x**2 + y**2 + z**2))) + 1/sqrt(x**2 + y**2 + z**2))/(4*pi*G)', ''),
+    ('cerruti_uy', 'Cerruti (not in the chapter; Johnson (3.86))', 'cerruti', 'Q*(-x*y*(1 - 2*nu)/((z + sqrt(x**2 + y**2 + z**2))**2*sqrt(x**2 + y**2 + z**2)) + x*y/(x**2 + y**2 + z**2)**(3/2))/(4*pi*G)', ''),
+    ('cerruti_uz', 'Cerruti (not in the chapter; Johnson (3.86))', 'cerruti', 'Q*(x*z/(x**2 + y**2 + z**2)**(3/2) + x*(1 - 2*nu)/((z + sqrt(x**2 + y**2 + z**2))*sqrt(x**2 + y**2 + z**2)))/(4*pi*G)', ''),
     ('cone_contact_radius', '(5.38), Problem 7(c)', 'cone', '2*d/(pi*tan(theta))', ''),
     ('cone_contact_radius_from_force', '(5.38), (5.40)', 'cone', 'sqrt(2)*sqrt(F)/(sqrt(pi)*sqrt(E_star)*sqrt(tan(theta)))', ''),
     ('cone_depth', '(5.38)', 'cone', 'pi*a*tan(theta)/2', ''),
@@ -374,6 +419,7 @@ RELATIONS = (
     ('flamant_sigma_xx', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x**2*z/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_tau_xz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x*z**2/(pi*(x**2 + z**2)**2)', ''),
+    ('flat_punch_tangential_traction', 'MDR tangential, flat punch (not in the chapter)', 'tangential', 'G_star*u_x/(pi*sqrt(a**2 - r**2))', ''),
     ('hertz_contact_radius', '(5.21)', 'hertz', 'sqrt(R)*sqrt(d)', ''),
     ('hertz_contact_radius_from_force', '(5.24)', 'hertz', '6**(1/3)*F**(1/3)*R**(1/3)/(2*E_star**(1/3))', ''),
     ('hertz_depth_from_force', '(5.23), inverted', 'hertz', '6**(2/3)*F**(2/3)/(4*E_star**(2/3)*R**(1/3))', ''),
@@ -448,11 +494,14 @@ RELATIONS = (
     ('line_stress_tau_xz_slope_z', '(5.36), Flamant', 'line_stress', '(pi*a*p0*x*z**2*(-x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + 3*z**2/2 + 3*(a - x)*(a + x)/2 + 3*sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)/(sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)**3) - pi*p0*(-x*z**2/sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + x*sqrt(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2))/(a*(x**2*z**2/(z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2) + z**2/2 + (a - x)*(a + x)/2 + sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)/2)))/pi', ''),
     ('line_stress_von_mises', '(5.50), plane strain', 'line_stress', 'sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)', ''),
     ('line_stress_von_mises_c_tau', '(5.50), plane strain', 'line_stress', 'sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)', ''),
+    ('masing_unloading_force', "Masing's rule, derived from the springs", 'tangential', 'F_amp - 2*F_half', ''),
     ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
     ('mdr_stiffness', '(5.12), Problem 5', 'contact', '2*E_star*a', ''),
+    ('mindlin_energy', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', '3*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(5*G_star*a)', ''),
+    ('mindlin_energy_small', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', 'F_amp**3/(9*F*G_star*a*mu_f)', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
@@ -480,6 +529,7 @@ RELATIONS = (
     ('punch_pressure_displacement_outside', 'Fig. 5.2 (n = -1/2), Problem 7(a)', 'pressures', '2*a*p0*asin(a/r)/E_star', ''),
     ('punch_pressure_force', '(5.11)', 'pressures', '2*pi*a**2*p0', ''),
     ('punch_stiffness', '(5.12)', 'pressures', '2*E_star*a', ''),
+    ('shear_modulus', "Lame's mu (not in the chapter)", 'tangential', 'E/(2*nu + 2)', ''),
     ('sphere_depth', "(5.55), Sneddon's sphere", 'sphere', 'a*atanh(a/R)', ''),
     ('sphere_force_from_radius', "(5.57), Sneddon's sphere", 'sphere', 'E_star*(R**2*atanh(a/R) - R*a + a**2*atanh(a/R))', ''),
     ('sphere_g', "(5.52), Sneddon's sphere", 'sphere', 'x*atanh(x/R)', ''),
@@ -510,6 +560,22 @@ RELATIONS = (
     ('stress_spheroidal_u_inside', 'Johnson (1985), (3.44)', 'stress', '-a**2/2 + r**2/2 + z**2/2 + sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)/2', ''),
     ('stress_von_mises', '(5.50)', 'stress', 'sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)', ''),
     ('strip_mean_pressure', '(5.34)-(5.37)', 'contact', 'F/(2*L*a)', ''),
+    ('tangential_cone_displacement', 'MDR tangential, cone (not in the chapter)', 'tangential', '(-sqrt(F)*sqrt(mu_f)*sqrt(F*mu_f - F_x) + F*mu_f)/(G_star*a)', ''),
+    ('tangential_cone_energy', 'MDR tangential, cone (not in the chapter)', 'tangential', '4*sqrt(F)*sqrt(mu_f)*(sqrt(F)*sqrt(mu_f) - sqrt(F*mu_f - F_amp))**3/(3*G_star*a)', ''),
+    ('tangential_cone_force', 'MDR tangential, cone (not in the chapter)', 'tangential', '2*G_star*u_x*(pi*E_star*a*mu_f - G_star*u_x/tan(theta))/(pi*E_star*mu_f)', ''),
+    ('tangential_cone_stick_radius', 'MDR tangential, cone (not in the chapter)', 'tangential', 'a - 2*G_star*u_x/(pi*E_star*mu_f*tan(theta))', ''),
+    ('tangential_modulus', 'MDR tangential springs (not in the chapter)', 'tangential', '-4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))', ''),
+    ('tangential_powerlaw_displacement', 'MDR tangential, power law (not in the chapter)', 'tangential', 'F*mu_f*(1 - (1 - F_x/(F*mu_f))**(n/(n + 1)))*(n + 1)/(2*G_star*a*n)', ''),
+    ('tangential_powerlaw_energy', 'MDR tangential, power law (not in the chapter)', 'tangential', '2*F**2*mu_f**2*(-2*c_a**n*n**2 - 3*c_a**n*n - c_a**n + 2*c_a**(n + 1)*n**2 + 3*c_a**(n + 1)*n + c_a**(n + 1) - c_a**(2*n + 1)*n - c_a**(2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))', ''),
+    ('tangential_powerlaw_energy_density', 'MDR tangential, power law (not in the chapter)', 'tangential', '-(1 - d_c)**n*expm1(n*log1p(-d_c*(1 - s_x)))*expm1(n*log1p(d_c*s_x/(1 - d_c)))', ''),
+    ('tangential_powerlaw_energy_scale', 'MDR tangential, power law (not in the chapter)', 'tangential', '2*F**2*mu_f**2*(n + 1)**2/(G_star*a*n**2)', ''),
+    ('tangential_powerlaw_energy_small', 'MDR tangential, power law (not in the chapter)', 'tangential', 'F_amp**3/(3*F*G_star*a*mu_f*(n + 1))', ''),
+    ('tangential_powerlaw_force', 'MDR tangential, power law (not in the chapter)', 'tangential', '2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*(1 - (1 - G_star*u_x/(E_star*a**n*c_n*kappa_n*mu_f))**((n + 1)/n))/(n + 1)', ''),
+    ('tangential_powerlaw_stick_deficit', 'MDR tangential, power law (not in the chapter)', 'tangential', '1 - (1 - F_amp/(F*mu_f))**(1/(n + 1))', ''),
+    ('tangential_powerlaw_stick_radius', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - G_star*u_x/(E_star*a**n*c_n*kappa_n*mu_f))**(1/n)', ''),
+    ('tangential_powerlaw_stick_radius_from_force', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - F_x/(F*mu_f))**(1/(n + 1))', ''),
+    ('tangential_stiffness', 'MDR tangential springs (not in the chapter)', 'tangential', '2*G_star*a', ''),
+    ('tangential_stiffness_ratio', 'MDR tangential springs (not in the chapter)', 'tangential', '2*(nu - 1)/(nu - 2)', ''),
     ('uniform_pressure_displacement', 'Problem 6', 'pressures', '4*a*p0*elliptic_e(r**2/a**2)/(pi*E_star)', ''),
     ('uniform_pressure_displacement_centre', 'Problem 6', 'pressures', '2*a*p0/E_star', ''),
     ('uniform_pressure_displacement_edge', 'Problem 6', 'pressures', '4*a*p0/(pi*E_star)', ''),
@@ -1924,6 +1990,324 @@ def boussinesq_uz(E, F, nu, x, y, z):
     return (1/2)*F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(3/2) + (2 - 2*nu)/numpy.sqrt(x**2 + y**2 + z**2))/(numpy.pi*E)
 
 
+def cattaneo_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a paraboloid under normal force F and tangential force F_x.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: F_x = mu (F_N(a) - F_N(c))
+    solved for c, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Printed in a stable form: 1 - (1 - F_x/(mu F))^(2/3) cancels as F_x -> 0: -expm1(2/3
+    log1p(-F_x/(mu F))).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return -3/4*F*mu_f*numpy.expm1((2/3)*numpy.log1p(-F_x/(F*mu_f)))/(G_star*a)
+
+
+def cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a paraboloid displaced by u_x (monotonic, constant load).
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: sum of the stuck and
+    sliding springs.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Printed in a stable form: mu (F_N(a) - F_N(c)) cancels as u_x -> 0; a^3 - c^3 = (a^2 -
+    c^2)(a^2 + a c + c^2)/(a + c) with a^2 - c^2 = R G* u_x/(mu E*) exactly.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return (4/3)*G_star*u_x*(a**2 + (E_star*a**2*mu_f - G_star*R*u_x)/(E_star*mu_f) + a*numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(numpy.sqrt(E_star)*numpy.sqrt(mu_f)))/(a + numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(numpy.sqrt(E_star)*numpy.sqrt(mu_f)))
+
+
+def cattaneo_stick_radius(a, R, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a paraboloid (f = r^2/(2R)) displaced by u_x at constant load.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: g(c) = d - G* u_x/(mu E*),
+    g = x^2/R.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(numpy.sqrt(E_star)*numpy.sqrt(mu_f))
+
+
+def cattaneo_stick_radius_from_force(a, F, mu_f, F_x):
+    """Stick radius c [m] of a paraboloid under the normal force F and tangential force F_x.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: F_x = mu (F_N(a) -
+    F_N(c)), F_N ~ c^3.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return a*(F*mu_f - F_x)**(1/3)/(F**(1/3)*mu_f**(1/3))
+
+
+def cattaneo_traction_slip(r, a, R, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the slip zone c < r < a of a paraboloid (mu p(r)).
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: (5.59) of the sliding
+    springs' line load mu E* (d - g).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*E_star*mu_f*numpy.sqrt(a**2 - r**2)/(numpy.pi*R)
+
+
+def cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a paraboloid.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: (5.59) of the tangential
+    line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Printed in a stable form: the difference of the two square roots cancels as c -> a.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*E_star*mu_f*(a - c)*(a + c)/(numpy.pi*R*(numpy.sqrt(a - r)*numpy.sqrt(a + r) + numpy.sqrt(c - r)*numpy.sqrt(c + r)))
+
+
+def cerruti_surface_ux(G, Q, nu, x, y):
+    """Surface displacement u_x [m] at (x, y, 0) of a tangential point force Q in +x at the origin.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.87)). Derived from: the Cerruti field
+    at z -> 0.
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_surface_is_the_limit_and_reciprocal_to_boussinesq``.
+
+    Parameters
+    ----------
+    G : float or ndarray
+        shear modulus [Pa]
+    Q : float or ndarray
+        tangential point force in +x at the origin of the surface [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*Q*(-nu*y**2 + x**2 + y**2)/(numpy.pi*G*(x**2 + y**2)**(3/2))
+
+
+def cerruti_surface_uy(G, Q, nu, x, y):
+    """Surface displacement u_y [m] at (x, y, 0) of a tangential point force Q in +x at the origin.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.87)). Derived from: the Cerruti field
+    at z -> 0.
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_surface_is_the_limit_and_reciprocal_to_boussinesq``.
+
+    Parameters
+    ----------
+    G : float or ndarray
+        shear modulus [Pa]
+    Q : float or ndarray
+        tangential point force in +x at the origin of the surface [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*Q*nu*x*y/(numpy.pi*G*(x**2 + y**2)**(3/2))
+
+
+def cerruti_surface_uz(G, Q, nu, x, y):
+    """Surface displacement u_z [m] at (x, y, 0) of a tangential point force Q in +x at the origin.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.87)). Derived from: the Cerruti field
+    at z -> 0.
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_surface_is_the_limit_and_reciprocal_to_boussinesq``.
+
+    Parameters
+    ----------
+    G : float or ndarray
+        shear modulus [Pa]
+    Q : float or ndarray
+        tangential point force in +x at the origin of the surface [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return -1/4*Q*x*(2*nu - 1)/(numpy.pi*G*(x**2 + y**2))
+
+
+def cerruti_ux(G, Q, nu, x, y, z):
+    """Displacement u_x [m] at (x, y, z) of a tangential point force Q in +x at the origin of the surface.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.86)). Derived from: the given solution
+    (Cerruti 1882; Johnson, Contact Mechanics, (3.86)).
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_field_in_equilibrium_and_surface_traction_free``.
+
+    Parameters
+    ----------
+    G : float or ndarray
+        shear modulus [Pa]
+    Q : float or ndarray
+        tangential point force in +x at the origin of the surface [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/4)*Q*(x**2/(x**2 + y**2 + z**2)**(3/2) + (1 - 2*nu)*(-x**2/((z + numpy.sqrt(x**2 + y**2 + z**2))**2*numpy.sqrt(x**2 + y**2 + z**2)) + (z + numpy.sqrt(x**2 + y**2 + z**2))**(-1.0)) + 1/numpy.sqrt(x**2 + y**2 + z**2))/(numpy.pi*G)
+
+
+def cerruti_uy(G, Q, nu, x, y, z):
+    """Displacement u_y [m] at (x, y, z) of a tangential point force Q in +x at the origin of the surface.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.86)). Derived from: the given solution
+    (Cerruti 1882; Johnson, Contact Mechanics, (3.86)).
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_field_in_equilibrium_and_surface_traction_free``.
+
+    Parameters
+    ----------
+    G : float or ndarray
+        shear modulus [Pa]
+    Q : float or ndarray
+        tangential point force in +x at the origin of the surface [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/4)*Q*(-x*y*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))**2*numpy.sqrt(x**2 + y**2 + z**2)) + x*y/(x**2 + y**2 + z**2)**(3/2))/(numpy.pi*G)
+
+
+def cerruti_uz(G, Q, nu, x, y, z):
+    """Displacement u_z [m] at (x, y, z) of a tangential point force Q in +x at the origin of the surface.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.86)). Derived from: the given solution
+    (Cerruti 1882; Johnson, Contact Mechanics, (3.86)).
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_field_in_equilibrium_and_surface_traction_free``.
+
+    Parameters
+    ----------
+    G : float or ndarray
+        shear modulus [Pa]
+    Q : float or ndarray
+        tangential point force in +x at the origin of the surface [N]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return (1/4)*Q*(x*z/(x**2 + y**2 + z**2)**(3/2) + x*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))*numpy.sqrt(x**2 + y**2 + z**2)))/(numpy.pi*G)
+
+
 def cone_contact_radius(d, theta):
     """Contact radius a [m] of a rigid cone at depth d.
 
@@ -2976,6 +3360,29 @@ def flamant_tau_xz(F_L, x, z):
         depth below the surface [m]
     """
     return -2*F_L*x*z**2/(numpy.pi*(x**2 + z**2)**2)
+
+
+def flat_punch_tangential_traction(r, a, G_star, u_x):
+    """Tangential traction q(r) [Pa] of a stuck flat punch (all springs stick, u_x < mu d E*/G*).
+
+    Chapter: MDR tangential, flat punch (not in the chapter). Derived from: (5.59) of q_x =
+    G* u_x on |x| < a: the jump at a is a delta in q_x'.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return G_star*u_x/(numpy.pi*numpy.sqrt(a**2 - r**2))
 
 
 def hertz_contact_radius(R, d):
@@ -4595,6 +5002,25 @@ def line_stress_von_mises_c_tau(nu, c_mean, tau_1):
     return numpy.sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)
 
 
+def masing_unloading_force(F_amp, F_half):
+    """Tangential force F_x [N] on the branch from a turning point: F_x* - 2 F_x,mono(D/2).
+
+    Chapter: Masing's rule, derived from the springs. Derived from: per spring, unloaded by
+    D from u*: f* - f = 2 min(G* D/2, mu q_z) (case check).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_history_solver_follows_masing``.
+
+    Parameters
+    ----------
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    F_half : float or ndarray
+        tangential force of the monotonic loading at half the displacement travelled since the turning point [N]
+    """
+    return F_amp - 2*F_half
+
+
 def mdr_force(E_star, a, d, g_integral):
     """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
 
@@ -4705,6 +5131,60 @@ def mdr_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def mindlin_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle of a tangential force oscillating with amplitude F_amp at constant normal force F (paraboloid).
+
+    Chapter: Mindlin-Deresiewicz (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops 4 mu q_z (u* - mu q_z/G*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_mindlin_deresiewicz_energy``.
+
+    Printed in a stable form: the integrand vanishes to second order at the edge: (1 -
+    c/a)^3 P(c/a) with 1 - c/a = -expm1(log1p(-F_amp/(mu F))/3) keeps the cubic law to
+    rounding.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return -1/5*(3*F**2*mu_f**2*numpy.exp((2/3)*numpy.log1p(-F_amp/(F*mu_f))) + 9*F**2*mu_f**2*numpy.exp((1/3)*numpy.log1p(-F_amp/(F*mu_f))) + 3*F**2*mu_f**2)*numpy.expm1((1/3)*numpy.log1p(-F_amp/(F*mu_f)))**3/(G_star*a)
+
+
+def mindlin_energy_small(a, F, G_star, mu_f, F_amp):
+    """Leading term [J] of the energy per cycle of a paraboloid at small amplitude F_amp.
+
+    Chapter: Mindlin-Deresiewicz (not in the chapter). Derived from: series of
+    mindlin_energy in F_amp.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cubic_small_amplitude_law``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (1/9)*F_amp**3/(F*G_star*a*mu_f)
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -5322,6 +5802,24 @@ def punch_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def shear_modulus(E, nu):
+    """Shear modulus G [Pa] of an isotropic body.
+
+    Chapter: Lame's mu (not in the chapter). Derived from: Hooke's law in Lame's form.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return E/(2*nu + 2)
 
 
 def sphere_depth(R, a):
@@ -6006,6 +6504,424 @@ def strip_mean_pressure(F, L, a):
     return (1/2)*F/(L*a)
 
 
+def tangential_cone_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a cone under normal force F and tangential F_x.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: F_x = mu (F_N(a) -
+    F_N(c)), F_N ~ c^2, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: 1 - sqrt(1 - F_x/(mu F)) cancels as F_x -> 0.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return F_x/(G_star*a*(numpy.sqrt(1 - F_x/(F*mu_f)) + 1))
+
+
+def tangential_cone_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle by a cone under normal force F, amplitude F_amp.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Printed in a stable form: a - c = a x/(1 + sqrt(1 - x)), x = F_amp/(mu F), instead of a
+    (1 - sqrt(1 - x)).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (4/3)*F_amp**3/(F*G_star*a*mu_f*(numpy.sqrt(1 - F_amp/(F*mu_f)) + 1)**3)
+
+
+def tangential_cone_force(a, theta, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a cone displaced by u_x (monotonic, constant load).
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: sum of the stuck and
+    sliding springs.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return 2*G_star*u_x*(numpy.pi*E_star*a*mu_f - G_star*u_x/numpy.tan(theta))/(numpy.pi*E_star*mu_f)
+
+
+def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a cone (angle theta to the plane) displaced by u_x.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: g(c) = d - G* u_x/(mu
+    E*), g = (pi/2) tan(theta) x.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return a - 2*G_star*u_x/(numpy.pi*E_star*mu_f*numpy.tan(theta))
+
+
+def tangential_modulus(G1, nu1, G2, nu2):
+    """Tangential effective modulus G* [Pa] of two elastic bodies.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: direction average of
+    the Cerruti surface compliance of each body, compliances added.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Printed in a stable form: a rigid body (G = inf) is G/(2 - nu) -> 0 instead of inf/inf.
+
+    Parameters
+    ----------
+    G1 : float or ndarray
+        shear modulus of body 1 [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    G2 : float or ndarray
+        shear modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return ((1/4)*(2 - nu2)/G2 + (1/4)*(2 - nu1)/G1)**(-1.0)
+
+
+def tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a power-law profile under normal force F and tangential force F_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: c from F_x, then
+    g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: 1 - (1 - F_x/(mu F))^(n/(n+1)) cancels as F_x -> 0.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return -1/2*F*mu_f*(n + 1)*numpy.expm1(n*numpy.log1p(-F_x/(F*mu_f))/(n + 1))/(G_star*a*n)
+
+
+def tangential_powerlaw_energy(a, n, F, G_star, mu_f, c_a):
+    """Energy W [J] dissipated per cycle by a power-law profile under normal force F whose stick zone at the amplitude has the radius c = c_a a (cancels for c_a -> 1: numeric/tangential.py integrates the density there).
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: sum of the
+    sliding springs' parallelogram loops.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    c_a : float or ndarray
+        stick ratio c/a (stick radius over contact radius) [1]
+    """
+    return 2*F**2*mu_f**2*(-2*c_a**n*n**2 - 3*c_a**n*n - c_a**n + 2*c_a**(n + 1)*n**2 + 3*c_a**(n + 1)*n + c_a**(n + 1) - c_a**(2*n + 1)*n - c_a**(2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))
+
+
+def tangential_powerlaw_energy_density(n, d_c, s_x):
+    """Dimensionless loop energy density (1 - x^n)(x^n - c^n) of a sliding spring at x/a = 1 - d_c (1 - s_x), c/a = 1 - d_c.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: q_z (u* - mu
+    q_z/G*) with q_z ~ a^n - x^n; 1 - x^n and x^n - c^n as expm1 of log1p of the offsets,
+    which keeps them exact in a thin slip zone.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    d_c : float or ndarray
+        stick deficit 1 - c/a (c the stick radius, a the contact radius) [1]
+    s_x : float or ndarray
+        position (x - c)/(a - c) in the slip zone c < x < a, in (0, 1) [1]
+    """
+    return -(1 - d_c)**n*numpy.expm1(n*numpy.log1p(-d_c*(1 - s_x)))*numpy.expm1(n*numpy.log1p(d_c*s_x/(1 - d_c)))
+
+
+def tangential_powerlaw_energy_scale(a, n, F, G_star, mu_f):
+    """Energy per cycle [J] of a power-law profile per unit of d_c times the integral of tangential_powerlaw_energy_density over 0 < s_x < 1.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: the sliding
+    springs' loops with x = a (1 - d_c (1 - s_x)), q_z ~ a^n - x^n.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*F**2*mu_f**2*(n + 1)**2/(G_star*a*n**2)
+
+
+def tangential_powerlaw_energy_small(a, n, F, G_star, mu_f, F_amp):
+    """Leading term [J] of the energy per cycle of a power-law profile at small amplitude.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: series in F_amp
+    of the energy per cycle.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cubic_small_amplitude_law``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (1/3)*F_amp**3/(F*G_star*a*mu_f*(n + 1))
+
+
+def tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a power-law profile displaced by u_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: mu (F_N(a) -
+    F_N(c)), asserted equal to the spring sum.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: 1 - (c/a)^(n+1) cancels as u_x -> 0: -expm1((n+1)/n
+    log1p(-q)).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return -2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*numpy.expm1((n + 1)*numpy.log1p(-G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)/(n + 1)
+
+
+def tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
+    """1 - c/a [1] of a power-law profile under normal force F and tangential force F_amp.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: F_x = mu (F_N(a)
+    - F_N(c)), F_N ~ c^(n+1).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Printed in a stable form: 1 - (1 - F_amp/(mu F))^(1/(n+1)) cancels at small amplitude.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return -numpy.expm1(numpy.log1p(-F_amp/(F*mu_f))/(n + 1))
+
+
+def tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a power-law profile f = c_n r^n displaced by u_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: g(c) = d - G*
+    u_x/(mu E*), g = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: (1 - q)^(1/n) as exp(log1p(-q)/n): accurate for large n and
+    tiny q.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return a*numpy.exp(numpy.log1p(-G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)
+
+
+def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
+    """Stick radius c [m] of a power-law profile under normal force F and tangential F_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: F_x = mu (F_N(a)
+    - F_N(c)), F_N ~ c^(n+1).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return a*(1 - F_x/(F*mu_f))**((n + 1)**(-1.0))
+
+
+def tangential_stiffness(G_star, a):
+    """Tangential contact stiffness k_x = dF_x/du_x [N/m] before any slip (c = a).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: sum of the 2a/dx
+    stuck springs of stiffness G* dx.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_initial_stiffness_is_2_G_star_a_for_every_profile``.
+
+    Parameters
+    ----------
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return 2*G_star*a
+
+
+def tangential_stiffness_ratio(nu):
+    """G*/E* [1] = tangential over normal contact stiffness of one elastic body on a rigid one.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: Cerruti and
+    Boussinesq compliances of the same body, G = E/(2 (1 + nu)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Parameters
+    ----------
+    nu : float or ndarray
+        Poisson's ratio [1]
+    """
+    return 2*(nu - 1)/(nu - 2)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -6494,6 +7410,85 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def textbook_cattaneo_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a paraboloid under normal force F and tangential force F_x, in the derived (textbook) form; use cattaneo_displacement: 1 - (1 - F_x/(mu F))^(2/3) cancels as F_x -> 0: -expm1(2/3 log1p(-F_x/(mu F))).
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: F_x = mu (F_N(a) - F_N(c))
+    solved for c, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return (3/4)*(-F**(1/3)*mu_f**(1/3)*(F*mu_f - F_x)**(2/3) + F*mu_f)/(G_star*a)
+
+
+def textbook_cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a paraboloid displaced by u_x (monotonic, constant load), in the derived (textbook) form; use cattaneo_force: mu (F_N(a) - F_N(c)) cancels as u_x -> 0; a^3 - c^3 = (a^2 - c^2)(a^2 + a c + c^2)/(a + c) with a^2 - c^2 = R G* u_x/(mu E*) exactly.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: sum of the stuck and
+    sliding springs.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return (4/3)*(E_star**(3/2)*a**3*mu_f**(3/2) - E_star*a**2*mu_f*numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x) + G_star*R*u_x*numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x))/(numpy.sqrt(E_star)*R*numpy.sqrt(mu_f))
+
+
+def textbook_cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a paraboloid, in the derived (textbook) form; use cattaneo_traction_stick: the difference of the two square roots cancels as c -> a.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: (5.59) of the tangential
+    line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*E_star*mu_f*(numpy.sqrt(a**2 - r**2) - numpy.sqrt(c**2 - r**2))/(numpy.pi*R)
 
 
 def textbook_cone_pressure(E_star, d, theta, r):
@@ -7037,6 +8032,31 @@ def textbook_mdr_kink_g(b, slope_jump, x):
     return 2*b*slope_jump*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b))
 
 
+def textbook_mindlin_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle of a tangential force oscillating with amplitude F_amp at constant normal force F (paraboloid), in the derived (textbook) form; use mindlin_energy: the integrand vanishes to second order at the edge: (1 - c/a)^3 P(c/a) with 1 - c/a = -expm1(log1p(-F_amp/(mu F))/3) keeps the cubic law to rounding.
+
+    Chapter: Mindlin-Deresiewicz (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops 4 mu q_z (u* - mu q_z/G*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_mindlin_deresiewicz_energy``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (3/5)*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(G_star*a)
+
+
 def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
 
@@ -7463,6 +8483,191 @@ def textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_
         shear stress component tau_xz [Pa]
     """
     return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+
+
+def textbook_tangential_cone_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a cone under normal force F and tangential F_x, in the derived (textbook) form; use tangential_cone_displacement: 1 - sqrt(1 - F_x/(mu F)) cancels as F_x -> 0.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: F_x = mu (F_N(a) -
+    F_N(c)), F_N ~ c^2, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return (-numpy.sqrt(F)*numpy.sqrt(mu_f)*numpy.sqrt(F*mu_f - F_x) + F*mu_f)/(G_star*a)
+
+
+def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle by a cone under normal force F, amplitude F_amp, in the derived (textbook) form; use tangential_cone_energy: a - c = a x/(1 + sqrt(1 - x)), x = F_amp/(mu F), instead of a (1 - sqrt(1 - x)).
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (4/3)*numpy.sqrt(F)*numpy.sqrt(mu_f)*(numpy.sqrt(F)*numpy.sqrt(mu_f) - numpy.sqrt(F*mu_f - F_amp))**3/(G_star*a)
+
+
+def textbook_tangential_modulus(G1, nu1, G2, nu2):
+    """Tangential effective modulus G* [Pa] of two elastic bodies, in the derived (textbook) form; use tangential_modulus: a rigid body (G = inf) is G/(2 - nu) -> 0 instead of inf/inf.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: direction average of
+    the Cerruti surface compliance of each body, compliances added.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Parameters
+    ----------
+    G1 : float or ndarray
+        shear modulus of body 1 [Pa]
+    nu1 : float or ndarray
+        Poisson's ratio of body 1 [1]
+    G2 : float or ndarray
+        shear modulus of body 2 [Pa]
+    nu2 : float or ndarray
+        Poisson's ratio of body 2 [1]
+    """
+    return -4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))
+
+
+def textbook_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a power-law profile under normal force F and tangential force F_x, in the derived (textbook) form; use tangential_powerlaw_displacement: 1 - (1 - F_x/(mu F))^(n/(n+1)) cancels as F_x -> 0.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: c from F_x, then
+    g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_x : float or ndarray
+        tangential force [N]
+    """
+    return (1/2)*F*mu_f*(1 - (1 - F_x/(F*mu_f))**(n/(n + 1)))*(n + 1)/(G_star*a*n)
+
+
+def textbook_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a power-law profile displaced by u_x, in the derived (textbook) form; use tangential_powerlaw_force: 1 - (c/a)^(n+1) cancels as u_x -> 0: -expm1((n+1)/n log1p(-q)).
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: mu (F_N(a) -
+    F_N(c)), asserted equal to the spring sum.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return 2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*(1 - (1 - G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))**((n + 1)/n))/(n + 1)
+
+
+def textbook_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
+    """1 - c/a [1] of a power-law profile under normal force F and tangential force F_amp, in the derived (textbook) form; use tangential_powerlaw_stick_deficit: 1 - (1 - F_amp/(mu F))^(1/(n+1)) cancels at small amplitude.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: F_x = mu (F_N(a)
+    - F_N(c)), F_N ~ c^(n+1).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : float or ndarray
+        normal force [N]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : float or ndarray
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return 1 - (1 - F_amp/(F*mu_f))**((n + 1)**(-1.0))
+
+
+def textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a power-law profile f = c_n r^n displaced by u_x, in the derived (textbook) form; use tangential_powerlaw_stick_radius: (1 - q)^(1/n) as exp(log1p(-q)/n): accurate for large n and tiny q.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: g(c) = d - G*
+    u_x/(mu E*), g = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    u_x : float or ndarray
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return a*(1 - G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))**(n**(-1.0))
 
 
 def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):

@@ -71,6 +71,18 @@ __all__ = [
     'boussinesq_ux',
     'boussinesq_uy',
     'boussinesq_uz',
+    'cattaneo_displacement',
+    'cattaneo_force',
+    'cattaneo_stick_radius',
+    'cattaneo_stick_radius_from_force',
+    'cattaneo_traction_slip',
+    'cattaneo_traction_stick',
+    'cerruti_surface_ux',
+    'cerruti_surface_uy',
+    'cerruti_surface_uz',
+    'cerruti_ux',
+    'cerruti_uy',
+    'cerruti_uz',
     'cone_contact_radius',
     'cone_contact_radius_from_force',
     'cone_depth',
@@ -115,6 +127,7 @@ __all__ = [
     'flamant_sigma_xx',
     'flamant_sigma_zz',
     'flamant_tau_xz',
+    'flat_punch_tangential_traction',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -189,11 +202,14 @@ __all__ = [
     'line_stress_tau_xz_slope_z',
     'line_stress_von_mises',
     'line_stress_von_mises_c_tau',
+    'masing_unloading_force',
     'mdr_force',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
     'mdr_stiffness',
+    'mindlin_energy',
+    'mindlin_energy_small',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -221,6 +237,7 @@ __all__ = [
     'punch_pressure_displacement_outside',
     'punch_pressure_force',
     'punch_stiffness',
+    'shear_modulus',
     'sphere_depth',
     'sphere_force_from_radius',
     'sphere_g',
@@ -251,6 +268,22 @@ __all__ = [
     'stress_spheroidal_u_inside',
     'stress_von_mises',
     'strip_mean_pressure',
+    'tangential_cone_displacement',
+    'tangential_cone_energy',
+    'tangential_cone_force',
+    'tangential_cone_stick_radius',
+    'tangential_modulus',
+    'tangential_powerlaw_displacement',
+    'tangential_powerlaw_energy',
+    'tangential_powerlaw_energy_density',
+    'tangential_powerlaw_energy_scale',
+    'tangential_powerlaw_energy_small',
+    'tangential_powerlaw_force',
+    'tangential_powerlaw_stick_deficit',
+    'tangential_powerlaw_stick_radius',
+    'tangential_powerlaw_stick_radius_from_force',
+    'tangential_stiffness',
+    'tangential_stiffness_ratio',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -1663,6 +1696,324 @@ def boussinesq_uz(E, F, nu, x, y, z):
     return (mpmath.mpf(1)/mpmath.mpf(2))*F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + (2 - 2*nu)/mpmath.sqrt(x**2 + y**2 + z**2))/(mpmath.pi*E)
 
 
+def cattaneo_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a paraboloid under normal force F and tangential force F_x.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: F_x = mu (F_N(a) - F_N(c))
+    solved for c, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Printed in a stable form: 1 - (1 - F_x/(mu F))^(2/3) cancels as F_x -> 0: -expm1(2/3
+    log1p(-F_x/(mu F))).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return -mpmath.mpf(3)/mpmath.mpf(4)*F*mu_f*mpmath.expm1((mpmath.mpf(2)/mpmath.mpf(3))*mpmath.log1p(-F_x/(F*mu_f)))/(G_star*a)
+
+
+def cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a paraboloid displaced by u_x (monotonic, constant load).
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: sum of the stuck and
+    sliding springs.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Printed in a stable form: mu (F_N(a) - F_N(c)) cancels as u_x -> 0; a^3 - c^3 = (a^2 -
+    c^2)(a^2 + a c + c^2)/(a + c) with a^2 - c^2 = R G* u_x/(mu E*) exactly.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*G_star*u_x*(a**2 + (E_star*a**2*mu_f - G_star*R*u_x)/(E_star*mu_f) + a*mpmath.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(mpmath.sqrt(E_star)*mpmath.sqrt(mu_f)))/(a + mpmath.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(mpmath.sqrt(E_star)*mpmath.sqrt(mu_f)))
+
+
+def cattaneo_stick_radius(a, R, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a paraboloid (f = r^2/(2R)) displaced by u_x at constant load.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: g(c) = d - G* u_x/(mu E*),
+    g = x^2/R.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return mpmath.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(mpmath.sqrt(E_star)*mpmath.sqrt(mu_f))
+
+
+def cattaneo_stick_radius_from_force(a, F, mu_f, F_x):
+    """Stick radius c [m] of a paraboloid under the normal force F and tangential force F_x.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: F_x = mu (F_N(a) -
+    F_N(c)), F_N ~ c^3.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return a*(F*mu_f - F_x)**(mpmath.mpf(1)/mpmath.mpf(3))/(F**(mpmath.mpf(1)/mpmath.mpf(3))*mu_f**(mpmath.mpf(1)/mpmath.mpf(3)))
+
+
+def cattaneo_traction_slip(r, a, R, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the slip zone c < r < a of a paraboloid (mu p(r)).
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: (5.59) of the sliding
+    springs' line load mu E* (d - g).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*E_star*mu_f*mpmath.sqrt(a**2 - r**2)/(mpmath.pi*R)
+
+
+def cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a paraboloid.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: (5.59) of the tangential
+    line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Printed in a stable form: the difference of the two square roots cancels as c -> a.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*E_star*mu_f*(a - c)*(a + c)/(mpmath.pi*R*(mpmath.sqrt(a - r)*mpmath.sqrt(a + r) + mpmath.sqrt(c - r)*mpmath.sqrt(c + r)))
+
+
+def cerruti_surface_ux(G, Q, nu, x, y):
+    """Surface displacement u_x [m] at (x, y, 0) of a tangential point force Q in +x at the origin.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.87)). Derived from: the Cerruti field
+    at z -> 0.
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_surface_is_the_limit_and_reciprocal_to_boussinesq``.
+
+    Parameters
+    ----------
+    G : mpmath.mpf
+        shear modulus [Pa]
+    Q : mpmath.mpf
+        tangential point force in +x at the origin of the surface [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*Q*(-nu*y**2 + x**2 + y**2)/(mpmath.pi*G*(x**2 + y**2)**(mpmath.mpf(3)/mpmath.mpf(2)))
+
+
+def cerruti_surface_uy(G, Q, nu, x, y):
+    """Surface displacement u_y [m] at (x, y, 0) of a tangential point force Q in +x at the origin.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.87)). Derived from: the Cerruti field
+    at z -> 0.
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_surface_is_the_limit_and_reciprocal_to_boussinesq``.
+
+    Parameters
+    ----------
+    G : mpmath.mpf
+        shear modulus [Pa]
+    Q : mpmath.mpf
+        tangential point force in +x at the origin of the surface [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*Q*nu*x*y/(mpmath.pi*G*(x**2 + y**2)**(mpmath.mpf(3)/mpmath.mpf(2)))
+
+
+def cerruti_surface_uz(G, Q, nu, x, y):
+    """Surface displacement u_z [m] at (x, y, 0) of a tangential point force Q in +x at the origin.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.87)). Derived from: the Cerruti field
+    at z -> 0.
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_surface_is_the_limit_and_reciprocal_to_boussinesq``.
+
+    Parameters
+    ----------
+    G : mpmath.mpf
+        shear modulus [Pa]
+    Q : mpmath.mpf
+        tangential point force in +x at the origin of the surface [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(4)*Q*x*(2*nu - 1)/(mpmath.pi*G*(x**2 + y**2))
+
+
+def cerruti_ux(G, Q, nu, x, y, z):
+    """Displacement u_x [m] at (x, y, z) of a tangential point force Q in +x at the origin of the surface.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.86)). Derived from: the given solution
+    (Cerruti 1882; Johnson, Contact Mechanics, (3.86)).
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_field_in_equilibrium_and_surface_traction_free``.
+
+    Parameters
+    ----------
+    G : mpmath.mpf
+        shear modulus [Pa]
+    Q : mpmath.mpf
+        tangential point force in +x at the origin of the surface [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*Q*(x**2/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + (1 - 2*nu)*(-x**2/((z + mpmath.sqrt(x**2 + y**2 + z**2))**2*mpmath.sqrt(x**2 + y**2 + z**2)) + 1/(z + mpmath.sqrt(x**2 + y**2 + z**2))) + 1/mpmath.sqrt(x**2 + y**2 + z**2))/(mpmath.pi*G)
+
+
+def cerruti_uy(G, Q, nu, x, y, z):
+    """Displacement u_y [m] at (x, y, z) of a tangential point force Q in +x at the origin of the surface.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.86)). Derived from: the given solution
+    (Cerruti 1882; Johnson, Contact Mechanics, (3.86)).
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_field_in_equilibrium_and_surface_traction_free``.
+
+    Parameters
+    ----------
+    G : mpmath.mpf
+        shear modulus [Pa]
+    Q : mpmath.mpf
+        tangential point force in +x at the origin of the surface [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*Q*(-x*y*(1 - 2*nu)/((z + mpmath.sqrt(x**2 + y**2 + z**2))**2*mpmath.sqrt(x**2 + y**2 + z**2)) + x*y/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)))/(mpmath.pi*G)
+
+
+def cerruti_uz(G, Q, nu, x, y, z):
+    """Displacement u_z [m] at (x, y, z) of a tangential point force Q in +x at the origin of the surface.
+
+    Chapter: Cerruti (not in the chapter; Johnson (3.86)). Derived from: the given solution
+    (Cerruti 1882; Johnson, Contact Mechanics, (3.86)).
+
+    Derivation: ``hertzmdr.derive.cerruti``. Verified by
+    ``tests/test_cerruti.py::test_field_in_equilibrium_and_surface_traction_free``.
+
+    Parameters
+    ----------
+    G : mpmath.mpf
+        shear modulus [Pa]
+    Q : mpmath.mpf
+        tangential point force in +x at the origin of the surface [N]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*Q*(x*z/(x**2 + y**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2)) + x*(1 - 2*nu)/((z + mpmath.sqrt(x**2 + y**2 + z**2))*mpmath.sqrt(x**2 + y**2 + z**2)))/(mpmath.pi*G)
+
+
 def cone_contact_radius(d, theta):
     """Contact radius a [m] of a rigid cone at depth d.
 
@@ -2666,6 +3017,29 @@ def flamant_tau_xz(F_L, x, z):
         depth below the surface [m]
     """
     return -2*F_L*x*z**2/(mpmath.pi*(x**2 + z**2)**2)
+
+
+def flat_punch_tangential_traction(r, a, G_star, u_x):
+    """Tangential traction q(r) [Pa] of a stuck flat punch (all springs stick, u_x < mu d E*/G*).
+
+    Chapter: MDR tangential, flat punch (not in the chapter). Derived from: (5.59) of q_x =
+    G* u_x on |x| < a: the jump at a is a delta in q_x'.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return G_star*u_x/(mpmath.pi*mpmath.sqrt(a**2 - r**2))
 
 
 def hertz_contact_radius(R, d):
@@ -4275,6 +4649,25 @@ def line_stress_von_mises_c_tau(nu, c_mean, tau_1):
     return mpmath.sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)
 
 
+def masing_unloading_force(F_amp, F_half):
+    """Tangential force F_x [N] on the branch from a turning point: F_x* - 2 F_x,mono(D/2).
+
+    Chapter: Masing's rule, derived from the springs. Derived from: per spring, unloaded by
+    D from u*: f* - f = 2 min(G* D/2, mu q_z) (case check).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_history_solver_follows_masing``.
+
+    Parameters
+    ----------
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    F_half : mpmath.mpf
+        tangential force of the monotonic loading at half the displacement travelled since the turning point [N]
+    """
+    return F_amp - 2*F_half
+
+
 def mdr_force(E_star, a, d, g_integral):
     """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
 
@@ -4382,6 +4775,60 @@ def mdr_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def mindlin_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle of a tangential force oscillating with amplitude F_amp at constant normal force F (paraboloid).
+
+    Chapter: Mindlin-Deresiewicz (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops 4 mu q_z (u* - mu q_z/G*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_mindlin_deresiewicz_energy``.
+
+    Printed in a stable form: the integrand vanishes to second order at the edge: (1 -
+    c/a)^3 P(c/a) with 1 - c/a = -expm1(log1p(-F_amp/(mu F))/3) keeps the cubic law to
+    rounding.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(5)*(3*F**2*mu_f**2*mpmath.exp((mpmath.mpf(2)/mpmath.mpf(3))*mpmath.log1p(-F_amp/(F*mu_f))) + 9*F**2*mu_f**2*mpmath.exp((mpmath.mpf(1)/mpmath.mpf(3))*mpmath.log1p(-F_amp/(F*mu_f))) + 3*F**2*mu_f**2)*mpmath.expm1((mpmath.mpf(1)/mpmath.mpf(3))*mpmath.log1p(-F_amp/(F*mu_f)))**3/(G_star*a)
+
+
+def mindlin_energy_small(a, F, G_star, mu_f, F_amp):
+    """Leading term [J] of the energy per cycle of a paraboloid at small amplitude F_amp.
+
+    Chapter: Mindlin-Deresiewicz (not in the chapter). Derived from: series of
+    mindlin_energy in F_amp.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cubic_small_amplitude_law``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(9))*F_amp**3/(F*G_star*a*mu_f)
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -4986,6 +5433,24 @@ def punch_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def shear_modulus(E, nu):
+    """Shear modulus G [Pa] of an isotropic body.
+
+    Chapter: Lame's mu (not in the chapter). Derived from: Hooke's law in Lame's form.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Parameters
+    ----------
+    E : mpmath.mpf
+        Young's modulus [Pa]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return E/(2*nu + 2)
 
 
 def sphere_depth(R, a):
@@ -5660,6 +6125,424 @@ def strip_mean_pressure(F, L, a):
     return (mpmath.mpf(1)/mpmath.mpf(2))*F/(L*a)
 
 
+def tangential_cone_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a cone under normal force F and tangential F_x.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: F_x = mu (F_N(a) -
+    F_N(c)), F_N ~ c^2, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: 1 - sqrt(1 - F_x/(mu F)) cancels as F_x -> 0.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return F_x/(G_star*a*(mpmath.sqrt(1 - F_x/(F*mu_f)) + 1))
+
+
+def tangential_cone_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle by a cone under normal force F, amplitude F_amp.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Printed in a stable form: a - c = a x/(1 + sqrt(1 - x)), x = F_amp/(mu F), instead of a
+    (1 - sqrt(1 - x)).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*F_amp**3/(F*G_star*a*mu_f*(mpmath.sqrt(1 - F_amp/(F*mu_f)) + 1)**3)
+
+
+def tangential_cone_force(a, theta, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a cone displaced by u_x (monotonic, constant load).
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: sum of the stuck and
+    sliding springs.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return 2*G_star*u_x*(mpmath.pi*E_star*a*mu_f - G_star*u_x/mpmath.tan(theta))/(mpmath.pi*E_star*mu_f)
+
+
+def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a cone (angle theta to the plane) displaced by u_x.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: g(c) = d - G* u_x/(mu
+    E*), g = (pi/2) tan(theta) x.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return a - 2*G_star*u_x/(mpmath.pi*E_star*mu_f*mpmath.tan(theta))
+
+
+def tangential_modulus(G1, nu1, G2, nu2):
+    """Tangential effective modulus G* [Pa] of two elastic bodies.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: direction average of
+    the Cerruti surface compliance of each body, compliances added.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Printed in a stable form: a rigid body (G = inf) is G/(2 - nu) -> 0 instead of inf/inf.
+
+    Parameters
+    ----------
+    G1 : mpmath.mpf
+        shear modulus of body 1 [Pa]
+    nu1 : mpmath.mpf
+        Poisson's ratio of body 1 [1]
+    G2 : mpmath.mpf
+        shear modulus of body 2 [Pa]
+    nu2 : mpmath.mpf
+        Poisson's ratio of body 2 [1]
+    """
+    return 1/((mpmath.mpf(1)/mpmath.mpf(4))*(2 - nu2)/G2 + (mpmath.mpf(1)/mpmath.mpf(4))*(2 - nu1)/G1)
+
+
+def tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a power-law profile under normal force F and tangential force F_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: c from F_x, then
+    g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: 1 - (1 - F_x/(mu F))^(n/(n+1)) cancels as F_x -> 0.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return -mpmath.mpf(1)/mpmath.mpf(2)*F*mu_f*(n + 1)*mpmath.expm1(n*mpmath.log1p(-F_x/(F*mu_f))/(n + 1))/(G_star*a*n)
+
+
+def tangential_powerlaw_energy(a, n, F, G_star, mu_f, c_a):
+    """Energy W [J] dissipated per cycle by a power-law profile under normal force F whose stick zone at the amplitude has the radius c = c_a a (cancels for c_a -> 1: numeric/tangential.py integrates the density there).
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: sum of the
+    sliding springs' parallelogram loops.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    c_a : mpmath.mpf
+        stick ratio c/a (stick radius over contact radius) [1]
+    """
+    return 2*F**2*mu_f**2*(-2*c_a**n*n**2 - 3*c_a**n*n - c_a**n + 2*c_a**(n + 1)*n**2 + 3*c_a**(n + 1)*n + c_a**(n + 1) - c_a**(2*n + 1)*n - c_a**(2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))
+
+
+def tangential_powerlaw_energy_density(n, d_c, s_x):
+    """Dimensionless loop energy density (1 - x^n)(x^n - c^n) of a sliding spring at x/a = 1 - d_c (1 - s_x), c/a = 1 - d_c.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: q_z (u* - mu
+    q_z/G*) with q_z ~ a^n - x^n; 1 - x^n and x^n - c^n as expm1 of log1p of the offsets,
+    which keeps them exact in a thin slip zone.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    d_c : mpmath.mpf
+        stick deficit 1 - c/a (c the stick radius, a the contact radius) [1]
+    s_x : mpmath.mpf
+        position (x - c)/(a - c) in the slip zone c < x < a, in (0, 1) [1]
+    """
+    return -(1 - d_c)**n*mpmath.expm1(n*mpmath.log1p(-d_c*(1 - s_x)))*mpmath.expm1(n*mpmath.log1p(d_c*s_x/(1 - d_c)))
+
+
+def tangential_powerlaw_energy_scale(a, n, F, G_star, mu_f):
+    """Energy per cycle [J] of a power-law profile per unit of d_c times the integral of tangential_powerlaw_energy_density over 0 < s_x < 1.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: the sliding
+    springs' loops with x = a (1 - d_c (1 - s_x)), q_z ~ a^n - x^n.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*F**2*mu_f**2*(n + 1)**2/(G_star*a*n**2)
+
+
+def tangential_powerlaw_energy_small(a, n, F, G_star, mu_f, F_amp):
+    """Leading term [J] of the energy per cycle of a power-law profile at small amplitude.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: series in F_amp
+    of the energy per cycle.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cubic_small_amplitude_law``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(3))*F_amp**3/(F*G_star*a*mu_f*(n + 1))
+
+
+def tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a power-law profile displaced by u_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: mu (F_N(a) -
+    F_N(c)), asserted equal to the spring sum.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: 1 - (c/a)^(n+1) cancels as u_x -> 0: -expm1((n+1)/n
+    log1p(-q)).
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return -2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*mpmath.expm1((n + 1)*mpmath.log1p(-G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)/(n + 1)
+
+
+def tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
+    """1 - c/a [1] of a power-law profile under normal force F and tangential force F_amp.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: F_x = mu (F_N(a)
+    - F_N(c)), F_N ~ c^(n+1).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Printed in a stable form: 1 - (1 - F_amp/(mu F))^(1/(n+1)) cancels at small amplitude.
+
+    Parameters
+    ----------
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return -mpmath.expm1(mpmath.log1p(-F_amp/(F*mu_f))/(n + 1))
+
+
+def tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a power-law profile f = c_n r^n displaced by u_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: g(c) = d - G*
+    u_x/(mu E*), g = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Printed in a stable form: (1 - q)^(1/n) as exp(log1p(-q)/n): accurate for large n and
+    tiny q.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return a*mpmath.exp(mpmath.log1p(-G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)
+
+
+def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
+    """Stick radius c [m] of a power-law profile under normal force F and tangential F_x.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: F_x = mu (F_N(a)
+    - F_N(c)), F_N ~ c^(n+1).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return a*(1 - F_x/(F*mu_f))**(1/(n + 1))
+
+
+def tangential_stiffness(G_star, a):
+    """Tangential contact stiffness k_x = dF_x/du_x [N/m] before any slip (c = a).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: sum of the 2a/dx
+    stuck springs of stiffness G* dx.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_initial_stiffness_is_2_G_star_a_for_every_profile``.
+
+    Parameters
+    ----------
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*G_star*a
+
+
+def tangential_stiffness_ratio(nu):
+    """G*/E* [1] = tangential over normal contact stiffness of one elastic body on a rigid one.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: Cerruti and
+    Boussinesq compliances of the same body, G = E/(2 (1 + nu)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Parameters
+    ----------
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    """
+    return 2*(nu - 1)/(nu - 2)
+
+
 def uniform_pressure_displacement(E_star, a, p0, r):
     """Surface displacement u_z [m] inside a disc (r <= a) under a uniform pressure p0.
 
@@ -6133,6 +7016,85 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
         angle between the first principal directions of the two bodies [rad]
     """
     return -mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt((-1/R2b + 1/R2a)**2*mpmath.sin(2*omega)**2 + ((-1/R2b + 1/R2a)*mpmath.cos(2*omega) - 1/R1b + 1/R1a)**2) + (mpmath.mpf(1)/mpmath.mpf(2))/R2b + (mpmath.mpf(1)/mpmath.mpf(2))/R2a + (mpmath.mpf(1)/mpmath.mpf(2))/R1b + (mpmath.mpf(1)/mpmath.mpf(2))/R1a
+
+
+def textbook_cattaneo_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a paraboloid under normal force F and tangential force F_x, in the derived (textbook) form; use cattaneo_displacement: 1 - (1 - F_x/(mu F))^(2/3) cancels as F_x -> 0: -expm1(2/3 log1p(-F_x/(mu F))).
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: F_x = mu (F_N(a) - F_N(c))
+    solved for c, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return (mpmath.mpf(3)/mpmath.mpf(4))*(-F**(mpmath.mpf(1)/mpmath.mpf(3))*mu_f**(mpmath.mpf(1)/mpmath.mpf(3))*(F*mu_f - F_x)**(mpmath.mpf(2)/mpmath.mpf(3)) + F*mu_f)/(G_star*a)
+
+
+def textbook_cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a paraboloid displaced by u_x (monotonic, constant load), in the derived (textbook) form; use cattaneo_force: mu (F_N(a) - F_N(c)) cancels as u_x -> 0; a^3 - c^3 = (a^2 - c^2)(a^2 + a c + c^2)/(a + c) with a^2 - c^2 = R G* u_x/(mu E*) exactly.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: sum of the stuck and
+    sliding springs.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cattaneo_mindlin_literature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*(E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**3*mu_f**(mpmath.mpf(3)/mpmath.mpf(2)) - E_star*a**2*mu_f*mpmath.sqrt(E_star*a**2*mu_f - G_star*R*u_x) + G_star*R*u_x*mpmath.sqrt(E_star*a**2*mu_f - G_star*R*u_x))/(mpmath.sqrt(E_star)*R*mpmath.sqrt(mu_f))
+
+
+def textbook_cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a paraboloid, in the derived (textbook) form; use cattaneo_traction_stick: the difference of the two square roots cancels as c -> a.
+
+    Chapter: Cattaneo-Mindlin (not in the chapter). Derived from: (5.59) of the tangential
+    line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_through_cerruti_is_rigid_in_the_stick_zone``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return 2*E_star*mu_f*(mpmath.sqrt(a**2 - r**2) - mpmath.sqrt(c**2 - r**2))/(mpmath.pi*R)
 
 
 def textbook_cone_pressure(E_star, d, theta, r):
@@ -6653,6 +7615,31 @@ def textbook_mdr_kink_g(b, slope_jump, x):
     return 2*b*slope_jump*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b))
 
 
+def textbook_mindlin_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle of a tangential force oscillating with amplitude F_amp at constant normal force F (paraboloid), in the derived (textbook) form; use mindlin_energy: the integrand vanishes to second order at the edge: (1 - c/a)^3 P(c/a) with 1 - c/a = -expm1(log1p(-F_amp/(mu F))/3) keeps the cubic law to rounding.
+
+    Chapter: Mindlin-Deresiewicz (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops 4 mu q_z (u* - mu q_z/G*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_mindlin_deresiewicz_energy``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (mpmath.mpf(3)/mpmath.mpf(5))*(-6*F**(mpmath.mpf(4)/mpmath.mpf(3))*mu_f**(mpmath.mpf(4)/mpmath.mpf(3))*(F*mu_f - F_amp)**(mpmath.mpf(2)/mpmath.mpf(3)) + F**(mpmath.mpf(1)/mpmath.mpf(3))*F_amp*mu_f**(mpmath.mpf(1)/mpmath.mpf(3))*(F*mu_f - F_amp)**(mpmath.mpf(2)/mpmath.mpf(3)) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(G_star*a)
+
+
 def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     """Indentation depth d [m] of a power-law indenter under the force F, in the derived (textbook) form; use powerlaw_depth_from_force: (kappa_n c_n)^(1/n) of the derived form overflows or underflows for small n although d is ordinary (c_n = 1e-3, n = 3 at F = 1 N: NaN); split into (F (n + 1)/(2 E* n))^(n/(n + 1)) (kappa_n c_n)^(1/(n + 1)), whose factors stay within the range of the inputs.
 
@@ -7079,6 +8066,191 @@ def textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_
         shear stress component tau_xz [Pa]
     """
     return mpmath.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
+
+
+def textbook_tangential_cone_displacement(a, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a cone under normal force F and tangential F_x, in the derived (textbook) form; use tangential_cone_displacement: 1 - sqrt(1 - F_x/(mu F)) cancels as F_x -> 0.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: F_x = mu (F_N(a) -
+    F_N(c)), F_N ~ c^2, then g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return (-mpmath.sqrt(F)*mpmath.sqrt(mu_f)*mpmath.sqrt(F*mu_f - F_x) + F*mu_f)/(G_star*a)
+
+
+def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
+    """Energy W [J] dissipated per cycle by a cone under normal force F, amplitude F_amp, in the derived (textbook) form; use tangential_cone_energy: a - c = a x/(1 + sqrt(1 - x)), x = F_amp/(mu F), instead of a (1 - sqrt(1 - x)).
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: sum of the sliding
+    springs' parallelogram loops.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.sqrt(F)*mpmath.sqrt(mu_f)*(mpmath.sqrt(F)*mpmath.sqrt(mu_f) - mpmath.sqrt(F*mu_f - F_amp))**3/(G_star*a)
+
+
+def textbook_tangential_modulus(G1, nu1, G2, nu2):
+    """Tangential effective modulus G* [Pa] of two elastic bodies, in the derived (textbook) form; use tangential_modulus: a rigid body (G = inf) is G/(2 - nu) -> 0 instead of inf/inf.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: direction average of
+    the Cerruti surface compliance of each body, compliances added.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_modulus_from_the_cerruti_compliance``.
+
+    Parameters
+    ----------
+    G1 : mpmath.mpf
+        shear modulus of body 1 [Pa]
+    nu1 : mpmath.mpf
+        Poisson's ratio of body 1 [1]
+    G2 : mpmath.mpf
+        shear modulus of body 2 [Pa]
+    nu2 : mpmath.mpf
+        Poisson's ratio of body 2 [1]
+    """
+    return -4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))
+
+
+def textbook_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
+    """Tangential displacement u_x [m] of a power-law profile under normal force F and tangential force F_x, in the derived (textbook) form; use tangential_powerlaw_displacement: 1 - (1 - F_x/(mu F))^(n/(n+1)) cancels as F_x -> 0.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: c from F_x, then
+    g(c) = d - G* u_x/(mu E*).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_x : mpmath.mpf
+        tangential force [N]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*F*mu_f*(1 - (1 - F_x/(F*mu_f))**(n/(n + 1)))*(n + 1)/(G_star*a*n)
+
+
+def textbook_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Tangential force F_x [N] of a power-law profile displaced by u_x, in the derived (textbook) form; use tangential_powerlaw_force: 1 - (c/a)^(n+1) cancels as u_x -> 0: -expm1((n+1)/n log1p(-q)).
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: mu (F_N(a) -
+    F_N(c)), asserted equal to the spring sum.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return 2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*(1 - (1 - G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))**((n + 1)/n))/(n + 1)
+
+
+def textbook_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
+    """1 - c/a [1] of a power-law profile under normal force F and tangential force F_amp, in the derived (textbook) form; use tangential_powerlaw_stick_deficit: 1 - (1 - F_amp/(mu F))^(1/(n+1)) cancels at small amplitude.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: F_x = mu (F_N(a)
+    - F_N(c)), F_N ~ c^(n+1).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_loop_area_equals_the_energy``.
+
+    Parameters
+    ----------
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    F : mpmath.mpf
+        normal force [N]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F_amp : mpmath.mpf
+        amplitude F_x* of an oscillating tangential force [N]
+    """
+    return 1 - (1 - F_amp/(F*mu_f))**(1/(n + 1))
+
+
+def textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """Stick radius c [m] of a power-law profile f = c_n r^n displaced by u_x, in the derived (textbook) form; use tangential_powerlaw_stick_radius: (1 - q)^(1/n) as exp(log1p(-q)/n): accurate for large n and tiny q.
+
+    Chapter: MDR tangential, power law (not in the chapter). Derived from: g(c) = d - G*
+    u_x/(mu E*), g = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_closed_forms_against_the_spring_quadrature``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    u_x : mpmath.mpf
+        rigid tangential displacement of the indenter relative to the half-space [m]
+    """
+    return a*(1 - G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))**(1/n)
 
 
 def textbook_uniform_pressure_displacement_outside(E_star, a, p0, r):

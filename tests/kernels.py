@@ -17,7 +17,8 @@ import mpmath as mp
 
 
 def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
-                    method: str = "gauss-legendre", rho_splits=()) -> mp.mpf:
+                    method: str = "gauss-legendre", rho_splits=(),
+                    weight: Callable[[mp.mpf], mp.mpf] | None = None) -> mp.mpf:
     """u_z(r) under an axisymmetric pressure p supported on rho < a, by (5.7).
 
     ``p_gap(g)`` returns the pressure at a source point with a^2 - rho^2 = g (g > 0).
@@ -31,6 +32,8 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
     integrands are smooth there) is a split point, and so are the crossings of the circles
     rho = c for c in ``rho_splits`` (where p is singular, e.g. the edge b of a worn tip), so that
     tanh-sinh sees those singularities at interval ends.
+    ``weight(phi)`` (r < a only; even in phi) multiplies the ray at angle phi from the field
+    point's radial direction: a kernel w(phi)/s instead of 1/s, such as Cerruti's.
     """
     r, a, E_star = mp.mpf(r), mp.mpf(a), mp.mpf(E_star)
 
@@ -56,11 +59,14 @@ def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
             sin_phi = abs(mp.sin(phi))
             gamma = mp.sqrt((a - r * sin_phi) * (a + r * sin_phi))
             # the ray starts at the field point: t from beta = r cos(phi) to gamma
-            return chord(gamma, mp.acos(max(-1, min(1, r * mp.cos(phi) / gamma))),
-                         r * sin_phi)
+            ray = chord(gamma, mp.acos(max(-1, min(1, r * mp.cos(phi) / gamma))),
+                        r * sin_phi)
+            return ray if weight is None else ray * weight(phi)
 
         total = 2 * mp.quad(along_ray, [0, mp.pi / 2, mp.pi], method=method)  # even in phi
     else:
+        if weight is not None:
+            raise ValueError("weight is implemented for field points inside the disc, r < a")
         # rays at angle psi from the direction of the centre meet the disc for sin(psi) < a/r;
         # sin(psi) = (a/r) sin(beta) makes gamma = a cos(beta) exact and removes the square-root
         # behaviour of gamma at the grazing ray; dpsi = (a/r) cos(beta)/cos(psi) dbeta
@@ -182,3 +188,23 @@ def hertz_tau_rz(r, z, degree: int = 5) -> list:
     """:func:`tau_rz_rings` under the unit Hertz pressure (1 - rho^2)^(1/2) on the unit disc
     (its factored form keeps the rim exact)."""
     return tau_rz_rings(lambda rho: mp.sqrt((1 - rho) * (1 + rho)), r, z, 1, degree)
+
+def ux_cerruti_axisymmetric(tau_gap: Callable[[mp.mpf], mp.mpf], r, a, G, nu, along: str = "x",
+                            rho_splits=(), method: str = "tanh-sinh") -> mp.mpf:
+    """u_x at (r, 0) (``along="x"``) or (0, r) (``"y"``), r < a, of an axisymmetric traction
+    tau(rho) in +x on rho < a, by Cerruti's surface kernel alone (Johnson (3.87a), typed in
+    here independently of derive/):
+    u_x = (1/(2 pi G)) iint tau [(1 - nu)/s + nu s_x^2/s^3] dA, i.e. the ray at angle phi
+    weighted by (1 - nu) + nu cos^2 of its angle with the x axis. ``tau_gap`` as ``p_gap`` of
+    :func:`uz_axisymmetric`. Call inside ``mp.workdps``.
+    """
+    nu = mp.mpf(nu)
+    if along == "x":
+        def weight(phi):
+            return (1 - nu) + nu * mp.cos(phi) ** 2
+    else:
+        def weight(phi):
+            return (1 - nu) + nu * mp.sin(phi) ** 2
+    # uz_axisymmetric returns (1/(pi E*)) iint; the Cerruti prefactor is 1/(2 pi G)
+    return uz_axisymmetric(tau_gap, r, a, 1, method=method, rho_splits=rho_splits,
+                           weight=weight) / (2 * mp.mpf(G))

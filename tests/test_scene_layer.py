@@ -44,7 +44,8 @@ def test_registries_agree():
 
 def test_materials_and_interface():
     """E* (5.26) from both bodies or the elastic one; the stressed body is the first elastic
-    one; both objects are frozen; the interface holds the work of adhesion (0: none)."""
+    one; both objects are frozen; G* of the tangential springs; the interface holds the work
+    of adhesion (0: none) and the friction."""
     steel, glass = Material("a", 210e9, 0.3), Material("b", 70e9, 0.22)
     m = Materials.of(steel, glass)
     ref = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.22**2) / 70e9)
@@ -57,14 +58,18 @@ def test_materials_and_interface():
     adhesion = {"work_of_adhesion": "surface_energy", "range": "length"}
     assert {f.name for f in dataclasses.fields(Interface)} >= set(adhesion)
     assert Interface.KEYS.items() >= adhesion.items() and not Interface().adhesive
+    assert Interface().friction is None and Interface.KEYS["friction"] == "number"
+    G1, G2 = 210e9 / 2.6, 70e9 / 2.44  # G* (derive/tangential.py) from both bodies
+    assert abs(m.G_star * ((2 - 0.3) / (4 * G1) + (2 - 0.22) / (4 * G2)) - 1) < 1e-15
     with pytest.raises(ValueError, match="rigid"):
         Materials.of(Material("x", None, None), Material("y", None, None))
 
 
 def test_interface_table_accepts_no_keys_yet():
     scene.load({**SPHERE, "interface": {}}).run()
-    with pytest.raises(scene.SceneError, match=r"interface\.friction: unknown key"):
-        scene.load({**SPHERE, "interface": {"friction": 0.3}})
+    assert scene.load({**SPHERE, "interface": {"friction": 0.3}}).spec.interface.friction == 0.3
+    with pytest.raises(scene.SceneError, match=r"interface\.stickiness: unknown key"):
+        scene.load({**SPHERE, "interface": {"stickiness": 0.3}})
 
 
 SPHERE_TOML = """effects = ["force"]

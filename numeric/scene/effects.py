@@ -76,6 +76,25 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
            "loading: 1, jump_depth: m, jump_force: N, jump_contact_radius: m, hysteresis: J}",
            "approach-push-retract history of an adhesive contact with its jumps into and out "
            "of contact, and the work lost per cycle", field=True),
+
+    Effect("sliding_force", "N", "tangential force of full sliding, mu F (needs [interface] "
+           "friction)", needs=("tangential",)),
+    Effect("tangential_stiffness", "N/m", "tangential contact stiffness 2 G* a before any slip",
+           needs=("tangential",)),
+    Effect("tangential_force", "N", "tangential force F_x at the tangential load (the "
+           "amplitude of an oscillating one)", needs=("tangential",)),
+    Effect("tangential_displacement", "m", "tangential displacement u_x at the tangential "
+           "load (Cattaneo-Mindlin for a sphere)", needs=("tangential",)),
+    Effect("stick_radius", "m", "radius c of the stick zone at the tangential load",
+           needs=("tangential",)),
+    Effect("traction_profile", "{r: m, q: Pa}", "tangential traction q(r) at the tangential "
+           "load: mu (p(r; a) - p(r; c)) in the stick zone, mu p in the slip zone",
+           needs=("tangential",), field=True),
+    Effect("hysteresis_loop", "{u: m, F: N}", "tangential force against displacement: first "
+           "loading, then the Masing branches of the cycles (needs [load] oscillating)",
+           needs=("tangential",), field=True),
+    Effect("dissipated_energy", "J", "energy dissipated per cycle of the oscillating "
+           "tangential force (Mindlin-Deresiewicz for a sphere)", needs=("tangential",)),
 ]}
 
 

@@ -133,6 +133,25 @@ def adhesive_force_depth_curve(value, title, path):
     ax.set_xlabel(dlabel)
     ax.set_ylabel(Flabel)
     ax.set_title(f"{title}\nadhesive approach-retract", fontsize=10)
+
+def traction_profile(value, title, path):
+    """Tangential traction against radius: mu (p(a) - p(c)) in the stick zone."""
+    _line(value["r"], value["q"], "r", "m", "q", "Pa", f"{title}\ntangential traction", path)
+
+
+def hysteresis_loop(value, title, path):
+    """Tangential force against displacement: the first loading (dashed) and the loop of
+    Masing's branches."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6.0, 4.0), dpi=120)
+    u, xlabel = _scaled(value["u"], "u_x", "m")
+    F, ylabel = _scaled(value["F"], "F_x", "N")
+    k = next((i for i in range(1, len(u)) if u[i] < u[i - 1]), len(u))  # the first turn
+    ax.plot(u[:k], F[:k], "--", lw=1.4, label="first loading")
+    ax.plot(u[k - 1:], F[k - 1:], lw=1.8, label="Masing branches F* - 2 F((u* - u)/2)")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(f"{title}\nhysteresis loop (Mindlin-Deresiewicz)", fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
@@ -142,6 +161,9 @@ def adhesive_force_depth_curve(value, title, path):
 
 FIGURES = {
     "adhesive_force_depth_curve": adhesive_force_depth_curve,
+
+    "traction_profile": traction_profile,
+    "hysteresis_loop": hysteresis_loop,
     "axis_stresses": axis_stresses,
     "von_mises_field": von_mises_field,
     "mdr_profile": mdr_profile,

@@ -43,6 +43,15 @@ class Body:
         return self.E is None
 
 
+@dataclass(frozen=True)
+class Tangential:
+    """The tangential part of a load, at constant normal load (docs/tangential.md)."""
+
+    kind: str  # "force", "displacement" (monotonic from 0) or "oscillating"
+    value: float  # F_x [N], u_x [m], or the amplitude of the tangential force [N]
+    cycles: int = 0  # oscillating: the number of full cycles after the first loading
+
+
 @dataclass
 class Load:
     kind: str  # "depth", "force", "impact" or "pressure"
@@ -56,6 +65,7 @@ class Load:
     radius: float | None = None
     control: str | None = None  # a cycle: "depth" or "force"
     points: int | None = None  # a cycle: its number of points
+    tangential: Tangential | None = None
 
 
 @dataclass
@@ -186,7 +196,14 @@ class _Reader:
             table = self.table(data["interface"], "interface")
             self.extra_keys(table, Interface.KEYS, "interface")
             values = {k: self.quantity(table[k], dim, f"interface.{k}")
-                      for k, dim in Interface.KEYS.items() if k in table}
+                      for k, dim in Interface.KEYS.items() if k in table and dim != "number"}
+            if "friction" in table:
+                mu = table["friction"]
+                if isinstance(mu, bool) or not isinstance(mu, (int, float)) \
+                        or not (math.isfinite(mu) and mu >= 0):
+                    self.fail("interface.friction", f"must be a number >= 0 (the coefficient "
+                              f"of friction), got {mu!r}")
+                values["friction"] = float(mu)
             try:
                 interface = Interface(**values)
             except ValueError as exc:
@@ -280,7 +297,44 @@ class _Reader:
 
     def load(self, ld: dict) -> Load:
         kinds = ("depth", "force", "impact", "pressure", "cycle")
-        self.extra_keys(ld, set(kinds), "load")
+        self.extra_keys(ld, set(kinds) | {"tangential", "oscillating"}, "load")
+        tangential = self.tangential(ld)
+        load = self.normal_load({k: v for k, v in ld.items()
+                                 if k not in ("tangential", "oscillating")})
+        if tangential is not None:
+            if load.kind not in ("depth", "force") or load.sweep:
+                self.fail("load", "a tangential load needs a constant normal load: one depth "
+                          "or force, not a sweep, an impact or a prescribed pressure")
+            load.tangential = tangential
+        return load
+
+    def tangential(self, ld: dict) -> Tangential | None:
+        if "tangential" in ld and "oscillating" in ld:
+            self.fail("load", "give tangential or oscillating, not both")
+        if "tangential" in ld:
+            tl = self.table(ld["tangential"], "load.tangential")
+            self.extra_keys(tl, {"force", "displacement"}, "load.tangential")
+            if len(tl) != 1:
+                self.fail("load.tangential", "give exactly one of force or displacement")
+            ((k, v),) = tl.items()
+            dim = "force" if k == "force" else "length"
+            return Tangential(k, self.positive(v, dim, f"load.tangential.{k}"))
+        if "oscillating" in ld:
+            osc = self.table(ld["oscillating"], "load.oscillating")
+            self.extra_keys(osc, {"amplitude", "cycles"}, "load.oscillating")
+            if "amplitude" not in osc:
+                self.fail("load.oscillating.amplitude", "missing: the amplitude of the "
+                          "tangential force")
+            n = osc.get("cycles", 1)
+            if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 1000:
+                self.fail("load.oscillating.cycles", f"must be an integer in [1, 1000], got "
+                          f"{n!r}")
+            return Tangential("oscillating", self.positive(osc["amplitude"], "force",
+                                                           "load.oscillating.amplitude"), n)
+        return None
+
+    def normal_load(self, ld: dict) -> Load:
+        kinds = ("depth", "force", "impact", "pressure", "cycle")
         given = [k for k in kinds if k in ld]
         if len(given) != 1:
             self.fail("load", "give exactly one of depth, force, cycle, [load.impact] or "

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
+from hertzmdr.numeric.scene.kinds.friction import TangentialEffects
 from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 
 #: the relative accuracy of numeric/pressures.py's max_pressure_of (located to 1e-12 a;
@@ -23,7 +24,7 @@ from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 MAX_SEARCH_RTOL = 1e-12
 
 
-class Axisymmetric(StressEffects, Contact):
+class Axisymmetric(TangentialEffects, StressEffects, Contact):
     """Base: the effects of an axisymmetric contact, from the primitives ``radius(d)``,
     ``force_of(d)``, ``depth_of(F)``, ``p(r, d)``, ``u(r, d)`` and ``g(x)`` of a subclass."""
 
@@ -244,6 +245,18 @@ class ClosedFormContact(Axisymmetric):
             r_s = float(self.form.singular_at(self.a_at(self.last(st))))
             solver.unbounded = (self.form.no_max_pressure, r_s)
         return solver
+
+    def tangential_profile(self, d):
+        from hertzmdr.numeric import tangential as tg
+
+        p = self.form.params
+        if self.form.kind == "cone":
+            return tg.Cone(p["angle"])
+        if self.form.kind == "power_law":
+            return tg.PowerLaw(p["coefficient"], p["exponent"])
+        if self.form.kind == "flat_punch":
+            return tg.FlatPunch(d)
+        return None
 
     def radius(self, d):
         return self.form.contact_radius(d)

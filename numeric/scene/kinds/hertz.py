@@ -56,6 +56,12 @@ class HertzContact(Axisymmetric):
         return out
 
     # -- the primitives of an axisymmetric contact (numeric/hertz.py) -----------------------
+    def tangential_profile(self, d):
+        """The paraboloid of radius R (Cattaneo-Mindlin); None for an impact's striker."""
+        from hertzmdr.numeric import tangential as tg
+
+        return tg.Paraboloid(self.R)
+
     def radius(self, d):
         return hertz.contact_radius(d, self.R)
 

@@ -1,0 +1,737 @@
+"""Tangential contact with Coulomb friction by the MDR: closed forms and a history solver.
+
+Floats or NumPy arrays in SI units; bad input raises ValueError naming it. The formulas are
+generated from :mod:`hertzmdr.derive.tangential` (the derivation, with Masing's rule and the
+energy per cycle found from the springs) and :mod:`hertzmdr.derive.cerruti`; this module
+validates, broadcasts, dispatches and integrates where there is no closed form.
+
+Closed forms, one class per profile with one signature (:data:`PROFILES`)::
+
+    from hertzmdr.numeric import tangential as tg
+    G_star = tg.effective_modulus(G1, nu1, G2, nu2)
+    c = tg.Contact(tg.Paraboloid(R=0.01), a=a, E_star=E_star, G_star=G_star, mu=0.6)
+    c.stick_radius(u_x), c.force(u_x), c.displacement(F_x), c.traction(r, u_x)
+    c.energy(F_amp)                     # per cycle of F_x oscillating in [-F_amp, F_amp]
+    u, F = c.loop(F_amp, 1000)          # the hysteresis loop (Masing branches)
+
+A displacement beyond the onset of sliding gives F_x = +-mu F_N (the springs all slide); a force
+|F_x| > mu F_N is refused. mu = 0 is allowed: no tangential force, nothing dissipated.
+
+The history solver (:func:`history`) runs the springs of the MDR through any sequence of
+(normal depth or force, tangential displacement or force) states, on a grid, with memory: each
+spring keeps its elastic shear between steps, new springs enter without shear, springs that
+lose contact release it. It works for any MDR profile g(x) (a callable, or an
+:class:`hertzmdr.numeric.mdr.Profile` for sampled profiles) and estimates its grid error by a
+second run on half the grid.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric import cone as _cone
+from hertzmdr.numeric import powerlaw as _powerlaw
+from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
+
+__all__ = ["effective_modulus", "shear_modulus", "stiffness_ratio", "stiffness",
+           "Paraboloid", "Cone", "PowerLaw", "FlatPunch", "PROFILES", "Contact",
+           "history", "History", "GAUSS_NODES", "ENERGY_QUADRATURE_BELOW"]
+
+#: Gauss-Legendre nodes of the power law's energy density where the closed form cancels
+GAUSS_NODES = 24
+
+
+#: the power law's energy per cycle is integrated (not taken from its closed form, which
+#: cancels like (1 - c/a)^3) where 1 - c/a is below this
+ENERGY_QUADRATURE_BELOW = 0.25
+
+
+def shear_modulus(E, nu):
+    """Shear modulus G = E/(2 (1 + nu)) [Pa] (Lame's mu).
+
+    Parameters
+    ----------
+    E : float or array_like
+        Young's modulus [Pa], > 0.
+    nu : float or array_like
+        Poisson's ratio, -1 < nu <= 0.5.
+    """
+    return result(gen.shear_modulus(positive("E", E), poisson("nu", nu)))
+
+
+def effective_modulus(G1, nu1, G2, nu2):
+    """Tangential effective modulus G* [Pa], 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2).
+
+    The tangential springs of the MDR have the stiffness G* dx, as the normal ones have E* dx
+    (5.51); G_i* = 4 G_i/(2 - nu_i) is the direction average of the Cerruti compliance.
+    ``G2 = inf`` is a rigid second body.
+
+    Parameters
+    ----------
+    G1, G2 : float or array_like
+        Shear moduli [Pa], > 0 (G2 may be inf).
+    nu1, nu2 : float or array_like
+        Poisson's ratios, -1 < nu <= 0.5.
+    """
+    G1 = positive("G1", G1, allow_inf=True)
+    G2 = positive("G2", G2, allow_inf=True)
+    if np.any(np.isinf(G1) & np.isinf(G2)):
+        raise ValueError("G1 = G2 = inf: two rigid bodies have no tangential compliance; "
+                         "valid: at least one finite shear modulus")
+    return result(gen.tangential_modulus(G1, poisson("nu1", nu1), G2, poisson("nu2", nu2)))
+
+
+def stiffness_ratio(nu):
+    """G*/E* = 2 (1 - nu)/(2 - nu) [1]: tangential over normal stiffness of one elastic body
+    (Poisson's ratio nu) on a rigid one."""
+    return result(gen.tangential_stiffness_ratio(poisson("nu", nu)))
+
+
+def stiffness(a, G_star):
+    """Tangential contact stiffness k_x = 2 G* a [N/m] before any slip.
+
+    Parameters
+    ----------
+    a : float or array_like
+        Contact radius [m], >= 0.
+    G_star : float or array_like
+        Tangential effective modulus [Pa], > 0.
+    """
+    return result(gen.tangential_stiffness(positive("G_star", G_star), nonnegative("a", a)))
+
+
+# ------------------------------------------------------------------------------ profiles
+@dataclass(frozen=True)
+class Paraboloid:
+    """f = r^2/(2 R): Cattaneo-Mindlin, Mindlin-Deresiewicz. R [m] > 0."""
+
+    R: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "R", float(positive("R", self.R)))
+
+    def g(self, x):
+        """MDR profile g(x) = x^2/R [m] (5.52)."""
+        return np.asarray(x, float) ** 2 / self.R
+
+    def normal_force(self, a, E_star):
+        return gen.powerlaw_force_from_radius(E_star, a, self.g(a), 2.0)  # (5.57), (5.23)
+
+    def slide_onset(self, a, E_star, G_star, mu):
+        return mu * E_star * a * a / (self.R * G_star)
+
+    def stick_radius(self, u, a, E_star, G_star, mu):
+        return gen.cattaneo_stick_radius(a, self.R, E_star, G_star, mu, u)
+
+    def force(self, u, a, E_star, G_star, mu):
+        return gen.cattaneo_force(a, self.R, E_star, G_star, mu, u)
+
+    def displacement(self, F_x, F, a, E_star, G_star, mu):
+        return gen.cattaneo_displacement(a, F, G_star, mu, F_x)
+
+    def stick_radius_from_force(self, F_x, F, a, mu):
+        return gen.cattaneo_stick_radius_from_force(a, F, mu, F_x)
+
+    def traction(self, r, c, a, E_star, G_star, mu, u):
+        stick = gen.cattaneo_traction_stick(r, a, c, self.R, E_star, mu)
+        slip = gen.cattaneo_traction_slip(r, a, self.R, E_star, mu)
+        return stick, slip
+
+    def energy(self, F_amp, F, a, G_star, mu):
+        return gen.mindlin_energy(a, F, G_star, mu, F_amp)
+
+    def energy_small(self, F_amp, F, a, G_star, mu):
+        return gen.mindlin_energy_small(a, F, G_star, mu, F_amp)
+
+
+@dataclass(frozen=True)
+class Cone:
+    """f = r tan(theta), theta [rad] in (0, pi/2) the angle between surface and plane."""
+
+    theta: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "theta", float(_cone._theta(self.theta)))
+
+    def g(self, x):
+        """MDR profile g(x) = (pi/2) tan(theta) |x| [m] (5.52)."""
+        return np.pi / 2 * np.tan(self.theta) * np.abs(np.asarray(x, float))
+
+    def normal_force(self, a, E_star):
+        return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
+
+    def slide_onset(self, a, E_star, G_star, mu):
+        return mu * E_star * self.g(a) / G_star
+
+    def stick_radius(self, u, a, E_star, G_star, mu):
+        return gen.tangential_cone_stick_radius(a, self.theta, E_star, G_star, mu, u)
+
+    def force(self, u, a, E_star, G_star, mu):
+        return gen.tangential_cone_force(a, self.theta, E_star, G_star, mu, u)
+
+    def displacement(self, F_x, F, a, E_star, G_star, mu):
+        return gen.tangential_cone_displacement(a, F, G_star, mu, F_x)
+
+    def stick_radius_from_force(self, F_x, F, a, mu):
+        return gen.tangential_powerlaw_stick_radius_from_force(a, 1.0, F, mu, F_x)
+
+    def traction(self, r, c, a, E_star, G_star, mu, u):
+        d = _cone.depth(a, self.theta)
+        slip = mu * _cone.pressure(r, d, self.theta, E_star)
+        inner = mu * _cone.pressure(np.minimum(r, c), _cone.depth(c, self.theta), self.theta,
+                                    E_star)
+        return slip - np.where(r < c, inner, 0.0), slip
+
+    def energy(self, F_amp, F, a, G_star, mu):
+        return gen.tangential_cone_energy(a, F, G_star, mu, F_amp)
+
+    def energy_small(self, F_amp, F, a, G_star, mu):
+        return gen.tangential_powerlaw_energy_small(a, 1.0, F, G_star, mu, F_amp)
+
+
+@dataclass(frozen=True)
+class PowerLaw:
+    """f = c_n r^n: c_n [m^(1-n)] > 0, n > 0 (n = 2, c_n = 1/(2R) is the paraboloid)."""
+
+    c_n: float
+    n: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "c_n", float(positive("c_n", self.c_n)))
+        object.__setattr__(self, "n", float(positive("n", self.n)))
+
+    @property
+    def kappa(self) -> float:
+        return float(_powerlaw.kappa(self.n))
+
+    def g(self, x):
+        """MDR profile g(x) = kappa_n c_n |x|^n [m] (5.52)."""
+        return _powerlaw.g_profile(x, self.c_n, self.n)
+
+    def normal_force(self, a, E_star):
+        return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)
+
+    def slide_onset(self, a, E_star, G_star, mu):
+        return mu * E_star * self.g(a) / G_star
+
+    def stick_radius(self, u, a, E_star, G_star, mu):
+        return gen.tangential_powerlaw_stick_radius(a, self.c_n, self.n, self.kappa, E_star,
+                                                    G_star, mu, u)
+
+    def force(self, u, a, E_star, G_star, mu):
+        return gen.tangential_powerlaw_force(a, self.c_n, self.n, self.kappa, E_star, G_star,
+                                             mu, u)
+
+    def displacement(self, F_x, F, a, E_star, G_star, mu):
+        return gen.tangential_powerlaw_displacement(a, self.n, F, G_star, mu, F_x)
+
+    def stick_radius_from_force(self, F_x, F, a, mu):
+        return gen.tangential_powerlaw_stick_radius_from_force(a, self.n, F, mu, F_x)
+
+    def traction(self, r, c, a, E_star, G_star, mu, u):
+        slip = mu * _powerlaw.pressure(r, self.g(a), self.c_n, self.n, E_star)
+        inner = mu * _powerlaw.pressure(np.minimum(r, c), self.g(c), self.c_n, self.n, E_star)
+        return slip - np.where(r < c, inner, 0.0), slip
+
+    def energy(self, F_amp, F, a, G_star, mu):
+        n = self.n
+        with np.errstate(divide="ignore"):
+            d_c = gen.tangential_powerlaw_stick_deficit(n, F, mu, F_amp)  # 1 - c/a
+        closed = gen.tangential_powerlaw_energy(a, n, F, G_star, mu, 1 - d_c)
+        # in a thin slip zone the closed form cancels like (1 - c/a)^3: integrate the density
+        # over the slip zone (smooth and positive there) by Gauss-Legendre instead
+        z, w = np.polynomial.legendre.leggauss(GAUSS_NODES)
+        dc = np.asarray(d_c, float)[..., None]
+        dens = gen.tangential_powerlaw_energy_density(n, dc, (z + 1) / 2)
+        J = np.asarray(d_c) * np.sum(dens * w, axis=-1) / 2
+        quad = gen.tangential_powerlaw_energy_scale(a, n, F, G_star, mu) * J
+        return np.where(np.asarray(d_c) < ENERGY_QUADRATURE_BELOW, quad, closed)
+
+    def energy_small(self, F_amp, F, a, G_star, mu):
+        return gen.tangential_powerlaw_energy_small(a, self.n, F, G_star, mu, F_amp)
+
+
+@dataclass(frozen=True)
+class FlatPunch:
+    """Flat cylindrical punch of radius a (g = 0 inside): all springs carry the same normal
+    load, so all stick until F_x = mu F_N and then all slide; no partial slip, no dissipation
+    below sliding. ``depth`` [m] > 0 is the indentation."""
+
+    depth: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "depth", float(positive("depth", self.depth)))
+
+    def g(self, x):
+        return np.zeros_like(np.asarray(x, float))
+
+    def normal_force(self, a, E_star):
+        return gen.powerlaw_punch_force(E_star, a, self.depth)  # (5.11)
+
+    def slide_onset(self, a, E_star, G_star, mu):
+        return mu * E_star * self.depth / G_star
+
+    def stick_radius(self, u, a, E_star, G_star, mu):
+        return np.broadcast_arrays(np.asarray(a, float), np.asarray(u, float))[0].copy()
+
+    def force(self, u, a, E_star, G_star, mu):
+        return gen.tangential_stiffness(G_star, a) * u
+
+    def displacement(self, F_x, F, a, E_star, G_star, mu):
+        return F_x / gen.tangential_stiffness(G_star, a)
+
+    def stick_radius_from_force(self, F_x, F, a, mu):
+        return np.broadcast_arrays(np.asarray(a, float), np.asarray(F_x, float))[0].copy()
+
+    def traction(self, r, c, a, E_star, G_star, mu, u):
+        stick = gen.flat_punch_tangential_traction(r, a, G_star, u)
+        return stick, stick
+
+    def energy(self, F_amp, F, a, G_star, mu):
+        return np.zeros_like(np.asarray(F_amp, float))
+
+    def energy_small(self, F_amp, F, a, G_star, mu):
+        return np.zeros_like(np.asarray(F_amp, float))
+
+
+PROFILES = {"paraboloid": Paraboloid, "cone": Cone, "power_law": PowerLaw,
+            "flat_punch": FlatPunch}
+
+
+def _profile(profile):
+    if not isinstance(profile, tuple(PROFILES.values())):
+        raise ValueError(f"profile = {profile!r} is not one of {sorted(PROFILES)} "
+                         "(tangential.Paraboloid(R=...), Cone(theta=...), PowerLaw(c_n=..., "
+                         "n=...), FlatPunch(depth=...)); for any other profile use history()")
+    return profile
+
+
+@dataclass(frozen=True)
+class Contact:
+    """A closed-form profile in contact at radius ``a`` [m] under constant normal load.
+
+    Parameters
+    ----------
+    profile : Paraboloid, Cone, PowerLaw or FlatPunch
+        The gap profile.
+    a : float
+        Contact radius [m], > 0 (the normal load is that of this radius, (5.55), (5.57)).
+    E_star : float
+        Effective modulus [Pa], > 0 (5.26).
+    G_star : float
+        Tangential effective modulus [Pa], > 0 (:func:`effective_modulus`).
+    mu : float
+        Coefficient of friction, >= 0.
+    """
+
+    profile: Paraboloid | Cone | PowerLaw | FlatPunch
+    a: float
+    E_star: float
+    G_star: float
+    mu: float
+    normal_force: float = field(init=False)
+
+    def __post_init__(self):
+        _profile(self.profile)
+        for name in ("a", "E_star", "G_star"):
+            object.__setattr__(self, name, float(positive(name, getattr(self, name))))
+        object.__setattr__(self, "mu", float(nonnegative("mu", self.mu)))
+        object.__setattr__(self, "normal_force",
+                           float(self.profile.normal_force(self.a, self.E_star)))
+
+    # -- scalars ---------------------------------------------------------------------------
+    @property
+    def sliding_force(self) -> float:
+        """mu F_N [N]: the tangential force of full sliding (Coulomb)."""
+        return self.mu * self.normal_force
+
+    @property
+    def slide_onset(self) -> float:
+        """Tangential displacement [m] at which the last spring starts to slide."""
+        return float(self.profile.slide_onset(self.a, self.E_star, self.G_star, self.mu))
+
+    @property
+    def stiffness(self) -> float:
+        """Initial tangential stiffness 2 G* a [N/m]."""
+        return float(stiffness(self.a, self.G_star))
+
+    def _args(self):
+        return self.a, self.E_star, self.G_star, self.mu
+
+    def _force_in_range(self, name, value):
+        value = as_float(name, value)
+        lim = self.sliding_force
+        bad = np.abs(value) > lim * (1 + 4 * np.finfo(float).eps)
+        if np.any(bad):
+            v = float(np.asarray(value)[bad].flat[0])
+            raise ValueError(f"{name} = {v!r} exceeds the sliding force mu F_N = {lim!r} N "
+                             f"(mu = {self.mu}, F_N = {self.normal_force!r} N); valid: "
+                             f"|{name}| <= mu F_N")
+        return np.clip(value, -lim, lim)
+
+    # -- monotonic loading -----------------------------------------------------------------
+    def stick_radius(self, u_x):
+        """Stick radius c [m] at the tangential displacement u_x [m] (monotonic from 0);
+        0 once everything slides."""
+        u = np.abs(as_float("u_x", u_x))
+        if self.mu == 0:
+            return result(np.zeros_like(u))
+        on = self.slide_onset
+        with np.errstate(invalid="ignore"):
+            c = self.profile.stick_radius(np.minimum(u, on), *self._args())
+        return result(np.where(u < on, np.maximum(c, 0.0), 0.0))
+
+    def force(self, u_x):
+        """Tangential force F_x [N] at the displacement u_x [m] (monotonic from 0, odd in u_x);
+        mu F_N beyond the onset of sliding."""
+        u = as_float("u_x", u_x)
+        if self.mu == 0:
+            return result(np.zeros_like(u))
+        on = self.slide_onset
+        au = np.abs(u)
+        Fx = self.profile.force(np.minimum(au, on), *self._args())
+        return result(np.sign(u) * np.where(au < on, np.minimum(Fx, self.sliding_force),
+                                            self.sliding_force))
+
+    def displacement(self, F_x):
+        """Tangential displacement u_x [m] under the tangential force F_x [N], |F_x| <= mu F_N
+        (odd in F_x); at |F_x| = mu F_N the onset of sliding."""
+        Fx = self._force_in_range("F_x", F_x)
+        if self.mu == 0:
+            return result(np.zeros_like(Fx))
+        with np.errstate(divide="ignore"):
+            u = self.profile.displacement(np.abs(Fx), self.normal_force, *self._args())
+        return result(np.sign(Fx) * u)
+
+    def stick_radius_from_force(self, F_x):
+        """Stick radius c [m] under the tangential force F_x [N], |F_x| <= mu F_N."""
+        Fx = np.abs(self._force_in_range("F_x", F_x))
+        if self.mu == 0:
+            return result(np.zeros_like(Fx))
+        return result(self.profile.stick_radius_from_force(Fx, self.normal_force, self.a,
+                                                           self.mu))
+
+    def traction(self, r, u_x):
+        """Tangential traction q(r) [Pa] (in the direction of u_x) at radii r [m] after the
+        monotonic displacement u_x [m]: mu (p(r; a) - p(r; c)) in the stick zone, mu p(r; a)
+        in the slip zone (derived, not assumed: derive/tangential.py), 0 outside."""
+        r = nonnegative("r", r)
+        u = as_float("u_x", u_x)
+        r, u = np.broadcast_arrays(r, u)
+        inside = r < self.a
+        rr = np.where(inside, r, 0.5 * self.a)
+        if self.mu == 0 and not isinstance(self.profile, FlatPunch):
+            return result(np.zeros_like(rr))
+        c = self.stick_radius(u) if not isinstance(self.profile, FlatPunch) else self.a
+        c = np.broadcast_to(c, rr.shape)
+        au = np.minimum(np.abs(u), self.slide_onset)
+        # the stick-zone form is used for r < c only; c >= r keeps its square roots real
+        stick, slip = self.profile.traction(rr, np.maximum(c, rr), *self._args(), au)
+        q = np.where(rr < c, stick, slip)
+        return result(np.where(inside, np.sign(u) * q, 0.0))
+
+    # -- oscillation -----------------------------------------------------------------------
+    def energy(self, F_amp):
+        """Energy W [J] dissipated per cycle of F_x oscillating between -F_amp and F_amp [N],
+        0 <= F_amp <= mu F_N (Mindlin-Deresiewicz for the paraboloid)."""
+        Fa = np.abs(self._force_in_range("F_amp", F_amp))
+        if self.mu == 0:
+            return result(np.zeros_like(Fa))
+        with np.errstate(divide="ignore"):
+            W = self.profile.energy(Fa, self.normal_force, self.a, self.G_star, self.mu)
+        return result(W)
+
+    def energy_small(self, F_amp):
+        """Leading, cubic term [J] of :meth:`energy` at small amplitude F_amp [N]."""
+        Fa = np.abs(self._force_in_range("F_amp", F_amp))
+        if self.mu == 0:
+            return result(np.zeros_like(Fa))
+        return result(self.profile.energy_small(Fa, self.normal_force, self.a, self.G_star,
+                                                self.mu))
+
+    def loop(self, F_amp, n_points: int = 1000):
+        """The hysteresis loop of F_x oscillating with amplitude F_amp [N]: ``(u, F)``.
+
+        ``n_points`` (even, >= 4) points: the unloading branch from (u*, F_amp) to
+        (-u*, -F_amp), then the reloading branch back, both by Masing's rule
+        F = F_amp - 2 F_mono((u* - u)/2) (derived from the springs, masing_unloading_force).
+        """
+        Fa = float(np.abs(self._force_in_range("F_amp", F_amp)))
+        if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or (
+                n_points < 4 or n_points % 2):
+            raise ValueError(f"n_points = {n_points!r} is out of range; valid: an even "
+                             "integer >= 4")
+        ustar = float(self.displacement(Fa))
+        half = n_points // 2
+        s = np.linspace(0.0, 1.0, half)
+        u_down = ustar - 2 * ustar * s
+        F_down = gen.masing_unloading_force(Fa, self.force((ustar - u_down) / 2))
+        u = np.concatenate([u_down, -u_down])
+        F = np.concatenate([F_down, -F_down])
+        return u, F
+
+
+# ------------------------------------------------------------------------- history solver
+@dataclass
+class History:
+    """The springs' answer to a load history, one entry per step (SI units).
+
+    Per step: ``depth`` [m], ``normal_force`` [N], ``contact_radius`` [m], ``u_x`` [m],
+    ``F_x`` [N], ``stick_radius`` [m] (the edge of the central stick zone; 0 when the centre
+    slides), ``sliding`` (every spring in contact slides), ``dissipated`` [J] (cumulative
+    friction work). ``*_error``: estimates of the grid error of the same quantities over the
+    whole history: the largest difference from a run on half the grid (the method is second
+    order, so this is about 3 times the error of the coarse run's fine partner; its
+    pointwise error oscillates as the stick and contact edges cross the nodes, hence one
+    number for the history), or None when the run was made with ``estimate_error=False``.
+    When both loads change at once, the steps add an error of first order in the step size
+    (not included: refine the steps). Final state on
+    the grid ``x`` [m]: the normal and tangential line loads ``q_z``, ``q_x`` [N/m] and
+    ``stuck`` (bool).
+    """
+
+    depth: np.ndarray
+    normal_force: np.ndarray
+    contact_radius: np.ndarray
+    u_x: np.ndarray
+    F_x: np.ndarray
+    stick_radius: np.ndarray
+    sliding: np.ndarray
+    dissipated: np.ndarray
+    x: np.ndarray
+    q_z: np.ndarray
+    q_x: np.ndarray
+    stuck: np.ndarray
+    u_x_error: float | None = None
+    F_x_error: float | None = None
+    stick_radius_error: float | None = None
+    dissipated_error: float | None = None
+
+    def traction(self):
+        """Final tangential traction q(r) [Pa] at r = ``x``: (5.59) applied to ``q_x``
+        (numeric/abel.py). The line load has a kink at each stick-slip edge, where the
+        traction has a square-root cusp: on the few nodes next to an edge the error is
+        O(sqrt(h)) (0.3-0.9 % of the largest traction on 500-4000 intervals for the sphere),
+        elsewhere about 1e-4 of it."""
+        from hertzmdr.numeric import abel
+
+        a = float(self.contact_radius[-1])
+        h = float(self.x[1] - self.x[0])
+        if a <= 0:
+            return np.zeros_like(self.x)
+        return abel.pressure_from_line_load(np.where(self.x < a, self.q_x, 0.0), h, edge=a)
+
+
+def _g_callable(g) -> Callable[[np.ndarray], np.ndarray]:
+    if hasattr(g, "g") and callable(g.g):  # a closed-form profile or an mdr.Profile
+        return g.g
+    if callable(g):
+        return g
+    raise ValueError(f"g = {g!r} is neither a callable g(x) [m] nor a profile with a .g method")
+
+
+def _series(name, value, n_steps=None):
+    arr = np.atleast_1d(as_float(name, value))
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D sequence of states; got shape {arr.shape}")
+    if n_steps is not None and arr.size != n_steps:
+        raise ValueError(f"{name} has {arr.size} states, the normal history has {n_steps}")
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ValueError(f"{name}[{i}] = {arr[i]!r} is out of range; valid: finite")
+    return arr
+
+
+def _force_table(gv, w, E_star):
+    """The normal force at d = g_k (nodes i <= k in contact) and the running sums that give it:
+    E* sum_i w_i (d - g_i)_+ is piecewise linear in d, exact between nodes."""
+    W = np.cumsum(w)
+    S = np.cumsum(w * gv)
+    return E_star * (gv * W - S), W, S
+
+
+def _depth_of_force(F, table, E_star, step, x_max):
+    """d with E* sum_i w_i (d - g_i)_+ = F."""
+    F_nodes, W, S = table
+    k = int(np.searchsorted(F_nodes, F, side="right")) - 1
+    if k >= F_nodes.size - 1:
+        raise ValueError(f"normal_force[{step}] = {F!r} N needs a contact wider than the grid "
+                         f"(x_max = {x_max!r} m); valid: a larger x_max")
+    return (F / E_star + S[k]) / W[k]
+
+
+def _solve_shift(f, cap, w, m, G_star, target, total, step):
+    """Displacement increment D with sum_i w_i clip(f_i + G* m_i D, -cap_i, cap_i) = target."""
+    live = (cap > 0) & (m > 0)
+    k = G_star * m[live]
+    lo = (-cap[live] - f[live]) / k
+    hi = (cap[live] - f[live]) / k
+    if target >= total:
+        return float(hi.max()), True
+    if target <= -total:
+        return float(lo.min()), True
+    b = np.concatenate([lo, hi])
+    dslope = np.concatenate([w[live] * k, -w[live] * k])
+    order = np.argsort(b, kind="stable")
+    b, dslope = b[order], dslope[order]
+    slope = np.cumsum(dslope)
+    phi = -total + np.concatenate([[0.0], np.cumsum(slope[:-1] * np.diff(b))])
+    m = int(np.searchsorted(phi, target, side="right")) - 1
+    m = min(max(m, 0), b.size - 2)
+    while slope[m] <= 0 and m < b.size - 2:  # a flat piece (coincident breakpoints)
+        m += 1
+    return float(b[m] + (target - phi[m]) / slope[m]), False
+
+
+def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
+    x = np.linspace(0.0, x_max, n + 1)
+    h = x_max / n
+    gv = np.asarray(gfun(x), dtype=float)
+    if gv.shape != x.shape or not np.all(np.isfinite(gv)) or np.any(np.diff(gv) < 0):
+        raise ValueError("g(x) must be finite and non-decreasing on [0, x_max]")
+    w = np.full(n + 1, 2 * h)  # the trapezoid rule on the symmetric line: 2 int_0^x_max
+    w[0] = w[-1] = h
+    steps = (depth if depth is not None else force).size
+    out = {k: np.zeros(steps) for k in ("depth", "normal_force", "contact_radius", "u_x",
+                                        "F_x", "stick_radius", "dissipated")}
+    sliding = np.zeros(steps, bool)
+    table = _force_table(gv, w, E_star) if force is not None else None
+    f = np.zeros(n + 1)  # tangential line load of each spring [N/m]
+    u_prev, W_acc, d_prev = 0.0, 0.0, 0.0
+    ones = np.ones(n + 1)
+    for k in range(steps):
+        if depth is not None:
+            d = depth[k]
+            if d > gv[-1]:
+                raise ValueError(f"depth[{k}] = {d!r} m reaches beyond x_max = {x_max!r} m; "
+                                 "valid: a larger x_max")
+        else:
+            d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
+        qz = E_star * np.maximum(d - gv, 0.0)  # (5.58)
+        cap = mu * qz
+        wcap = w * cap
+        # springs that lost contact or normal load release their shear by sliding
+        g_rel = np.minimum(np.maximum(f, -cap), cap)
+        W_acc += float(wcap @ np.abs(f - g_rel)) / G_star
+        f = g_rel
+        total = float(wcap.sum())
+        # both loads change linearly within the step: a spring that comes into contact at
+        # the fraction theta of the step (g_i = d_prev + theta (d - d_prev)) takes only the
+        # tangential increment after it, (1 - theta) D
+        if d > d_prev:
+            m = np.clip((d - gv) / (d - d_prev), 0.0, 1.0)
+        else:
+            m = ones
+        d_prev = d
+        if u_ctrl is not None:
+            D, full = u_ctrl[k] - u_prev, False
+        else:
+            if abs(F_ctrl[k]) > total * (1 + 1e-12) + 1e-300:
+                raise ValueError(f"F_x[{k}] = {F_ctrl[k]!r} N exceeds the sliding force "
+                                 f"mu F_N = {total!r} N of that step; valid: |F_x| <= mu F_N")
+            D, full = _solve_shift(f, cap, w, m, G_star, F_ctrl[k], total, k) if total > 0 \
+                else (0.0, True)
+        trial = f + G_star * m * D
+        f = np.minimum(np.maximum(trial, -cap), cap)
+        W_acc += float(wcap @ np.abs(trial - f)) / G_star
+        u_prev = u_prev + D
+        j = int(np.searchsorted(gv, d, side="left"))  # nodes i < j are in contact (g_i < d)
+        slipping = np.abs(f[:j]) >= cap[:j]
+        i = int(slipping.argmax()) if j else 0  # the first slipping node, if any
+        any_slip = j > 0 and bool(slipping[i])
+        out["depth"][k] = d
+        out["normal_force"][k] = float(w @ qz)
+        out["contact_radius"][k] = (x[j - 1] + h * (d - gv[j - 1]) / (gv[j] - gv[j - 1])
+                                    if 0 < j <= n and gv[j] > gv[j - 1] else x[min(j, n)])
+        out["u_x"][k] = u_prev
+        out["F_x"][k] = F_ctrl[k] if F_ctrl is not None and not full else float(w @ f)
+        out["dissipated"][k] = W_acc
+        sliding[k] = j > 0 and bool(slipping.all())
+        # central stick zone: up to the first slipping node; edge where cap(x) = |f| (linear)
+        if j == 0 or (any_slip and i == 0):
+            c = 0.0
+        elif not any_slip:
+            c = out["contact_radius"][k]
+        else:
+            level = abs(f[i - 1])
+            denom = cap[i - 1] - cap[i]
+            c = x[i - 1] + (h * (cap[i - 1] - level) / denom if denom > 0 else 0.0)
+        out["stick_radius"][k] = c
+    stuck = (qz > 0) & (np.abs(f) < cap)
+    return out, sliding, x, qz, f, stuck
+
+
+def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=None,
+            F_x=None, n_grid: int = 1000, estimate_error: bool = True) -> History:
+    """Run the MDR's normal and tangential springs through a load history.
+
+    Each state k is reached from state k - 1 by first changing the normal load (springs that
+    lose normal load slide back to mu q_z), then the tangential displacement: each spring adds
+    G* du until it reaches +-mu q_z and slides. Springs that come into contact during the step
+    enter without shear and take only the part of du after their entry (both loads change
+    linearly within a step). Rate-independent.
+
+    Parameters
+    ----------
+    g : callable or profile
+        The MDR profile g(x) [m] (5.52): a vectorized callable, a closed-form profile
+        (:class:`Paraboloid`, ...) or an :class:`hertzmdr.numeric.mdr.Profile` (sampled).
+        Non-decreasing on [0, x_max].
+    E_star, G_star : float
+        Effective normal (5.26) and tangential moduli [Pa], > 0.
+    mu : float
+        Coefficient of friction, >= 0.
+    x_max : float
+        Extent of the grid [m] > 0: larger than every contact radius of the history.
+    depth, normal_force : sequence of float
+        Exactly one: the normal depth [m] or force [N] at each state (>= 0).
+    u_x, F_x : sequence of float
+        Exactly one: the tangential displacement [m] or force [N] at each state (from 0 at
+        the start); |F_x| <= mu F_N at each state.
+    n_grid : int
+        Intervals of the grid on [0, x_max] (>= 8, even).
+    estimate_error : bool
+        Also run on n_grid/2 intervals and report the grid error of the history (the method is
+        second order in the spacing: the trapezoid rule across the contact and stick edges).
+
+    Returns
+    -------
+    History
+    """
+    E_star = float(positive("E_star", E_star))
+    G_star = float(positive("G_star", G_star))
+    mu = float(nonnegative("mu", mu))
+    x_max = float(positive("x_max", x_max))
+    if isinstance(n_grid, bool) or not isinstance(n_grid, (int, np.integer)) or (
+            n_grid < 8 or n_grid % 2):
+        raise ValueError(f"n_grid = {n_grid!r} is out of range; valid: an even integer >= 8")
+    if (depth is None) == (normal_force is None):
+        raise ValueError("give exactly one of depth= and normal_force=")
+    if (u_x is None) == (F_x is None):
+        raise ValueError("give exactly one of u_x= and F_x=")
+    dep = None if depth is None else _series("depth", depth)
+    frc = None if normal_force is None else _series("normal_force", normal_force)
+    for name, arr in (("depth", dep), ("normal_force", frc)):
+        if arr is not None and np.any(arr < 0):
+            i = int(np.argmax(arr < 0))
+            raise ValueError(f"{name}[{i}] = {arr[i]!r} is out of range; valid: >= 0")
+    steps = (dep if dep is not None else frc).size
+    uc = None if u_x is None else _series("u_x", u_x, steps)
+    Fc = None if F_x is None else _series("F_x", F_x, steps)
+    gfun = _g_callable(g)
+    fine, sliding, x, qz, qx, stuck = _run(gfun, x_max, int(n_grid), E_star, G_star, mu, dep,
+                                           frc, uc, Fc)
+    res = History(fine["depth"], fine["normal_force"], fine["contact_radius"], fine["u_x"],
+                  fine["F_x"], fine["stick_radius"], sliding, fine["dissipated"], x, qz, qx,
+                  stuck)
+    if estimate_error:
+        coarse = _run(gfun, x_max, int(n_grid) // 2, E_star, G_star, mu, dep, frc, uc, Fc)[0]
+        res.u_x_error, res.F_x_error, res.stick_radius_error, res.dissipated_error = (
+            float(np.max(np.abs(fine[k] - coarse[k])))
+            for k in ("u_x", "F_x", "stick_radius", "dissipated"))
+    return res
