@@ -109,8 +109,10 @@ def test_interface_units_and_errors():
         _scene(AFM_SPHERE, interface={"work_of_adhesion": "-1 J/m^2"})
     with pytest.raises(SceneError, match="interface.work_of_adhesion"):
         _scene(AFM_SPHERE, interface={"work_of_adhesion": "1 Pa"})
-    with pytest.raises(SceneError, match="interface.friction"):
-        _scene(AFM_SPHERE, interface={"friction": 0.3})
+    with pytest.raises(SceneError, match="interface.friction"):  # a key of the tangential
+        _scene(AFM_SPHERE, interface={"friction": -0.3})  # contact, with its own range
+    with pytest.raises(SceneError, match="interface.stickiness"):
+        _scene(AFM_SPHERE, interface={"stickiness": 0.3})
     with pytest.raises(SceneError, match="load.cycle.control"):
         _scene(AFM_SPHERE, load={"cycle": {"to": "1 nm", "control": "speed"}})
     with pytest.raises(SceneError, match="load.cycle.to"):
