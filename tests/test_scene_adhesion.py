@@ -45,6 +45,7 @@ def test_afm_sphere_pull_off_is_jkr():
     assert curve["hysteresis"] > 0
     assert doc["model"]["tabor_parameter"] > ad.TABOR_JKR  # soft PDMS: JKR holds, no warning
     assert "warnings" not in doc["model"]
+    assert "mu_T" not in {w["ratio"] for w in doc["warnings"]}
 
 
 def test_afm_cone_agrees_with_mpmath_minimization():
@@ -135,9 +136,15 @@ def test_tabor_warning_names_the_number():
     data["effects"] = ["pull_off_force"]
     doc = scene.load(data).run()
     mu = doc["model"]["tabor_parameter"]
+    with mp.workdps(30):  # mu_T = (R dgamma^2/(E*^2 z0^3))^(1/3), Tabor (1977)
+        E = build(scene.load(data).spec).E_star
+        ref = mp.cbrt(mp.mpf(20e-9) * mp.mpf(0.05) ** 2 / (mp.mpf(E) ** 2 * mp.mpf(0.3e-9) ** 3))
+        assert_close(mu, ref, 1e-14, "Tabor parameter of the scene")
     assert mu < ad.TABOR_JKR
-    (w,) = doc["model"]["warnings"]
-    assert f"mu_T = {mu:.3g}" in w and "JKR does not hold" in w
+    assert "warnings" not in doc["model"]  # one mechanism: the document's warnings
+    (w,) = [w for w in doc["warnings"] if w["ratio"] == "mu_T"]
+    assert w["value"] == mu and w["limit"] == ad.TABOR_JKR
+    assert w["message"].startswith(f"mu_T = {mu:.3g} is below the limit 5: JKR takes")
 
 
 def test_force_load_and_force_cycle():
