@@ -18,6 +18,8 @@ Usage::
     c = adhesion.AdhesiveContact(adhesion.Paraboloid(R=20e-9), E_star=2.67e6, dgamma=0.05)
     c.pull_off("force")          # PullOff(force=-4.71e-9, depth=..., contact_radius=..., ...)
     c.force(a), c.depth(a)       # along the equilibrium curve, a in m
+    a, d, F = c.equilibrium(depth=d)  # the stable state at a depth (or force=), any shape
+    c.stiffness(depth=d), c.mean_pressure(depth=d), c.pressure_at_depth(r, d)
     cyc = c.cycle(to=10e-9, control="depth", points=1000)  # approach-retract history
     cyc.depth, cyc.force, cyc.contact_radius, cyc.jumps, cyc.hysteresis
 
