@@ -18,6 +18,8 @@ Usage::
     c = adhesion.AdhesiveContact(adhesion.Paraboloid(R=20e-9), E_star=2.67e6, dgamma=0.05)
     c.pull_off("force")          # PullOff(force=-4.71e-9, depth=..., contact_radius=..., ...)
     c.force(a), c.depth(a)       # along the equilibrium curve, a in m
+    a, d, F = c.equilibrium(depth=d)  # the stable state at a depth (or force=), any shape
+    c.stiffness(depth=d), c.mean_pressure(depth=d), c.pressure_at_depth(r, d)
     cyc = c.cycle(to=10e-9, control="depth", points=1000)  # approach-retract history
     cyc.depth, cyc.force, cyc.contact_radius, cyc.jumps, cyc.hysteresis
 
@@ -126,6 +128,8 @@ class Shape:
 
     a_limit = np.inf
     kinks: tuple = field(default=(), init=False, repr=False)
+    #: the radius of curvature of the tip [m] (for the Tabor parameter), None if it has none
+    radius_of_curvature = None
 
     def g(self, a):
         raise NotImplementedError
@@ -173,6 +177,10 @@ class Paraboloid(Shape):
     """The paraboloid f = r^2/(2R) of Hertz's theory: the JKR contact. R [m] > 0."""
 
     R: float
+
+    @property
+    def radius_of_curvature(self):
+        return self.R
 
     def __post_init__(self):
         object.__setattr__(self, "R", float(positive("R", self.R)))
@@ -276,6 +284,11 @@ class PowerLaw(Shape):
         object.__setattr__(self, "n", float(between("n", self.n, 0.5, np.inf)))
         object.__setattr__(self, "kappa", float(_powerlaw.kappa(self.n)))
 
+    @property
+    def radius_of_curvature(self):
+        """n = 2: c_2 r^2 is the paraboloid r^2/(2R) of (5.19), R = 1/(2 c_2); else None."""
+        return 1 / (2 * self.c_n) if self.n == 2 else None
+
     def g(self, a):
         return _powerlaw.g_profile(a, self.c_n, self.n)
 
@@ -321,6 +334,10 @@ class Sphere(Shape):
 
     R: float
 
+    @property
+    def radius_of_curvature(self):
+        return self.R
+
     def __post_init__(self):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
@@ -360,6 +377,10 @@ class Worn(Shape):
 
     R: float
     b: float
+
+    @property
+    def radius_of_curvature(self):
+        return self.R
 
     def __post_init__(self):
         object.__setattr__(self, "R", float(positive("R", self.R)))
@@ -739,14 +760,13 @@ class AdhesiveContact:
 
         The stable branch under the matching control (dd/da > 0, dF/da > 0): the largest
         root, found by Brent's method above the pull-off radius. A depth (force) below the
-        pull-off value has no contact: ValueError names it and the limit.
+        pull-off value has no contact: ValueError names it and the limit. A flat punch's
+        contact radius is its radius at every depth (force) above its pull-off.
         """
         if (depth is None) == (force is None):
             raise ValueError("give exactly one of depth= and force=")
         control = "depth" if depth is not None else "force"
         value = as_float(control, depth if depth is not None else force)
-        if self._punch:
-            raise ValueError("a flat punch has the fixed contact radius shape.radius")
         po = self.pull_off(control)
         low = po.depth if control == "depth" else po.force
         bad = value < low
@@ -754,6 +774,8 @@ class AdhesiveContact:
             v = value[bad].flat[0] if value.ndim else float(value)
             raise ValueError(f"{control} = {v!r} is below the pull-off {control} {low!r}: no "
                              "contact")
+        if self._punch:  # the punch's contact radius is its own, at every load in contact
+            return np.full(value.shape, self.shape.radius) if value.ndim else self.shape.radius
         if control == "force" and isinstance(self.shape, Paraboloid):
             return gen.jkr_contact_radius_from_force(self.E_star, value, self.shape.R,
                                                      self.dgamma)
@@ -761,22 +783,70 @@ class AdhesiveContact:
                 for v in np.ravel(value)]
         return np.reshape(flat, value.shape) if value.ndim else flat[0]
 
+
+    def equilibrium(self, *, depth=None, force=None):
+        """(a [m], d [m], F [N]) of the stable equilibrium at the given depth [m] or force [N].
+
+        Arrays of the input's shape: the contact radius of :meth:`contact_radius`, and the
+        depth and force on the curve there; a flat punch (fixed radius) has F = 2 E* a d
+        (5.11) at every depth above its pull-off depth.
+        """
+        a = self.contact_radius(depth=depth, force=force)
+        a = np.asarray(a, float)
+        if self._punch:
+            if depth is not None:
+                d = np.asarray(as_float("depth", depth), float) + 0 * a
+                return a, d, np.asarray(gen.powerlaw_punch_force(self.E_star, a, d), float)
+            F = np.asarray(as_float("force", force), float) + 0 * a
+            return a, np.asarray(gen.punch_depth_from_force(self.E_star, F, a), float), F
+        return a, np.asarray(self.depth(a), float), np.asarray(self.force(a), float)
+
+    def force_at_depth(self, d):
+        """Force F [N] of the stable equilibrium at depth d [m] (depth control)."""
+        return self.equilibrium(depth=d)[2]
+
+    def stiffness(self, *, depth=None, force=None):
+        """Differential stiffness dF/dd [N/m] of the stable equilibrium at the given depth [m]
+        or force [N]: (dF/da)/(dd/da) along the adhesive curve; 2 E* a for a flat punch
+        (5.12), whose contact radius does not change."""
+        a = np.asarray(self.contact_radius(depth=depth, force=force), float)
+        if self._punch:
+            return np.asarray(gen.mdr_stiffness(self.E_star, a), float)  # (5.12)
+        gs = self.shape.g_slope(a)
+        return np.asarray(gen.adhesion_force_slope(self.E_star, a, self.dgamma, gs)
+                          / gen.adhesion_depth_slope(self.E_star, a, self.dgamma, gs), float)
+
+    def mean_pressure(self, *, depth=None, force=None):
+        """Mean pressure F/(pi a^2) [Pa] (5.17) of the stable equilibrium at the given depth
+        [m] or force [N]: negative where the adhesive contact is in tension."""
+        a, _, F = self.equilibrium(depth=depth, force=force)
+        return np.asarray(gen.disc_mean_pressure(F, a), float)
+
     # ------------------------------------------------------------------------ 3-D fields
     def pressure(self, r, a):
         """Contact pressure p(r) [Pa] at contact radius a [m] (5.59); 0 for r > a.
 
         The non-adhesive pressure of radius a plus the edge term -E* Delta l/(pi
-        sqrt(a^2 - r^2)), which is -inf at r = a.
+        sqrt(a^2 - r^2)), which is -inf at r = a. A flat punch's a is its radius, and the
+        pressure that at its pull-off depth (:meth:`pressure_at_depth` at any depth).
         """
         a = float(self._radius(a))
+        return self._pressure(r, a, float(self.depth(a)))
+
+    def pressure_at_depth(self, r, d):
+        """Contact pressure p(r) [Pa] of the stable equilibrium at depth d [m] (a float)."""
+        a = float(self.contact_radius(depth=float(as_float("d", d))))
+        return self._pressure(r, a, float(d))
+
+    def _pressure(self, r, a, d):
         r = nonnegative("r", r)
         inside = r < a
         rr = np.where(inside, r, 0.0)
         if isinstance(self.shape, Paraboloid):
             p = gen.jkr_pressure(self.E_star, self.shape.R, a, self.dgamma, rr)
-        elif self._punch:
-            d = -gen.adhesion_critical_elongation(self.E_star, a, self.dgamma)
+        elif self._punch:  # Problem 7(a): singular at the edge with the sign of d
             p = gen.powerlaw_punch_pressure(self.E_star, a, d, rr)
+            return np.where(inside, p, np.where(r == a, np.sign(d) * np.inf, 0.0))
         else:
             p = (self.shape.pressure0(rr, a, self.E_star)
                  + gen.adhesion_pressure_edge(self.E_star, a, self.dgamma, rr))
@@ -784,10 +854,20 @@ class AdhesiveContact:
 
     def surface_displacement(self, r, a):
         """Surface displacement u_z(r) [m] at contact radius a [m]: d - f(r) inside (5.54),
-        (5.60) outside (the non-adhesive field of radius a plus the edge term)."""
+        (5.60) outside (the non-adhesive field of radius a plus the edge term). A flat
+        punch: at its pull-off depth (:meth:`surface_displacement_at_depth` at any depth)."""
         a = float(self._radius(a))
+        return self._displacement(r, a, float(self.depth(a)))
+
+    def surface_displacement_at_depth(self, r, d):
+        """Surface displacement u_z(r) [m] of the stable equilibrium at depth d [m] (a
+        float)."""
+        a = float(self.contact_radius(depth=float(as_float("d", d))))
+        d = float(d) if self._punch else float(self.depth(a))
+        return self._displacement(r, a, d)
+
+    def _displacement(self, r, a, d):
         r = nonnegative("r", r)
-        d = float(self.depth(a))
         inside = r <= a
         ro = np.where(inside, 2 * a, r)
         if self._punch:
@@ -974,7 +1054,7 @@ class AdhesiveContact:
 
     def _punch_cycle(self, to, control, points, start):
         a = self.shape.radius
-        k = 2 * self.E_star * a  # (5.12)
+        k = float(gen.mdr_stiffness(self.E_star, a))  # (5.12)
         d_top = to if control == "depth" else to / k
         d_c = -float(gen.adhesion_critical_elongation(self.E_star, a, self.dgamma))
         F_c = k * d_c

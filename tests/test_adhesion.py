@@ -468,3 +468,60 @@ def test_near_the_vertical_tangent():
             k = (gen.adhesion_force_slope(E, a, dg, 2 * a / R)
                  / gen.adhesion_depth_slope(E, a, dg, 2 * a / R))
             assert k < 0 and abs(k) > 1e-3 * E * R / np.sqrt(rel)  # like -1/sqrt(d - d_dc)
+
+
+@pytest.mark.parametrize("E, R, dg", CASES)
+def test_state_stiffness_mean_pressure_at_a_depth(E, R, dg):
+    """The scene layer's numbers at a depth, from numeric/'s API alone: the JKR state
+    (a(d) by mpmath's root of the literature's d(a) = a^2/R - sqrt(2 pi a dgamma/E*), F(a)),
+    its stiffness dF/dd by mpmath's numerical derivative of F(d) along that root, and
+    F/(pi a^2); Kendall's punch: F = 2 E* a d at any depth above its pull-off, dF/dd = 2 E* a,
+    the pressure E* d/(pi sqrt(a^2 - r^2)) and the surface displacement (2 d/pi) asin(a/r)."""
+    c = ad.AdhesiveContact(ad.Paraboloid(R), E, dg)
+    d_c = c.pull_off("depth").depth
+    d = np.array([0.5 * d_c, 0.0, -2 * d_c, 30 * abs(d_c)])  # d_c < 0 for the paraboloid
+    a, dd, F = c.equilibrium(depth=d)
+    k, pm = c.stiffness(depth=d), c.mean_pressure(depth=d)
+    with mp.workdps(DPS):
+        Em, Rm, gm = mp.mpf(E), mp.mpf(R), mp.mpf(dg)
+        def a_of(dv):  # the stable root, started from the float one (the secant refines it)
+            return mp.findroot(lambda x: x**2 / Rm - mp.sqrt(2 * mp.pi * x * gm / Em) - dv,
+                               mp.mpf(float(c.contact_radius(depth=float(dv)))))
+        def F_of(dv):
+            x = a_of(dv)
+            return 4 * Em * x**3 / (3 * Rm) - mp.sqrt(8 * mp.pi * gm * Em * x**3)
+        for i, dv in enumerate(d):
+            dv = mp.mpf(dv)
+            x = a_of(dv)
+            assert_close(a[i], x, TOL_LIT, "JKR a(d)")
+            assert_close(F[i], F_of(dv), 1e-12, "JKR F(d)")  # F ~ 0 near zero load: cancels
+            assert_close(k[i], mp.diff(F_of, dv), TOL_LIT, "JKR dF/dd")
+            assert_close(pm[i], F_of(dv) / (mp.pi * x**2), 1e-12, "JKR F/(pi a^2)")
+    b = 1e-6
+    p = ad.AdhesiveContact(ad.FlatPunch(b), E, dg)
+    d_c = p.pull_off("depth").depth
+    d = np.array([0.999 * d_c, 0.0, 1e-7])
+    a, dd, F = p.equilibrium(depth=d)
+    assert list(a) == [b] * 3 and list(dd) == list(d)
+    a2, d2, F2 = p.equilibrium(force=F[[0, 2]])
+    r = np.array([0.0, 0.3 * b, 0.9 * b, 2 * b])
+    with mp.workdps(DPS):
+        Em, bm = mp.mpf(E), mp.mpf(b)
+        for i, dv in enumerate(d):
+            assert_close(F[i], 2 * Em * bm * mp.mpf(dv), TOL_LIT, "Kendall F(d)")
+        for kv in p.stiffness(depth=d):
+            assert_close(kv, 2 * Em * bm, TOL_LIT, "punch dF/dd")
+        for i in (0, 1):
+            assert_close(d2[i], mp.mpf(F2[i]) / (2 * Em * bm), TOL_LIT, "Kendall d(F)")
+        dv = mp.mpf(d[0])
+        pr = p.pressure_at_depth(r, d[0])
+        u = p.surface_displacement_at_depth(r, d[0])
+        for i, rv in enumerate(r[:3]):
+            assert_close(pr[i], Em * dv / (mp.pi * mp.sqrt(bm**2 - mp.mpf(rv) ** 2)), TOL_LIT,
+                         "punch p(r) at a depth")
+            assert u[i] == d[0]
+        assert pr[3] == 0
+        assert_close(u[3], 2 * dv / mp.pi * mp.asin(bm / mp.mpf(r[3])), TOL_LIT,
+                     "punch u(r) outside")
+    with pytest.raises(ValueError, match="below the pull-off depth"):
+        p.equilibrium(depth=1.001 * d_c)

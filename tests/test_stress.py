@@ -322,7 +322,9 @@ def test_superposition_route():
         s, e = stress.superposed_stress(0.0, 0.0, zz, punch, 1.0, 0.3)
         with mp.workdps(25):
             ref = _superposition_axis_reference(lambda th: 1 / mp.cos(th), mp.mpf(zz))
-        assert_close(s[2, 2], ref, max(1e-12, 10 * float(e[2, 2] / abs(ref))), f"punch z={zz}")
+        # the estimate bounds the error (the rim's rounding term included: numeric/stress.py)
+        assert abs(s[2, 2] - float(ref)) <= e[2, 2], (zz, abs(s[2, 2] - float(ref)), e[2, 2])
+        assert_close(s[2, 2], ref, max(1e-12, float(e[2, 2] / abs(ref))), f"punch z={zz}")
 
 
 def test_superposed_plane_and_its_maxima():

@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from hertzmdr.numeric import scene
@@ -23,7 +24,9 @@ ROOT = Path(__file__).resolve().parents[1]
 #: the example scenes that warn, and of which ratios (docs/scenes.md, "Warnings")
 EXPECTED = {"exact_sphere_deep": {"a/R", "d/R"},
             "problem5_differential_stiffness": {"tan(theta)"},
-            "problem7c_cone": {"tan(theta)"}}
+            "problem7c_cone": {"tan(theta)"},
+            "afm_sphere_tip_pdms": {"a/R", "d/R"},
+            "afm_cone_tip_pdms": {"tan(theta)"}}
 #: the relative agreement of a warning's value with the same ratio from the reported effects:
 #: both are quotients of the same float64 quantities, a few roundings apart
 RATIO_RTOL = 1e-14
@@ -105,6 +108,76 @@ def test_each_kind_measures_its_ratios():
     got, w = _run(_flat("1 MPa"), {"pressure": {"distribution": "uniform", "p0": "0.1 MPa",
                                                "radius": "1 mm"}}, ["depth"], _rigid(shape="flat"))
     assert w["d/a"]["value"] == pytest.approx(got["depth"] / 1e-3, rel=RATIO_RTOL)
+
+
+def test_the_afm_examples_numbers():
+    """The AFM sphere (R = 20 nm) pushed to d = 10 nm: d/R = 0.5 and a/R = 1.978, the JKR
+    contact radius of a = 39.57 nm (a^2/R - sqrt(2 pi a dgamma/E*) = d, solved at 30 digits);
+    the AFM cone's tan(20 deg) = 0.364."""
+    import mpmath as mp
+
+    from hertzmdr.numeric.scene.model import build
+
+    sphere = next(p for p in tour_scenes() if p.stem == "afm_sphere_tip_pdms")
+    w = {x["ratio"]: x for x in scene.load(sphere).run()["warnings"]}
+    E = build(scene.load(sphere).spec).E_star
+    with mp.workdps(30):
+        R, dg, d, Em = mp.mpf(20e-9), mp.mpf(0.05), mp.mpf(10e-9), mp.mpf(E)
+        a = mp.findroot(lambda a: a**2 / R - mp.sqrt(2 * mp.pi * a * dg / Em) - d, 40e-9)
+        assert w["a/R"]["value"] == pytest.approx(float(a / R), rel=1e-13)  # Brent to 4 eps
+    assert round(w["a/R"]["value"], 3) == 1.978
+    assert w["d/R"]["value"] == pytest.approx(0.5, rel=1e-15)
+    cone = next(p for p in tour_scenes() if p.stem == "afm_cone_tip_pdms")
+    (w,) = scene.load(cone).run()["warnings"]
+    assert w["value"] == pytest.approx(0.36397023426620234, rel=1e-15)  # tan(20 deg)
+
+
+def test_an_adhesive_contact_measures_its_ratios_with_the_depth_s_size():
+    """Adhesive contacts pulled above the free surface (d < 0, a state the scene's positive
+    loads do not reach but a contact can be in) measure |d|: a JKR sphere and a Kendall punch,
+    each ratio the quotient of the model's own contact radius; the Tabor parameter warns below
+    its lower limit only."""
+    from hertzmdr.numeric import adhesion as ad
+    from hertzmdr.numeric.scene.kinds.base import State
+    from hertzmdr.numeric.scene.model import build
+
+    pdms = {"name": "PDMS", "shape": "flat", "E": "2 MPa", "nu": 0.5}
+    glue = {"work_of_adhesion": "0.05 J/m^2"}
+    spec = {"effects": ["contact_radius"], "load": {"depth": "10 nm"},
+            "body": [_rigid(shape="sphere", radius="20 nm"), pdms], "interface": glue}
+    kind = build(scene.load(spec).spec)
+    st = State(np.array([-12e-9, -10e-9]), np.array([0.0, 0.0]), 0.0, "test")
+    w = kind.ratios({"state": st})
+    a = ad.AdhesiveContact(ad.Paraboloid(20e-9), kind.E_star, 0.05).contact_radius(depth=-1e-8)
+    assert w == {"a/R": pytest.approx(a / 20e-9, rel=RATIO_RTOL),
+                 "d/R": pytest.approx(0.5, rel=RATIO_RTOL)}
+    # JKR: d = a^2/R - sqrt(2 pi a dgamma/E*); both terms near 5e-8, d = -1e-8: 1e-14
+    assert a**2 / 20e-9 - np.sqrt(2 * np.pi * a * 0.05 / kind.E_star) == pytest.approx(
+        -1e-8, rel=1e-13)
+
+    spec = {**spec, "body": [_rigid(shape="flat_punch", radius="1 um"), pdms]}
+    kind = build(scene.load(spec).spec)
+    w = kind.ratios({"state": State(np.array([-0.15e-6]), np.array([0.0]), 0.0, "test")})
+    assert w == {"d/a": pytest.approx(0.15, rel=RATIO_RTOL)}
+    doc = scene.load({**spec, "effects": ["contact_radius", "depth"],
+                      "load": {"depth": "0.15 um"}}).run()  # the same, run
+    got = {k: v["value"] for k, v in doc["effects"].items()}
+    (w,) = doc["warnings"]
+    assert w["ratio"] == "d/a"
+    assert w["value"] == pytest.approx(got["depth"] / got["contact_radius"],
+                                       rel=RATIO_RTOL)
+
+    # a big sphere on the same sample, with a range: mu_T = 7.1, above 5, no warning; a
+    # 100 times stiffer sample: mu_T = 7.1/100^(2/3) = 0.33, below, one warning
+    spec = {"effects": ["pull_off_force"], "load": {"depth": "1 nm"},
+            "body": [_rigid(shape="sphere", radius="1 mm"), pdms],
+            "interface": {**glue, "range": "0.1 um"}}
+    doc = scene.load(spec).run()
+    assert doc["model"]["tabor_parameter"] > 5 and doc["warnings"] == []
+    doc = scene.load({**spec, "body": [spec["body"][0], {**pdms, "E": "200 MPa"}]}).run()
+    (w,) = doc["warnings"]
+    assert w["ratio"] == "mu_T" and w["value"] == doc["model"]["tabor_parameter"] < 5
+    assert w["message"].startswith(f"mu_T = {w['value']:.3g} is below the limit 5: ")
 
 
 def test_an_impact_warns_at_its_largest_compression():

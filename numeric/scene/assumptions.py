@@ -5,7 +5,8 @@ of the surfaces in the area of contact and within relative proximity is much sma
 one", linear elasticity (small strains), frictionless normal contact, and for the line contact
 the plane strain of a long strip. A scene can leave that range (a 1e308 N load on a 5 mm
 sphere gives a/R = 37): its result then carries a warning naming the assumption, the measured
-ratio and the limit.
+ratio and the limit. JKR adhesion (numeric/adhesion.py) assumes in addition a Tabor parameter
+large enough: its limit is a lower one (``direction="below"``).
 
 Each contact kind reports the ratios it measures (:meth:`~.kinds.base.Contact.ratios`) from
 quantities it already computes, at the largest load of the scene; :func:`check` compares them
@@ -23,6 +24,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from hertzmdr.numeric.adhesion import TABOR_JKR
+
 
 @dataclass(frozen=True)
 class Assumption:
@@ -35,11 +38,15 @@ class Assumption:
     assumption : str
         The assumption, in words.
     limit : float
-        The largest ratio without a warning.
+        The largest ratio without a warning (``direction`` "above"), or the smallest
+        ("below").
     reason : str
         Why that limit (docs/scenes.md).
     kinds : str
         Which contacts measure it.
+    direction : str
+        "above": a ratio above the limit warns (a geometric ratio that must stay small);
+        "below": a ratio below it warns (the Tabor parameter, which must stay large).
     """
 
     ratio: str
@@ -47,9 +54,23 @@ class Assumption:
     limit: float
     reason: str
     kinds: str
+    direction: str = "above"
+
+    def __post_init__(self):
+        if self.direction not in ("above", "below"):
+            raise ValueError(f"direction = {self.direction!r} is not 'above' or 'below'")
+
+    def stretched(self, value: float) -> bool:
+        """Whether ``value`` is past the limit (on the side of :attr:`direction`)."""
+        return value > self.limit if self.direction == "above" else value < self.limit
 
     def message(self, value: float) -> str:
-        return f"{self.ratio} = {value:.3g} exceeds the limit {self.limit:g}: {self.assumption}"
+        past = "exceeds" if self.direction == "above" else "is below"
+        return f"{self.ratio} = {value:.3g} {past} the limit {self.limit:g}: {self.assumption}"
+
+    def limit_text(self) -> str:
+        """The limit as the table prints it: a lower limit says so."""
+        return f"{self.limit:g}" + (" (warns below)" if self.direction == "below" else "")
 
 
 ASSUMPTIONS: dict[str, Assumption] = {a.ratio: a for a in [
@@ -90,17 +111,28 @@ ASSUMPTIONS: dict[str, Assumption] = {a.ratio: a for a in [
         "the ends of a finite strip disturb the pressure over about a half-width each: at "
         "a/L = 0.1 a fifth of the length",
         "line"),
+    Assumption(
+        "mu_T", "JKR takes the adhesive contact compliant against the range of the adhesive "
+        "forces (mu_T < 0.1: DMT; in between: Maugis-Dugdale); the adhesive results are "
+        "those of JKR", TABOR_JKR,
+        "the Tabor parameter mu_T = (R Delta gamma^2/(E*^2 z0^3))^(1/3) compares the elastic "
+        "neck at the edge of the contact with the range z0 of the adhesive forces; by "
+        "Maugis's (1992) Dugdale model the JKR pull-off force is within a few per cent for "
+        "mu_T > 5 (it falls from -3/2 to -2 pi R Delta gamma, the DMT value, as mu_T goes "
+        "to 0)",
+        "adhesive contacts with a radius of curvature (sphere, exact sphere, worn parabola, "
+        "power law n = 2) whose interface gives a `range`", "below"),
 ]}
 
 
 def check(ratios: dict[str, float]) -> list[dict]:
     """The warnings of the measured ``ratios`` (key of :data:`ASSUMPTIONS` -> value): one
-    record per ratio above its limit, with the assumption, the ratio, its value, the limit and
-    the message the table prints."""
+    record per ratio past its limit (above it, or below a lower limit), with the assumption,
+    the ratio, its value, the limit and the message the table prints."""
     out = []
     for key, value in ratios.items():
         a = ASSUMPTIONS[key]
-        if value > a.limit:
+        if a.stretched(value):
             out.append({"assumption": a.assumption, "ratio": a.ratio, "value": float(value),
                         "limit": a.limit, "message": a.message(value)})
     return out
@@ -110,6 +142,6 @@ def markdown() -> str:
     """The table of docs/scenes.md."""
     rows = ["| ratio | assumption | limit | why this limit | measured by |",
             "| --- | --- | --- | --- | --- |"]
-    rows += [f"| `{a.ratio}` | {a.assumption} | {a.limit:g} | {a.reason} | {a.kinds} |"
+    rows += [f"| `{a.ratio}` | {a.assumption} | {a.limit_text()} | {a.reason} | {a.kinds} |"
              for a in ASSUMPTIONS.values()]
     return "\n".join(rows)

@@ -44,7 +44,6 @@ def table(title: str, model: dict, results, warnings=()) -> str:
     desc = model.get("description", model.get("kind", ""))
     lines.append(f"model: {desc}; E* = {engineering(model['effective_modulus'], 'Pa')}; "
                  f"rtol = {model['rtol']:g}")
-    lines += [f"warning: {w}" for w in model.get("warnings", [])]
     rows = [("effect", "value", "method", "rel. error", "time")]
     missed = []
     for res in results.values():

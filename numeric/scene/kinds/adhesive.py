@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion as ad
 from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
 from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, State, Value
@@ -115,39 +114,48 @@ class AdhesiveKind(StressEffects, Contact):
                            "adhesive MDR, closed form; pull-off by bracketed roots")
         self.curve_method = self.method
 
-    # -- the JSON's model: with the Tabor parameter and its warning ------------------------
-    def warnings(self) -> list[str]:
-        z0, dg = self.interface.range, self.interface.work_of_adhesion
-        R = self._radius_of_curvature()
-        if z0 is None or dg == 0 or R is None:
-            return []
-        mu = float(ad.tabor_parameter(R, self.E_star, dg, z0))
-        if mu >= ad.TABOR_JKR:
-            return []
-        regime = "DMT (mu_T < 0.1)" if mu < 0.1 else "Maugis-Dugdale (0.1 < mu_T < 5)"
-        return [f"Tabor parameter mu_T = {mu:.3g} < {ad.TABOR_JKR:g}: JKR does not hold here "
-                f"(the contact is {regime}); the adhesive results are those of JKR"]
-
-    def _radius_of_curvature(self):
-        if isinstance(self.shape, (ad.Paraboloid, ad.Sphere, ad.Worn)):
-            return self.shape.R
-        if isinstance(self.shape, ad.PowerLaw) and self.shape.n == 2:
-            return 1 / (2 * self.shape.c_n)
-        return None
+    # -- the JSON's model and the assumptions it stretches ----------------------------------
+    def _tabor(self):
+        """mu_T of the tip's radius of curvature, or None (no range, or no one radius)."""
+        z0, R = self.interface.range, self.shape.radius_of_curvature
+        if z0 is None or R is None:
+            return None
+        return float(ad.tabor_parameter(R, self.E_star, self.interface.work_of_adhesion, z0))
 
     def info(self):
         out = {**self.inner.info(), "kind": self.kind, "description": self.label,
                "work_of_adhesion": self.interface.work_of_adhesion}
-        z0 = self.interface.range
-        R = self._radius_of_curvature()
-        if z0 is not None and R is not None:
-            out["range"] = z0
-            out["tabor_parameter"] = float(ad.tabor_parameter(
-                R, self.E_star, self.interface.work_of_adhesion, z0))
-        warn = self.warnings()
-        if warn:
-            out["warnings"] = warn
+        mu = self._tabor()
+        if mu is not None:
+            out["range"] = self.interface.range
+            out["tabor_parameter"] = mu
         return out
+
+    def ratios(self, nodes):
+        """The inner kind's geometric ratios, measured on the adhesive state at the largest
+        load (|d|: the depth of an adhesive contact can be negative), and the Tabor parameter
+        mu_T when the interface gives a range (Delta gamma > 0 and a radius of curvature)."""
+        from hertzmdr.numeric.scene.kinds.axisym import ClosedFormContact
+        from hertzmdr.numeric.scene.kinds.hertz import HertzContact
+
+        out = {}
+        mu = self._tabor()
+        if mu is not None and self.interface.work_of_adhesion > 0:
+            out["mu_T"] = mu
+        inner = self.inner
+        slope = inner.form.slope if isinstance(inner, ClosedFormContact) else None
+        if slope is not None:
+            return {"tan(theta)": slope, **out}
+        st = nodes.get("state")
+        if st is None:
+            return out
+        d = self.last(st)
+        a = float(self.model.contact_radius(depth=d))
+        R = (inner.R if isinstance(inner, HertzContact) else
+             inner.form.radius if isinstance(inner, ClosedFormContact) else None)
+        if R is not None:
+            return {"a/R": a / R, "d/R": abs(d) / R, **out}
+        return ({"d/a": abs(d) / a} if a > 0 else {}) | out
 
     # -- the state ----------------------------------------------------------------------
     def _control(self, load) -> str:
@@ -156,11 +164,7 @@ class AdhesiveKind(StressEffects, Contact):
     def state(self, load) -> State:
         v = np.asarray(load.values, dtype=float)
         control = self._control(load)
-        a = self._radius(control, v)
-        d, F = np.asarray(self.model.depth(a), float), np.asarray(self.model.force(a), float)
-        if isinstance(self.shape, ad.FlatPunch):  # the punch: F = 2 E* a d (5.12) in contact
-            k = 2 * self.E_star * self.shape.radius
-            d, F = (v, k * v) if control == "depth" else (v / k, v)
+        a, d, F = self.model.equilibrium(**{control: v})
         return State(d, F, self._state_error(control, v, a, d, F), self.method)
 
     def _state_error(self, control, v, a, d, F) -> float:
@@ -175,56 +179,33 @@ class AdhesiveKind(StressEffects, Contact):
         diffs = [np.abs(a2 - a) / a, np.abs(d2 - d) / np.abs(d), np.abs(F2 - F) / np.abs(F)]
         return float(max(np.max(x) for x in diffs)) + self.rel
 
-    def _radius(self, control, v):
-        if isinstance(self.shape, ad.FlatPunch):
-            return np.full(v.shape, self.shape.radius)
-        kw = {control: v}
-        return np.atleast_1d(np.asarray(self.model.contact_radius(**kw), float))
-
     def _a_last(self, st) -> float:
-        if isinstance(self.shape, ad.FlatPunch):
-            return self.shape.radius
-        return float(self.model.contact_radius(depth=self.last(st)))
+        return self.extent(self.last(st))
 
     # -- the effects ----------------------------------------------------------------------
     def effect_contact_radius(self, st):
-        a = (np.full(np.shape(st.depth), self.shape.radius) if isinstance(
-            self.shape, ad.FlatPunch) else self.model.contact_radius(depth=st.depth))
+        a = self.model.contact_radius(depth=st.depth)
         return Value(np.atleast_1d(np.asarray(a, float)), "d = g(a) - Delta l(a) (5.55), "
                      "adhesive, the stable branch", st.rel_error)
 
     def effect_mean_pressure(self, st):
-        a = self.effect_contact_radius(st).value
-        return Value(st.force / (np.pi * a**2), "F/(pi a^2)", st.rel_error)
+        return Value(self.model.mean_pressure(depth=st.depth), "F/(pi a^2) (5.17)",
+                     st.rel_error)
 
     def effect_stiffness(self, st):
-        """dF/dd = (dF/da)/(dd/da) along the curve; 2 E* a for the punch (5.12)."""
-        a = self.effect_contact_radius(st).value
-        if isinstance(self.shape, ad.FlatPunch):
-            return Value(2 * self.E_star * a, "2 a E* (5.12)", st.rel_error)
-        dg, E, gs = self.interface.work_of_adhesion, self.E_star, self.shape.g_slope(a)
-        k = gen.adhesion_force_slope(E, a, dg, gs) / gen.adhesion_depth_slope(E, a, dg, gs)
-        return Value(k, "(dF/da)/(dd/da), adhesive", st.rel_error)
+        punch = isinstance(self.shape, ad.FlatPunch)
+        return Value(self.model.stiffness(depth=st.depth),
+                     "2 a E* (5.12)" if punch else "(dF/da)/(dd/da), adhesive", st.rel_error)
 
     def force_of(self, d):
         """F(d) on the stable branch under depth control [N]."""
-        d = np.atleast_1d(np.asarray(d, float))
-        if isinstance(self.shape, ad.FlatPunch):
-            return 2 * self.E_star * self.shape.radius * d
-        return self.model.force(self.model.contact_radius(depth=d))
+        return self.model.force_at_depth(np.atleast_1d(np.asarray(d, float)))
 
     def p(self, r, d):
-        a = (self.shape.radius if isinstance(self.shape, ad.FlatPunch)
-             else float(self.model.contact_radius(depth=d)))
-        if isinstance(self.shape, ad.FlatPunch):
-            return gen.powerlaw_punch_pressure(self.E_star, a, d, np.minimum(r, a * (1 - 1e-16))) \
-                * (np.asarray(r) < a)
-        return self.model.pressure(r, a)
+        return self.model.pressure_at_depth(r, d)
 
     def extent(self, d):
-        if isinstance(self.shape, ad.FlatPunch):
-            return self.shape.radius
-        return float(self.model.contact_radius(depth=d))
+        return float(self.model.contact_radius(depth=float(d)))
 
     pressure_method = "(5.59): the non-adhesive pressure of radius a plus -E* Delta l/(pi " \
                       "sqrt(a^2 - r^2))"
@@ -234,14 +215,9 @@ class AdhesiveKind(StressEffects, Contact):
         return r[np.abs(r - a) > 1e-12 * a]  # p is -inf at the edge itself
 
     def effect_surface_displacement(self, st):
-        a = self._a_last(st)
-        r = np.linspace(0.0, 4.0 * a, FIELD_POINTS)
-        if isinstance(self.shape, ad.FlatPunch):
-            d = self.last(st)
-            u = np.where(r <= a, d, gen.powerlaw_punch_displacement_outside(
-                a, d, np.maximum(r, a)))
-        else:
-            u = self.model.surface_displacement(r, a)
+        d = self.last(st)
+        r = np.linspace(0.0, 4.0 * self.extent(d), FIELD_POINTS)
+        u = self.model.surface_displacement_at_depth(r, d)
         return Value({"r": r, "u": np.asarray(u, float)}, "d - f(r) inside, (5.60) outside "
                      "with the edge term -(2/pi) Delta l asin(a/r)", st.rel_error)
 
@@ -255,7 +231,7 @@ class AdhesiveKind(StressEffects, Contact):
         return Value({"x": x, "g": np.asarray(self.shape.g(x), float)}, "(5.52)", st.rel_error)
 
     def effect_effective_radius(self):
-        R = self._radius_of_curvature()
+        R = self.shape.radius_of_curvature
         if R is None:
             raise ValueError(f"{self.label} has no radius of curvature")
         return Value(R, "the radius of curvature of the tip", CLOSED_FORM_RTOL)
@@ -283,7 +259,7 @@ class AdhesiveKind(StressEffects, Contact):
             self.why_not = {**self.why_not, effect: SAMPLED_NOT[effect]}
             return False
         if effect == "effective_radius":
-            return self._radius_of_curvature() is not None
+            return self.shape.radius_of_curvature is not None
         if effect in ("contact_time", "max_impact_depth", "max_impact_pressure"):
             return False
         return super().has(effect)
