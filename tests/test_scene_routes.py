@@ -746,10 +746,9 @@ SUPERPOSED = {"cone", "flat_punch", "power_law", "worn", "profile"}
 
 
 def stress_tol(case, eff):
-    """Closed forms (Hertz): the reported bound. Superposition: its rel_error is an estimate
-    (the difference of the last two tanh-sinh levels), not a bound; measured errors reach 1.4
-    times it (the flat punch): allow 2 times."""
-    return (2 if case.key in SUPERPOSED else 1) * eff["rel_error"] + ROUTE
+    """The reported bound (superposition: twice its two-level estimate plus rounding, and the
+    pressure's error; measured errors reached 1.4 times the estimate alone, the flat punch)."""
+    return eff["rel_error"] + ROUTE
 
 
 def check_axis_stresses(case, route, eff, name, ds):
