@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+from functools import cache
 from pathlib import Path
 
 import mpmath as mp
@@ -69,6 +70,7 @@ class ExactSphere(MDR):
                          lambda r: r / mp.sqrt(R * R - r * r),
                          lambda r: R * R / (R * R - r * r) ** mp.mpf(1.5))
 
+    @cache  # noqa: B019 -- one route object per case, kept for the session on purpose
     def radius(self, d):
         return mp.findroot(lambda x: self.g(x) - mp.mpf(d), (self.R / 1e6, self.R * 0.99),
                            solver="anderson")
@@ -197,7 +199,26 @@ def check(case, route, eff, name):
     ds = routes.depths(case, route, None)
     if isinstance(route, Gaussian):
         return check_gaussian(case, route, eff, name, ds)
+    if name == "stiffness" and isinstance(route, ExactSphere):
+        # a central difference (h = 1e-8 d) of the 30-digit F(d): truncation h^2 times the
+        # third derivative's scale, 1e-16, cancellation 1e-30/1e-8; mp.diff's adaptive steps
+        # cost 30 times as much
+        d, h = ds[0], ds[0] * mp.mpf("1e-8")
+        k = (route.force(d + h) - route.force(d - h)) / (2 * h)
+        return routes.close(routes.as_list(eff["value"])[0], k, routes.tol_of(eff), name)
     routes.CHECKS[name](case, route, eff, name, ds)
+
+
+#: cases whose field effects cost the MDR route many quadratures (Sneddon's sphere near
+#: a/R = 0.5, the worn tips' kinks): CI checks their scalar effects, HERTZMDR_SWEEP=full their
+#: fields too
+HEAVY_FIELDS = {"exact_sphere_deep", "problem8_worn_parabola", "worn tip"}
+
+
+def _checked(key, effects):
+    if key in HEAVY_FIELDS and not routes.FULL:
+        return [e for e in effects if not scene.EFFECTS[e].field]
+    return list(effects)
 
 
 @pytest.mark.parametrize("stem", sorted(ROUTES))
@@ -205,7 +226,7 @@ def test_example_bounds(stem):
     case, doc = _case_of(stem)
     with mp.workdps(DPS):
         route = case.get()
-        for name in case.effects:
+        for name in _checked(stem, case.effects):
             check(case, route, doc["effects"][name], name)
 
 
@@ -244,7 +265,7 @@ def test_sampled_profile_bounds(key):
     with mp.workdps(DPS):
         route = case.get()
         ds = routes.depths(case, route, None)
-        for name in case.effects:
+        for name in _checked(key, case.effects):
             check = check_sampled_pressure if name == "pressure_profile" else routes.CHECKS[name]
             check(case, route, doc["effects"][name], name, ds)
 
