@@ -437,13 +437,16 @@ def read_height_map(path):
     -------
     ndarray, shape (nx, ny)
     """
+    import warnings
     from pathlib import Path
 
     path = Path(path)
     if path.suffix == ".npy":
         h = np.load(path, allow_pickle=False)
     else:
-        h = np.loadtxt(path, delimiter="," if path.suffix == ".csv" else None, ndmin=2)
+        with warnings.catch_warnings():  # an empty file: the shape check below says so
+            warnings.filterwarnings("ignore", message="loadtxt: input contained no data")
+            h = np.loadtxt(path, delimiter="," if path.suffix == ".csv" else None, ndmin=2)
     h = np.asarray(h, dtype=float)
     if h.ndim != 2 or min(h.shape) < 2:
         raise ValueError(f"{path}: heights of shape {h.shape}; valid: a 2-D grid, at least 2 x 2")

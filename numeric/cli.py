@@ -20,7 +20,21 @@ from pathlib import Path
 
 from hertzmdr.numeric import __version__
 
-parser = argparse.ArgumentParser(
+
+class UsageError(Exception):
+    """A command-line value that cannot work: printed as one line, exit 2."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a bad argument is one line (``hertzmdr: <what>; see hertzmdr CMD -h``),
+    not the usage block and the message (issue 12: one line on stderr, exit 2)."""
+
+    def error(self, message):
+        sub = self.prog.removeprefix("hertzmdr").strip()
+        raise UsageError(f"{sub + ': ' if sub else ''}{message} (see: {self.prog} -h)")
+
+
+parser = _Parser(
     prog="hertzmdr",
     description="Normal contact of elastic bodies (Boussinesq, Hertz, MDR): derived, "
     "generated and verified. See docs/scenes.md for the scene schema.")
@@ -57,10 +71,6 @@ def tour_scenes() -> list[Path]:
 
     folder = files("hertzmdr.numeric.tour")
     return sorted(Path(str(p)) for p in folder.iterdir() if p.name.endswith(".toml"))
-
-
-class UsageError(Exception):
-    """A command-line value that cannot work: printed as one line, exit 2."""
 
 
 def check_out(folder: Path, force: bool) -> None:
@@ -146,13 +156,13 @@ def cmd_run(args) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = parser.parse_args(argv)
-    if args.command == "effects":
-        from hertzmdr.numeric.scene.effects import listing
-
-        print(listing())
-        return 0
     try:
+        args = parser.parse_args(argv)
+        if args.command == "effects":
+            from hertzmdr.numeric.scene.effects import listing
+
+            print(listing())
+            return 0
         if args.command == "accuracy":
             return cmd_accuracy(args)
         if args.command == "fit":

@@ -173,12 +173,32 @@ FIGURES = {
 }
 
 
+def plain(title: str) -> str:
+    """A scene's title as plain text for matplotlib: ``$`` escaped (two of them would start
+    mathtext, which raises on what it cannot parse) and control characters dropped."""
+    return "".join(c for c in title if c.isprintable() or c == "\n").replace("$", r"\$")
+
+
 def write_all(results: dict, title: str, folder: Path) -> list[Path]:
-    """Draw every field effect of ``results`` that has a figure into ``folder``."""
+    """Draw every field effect of ``results`` that has a figure into ``folder``. A title's
+    characters that the font lacks are drawn as boxes, silently; every figure opened here is
+    closed, also when drawing fails."""
+    import warnings
+
+    if not any(name in FIGURES for name in results):
+        return []  # nothing to draw: matplotlib (an extra) is not needed
+    plt = _plt()
+    before = set(plt.get_fignums())
     written = []
-    for name, res in results.items():
-        if name in FIGURES:
-            path = folder / f"{name}.png"
-            FIGURES[name](res.value, title, path)
-            written.append(path)
+    try:
+        with warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message="Glyph .* missing", category=UserWarning)
+            for name, res in results.items():
+                if name in FIGURES:
+                    path = folder / f"{name}.png"
+                    FIGURES[name](res.value, plain(title), path)
+                    written.append(path)
+    finally:
+        for num in set(plt.get_fignums()) - before:
+            plt.close(num)
     return written

@@ -52,16 +52,25 @@ class Run:
         eff = EFFECTS[name]
         t0 = time.perf_counter()
         try:
-            args = [self.node(n) for n in eff.needs]
-            v = getattr(self.contact, "effect_" + name)(*args)
-        except (ValueError, OverflowError) as exc:  # numeric/'s validators name the input
-            # and its valid range; a result beyond float64 names its inputs (OverflowError)
-            raise SceneError(self.spec.source, "effects", f"{name!r} at this load: {exc}") \
-                from exc
+            with np.errstate(over="raise", invalid="raise", divide="raise"):
+                args = [self.node(n) for n in eff.needs]
+                v = getattr(self.contact, "effect_" + name)(*args)
+        except (ValueError, ArithmeticError) as exc:  # numeric/'s validators name the input
+            raise SceneError(self.spec.source, "effects",  # and its valid range
+                             f"{name!r} at this load: {reason(exc)}") from exc
         seconds = time.perf_counter() - t0
         self.evaluated.append(name)
         err = float(v.rel_error)
         return Result(name, v.value, eff.unit, v.method, err, err <= self.spec.rtol, seconds)
+
+
+def reason(exc: Exception) -> str:
+    """The message of a failed computation; float64's own (an overflow, 0/0 of inputs far
+    outside the physics' range) says which values to look at."""
+    if isinstance(exc, FloatingPointError):
+        return (f"the computation leaves float64's range ({exc}): a load, size or modulus of "
+                "the scene is far outside what the contact can represent")
+    return str(exc)
 
 
 def check_applicable(spec: SceneSpec, contact) -> None:
@@ -83,7 +92,11 @@ def check_applicable(spec: SceneSpec, contact) -> None:
 
 def run(spec: SceneSpec) -> tuple[Run, dict[str, Result]]:
     t0 = time.perf_counter()
-    contact = build(spec)
+    try:
+        with np.errstate(over="raise", invalid="raise", divide="raise"):
+            contact = build(spec)
+    except ArithmeticError as exc:  # (a ValueError is the builders' SceneError)
+        raise SceneError(spec.source, "body", reason(exc)) from exc
     r = Run(spec, contact)
     r.evaluated.append("model")
     check_applicable(spec, contact)

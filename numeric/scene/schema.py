@@ -228,7 +228,7 @@ class _Reader:
         shape = b.get("shape")
         if shape is None:
             self.fail(f"{key}.shape", f"missing (one of: {', '.join(SHAPES)})")
-        if shape not in SHAPES:
+        if not isinstance(shape, str) or shape not in SHAPES:
             self.fail(f"{key}.shape", f"unknown shape {shape!r}{suggest(str(shape), SHAPES)}")
         spec = SHAPES[shape]
         self.extra_keys(b, {"name", "shape"} | MATERIAL_KEYS | {k.name for k in spec.keys}, key)
@@ -350,7 +350,8 @@ class _Reader:
                     self.fail(f"load.pressure.{k}", "missing")
             from hertzmdr.numeric.pressures import DISTRIBUTIONS
 
-            if pr["distribution"] not in DISTRIBUTIONS:
+            if not isinstance(pr["distribution"], str) \
+                    or pr["distribution"] not in DISTRIBUTIONS:
                 self.fail("load.pressure.distribution",
                           f"unknown distribution {pr['distribution']!r}"
                           f"{suggest(str(pr['distribution']), DISTRIBUTIONS)} (one of: "

@@ -450,7 +450,9 @@ class NumericalMDR(Axisymmetric):
 
     def stress_solver(self, st):
         """Superposition over the solution's pressure; its error adds the pressure's bound
-        relative to its largest value (the stresses are linear in p)."""
+        relative to its largest value (the stresses are linear in p) and 3 times the contact
+        radius's (the pressure's bound is at the solution's own radius: an error delta in a
+        scales p like F/a^2 and stretches the field by delta, as for the mean pressure)."""
         from hertzmdr.numeric.scene.kinds.stresses import SuperposedStresses
 
         s = self._solve(depth=self.last(st))
@@ -458,7 +460,8 @@ class NumericalMDR(Axisymmetric):
         p, e = s.pressure(r, return_error=True)
         return SuperposedStresses(lambda rr: np.asarray(s.pressure(rr), float),
                                   s.contact_radius, self.materials.stressed.nu,
-                                  pressure_error=self._field_error(p, e))
+                                  pressure_error=self._field_error(p, e)
+                                  + 3 * float(s.rel_error))
 
 
 def build_numerical(setup: Setup) -> NumericalMDR:

@@ -1,0 +1,91 @@
+"""Every subcommand's bad-argument paths (issue 12): unknown flags, missing values, extra
+arguments, nonexistent or unreadable files, an --out that cannot be written; each ends in one
+line on stderr that starts with ``hertzmdr:``, exit 2, nothing on stdout and nothing written.
+
+Run in-process through ``main(argv)`` in an empty working folder, which is compared before and
+after (``hertzmdr accuracy`` writes under the current folder by default).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from hertzmdr.numeric.cli import main, parser, tour_scenes
+
+SCENE = str(next(p for p in tour_scenes() if p.stem == "problem1_rail_wheel"))
+
+#: (argv, a word the message must contain); {scene}: a valid scene, {file}: an existing file,
+#: {dir}: an existing non-empty folder, {toml}: a file of broken TOML, {binary}: bytes that
+#: are not UTF-8
+CASES = [
+    ([], "required"),
+    (["frob"], "invalid choice"),
+    (["--bogus"], "required"),  # argparse names the missing command first
+    (["run", "--bogus"], "--bogus"),
+    (["run", "{scene}", "--out"], "--out"),
+    (["run", "{scene}", "extra"], "extra"),
+    (["run", "{scene}", "--force=yes"], "--force"),
+    (["run", "missing.toml"], "no such file"),
+    (["run", "{dir}"], "cannot read"),
+    (["run", "{toml}"], "TOML"),
+    (["run", "{binary}"], "cannot read"),
+    (["run", "{scene}", "--out", "{file}"], "is a file"),
+    (["run", "{scene}", "--out", "{file}/sub"], "is a file"),
+    (["run", "{scene}", "--out", "{dir}"], "not empty"),
+    (["run", "{scene}", "--json", "--out", "{file}"], "is a file"),
+    (["effects", "--bogus"], "--bogus"),
+    (["effects", "extra"], "extra"),
+    (["accuracy", "--bogus"], "--bogus"),
+    (["accuracy", "--only"], "--only"),
+    (["accuracy", "--only", "no such quantity"], "matches no quantity"),
+    (["accuracy", "--out"], "--out"),
+    (["accuracy", "--out", "{dir}"], "is a folder"),
+    (["accuracy", "--out", "{file}/report.md"], "is a file"),
+    (["accuracy", "--quick", "3"], "3"),
+]
+
+
+def _tree(root):
+    return sorted((str(p.relative_to(root)), p.stat().st_size if p.is_file() else -1)
+                  for p in root.rglob("*"))
+
+
+@pytest.mark.parametrize("argv, word", CASES, ids=[" ".join(a) or "(none)" for a, _ in CASES])
+def test_bad_arguments(argv, word, tmp_path, monkeypatch, capsys):
+    work = tmp_path / "work"
+    work.mkdir()
+    (work / "taken.txt").write_text("keep me")
+    (work / "folder").mkdir()
+    (work / "folder" / "x").write_text("")
+    (work / "broken.toml").write_text("title = \n")
+    (work / "binary.toml").write_bytes(b"\xff\xfe\x00title")
+    monkeypatch.chdir(work)
+    subs = {"{scene}": SCENE, "{file}": "taken.txt", "{dir}": "folder",
+            "{toml}": "broken.toml", "{binary}": "binary.toml"}
+    args = []
+    for a in argv:
+        for k, v in subs.items():
+            a = a.replace(k, v)
+        args.append(a)
+    before = _tree(work)
+    assert main(args) == 2
+    out, err = capsys.readouterr()
+    assert out == "", out
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("hertzmdr: "), err
+    assert "Traceback" not in err and word in err, (word, err)
+    assert _tree(work) == before, "something was written"
+
+
+def test_every_subcommand_has_bad_argument_cases():
+    """A new subcommand fails here until its bad-argument paths are listed above."""
+    subs = next(a for a in parser._actions if a.dest == "command").choices
+    assert set(subs) <= {a[0] for a, _ in CASES if a}, sorted(subs)
+
+
+@pytest.mark.parametrize("argv", [["--version"], ["run", "-h"]])
+def test_help_and_version_still_exit_0(argv, capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 0
+    assert capsys.readouterr().out.strip()
