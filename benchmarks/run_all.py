@@ -59,6 +59,7 @@ STEPS = (
     Step("bench_stress.py", ("stress.md", "figures/fig5_8_axis_stresses.png",
                              "figures/fig5_9_von_mises.png")),
     Step("bench_line_stress.py", ("line_stress.md", "figures/line_stress_von_mises.png")),
+    Step("bench_ellipse_stress.py", ("ellipse_stress.md", "figures/ellipse_max_shear.png")),
     Step("bench_laws.py", ("laws_speed.md",)),
     Step("bench_scene.py", ("scene_speed.md",)),
     Step("sphere_bias.py", ("sphere.md", "sphere_bias.png"), out_file=True, quick=False),
