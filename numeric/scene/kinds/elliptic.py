@@ -89,7 +89,7 @@ class EllipseStresses:
         out = el.max_orthogonal_shear(self.b / self.a)
         v, yb, zb = out["yz"]
         vx, xb, zxb = out["xz"]
-        return Value({"value": v * self.p0, "y": yb * self.b, "z": zb * self.b,
+        return Value({"value": v * self.p0, "x": 0.0, "y": yb * self.b, "z": zb * self.b,
                       "value_xz": vx * self.p0, "x_xz": xb * self.b, "z_xz": zxb * self.b},
                      "largest |tau_yz| (plane x = 0) and |tau_xz| (plane y = 0), algebraic "
                      "in the ellipsoidal coordinate, Nelder-Mead", MAXIMUM_RTOL)
