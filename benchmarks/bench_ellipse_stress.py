@@ -149,6 +149,17 @@ Actual error: against the same field at rtol = 1e-14, in units of p0.
 | rtol | time [ms] | estimated error | actual error |
 |---|---|---|---|
 {trade_t}
+
+## Limits
+
+- Far below the contact at nu = 1/2, sigma_xx and sigma_yy on the axis are differences of
+  terms of size p0 (a/z)^2 that cancel to O(p0 (a/z)^4): their relative error grows like
+  eps (z/a)^2 (5e-12 at z = 100 a, 1e-9 at z = 1000 a; the absolute error stays below
+  1e-16 p0). For nu < 1/2 the forms keep full relative accuracy (1e-15 to z = 1000 a).
+- The error estimate of the field is the change between the last two levels of the
+  double-exponential rule, an over-estimate by orders of magnitude (the table above).
+- b > a is refused (swap x and y); the maxima are searched on the axis, where they lie for
+  nu >= 0.25 (checked off the axis by the tests for nu = 0.3, 0.5).
 """
     (run.docs / "ellipse_stress.md").write_text(text)
     print(f"wrote {run.docs / 'ellipse_stress.md'}")
