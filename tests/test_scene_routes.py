@@ -350,7 +350,9 @@ STRESS_GRID = ("max_shear", "von_mises_field", "max_von_mises")
 #: the stress effects of an elliptical contact: routed by the superposition of the derived
 #: point-force field over the exact ellipse's pressure (tests/test_ellipse_stress.py
 #: ``superposed``, 20 digits: 2-D quadrature, a few seconds a point, so they run in the sweep)
-ELLIPSE_STRESS = ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises")
+#: (max_orthogonal_shear where the registry has it: the elliptic kind computes it)
+ELLIPSE_STRESS = tuple(e for e in ("axis_stresses", "max_shear", "von_mises_field",
+                                   "max_von_mises", "max_orthogonal_shear") if e in EFFECTS)
 AXI = ("depth", "force", "contact_radius", "mean_pressure", "stiffness", "effective_modulus",
        "pressure_profile", "surface_displacement", "force_depth_curve", "mdr_profile",
        "axis_stresses") + STRESS_GRID
@@ -1099,6 +1101,9 @@ def check_ellipse_stress(geometry, eff, effect):
             assert abs(v["value"] / p0 - float(ref)) < tol
         elif effect == "max_von_mises":
             assert abs(v["value"] / p0 - float(vm(v["x"], v["z"]))) < tol
+        elif effect == "max_orthogonal_shear":  # |tau_yz| in the plane x = 0
+            ref = superposed("yz", nu_, 1, t, 0, mp.mpf(v["y"]) / a, mp.mpf(v["z"]) / a)
+            assert abs(v["value"] / p0 - float(abs(ref))) < tol
         else:  # von_mises_field, x-z plane
             sv = np.asarray(v["sigma_v"])
             for i, j in ((10, 50), (40, 70), (80, 20)):
