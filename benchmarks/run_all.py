@@ -61,6 +61,7 @@ STEPS = (
     # also writes the line-contact section of stress.md (bench_stress.py keeps it)
     Step("bench_line_stress.py", ("line_stress.md", "figures/line_stress_von_mises.png",
                                   "stress.md"), ("line_stress.json",)),
+    Step("bench_ellipse_stress.py", ("ellipse_stress.md", "figures/ellipse_max_shear.png")),
     Step("bench_laws.py", ("laws_speed.md",)),
     Step("bench_scene.py", ("scene_speed.md",)),
     Step("bench_adhesion.py", ("adhesion_speed.md",)),

@@ -77,6 +77,10 @@ class _Printer(SciPyPrinter):
         args = ", ".join(self._print(e) for e in expr.args)
         return f"scipy.special.ellipkinc({args})"
 
+    def _print_carlson_rd(self, expr):  # Carlson's R_D(x, y, z), z the distinguished argument
+        args = ", ".join(self._print(e) for e in expr.args)
+        return f"scipy.special.elliprd({args})"
+
     def _print_not_supported(self, expr):
         raise ValueError(f"cannot print {expr!r} as NumPy/SciPy code")
 
@@ -89,6 +93,9 @@ class _MpPrinter(MpmathPrinter):
 
     def _print_elliptic_e(self, expr):  # mpmath.ellipe(m) or ellipe(phi, m)
         return f"mpmath.ellipe({', '.join(self._print(e) for e in expr.args)})"
+
+    def _print_carlson_rd(self, expr):
+        return f"mpmath.elliprd({', '.join(self._print(e) for e in expr.args)})"
 
     def _print_elliptic_f(self, expr):
         return f"mpmath.ellipf({', '.join(self._print(e) for e in expr.args)})"

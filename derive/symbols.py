@@ -75,6 +75,25 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "
             "sin(beta), z = a xi cos(beta)"),
     "chi": ("1", "sin(beta) of the oblate spheroidal angle beta"),
+    # ellipse_stress family (derive/ellipse_stress.py): the field of an elliptical Hertz contact
+    "b_e": ("m", "semi-axis b <= a of an elliptical contact, along y (a along x)"),
+    "lam_e": ("m^2", "ellipsoidal coordinate lambda >= 0 of the field point: the largest root "
+              "of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1"),
+    "e_c": ("1", "z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish)"),
+    "q_e": ("m^2", "lam - w1 >= 0, w1 the largest root of the surface quadratic P2"),
+    "w1_e": ("m^2", "largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - "
+             "y^2 (a^2 + w), the confocal ellipse through (x, y)"),
+    "w1_a": ("m^2", "a^2 + w1 >= 0"),
+    "w1_b": ("m^2", "b^2 + w1 >= 0"),
+    "d_e": ("m^2", "w1 - w2 >= 0, the difference of the roots of P2"),
+    "v_q": ("m", "integration variable v >= (lam - w1)^(1/2) of the field integrals, "
+            "w = w1 + v^2"),
+    "I_x": ("m^-3", "integral over w > lam of dw/((a^2 + w) Delta(w)), "
+            "Delta = ((a^2 + w)(b^2 + w) w)^(1/2)"),
+    "I_y": ("m^-3", "integral over w > lam of dw/((b^2 + w) Delta(w))"),
+    "J_xx": ("m^-2", "integral over v of the H_xx integrand (ellipse_stress_jxx_integrand)"),
+    "J_yy": ("m^-2", "integral over v of the H_yy integrand (ellipse_stress_jyy_integrand)"),
+    "J_xy": ("m^-2", "integral over v of the H_xy integrand (ellipse_stress_jxy_integrand)"),
     "sigma_xx": ("Pa", "normal stress component sigma_xx"),
     "sigma_yy": ("Pa", "normal stress component sigma_yy"),
     "sigma_zz": ("Pa", "normal stress component sigma_zz"),

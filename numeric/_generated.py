@@ -105,6 +105,35 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'ellipse_stress_I_x',
+    'ellipse_stress_I_y',
+    'ellipse_stress_axis_shear_x',
+    'ellipse_stress_axis_shear_x_slope',
+    'ellipse_stress_axis_shear_y',
+    'ellipse_stress_axis_shear_y_slope',
+    'ellipse_stress_axis_sigma_xx',
+    'ellipse_stress_axis_sigma_yy',
+    'ellipse_stress_axis_sigma_zz',
+    'ellipse_stress_axis_von_mises',
+    'ellipse_stress_axis_von_mises_slope',
+    'ellipse_stress_cubic_lam',
+    'ellipse_stress_cubic_lam_slope',
+    'ellipse_stress_cubic_q',
+    'ellipse_stress_cubic_q_slope',
+    'ellipse_stress_d',
+    'ellipse_stress_e_sq',
+    'ellipse_stress_jxx_integrand',
+    'ellipse_stress_jxy_integrand',
+    'ellipse_stress_jyy_integrand',
+    'ellipse_stress_sigma_xx',
+    'ellipse_stress_sigma_yy',
+    'ellipse_stress_sigma_zz',
+    'ellipse_stress_tau_xy',
+    'ellipse_stress_tau_xz',
+    'ellipse_stress_tau_yz',
+    'ellipse_stress_w1',
+    'ellipse_stress_w1_a',
+    'ellipse_stress_w1_b',
     'fit_cone_force',
     'fit_cone_force_dE',
     'fit_cone_force_dz0',
@@ -397,6 +426,35 @@ RELATIONS = (
     ('ellipse_semi_major', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
     ('ellipse_semi_minor', '(5.28), exact', 'ellipse', 'sqrt(2)*sqrt(R1)*sqrt(d)*t_ba*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/sqrt((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))', ''),
     ('ellipse_stiffness', '(5.13), exact', 'ellipse', 'sqrt(2)*pi*E_star*sqrt(R1)*sqrt(d)*sqrt((-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2))**(3/2)', ''),
+    ('ellipse_stress_I_x', '(5.31)', 'ellipse_stress', '2*carlson_rd(b_e**2 + lam_e, lam_e, a**2 + lam_e)/3', ''),
+    ('ellipse_stress_I_y', '(5.31)', 'ellipse_stress', '2*carlson_rd(a**2 + lam_e, lam_e, b_e**2 + lam_e)/3', ''),
+    ('ellipse_stress_axis_shear_x', '(5.31), (5.50)', 'ellipse_stress', 'a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(2*sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(2*sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2))', ''),
+    ('ellipse_stress_axis_shear_x_slope', '(5.31), (5.50)', 'ellipse_stress', 'a*b_e*nu*p0*z/((a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) + a*b_e*nu*p0*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - a*b_e*p0*z/(2*sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - a*b_e*p0*z*(2*nu - 1)/(2*(a**2 + z**2)**(3/2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - 3*a*b_e*p0*z/(2*(a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) + a*b_e*p0*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)*(-z/sqrt(b_e**2 + z**2) - z/sqrt(a**2 + z**2))/(2*sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))**2)', ''),
+    ('ellipse_stress_axis_shear_y', '(5.31), (5.50)', 'ellipse_stress', 'a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(2*sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(2*sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2))', ''),
+    ('ellipse_stress_axis_shear_y_slope', '(5.31), (5.50)', 'ellipse_stress', 'a*b_e*nu*p0*z/(sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) + a*b_e*nu*p0*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*z*(2*nu - 1)/(2*(b_e**2 + z**2)**(3/2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - 3*a*b_e*p0*z/(2*sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - a*b_e*p0*z/(2*(a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) + a*b_e*p0*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)*(-z/sqrt(b_e**2 + z**2) - z/sqrt(a**2 + z**2))/(2*sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))**2)', ''),
+    ('ellipse_stress_axis_sigma_xx', '(5.31), (5.41)-(5.46)', 'ellipse_stress', '2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2)))', ''),
+    ('ellipse_stress_axis_sigma_yy', '(5.31), (5.41)-(5.46)', 'ellipse_stress', '2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2)))', ''),
+    ('ellipse_stress_axis_sigma_zz', '(5.31), (5.41)-(5.46)', 'ellipse_stress', '-a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2))', ''),
+    ('ellipse_stress_axis_von_mises', '(5.31), (5.50)', 'ellipse_stress', 'sqrt((-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))**2/2)', ''),
+    ('ellipse_stress_axis_von_mises_slope', '(5.31), (5.50)', 'ellipse_stress', '((-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))*(-4*a*b_e*nu*p0*z/(sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - 4*a*b_e*nu*p0*z/((a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) - 4*a*b_e*nu*p0*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z/(sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) + 2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(3/2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + 2*a*b_e*p0*z/((a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) - 4*a*b_e*p0*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*(2*nu - 1)*(-z/sqrt(b_e**2 + z**2) - z/sqrt(a**2 + z**2))/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))**2))/4 + (2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))*(4*a*b_e*nu*p0*z/(sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) + 4*a*b_e*nu*p0*z/((a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) + 4*a*b_e*nu*p0*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(3/2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - 2*a*b_e*p0*z/(sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - 2*a*b_e*p0*z/((a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)) + 4*a*b_e*p0*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*(2*nu - 1)*(-z/sqrt(b_e**2 + z**2) - z/sqrt(a**2 + z**2))/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))**2))/4 + (2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))*(4*a*b_e*nu*p0*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 4*a*b_e*nu*p0*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 + 2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(3/2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - 2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(3/2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - 4*a*b_e*p0*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 4*a*b_e*p0*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*(2*nu - 1)*(-z/sqrt(b_e**2 + z**2) - z/sqrt(a**2 + z**2))/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))**2) + 2*a*b_e*p0*(2*nu - 1)*(-z/sqrt(b_e**2 + z**2) - z/sqrt(a**2 + z**2))/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))**2))/4)/sqrt((-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))**2/2) - 2*(-a*b_e*nu*p0*z*(-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))/2 + a*b_e*p0*z*(2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))/2 + (2*a*b_e*nu*p0*z - 2*a*b_e*p0*z)*(2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))/4)/(sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)*sqrt((-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))**2/2)) - 2*(a*b_e*nu*p0*z*(2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))/2 - a*b_e*p0*z*(-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))/2 + (-2*a*b_e*nu*p0*z + 2*a*b_e*p0*z)*(2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))/4)/((a**2 + z**2)**(3/2)*sqrt(b_e**2 + z**2)*sqrt((-2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) - 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) - a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*nu*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)) + 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0/(sqrt(a**2 + z**2)*sqrt(b_e**2 + z**2)))**2/2 + (2*a*b_e*nu*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 - 2*a*b_e*nu*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - 2*a*b_e*p0*z*carlson_rd(a**2 + z**2, z**2, b_e**2 + z**2)/3 + 2*a*b_e*p0*z*carlson_rd(b_e**2 + z**2, z**2, a**2 + z**2)/3 - a*b_e*p0*(2*nu - 1)/(sqrt(b_e**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(sqrt(a**2 + z**2)*(sqrt(a**2 + z**2) + sqrt(b_e**2 + z**2))))**2/2))', ''),
+    ('ellipse_stress_cubic_lam', '(5.31)', 'ellipse_stress', 'lam_e*(lam_e - w1_e)*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e)*(b_e**2 + lam_e)', ''),
+    ('ellipse_stress_cubic_lam_slope', '(5.31)', 'ellipse_stress', 'lam_e*(lam_e - w1_e) + lam_e*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e) - z**2*(b_e**2 + lam_e) + (lam_e - w1_e)*(d_e + lam_e - w1_e)', ''),
+    ('ellipse_stress_cubic_q', '(5.31)', 'ellipse_stress', 'q_e*(d_e + q_e)*(q_e + w1_e) - z**2*(q_e + w1_a)*(q_e + w1_b)', ''),
+    ('ellipse_stress_cubic_q_slope', '(5.31)', 'ellipse_stress', 'q_e*(d_e + q_e) + q_e*(q_e + w1_e) - z**2*(q_e + w1_a) - z**2*(q_e + w1_b) + (d_e + q_e)*(q_e + w1_e)', ''),
+    ('ellipse_stress_d', '(5.31)', 'ellipse_stress', 'sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)', ''),
+    ('ellipse_stress_e_sq', '(5.31)', 'ellipse_stress', 'q_e*(d_e + q_e)/((a**2 + lam_e)*(b_e**2 + lam_e))', ''),
+    ('ellipse_stress_jxx_integrand', '(5.31)', 'ellipse_stress', '-2*(-d_e*v_q**2 - v_q**4 + v_q**2*x**2 + w1_b*x**2)/(sqrt(d_e + v_q**2)*(v_q**2 + w1_a)**2*(v_q**2 + w1_b))', ''),
+    ('ellipse_stress_jxy_integrand', '(5.31)', 'ellipse_stress', '-2*x*y/(sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b))', ''),
+    ('ellipse_stress_jyy_integrand', '(5.31)', 'ellipse_stress', '-2*(-d_e*v_q**2 - v_q**4 + v_q**2*y**2 + w1_a*y**2)/(sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b)**2)', ''),
+    ('ellipse_stress_sigma_xx', '(5.31), (5.41)-(5.46)', 'ellipse_stress', 'I_x*a*b_e*e_c*sqrt(lam_e)*p0 + I_y*a*b_e*e_c*sqrt(lam_e)*nu*p0 + J_xx*a*b_e*p0*(2*nu - 1)/2 - a*b_e*e_c*p0*(lam_e*x**2 + 2*nu*(a**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/((a**2 + lam_e)**(5/2)*sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))', ''),
+    ('ellipse_stress_sigma_yy', '(5.31), (5.41)-(5.46)', 'ellipse_stress', 'I_x*a*b_e*e_c*sqrt(lam_e)*nu*p0 + I_y*a*b_e*e_c*sqrt(lam_e)*p0 + J_yy*a*b_e*p0*(2*nu - 1)/2 - a*b_e*e_c*p0*(lam_e*y**2 + 2*nu*(b_e**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/(sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(5/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))', ''),
+    ('ellipse_stress_sigma_zz', '(5.31), (5.41)-(5.46)', 'ellipse_stress', '-a*b_e*e_c**3*p0/(sqrt(a**2 + lam_e)*sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))', ''),
+    ('ellipse_stress_tau_xy', '(5.31), (5.41)-(5.46)', 'ellipse_stress', 'J_xy*a*b_e*p0*(2*nu - 1)/2 - a*b_e*e_c*lam_e*p0*x*y/((a**2 + lam_e)**(3/2)*(b_e**2 + lam_e)**(3/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))', ''),
+    ('ellipse_stress_tau_xz', '(5.31), (5.41)-(5.46)', 'ellipse_stress', '-a*b_e*e_c**2*sqrt(lam_e)*p0*x/((a**2 + lam_e)**(3/2)*sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))', ''),
+    ('ellipse_stress_tau_yz', '(5.31), (5.41)-(5.46)', 'ellipse_stress', '-a*b_e*e_c**2*sqrt(lam_e)*p0*y/(sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(3/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))', ''),
+    ('ellipse_stress_w1', '(5.31)', 'ellipse_stress', 'Piecewise((-a**2/2 - b_e**2/2 + x**2/2 + y**2/2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)/2, a**2 + b_e**2 - x**2 - y**2 <= 0), ((-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)), True))', ''),
+    ('ellipse_stress_w1_a', '(5.31)', 'ellipse_stress', 'x**2/2 + y**2/2 + (a - b_e)*(a + b_e)/2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)/2', ''),
+    ('ellipse_stress_w1_b', '(5.31)', 'ellipse_stress', 'Piecewise((-a**2/2 + b_e**2/2 + x**2/2 + y**2/2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)/2, -a**2 + b_e**2 + x**2 + y**2 >= 0), (2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)), True))', ''),
     ('fit_cone_force', '(5.40), fit model', 'fit', '2*E_star*Max(0, -z_0 + z_p)**2/(pi*tan(theta)) + F_0 + s_0*z_p', ''),
     ('fit_cone_force_dE', '(5.40), fit model', 'fit', '2*Max(0, -z_0 + z_p)**2/(pi*tan(theta))', ''),
     ('fit_cone_force_dz0', '(5.40), fit model', 'fit', '-4*E_star*Heaviside(-z_0 + z_p, 0)*Max(0, -z_0 + z_p)/(pi*tan(theta))', ''),
@@ -2831,6 +2889,773 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
     import scipy.special
 
     return (1/2)*numpy.sqrt(2)*numpy.pi**(3/2)*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt(scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))/((1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 1/2, 2, 1 - t_ba**2) + (1/4)*numpy.pi*scipy.special.hyp2f1(1/2, 3/2, 2, 1 - t_ba**2))**(3/2)
+
+
+def ellipse_stress_I_x(a, b_e, lam_e):
+    """I_x [m^-3] = int_lam^inf dw/((a^2 + w) Delta(w)) as Carlson's (2/3) R_D.
+
+    Chapter: (5.31). Derived from: w = lam + t in Carlson's definition of R_D.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    import scipy.special
+
+    return (2/3)*scipy.special.elliprd(b_e**2 + lam_e, lam_e, a**2 + lam_e)
+
+
+def ellipse_stress_I_y(a, b_e, lam_e):
+    """I_y [m^-3] = int_lam^inf dw/((b^2 + w) Delta(w)) as Carlson's (2/3) R_D.
+
+    Chapter: (5.31). Derived from: w = lam + t in Carlson's definition of R_D.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    import scipy.special
+
+    return (2/3)*scipy.special.elliprd(a**2 + lam_e, lam_e, b_e**2 + lam_e)
+
+
+def ellipse_stress_axis_shear_x(a, b_e, nu, p0, z):
+    """Principal shear (sigma_xx - sigma_zz)/2 [Pa] on the axis of an elliptical Hertz contact.
+
+    Chapter: (5.31), (5.50). Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return (1/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (1/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + (1/2)*a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + (1/2)*a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))
+
+
+def ellipse_stress_axis_shear_x_slope(a, b_e, nu, p0, z):
+    """D/dz of the principal shear (sigma_xx - sigma_zz)/2 [Pa/m] on the axis of an elliptical Hertz contact; its root is the depth of the maximum.
+
+    Chapter: (5.31), (5.50). Derived from: the chain rule with dI/dz from the lower limit
+    lam = z^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return a*b_e*nu*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) + (1/3)*a*b_e*nu*p0*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 1/2*a*b_e*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - 1/2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(3/2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - 3/2*a*b_e*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) + (1/3)*a*b_e*p0*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + (1/2)*a*b_e*p0*(2*nu - 1)*(-z/numpy.sqrt(b_e**2 + z**2) - z/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))**2)
+
+
+def ellipse_stress_axis_shear_y(a, b_e, nu, p0, z):
+    """Principal shear (sigma_yy - sigma_zz)/2 [Pa] on the axis of an elliptical Hertz contact.
+
+    Chapter: (5.31), (5.50). Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return (1/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (1/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (1/2)*a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + (1/2)*a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))
+
+
+def ellipse_stress_axis_shear_y_slope(a, b_e, nu, p0, z):
+    """D/dz of the principal shear (sigma_yy - sigma_zz)/2 [Pa/m] on the axis of an elliptical Hertz contact; its root is the depth of the maximum.
+
+    Chapter: (5.31), (5.50). Derived from: the chain rule with dI/dz from the lower limit
+    lam = z^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return a*b_e*nu*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) + (1/3)*a*b_e*nu*p0*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 1/2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(3/2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - 3/2*a*b_e*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - 1/2*a*b_e*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) + (1/3)*a*b_e*p0*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (1/2)*a*b_e*p0*(2*nu - 1)*(-z/numpy.sqrt(b_e**2 + z**2) - z/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))**2)
+
+
+def ellipse_stress_axis_sigma_xx(a, b_e, nu, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis x = y = 0 under the elliptical Hertz pressure (semi-axes a along x, b along y).
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: Boussinesq (5.41)-(5.46) superposed over
+    (5.31) in Love's form, on the axis.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return (2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2)))
+
+
+def ellipse_stress_axis_sigma_yy(a, b_e, nu, p0, z):
+    """Normal stress sigma_yy [Pa] on the axis x = y = 0 under the elliptical Hertz pressure (semi-axes a along x, b along y).
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: Boussinesq (5.41)-(5.46) superposed over
+    (5.31) in Love's form, on the axis.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return (2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2)))
+
+
+def ellipse_stress_axis_sigma_zz(a, b_e, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis x = y = 0 under the elliptical Hertz pressure (semi-axes a along x, b along y).
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: Boussinesq (5.41)-(5.46) superposed over
+    (5.31) in Love's form, on the axis.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    return -a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))
+
+
+def ellipse_stress_axis_von_mises(a, b_e, nu, p0, z):
+    """Von Mises stress (5.50) [Pa] on the axis of an elliptical Hertz contact.
+
+    Chapter: (5.31), (5.50). Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return numpy.sqrt((1/2)*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))))**2)
+
+
+def ellipse_stress_axis_von_mises_slope(a, b_e, nu, p0, z):
+    """D/dz of the von Mises stress (5.50) [Pa/m] on the axis of an elliptical Hertz contact; its root is the depth of the maximum.
+
+    Chapter: (5.31), (5.50). Derived from: the chain rule with dI/dz from the lower limit
+    lam = z^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : float or ndarray
+        depth below the surface [m]
+    """
+    import scipy.special
+
+    return ((1/4)*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))*(-4*a*b_e*nu*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - 4*a*b_e*nu*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) - 4/3*a*b_e*nu*p0*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) + 2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(3/2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + 2*a*b_e*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) - 4/3*a*b_e*p0*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*p0*(2*nu - 1)*(-z/numpy.sqrt(b_e**2 + z**2) - z/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))**2)) + (1/4)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))*(4*a*b_e*nu*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) + 4*a*b_e*nu*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) + (4/3)*a*b_e*nu*p0*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(3/2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - 2*a*b_e*p0*z/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)) - 2*a*b_e*p0*z/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)) + (4/3)*a*b_e*p0*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*p0*(2*nu - 1)*(-z/numpy.sqrt(b_e**2 + z**2) - z/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))**2)) + (1/4)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))))*((4/3)*a*b_e*nu*p0*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 4/3*a*b_e*nu*p0*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + 2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(3/2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - 2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(3/2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - 4/3*a*b_e*p0*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (4/3)*a*b_e*p0*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*p0*(2*nu - 1)*(-z/numpy.sqrt(b_e**2 + z**2) - z/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))**2) + 2*a*b_e*p0*(2*nu - 1)*(-z/numpy.sqrt(b_e**2 + z**2) - z/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))**2)))/numpy.sqrt((1/2)*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))))**2) - 2*(-1/2*a*b_e*nu*p0*z*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))) + (1/2)*a*b_e*p0*z*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))) + (1/4)*(2*a*b_e*nu*p0*z - 2*a*b_e*p0*z)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2)))))/(numpy.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(3/2)*numpy.sqrt((1/2)*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))))**2)) - 2*((1/2)*a*b_e*nu*p0*z*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))) - 1/2*a*b_e*p0*z*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))) + (1/4)*(-2*a*b_e*nu*p0*z + 2*a*b_e*p0*z)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2)))))/((a**2 + z**2)**(3/2)*numpy.sqrt(b_e**2 + z**2)*numpy.sqrt((1/2)*(-2/3*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) - 2/3*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) - a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2)))**2 + (1/2)*((2/3)*a*b_e*nu*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2/3*a*b_e*nu*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2/3*a*b_e*p0*z*scipy.special.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (2/3)*a*b_e*p0*z*scipy.special.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(numpy.sqrt(b_e**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(numpy.sqrt(a**2 + z**2)*(numpy.sqrt(a**2 + z**2) + numpy.sqrt(b_e**2 + z**2))))**2))
+
+
+def ellipse_stress_cubic_lam(a, b_e, z, w1_e, d_e, lam_e):
+    """Lam P2(lam) - z^2 (a^2 + lam)(b^2 + lam) [m^6], zero at lam.
+
+    Chapter: (5.31). Derived from: g(lam) = 0 times lam (a^2 + lam)(b^2 + lam).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    z : float or ndarray
+        depth below the surface [m]
+    w1_e : float or ndarray
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    return lam_e*(lam_e - w1_e)*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e)*(b_e**2 + lam_e)
+
+
+def ellipse_stress_cubic_lam_slope(a, b_e, z, w1_e, d_e, lam_e):
+    """D/dlam of ellipse_stress_cubic_lam [m^4].
+
+    Chapter: (5.31). Derived from: its derivative.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    z : float or ndarray
+        depth below the surface [m]
+    w1_e : float or ndarray
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    return lam_e*(lam_e - w1_e) + lam_e*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e) - z**2*(b_e**2 + lam_e) + (lam_e - w1_e)*(d_e + lam_e - w1_e)
+
+
+def ellipse_stress_cubic_q(z, w1_e, w1_a, w1_b, d_e, q_e):
+    """The same cubic [m^6] in q = lam - w1 (accurate where lam is close to w1 >= 0).
+
+    Chapter: (5.31). Derived from: lam = w1 + q.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    z : float or ndarray
+        depth below the surface [m]
+    w1_e : float or ndarray
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    w1_a : float or ndarray
+        a^2 + w1 >= 0 [m^2]
+    w1_b : float or ndarray
+        b^2 + w1 >= 0 [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    q_e : float or ndarray
+        lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
+    """
+    return q_e*(d_e + q_e)*(q_e + w1_e) - z**2*(q_e + w1_a)*(q_e + w1_b)
+
+
+def ellipse_stress_cubic_q_slope(z, w1_e, w1_a, w1_b, d_e, q_e):
+    """D/dq of ellipse_stress_cubic_q [m^4].
+
+    Chapter: (5.31). Derived from: its derivative.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    z : float or ndarray
+        depth below the surface [m]
+    w1_e : float or ndarray
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    w1_a : float or ndarray
+        a^2 + w1 >= 0 [m^2]
+    w1_b : float or ndarray
+        b^2 + w1 >= 0 [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    q_e : float or ndarray
+        lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
+    """
+    return q_e*(d_e + q_e) + q_e*(q_e + w1_e) - z**2*(q_e + w1_a) - z**2*(q_e + w1_b) + (d_e + q_e)*(q_e + w1_e)
+
+
+def ellipse_stress_d(a, b_e, x, y):
+    """W1 - w2 [m^2] >= 0, the difference of the roots of P2.
+
+    Chapter: (5.31). Derived from: the discriminant of P2 as a sum of squares.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)
+
+
+def ellipse_stress_e_sq(a, b_e, lam_e, q_e, d_e):
+    """E^2 = z^2/lam [1], finite on the surface.
+
+    Chapter: (5.31). Derived from: g(lam) = 0.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    q_e : float or ndarray
+        lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    """
+    return q_e*(d_e + q_e)/((a**2 + lam_e)*(b_e**2 + lam_e))
+
+
+def ellipse_stress_jxx_integrand(x, w1_a, w1_b, d_e, v_q):
+    """Integrand [m^-3] in v of J_xx (H1_xx of the elliptical pressure), w = w1 + v^2, v >= (lam - w1)^(1/2).
+
+    Chapter: (5.31). Derived from: d/dx_j of H1_x = 2k x int (zeta_w - z) dw/((a^2 + w)
+    Delta).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    x : float or ndarray
+        coordinate [m]
+    w1_a : float or ndarray
+        a^2 + w1 >= 0 [m^2]
+    w1_b : float or ndarray
+        b^2 + w1 >= 0 [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    v_q : float or ndarray
+        integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
+    """
+    return -2*(-d_e*v_q**2 - v_q**4 + v_q**2*x**2 + w1_b*x**2)/(numpy.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)**2*(v_q**2 + w1_b))
+
+
+def ellipse_stress_jxy_integrand(x, y, w1_a, w1_b, d_e, v_q):
+    """Integrand [m^-3] in v of J_xy (H1_xy of the elliptical pressure), w = w1 + v^2, v >= (lam - w1)^(1/2).
+
+    Chapter: (5.31). Derived from: d/dx_j of H1_x = 2k x int (zeta_w - z) dw/((a^2 + w)
+    Delta).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    w1_a : float or ndarray
+        a^2 + w1 >= 0 [m^2]
+    w1_b : float or ndarray
+        b^2 + w1 >= 0 [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    v_q : float or ndarray
+        integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
+    """
+    return -2*x*y/(numpy.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b))
+
+
+def ellipse_stress_jyy_integrand(y, w1_a, w1_b, d_e, v_q):
+    """Integrand [m^-3] in v of J_yy (H1_yy of the elliptical pressure), w = w1 + v^2, v >= (lam - w1)^(1/2).
+
+    Chapter: (5.31). Derived from: d/dx_j of H1_x = 2k x int (zeta_w - z) dw/((a^2 + w)
+    Delta).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    y : float or ndarray
+        coordinate [m]
+    w1_a : float or ndarray
+        a^2 + w1 >= 0 [m^2]
+    w1_b : float or ndarray
+        b^2 + w1 >= 0 [m^2]
+    d_e : float or ndarray
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    v_q : float or ndarray
+        integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
+    """
+    return -2*(-d_e*v_q**2 - v_q**4 + v_q**2*y**2 + w1_a*y**2)/(numpy.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b)**2)
+
+
+def ellipse_stress_sigma_xx(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_xx):
+    """Stress sigma_xx [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : float or ndarray
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    I_x : float or ndarray
+        integral over w > lam of dw/((a^2 + w) Delta(w)), Delta = ((a^2 + w)(b^2 + w) w)^(1/2) [m^-3]
+    I_y : float or ndarray
+        integral over w > lam of dw/((b^2 + w) Delta(w)) [m^-3]
+    J_xx : float or ndarray
+        integral over v of the H_xx integrand (ellipse_stress_jxx_integrand) [m^-2]
+    """
+    return I_x*a*b_e*e_c*numpy.sqrt(lam_e)*p0 + I_y*a*b_e*e_c*numpy.sqrt(lam_e)*nu*p0 + (1/2)*J_xx*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*x**2 + 2*nu*(a**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/((a**2 + lam_e)**(5/2)*numpy.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_sigma_yy(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_yy):
+    """Stress sigma_yy [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : float or ndarray
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    I_x : float or ndarray
+        integral over w > lam of dw/((a^2 + w) Delta(w)), Delta = ((a^2 + w)(b^2 + w) w)^(1/2) [m^-3]
+    I_y : float or ndarray
+        integral over w > lam of dw/((b^2 + w) Delta(w)) [m^-3]
+    J_yy : float or ndarray
+        integral over v of the H_yy integrand (ellipse_stress_jyy_integrand) [m^-2]
+    """
+    return I_x*a*b_e*e_c*numpy.sqrt(lam_e)*nu*p0 + I_y*a*b_e*e_c*numpy.sqrt(lam_e)*p0 + (1/2)*J_yy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*y**2 + 2*nu*(b_e**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/(numpy.sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(5/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_sigma_zz(a, b_e, p0, x, y, lam_e, e_c):
+    """Stress sigma_zz [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : float or ndarray
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    """
+    return -a*b_e*e_c**3*p0/(numpy.sqrt(a**2 + lam_e)*numpy.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_tau_xy(a, b_e, nu, p0, x, y, lam_e, e_c, J_xy):
+    """Stress tau_xy [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : float or ndarray
+        Poisson's ratio [1]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : float or ndarray
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    J_xy : float or ndarray
+        integral over v of the H_xy integrand (ellipse_stress_jxy_integrand) [m^-2]
+    """
+    return (1/2)*J_xy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*lam_e*p0*x*y/((a**2 + lam_e)**(3/2)*(b_e**2 + lam_e)**(3/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_tau_xz(a, b_e, p0, x, y, lam_e, e_c):
+    """Stress tau_xz [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : float or ndarray
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    """
+    return -a*b_e*e_c**2*numpy.sqrt(lam_e)*p0*x/((a**2 + lam_e)**(3/2)*numpy.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_tau_yz(a, b_e, p0, x, y, lam_e, e_c):
+    """Stress tau_yz [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : float or ndarray
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    lam_e : float or ndarray
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : float or ndarray
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    """
+    return -a*b_e*e_c**2*numpy.sqrt(lam_e)*p0*y/(numpy.sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(3/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_w1(a, b_e, x, y):
+    """Largest root w1 [m^2] of the surface quadratic P2 at (x, y) (< 0 inside the contact ellipse, > 0 outside).
+
+    Chapter: (5.31). Derived from: P2 = w^2 + beta w + gamma.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return numpy.select([numpy.less_equal(a**2 + b_e**2 - x**2 - y**2, 0),True], [-1/2*a**2 - 1/2*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),(-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
+
+
+def ellipse_stress_w1_a(a, b_e, x, y):
+    """A^2 + w1 [m^2] >= 0.
+
+    Chapter: (5.31). Derived from: P2 shifted by a^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return (1/2)*x**2 + (1/2)*y**2 + (1/2)*(a - b_e)*(a + b_e) + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)
+
+
+def ellipse_stress_w1_b(a, b_e, x, y):
+    """B^2 + w1 [m^2] >= 0.
+
+    Chapter: (5.31). Derived from: P2 shifted by b^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    b_e : float or ndarray
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : float or ndarray
+        coordinate [m]
+    y : float or ndarray
+        coordinate [m]
+    """
+    return numpy.select([numpy.greater_equal(-a**2 + b_e**2 + x**2 + y**2, 0),True], [-1/2*a**2 + (1/2)*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
 
 
 def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):

@@ -105,6 +105,35 @@ __all__ = [
     'ellipse_semi_major',
     'ellipse_semi_minor',
     'ellipse_stiffness',
+    'ellipse_stress_I_x',
+    'ellipse_stress_I_y',
+    'ellipse_stress_axis_shear_x',
+    'ellipse_stress_axis_shear_x_slope',
+    'ellipse_stress_axis_shear_y',
+    'ellipse_stress_axis_shear_y_slope',
+    'ellipse_stress_axis_sigma_xx',
+    'ellipse_stress_axis_sigma_yy',
+    'ellipse_stress_axis_sigma_zz',
+    'ellipse_stress_axis_von_mises',
+    'ellipse_stress_axis_von_mises_slope',
+    'ellipse_stress_cubic_lam',
+    'ellipse_stress_cubic_lam_slope',
+    'ellipse_stress_cubic_q',
+    'ellipse_stress_cubic_q_slope',
+    'ellipse_stress_d',
+    'ellipse_stress_e_sq',
+    'ellipse_stress_jxx_integrand',
+    'ellipse_stress_jxy_integrand',
+    'ellipse_stress_jyy_integrand',
+    'ellipse_stress_sigma_xx',
+    'ellipse_stress_sigma_yy',
+    'ellipse_stress_sigma_zz',
+    'ellipse_stress_tau_xy',
+    'ellipse_stress_tau_xz',
+    'ellipse_stress_tau_yz',
+    'ellipse_stress_w1',
+    'ellipse_stress_w1_a',
+    'ellipse_stress_w1_b',
     'fit_cone_force',
     'fit_cone_force_dE',
     'fit_cone_force_dz0',
@@ -2514,6 +2543,753 @@ def ellipse_stiffness(E_star, R1, d, t_ba):
         axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
     """
     return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*E_star*mpmath.sqrt(R1)*mpmath.sqrt(d)*mpmath.sqrt(mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))/((mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(1)/mpmath.mpf(2)), (2,), 1 - t_ba**2) + (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (2,), 1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def ellipse_stress_I_x(a, b_e, lam_e):
+    """I_x [m^-3] = int_lam^inf dw/((a^2 + w) Delta(w)) as Carlson's (2/3) R_D.
+
+    Chapter: (5.31). Derived from: w = lam + t in Carlson's definition of R_D.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(3))*mpmath.elliprd(b_e**2 + lam_e, lam_e, a**2 + lam_e)
+
+
+def ellipse_stress_I_y(a, b_e, lam_e):
+    """I_y [m^-3] = int_lam^inf dw/((b^2 + w) Delta(w)) as Carlson's (2/3) R_D.
+
+    Chapter: (5.31). Derived from: w = lam + t in Carlson's definition of R_D.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(3))*mpmath.elliprd(a**2 + lam_e, lam_e, b_e**2 + lam_e)
+
+
+def ellipse_stress_axis_shear_x(a, b_e, nu, p0, z):
+    """Principal shear (sigma_xx - sigma_zz)/2 [Pa] on the axis of an elliptical Hertz contact.
+
+    Chapter: (5.31), (5.50). Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))
+
+
+def ellipse_stress_axis_shear_x_slope(a, b_e, nu, p0, z):
+    """D/dz of the principal shear (sigma_xx - sigma_zz)/2 [Pa/m] on the axis of an elliptical Hertz contact; its root is the depth of the maximum.
+
+    Chapter: (5.31), (5.50). Derived from: the chain rule with dI/dz from the lower limit
+    lam = z^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return a*b_e*nu*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*nu*p0*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*b_e*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) - mpmath.mpf(1)/mpmath.mpf(2)*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - mpmath.mpf(3)/mpmath.mpf(2)*a*b_e*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*p0*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0*(2*nu - 1)*(-z/mpmath.sqrt(b_e**2 + z**2) - z/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))**2)
+
+
+def ellipse_stress_axis_shear_y(a, b_e, nu, p0, z):
+    """Principal shear (sigma_yy - sigma_zz)/2 [Pa] on the axis of an elliptical Hertz contact.
+
+    Chapter: (5.31), (5.50). Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))
+
+
+def ellipse_stress_axis_shear_y_slope(a, b_e, nu, p0, z):
+    """D/dz of the principal shear (sigma_yy - sigma_zz)/2 [Pa/m] on the axis of an elliptical Hertz contact; its root is the depth of the maximum.
+
+    Chapter: (5.31), (5.50). Derived from: the chain rule with dI/dz from the lower limit
+    lam = z^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return a*b_e*nu*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) + (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*nu*p0*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(1)/mpmath.mpf(2)*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - mpmath.mpf(3)/mpmath.mpf(2)*a*b_e*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) - mpmath.mpf(1)/mpmath.mpf(2)*a*b_e*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(1)/mpmath.mpf(3))*a*b_e*p0*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0*(2*nu - 1)*(-z/mpmath.sqrt(b_e**2 + z**2) - z/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))**2)
+
+
+def ellipse_stress_axis_sigma_xx(a, b_e, nu, p0, z):
+    """Normal stress sigma_xx [Pa] on the axis x = y = 0 under the elliptical Hertz pressure (semi-axes a along x, b along y).
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: Boussinesq (5.41)-(5.46) superposed over
+    (5.31) in Love's form, on the axis.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2)))
+
+
+def ellipse_stress_axis_sigma_yy(a, b_e, nu, p0, z):
+    """Normal stress sigma_yy [Pa] on the axis x = y = 0 under the elliptical Hertz pressure (semi-axes a along x, b along y).
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: Boussinesq (5.41)-(5.46) superposed over
+    (5.31) in Love's form, on the axis.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2)))
+
+
+def ellipse_stress_axis_sigma_zz(a, b_e, p0, z):
+    """Normal stress sigma_zz [Pa] on the axis x = y = 0 under the elliptical Hertz pressure (semi-axes a along x, b along y).
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: Boussinesq (5.41)-(5.46) superposed over
+    (5.31) in Love's form, on the axis.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_stresses_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return -a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))
+
+
+def ellipse_stress_axis_von_mises(a, b_e, nu, p0, z):
+    """Von Mises stress (5.50) [Pa] on the axis of an elliptical Hertz contact.
+
+    Chapter: (5.31), (5.50). Derived from: the axis stresses.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))))**2)
+
+
+def ellipse_stress_axis_von_mises_slope(a, b_e, nu, p0, z):
+    """D/dz of the von Mises stress (5.50) [Pa/m] on the axis of an elliptical Hertz contact; its root is the depth of the maximum.
+
+    Chapter: (5.31), (5.50). Derived from: the chain rule with dI/dz from the lower limit
+    lam = z^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_axis_maxima_at_30_digits``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    z : mpmath.mpf
+        depth below the surface [m]
+    """
+    return ((mpmath.mpf(1)/mpmath.mpf(4))*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))*(-4*a*b_e*nu*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) - 4*a*b_e*nu*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(4)/mpmath.mpf(3)*a*b_e*nu*p0*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) + 2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + 2*a*b_e*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(4)/mpmath.mpf(3)*a*b_e*p0*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*p0*(2*nu - 1)*(-z/mpmath.sqrt(b_e**2 + z**2) - z/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))**2)) + (mpmath.mpf(1)/mpmath.mpf(4))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))*(4*a*b_e*nu*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) + 4*a*b_e*nu*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(4)/mpmath.mpf(3))*a*b_e*nu*p0*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - 2*a*b_e*p0*z/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))) - 2*a*b_e*p0*z/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(4)/mpmath.mpf(3))*a*b_e*p0*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*p0*(2*nu - 1)*(-z/mpmath.sqrt(b_e**2 + z**2) - z/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))**2)) + (mpmath.mpf(1)/mpmath.mpf(4))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))))*((mpmath.mpf(4)/mpmath.mpf(3))*a*b_e*nu*p0*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(4)/mpmath.mpf(3)*a*b_e*nu*p0*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) + 2*a*b_e*p0*z*(2*nu - 1)/((b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - 2*a*b_e*p0*z*(2*nu - 1)/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - mpmath.mpf(4)/mpmath.mpf(3)*a*b_e*p0*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(4)/mpmath.mpf(3))*a*b_e*p0*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*p0*(2*nu - 1)*(-z/mpmath.sqrt(b_e**2 + z**2) - z/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))**2) + 2*a*b_e*p0*(2*nu - 1)*(-z/mpmath.sqrt(b_e**2 + z**2) - z/mpmath.sqrt(a**2 + z**2))/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))**2)))/mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))))**2) - 2*(-mpmath.mpf(1)/mpmath.mpf(2)*a*b_e*nu*p0*z*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))) + (mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*p0*z*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))) + (mpmath.mpf(1)/mpmath.mpf(4))*(2*a*b_e*nu*p0*z - 2*a*b_e*p0*z)*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2)))))/(mpmath.sqrt(a**2 + z**2)*(b_e**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))))**2)) - 2*((mpmath.mpf(1)/mpmath.mpf(2))*a*b_e*nu*p0*z*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))) - mpmath.mpf(1)/mpmath.mpf(2)*a*b_e*p0*z*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2))) + (mpmath.mpf(1)/mpmath.mpf(4))*(-2*a*b_e*nu*p0*z + 2*a*b_e*p0*z)*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2)))))/((a**2 + z**2)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + z**2)*mpmath.sqrt((mpmath.mpf(1)/mpmath.mpf(2))*(-mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) - a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - 2*a*b_e*nu*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0/(mpmath.sqrt(a**2 + z**2)*mpmath.sqrt(b_e**2 + z**2)))**2 + (mpmath.mpf(1)/mpmath.mpf(2))*((mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*nu*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*nu*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - mpmath.mpf(2)/mpmath.mpf(3)*a*b_e*p0*z*mpmath.elliprd(a**2 + z**2, z**2, b_e**2 + z**2) + (mpmath.mpf(2)/mpmath.mpf(3))*a*b_e*p0*z*mpmath.elliprd(b_e**2 + z**2, z**2, a**2 + z**2) - a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(b_e**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))) + a*b_e*p0*(2*nu - 1)/(mpmath.sqrt(a**2 + z**2)*(mpmath.sqrt(a**2 + z**2) + mpmath.sqrt(b_e**2 + z**2))))**2))
+
+
+def ellipse_stress_cubic_lam(a, b_e, z, w1_e, d_e, lam_e):
+    """Lam P2(lam) - z^2 (a^2 + lam)(b^2 + lam) [m^6], zero at lam.
+
+    Chapter: (5.31). Derived from: g(lam) = 0 times lam (a^2 + lam)(b^2 + lam).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    w1_e : mpmath.mpf
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    return lam_e*(lam_e - w1_e)*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e)*(b_e**2 + lam_e)
+
+
+def ellipse_stress_cubic_lam_slope(a, b_e, z, w1_e, d_e, lam_e):
+    """D/dlam of ellipse_stress_cubic_lam [m^4].
+
+    Chapter: (5.31). Derived from: its derivative.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    z : mpmath.mpf
+        depth below the surface [m]
+    w1_e : mpmath.mpf
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    """
+    return lam_e*(lam_e - w1_e) + lam_e*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e) - z**2*(b_e**2 + lam_e) + (lam_e - w1_e)*(d_e + lam_e - w1_e)
+
+
+def ellipse_stress_cubic_q(z, w1_e, w1_a, w1_b, d_e, q_e):
+    """The same cubic [m^6] in q = lam - w1 (accurate where lam is close to w1 >= 0).
+
+    Chapter: (5.31). Derived from: lam = w1 + q.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    z : mpmath.mpf
+        depth below the surface [m]
+    w1_e : mpmath.mpf
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    w1_a : mpmath.mpf
+        a^2 + w1 >= 0 [m^2]
+    w1_b : mpmath.mpf
+        b^2 + w1 >= 0 [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    q_e : mpmath.mpf
+        lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
+    """
+    return q_e*(d_e + q_e)*(q_e + w1_e) - z**2*(q_e + w1_a)*(q_e + w1_b)
+
+
+def ellipse_stress_cubic_q_slope(z, w1_e, w1_a, w1_b, d_e, q_e):
+    """D/dq of ellipse_stress_cubic_q [m^4].
+
+    Chapter: (5.31). Derived from: its derivative.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    z : mpmath.mpf
+        depth below the surface [m]
+    w1_e : mpmath.mpf
+        largest root w1 of P2(w) = (a^2 + w)(b^2 + w) - x^2 (b^2 + w) - y^2 (a^2 + w), the confocal ellipse through (x, y) [m^2]
+    w1_a : mpmath.mpf
+        a^2 + w1 >= 0 [m^2]
+    w1_b : mpmath.mpf
+        b^2 + w1 >= 0 [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    q_e : mpmath.mpf
+        lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
+    """
+    return q_e*(d_e + q_e) + q_e*(q_e + w1_e) - z**2*(q_e + w1_a) - z**2*(q_e + w1_b) + (d_e + q_e)*(q_e + w1_e)
+
+
+def ellipse_stress_d(a, b_e, x, y):
+    """W1 - w2 [m^2] >= 0, the difference of the roots of P2.
+
+    Chapter: (5.31). Derived from: the discriminant of P2 as a sum of squares.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)
+
+
+def ellipse_stress_e_sq(a, b_e, lam_e, q_e, d_e):
+    """E^2 = z^2/lam [1], finite on the surface.
+
+    Chapter: (5.31). Derived from: g(lam) = 0.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    q_e : mpmath.mpf
+        lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    """
+    return q_e*(d_e + q_e)/((a**2 + lam_e)*(b_e**2 + lam_e))
+
+
+def ellipse_stress_jxx_integrand(x, w1_a, w1_b, d_e, v_q):
+    """Integrand [m^-3] in v of J_xx (H1_xx of the elliptical pressure), w = w1 + v^2, v >= (lam - w1)^(1/2).
+
+    Chapter: (5.31). Derived from: d/dx_j of H1_x = 2k x int (zeta_w - z) dw/((a^2 + w)
+    Delta).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    x : mpmath.mpf
+        coordinate [m]
+    w1_a : mpmath.mpf
+        a^2 + w1 >= 0 [m^2]
+    w1_b : mpmath.mpf
+        b^2 + w1 >= 0 [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    v_q : mpmath.mpf
+        integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
+    """
+    return -2*(-d_e*v_q**2 - v_q**4 + v_q**2*x**2 + w1_b*x**2)/(mpmath.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)**2*(v_q**2 + w1_b))
+
+
+def ellipse_stress_jxy_integrand(x, y, w1_a, w1_b, d_e, v_q):
+    """Integrand [m^-3] in v of J_xy (H1_xy of the elliptical pressure), w = w1 + v^2, v >= (lam - w1)^(1/2).
+
+    Chapter: (5.31). Derived from: d/dx_j of H1_x = 2k x int (zeta_w - z) dw/((a^2 + w)
+    Delta).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    w1_a : mpmath.mpf
+        a^2 + w1 >= 0 [m^2]
+    w1_b : mpmath.mpf
+        b^2 + w1 >= 0 [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    v_q : mpmath.mpf
+        integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
+    """
+    return -2*x*y/(mpmath.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b))
+
+
+def ellipse_stress_jyy_integrand(y, w1_a, w1_b, d_e, v_q):
+    """Integrand [m^-3] in v of J_yy (H1_yy of the elliptical pressure), w = w1 + v^2, v >= (lam - w1)^(1/2).
+
+    Chapter: (5.31). Derived from: d/dx_j of H1_x = 2k x int (zeta_w - z) dw/((a^2 + w)
+    Delta).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    y : mpmath.mpf
+        coordinate [m]
+    w1_a : mpmath.mpf
+        a^2 + w1 >= 0 [m^2]
+    w1_b : mpmath.mpf
+        b^2 + w1 >= 0 [m^2]
+    d_e : mpmath.mpf
+        w1 - w2 >= 0, the difference of the roots of P2 [m^2]
+    v_q : mpmath.mpf
+        integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
+    """
+    return -2*(-d_e*v_q**2 - v_q**4 + v_q**2*y**2 + w1_a*y**2)/(mpmath.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b)**2)
+
+
+def ellipse_stress_sigma_xx(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_xx):
+    """Stress sigma_xx [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : mpmath.mpf
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    I_x : mpmath.mpf
+        integral over w > lam of dw/((a^2 + w) Delta(w)), Delta = ((a^2 + w)(b^2 + w) w)^(1/2) [m^-3]
+    I_y : mpmath.mpf
+        integral over w > lam of dw/((b^2 + w) Delta(w)) [m^-3]
+    J_xx : mpmath.mpf
+        integral over v of the H_xx integrand (ellipse_stress_jxx_integrand) [m^-2]
+    """
+    return I_x*a*b_e*e_c*mpmath.sqrt(lam_e)*p0 + I_y*a*b_e*e_c*mpmath.sqrt(lam_e)*nu*p0 + (mpmath.mpf(1)/mpmath.mpf(2))*J_xx*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*x**2 + 2*nu*(a**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/((a**2 + lam_e)**(mpmath.mpf(5)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_sigma_yy(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_yy):
+    """Stress sigma_yy [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : mpmath.mpf
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    I_x : mpmath.mpf
+        integral over w > lam of dw/((a^2 + w) Delta(w)), Delta = ((a^2 + w)(b^2 + w) w)^(1/2) [m^-3]
+    I_y : mpmath.mpf
+        integral over w > lam of dw/((b^2 + w) Delta(w)) [m^-3]
+    J_yy : mpmath.mpf
+        integral over v of the H_yy integrand (ellipse_stress_jyy_integrand) [m^-2]
+    """
+    return I_x*a*b_e*e_c*mpmath.sqrt(lam_e)*nu*p0 + I_y*a*b_e*e_c*mpmath.sqrt(lam_e)*p0 + (mpmath.mpf(1)/mpmath.mpf(2))*J_yy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*y**2 + 2*nu*(b_e**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/(mpmath.sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(mpmath.mpf(5)/mpmath.mpf(2))*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_sigma_zz(a, b_e, p0, x, y, lam_e, e_c):
+    """Stress sigma_zz [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : mpmath.mpf
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    """
+    return -a*b_e*e_c**3*p0/(mpmath.sqrt(a**2 + lam_e)*mpmath.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_tau_xy(a, b_e, nu, p0, x, y, lam_e, e_c, J_xy):
+    """Stress tau_xy [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    nu : mpmath.mpf
+        Poisson's ratio [1]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : mpmath.mpf
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    J_xy : mpmath.mpf
+        integral over v of the H_xy integrand (ellipse_stress_jxy_integrand) [m^-2]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*J_xy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*lam_e*p0*x*y/((a**2 + lam_e)**(mpmath.mpf(3)/mpmath.mpf(2))*(b_e**2 + lam_e)**(mpmath.mpf(3)/mpmath.mpf(2))*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_tau_xz(a, b_e, p0, x, y, lam_e, e_c):
+    """Stress tau_xz [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : mpmath.mpf
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    """
+    return -a*b_e*e_c**2*mpmath.sqrt(lam_e)*p0*x/((a**2 + lam_e)**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_tau_yz(a, b_e, p0, x, y, lam_e, e_c):
+    """Stress tau_yz [Pa] at (x, y, z) under the elliptical Hertz pressure, from the ellipsoidal coordinate lam, e = z/lam^(1/2) and the integrals I, J.
+
+    Chapter: (5.31), (5.41)-(5.46). Derived from: psi1 of the ellipse (Johnson 1985, 3.6) in
+    Love's form of Boussinesq, derivatives under the integral sign, z = e lam^(1/2).
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    p0 : mpmath.mpf
+        pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    lam_e : mpmath.mpf
+        ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
+    e_c : mpmath.mpf
+        z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
+    """
+    return -a*b_e*e_c**2*mpmath.sqrt(lam_e)*p0*y/(mpmath.sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(mpmath.mpf(3)/mpmath.mpf(2))*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
+
+
+def ellipse_stress_w1(a, b_e, x, y):
+    """Largest root w1 [m^2] of the surface quadratic P2 at (x, y) (< 0 inside the contact ellipse, > 0 outside).
+
+    Chapter: (5.31). Derived from: P2 = w^2 + beta w + gamma.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return ((-mpmath.mpf(1)/mpmath.mpf(2)*a**2 - mpmath.mpf(1)/mpmath.mpf(2)*b_e**2 + (mpmath.mpf(1)/mpmath.mpf(2))*x**2 + (mpmath.mpf(1)/mpmath.mpf(2))*y**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)) if (a**2 + b_e**2 - x**2 - y**2 <= 0) else ((-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))))
+
+
+def ellipse_stress_w1_a(a, b_e, x, y):
+    """A^2 + w1 [m^2] >= 0.
+
+    Chapter: (5.31). Derived from: P2 shifted by a^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*x**2 + (mpmath.mpf(1)/mpmath.mpf(2))*y**2 + (mpmath.mpf(1)/mpmath.mpf(2))*(a - b_e)*(a + b_e) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)
+
+
+def ellipse_stress_w1_b(a, b_e, x, y):
+    """B^2 + w1 [m^2] >= 0.
+
+    Chapter: (5.31). Derived from: P2 shifted by b^2.
+
+    Derivation: ``hertzmdr.derive.ellipse_stress``. Verified by
+    ``tests/test_ellipse_stress.py::test_field_by_superposition``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    b_e : mpmath.mpf
+        semi-axis b <= a of an elliptical contact, along y (a along x) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    y : mpmath.mpf
+        coordinate [m]
+    """
+    return ((-mpmath.mpf(1)/mpmath.mpf(2)*a**2 + (mpmath.mpf(1)/mpmath.mpf(2))*b_e**2 + (mpmath.mpf(1)/mpmath.mpf(2))*x**2 + (mpmath.mpf(1)/mpmath.mpf(2))*y**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)) if (-a**2 + b_e**2 + x**2 + y**2 >= 0) else (2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))))
 
 
 def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):

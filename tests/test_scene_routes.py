@@ -348,6 +348,12 @@ def doc_of(case, effects):
 
 
 STRESS_GRID = ("max_shear", "von_mises_field", "max_von_mises")
+#: the stress effects of an elliptical contact: routed by the superposition of the derived
+#: point-force field over the exact ellipse's pressure (tests/test_ellipse_stress.py
+#: ``superposed``, 20 digits: 2-D quadrature, a few seconds a point, so they run in the sweep)
+#: (max_orthogonal_shear where the registry has it: the elliptic kind computes it)
+ELLIPSE_STRESS = tuple(e for e in ("axis_stresses", "max_shear", "von_mises_field",
+                                   "max_von_mises", "max_orthogonal_shear") if e in EFFECTS)
 AXI = ("depth", "force", "contact_radius", "mean_pressure", "stiffness", "effective_modulus",
        "pressure_profile", "surface_displacement", "force_depth_curve", "mdr_profile",
        "axis_stresses") + STRESS_GRID
@@ -605,7 +611,8 @@ CASES.update({
                                             gap_radii((0.02, 0.0), (0.02, math.pi / 4))),
                            ("depth", "force", "semi_axes", "max_pressure", "mean_pressure",
                             "stiffness", "effective_modulus", "effective_radius",
-                            "principal_radii", "pressure_profile", "force_depth_curve")),
+                            "principal_radii", "pressure_profile", "force_depth_curve",
+                            *ELLIPSE_STRESS)),
     "elliptic_gaussian": Case([body("cylinder", STEEL, radius=0.02, axis=0.0),
                                body("cylinder", STEEL, radius=0.02, axis=math.pi / 4)],
                               {"force": 300.0}, None,
@@ -613,7 +620,8 @@ CASES.update({
                                                gap_radii((0.02, 0.0), (0.02, math.pi / 4))),
                               ("depth", "force", "semi_axes", "max_pressure", "mean_pressure",
                                "stiffness", "effective_modulus", "effective_radius",
-                               "principal_radii", "pressure_profile", "force_depth_curve"),
+                               "principal_radii", "pressure_profile", "force_depth_curve",
+                               *ELLIPSE_STRESS),
                               extra={"model": {"elliptic": "gaussian"}}),
     "impact": Case([body("sphere", STEEL, radius=0.01), body("flat", STEEL)],
                    {"impact": {"velocity": 1.0, "density": 7800.0}}, None,
@@ -1181,6 +1189,7 @@ BUGS: dict[tuple[str, str], str] = {
 SLOW = {("profile", "axis_stresses"), ("power_law", "max_shear"),
         ("power_law", "max_von_mises"), ("power_law", "max_orthogonal_shear"),
         ("profile", "max_orthogonal_shear")} | {
+    (k, e) for k in ("elliptic_exact", "elliptic_gaussian") for e in ELLIPSE_STRESS} | {
     (k, e) for k in ("cone", "flat_punch", "worn", "profile") for e in STRESS_GRID
     if k == "profile" or e == "von_mises_field"}
 
@@ -1201,6 +1210,50 @@ def pairs():
     return out
 
 
+def check_ellipse_stress(geometry, eff, effect):
+    """The stresses of the exact ellipse (a, b, p0 as the scene reports them, each verified
+    by its own route above) against the superposition at 20 digits, at the reported maxima
+    and at three points of the fields, relative to p0."""
+    from test_ellipse_stress import superposed
+
+    a, b = sorted(geometry["effects"]["semi_axes"]["value"], reverse=True)
+    p0 = geometry["effects"]["max_pressure"]["value"]
+    t = mp.mpf(b) / mp.mpf(a)
+    nu_ = mp.mpf("0.3")
+    tol = eff["rel_error"] + 1e-13  # the superposition to 20 digits; float64 inputs 1e-15
+    v = eff["value"]
+
+    def axis(comp, z):
+        return superposed(comp, nu_, 1, t, 0, 0, mp.mpf(z) / a)
+
+    def vm(x, z):
+        s = {c: superposed(c, nu_, 1, t, mp.mpf(x) / a, 0, mp.mpf(z) / a)
+             for c in ("xx", "yy", "zz", "xz")}
+        return mp.sqrt(((s["xx"] - s["yy"]) ** 2 + (s["yy"] - s["zz"]) ** 2
+                        + (s["zz"] - s["xx"]) ** 2) / 2 + 3 * s["xz"] ** 2)
+
+    with mp.workdps(20):
+        if effect == "axis_stresses":
+            for i in (20, 60, 150):
+                for comp in ("xx", "yy", "zz"):
+                    ref = axis(comp, v["z"][i])
+                    assert abs(v[f"sigma_{comp}"][i] / p0 - float(ref)) < tol
+        elif effect == "max_shear":
+            z = v["depth"]
+            ref = max(axis("yy", z) - axis("zz", z), axis("xx", z) - axis("zz", z)) / 2
+            assert abs(v["value"] / p0 - float(ref)) < tol
+        elif effect == "max_von_mises":
+            assert abs(v["value"] / p0 - float(vm(v["x"], v["z"]))) < tol
+        elif effect == "max_orthogonal_shear":  # |tau_yz| in the plane x = 0
+            ref = superposed("yz", nu_, 1, t, 0, mp.mpf(v["y"]) / a, mp.mpf(v["z"]) / a)
+            assert abs(v["value"] / p0 - float(abs(ref))) < tol
+        else:  # von_mises_field, x-z plane
+            sv = np.asarray(v["sigma_v"])
+            for i, j in ((10, 50), (40, 70), (80, 20)):
+                ref = vm(v["x"][j], v["z"][i])
+                assert abs(sv[i, j] / p0 - float(ref)) < tol
+
+
 @pytest.mark.parametrize("case_id, effect", pairs())
 def test_effect_against_route(case_id, effect):
     case = CASES[case_id]
@@ -1215,6 +1268,10 @@ def test_effect_against_route(case_id, effect):
             return check_impact(case, route, eff, effect)
         if isinstance(route, BEMPolygon) or case_id == "height_map":
             return check_bem(case, route, eff, effect)
+        if case_id.startswith("elliptic") and effect in ELLIPSE_STRESS:
+            exact = {"effects": ["semi_axes", "max_pressure"], "body": case.bodies,
+                     "load": case.load}  # the stresses are the exact ellipse's
+            return check_ellipse_stress(scene.load(exact).run(), eff, effect)
         check = CHECKS[effect]
         if isinstance(route, Line) and effect in LINE_CHECKS:
             check = LINE_CHECKS[effect]

@@ -51,9 +51,11 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
            "x-z plane (Fig. 5.9)", needs=("stress",), field=True),
     Effect("max_von_mises", "{value: Pa, x: m, z: m}", "the largest von Mises stress (5.50) in "
            "the body and where it is", needs=("stress",)),
-    Effect("max_orthogonal_shear", "{value: Pa, x: m, z: m}", "the largest orthogonal shear "
-           "|tau_xz| (line contact) or |tau_rz| (circular contact) in the body and where it is "
-           "(the shear of rolling-contact fatigue)", needs=("stress",)),
+    Effect("max_orthogonal_shear", "{value: Pa, x: m, z: m, y: m, value_xz: Pa, x_xz: m, "
+           "z_xz: m}", "the largest orthogonal shear |tau_xz| (line contact) or |tau_rz| "
+           "(circular contact) in the body and where it is (the shear of rolling-contact "
+           "fatigue); an elliptical contact gives |tau_yz| in the plane x = 0 (value, y, z) "
+           "and |tau_xz| in the plane y = 0 (value_xz, x_xz, z_xz)", needs=("stress",)),
     Effect("mdr_profile", "{x: m, g: m}", "the MDR's one-dimensional profile g(x) (5.52), "
            "Figs. 5.11 and 5.19", field=True),
     Effect("edge_displacement", "m", "surface displacement at the edge of a loaded disc "

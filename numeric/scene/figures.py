@@ -72,12 +72,40 @@ def mdr_profile(value, title, path):
           path)
 
 
+def _axis_stresses_ellipse(value, title, path):
+    """The three normal stresses and tau_1 on the axis of an elliptical contact."""
+    import numpy as np
+
+    from hertzmdr.numeric import plots
+
+    z, zlabel = _scaled(value["z"], "z", "m")
+    keys = ("sigma_xx", "sigma_yy", "sigma_zz", "tau_1")
+    top = max(float(np.max(np.abs(value[k]))) for k in keys)
+    scale, slabel = _scaled([top], "stress", "Pa")
+    f = float(scale[0]) / top
+    plt = plots._pyplot()
+    fig, ax = plt.subplots(figsize=(6.0, 4.2), dpi=120)
+    for k, label in zip(keys, (r"$\sigma_{xx}$ (along a)", r"$\sigma_{yy}$ (along b)",
+                               r"$\sigma_{zz}$", r"$\tau_1$"), strict=True):
+        ax.plot(z, np.asarray(value[k]) * f, label=label)
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set_xlabel(zlabel)
+    ax.set_ylabel(slabel)
+    ax.set_title(f"{title}\nstresses on the axis of the elliptical contact", fontsize=9)
+    ax.legend(loc="lower right", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
 def axis_stresses(value, title, path):
     """Stresses on the axis (the layout of Fig. 5.8), in the scene's units."""
     import numpy as np
 
     from hertzmdr.numeric import plots
 
+    if "sigma_xx" in value and "sigma_rr" not in value:  # an elliptical contact
+        return _axis_stresses_ellipse(value, title, path)
     z, zlabel = _scaled(value["z"], "z", "m")
     top = max(float(np.max(np.abs(value[k]))) for k in ("sigma_zz", "sigma_rr", "tau_1"))
     scale, slabel = _scaled([top], "stress", "Pa")

@@ -11,9 +11,90 @@ import numpy as np
 from hertzmdr.numeric import bodies, ellipse
 from hertzmdr.numeric.scene.accuracy import CLOSED_FORM_RTOL
 from hertzmdr.numeric.scene.kinds.base import Contact, State, Value
+from hertzmdr.numeric.scene.kinds.stresses import StressEffects
 
 #: the tolerance to which tests/test_ellipse.py verifies the exact solution against mpmath
 EXACT_RTOL = 1e-12
+
+#: tests/test_ellipse_stress.py verifies the axis closed forms to 1e-14 p0 against
+#: superposition; the field's quadrature is asked FIELD_RTOL (its estimate is reported); the
+#: axis maxima are Brent roots to 4 ulp (verified to 1e-12 against 40-digit roots), the
+#: orthogonal shear a Nelder-Mead maximum (1e-11 in position, ~1e-15 in value); the field's
+#: quadrature is asked the scene's rtol, at best FIELD_RTOL, and reports its estimate
+AXIS_RTOL, FIELD_RTOL, MAXIMUM_RTOL = 1e-12, 1e-12, 1e-10
+AXIS_POINTS, GRID_POINTS = 201, 101
+
+
+class EllipseStresses:
+    """Stresses under the elliptical Hertz pressure (numeric/ellipse_stress.py): semi-axes
+    a >= b (a along x, the direction of R1), maximum pressure p0; lengths in m, stresses in
+    Pa."""
+
+    ranges = {"axis_stresses": AXIS_RTOL, "von_mises_field": FIELD_RTOL,
+              "max_shear": MAXIMUM_RTOL, "max_von_mises": MAXIMUM_RTOL,
+              "max_orthogonal_shear": MAXIMUM_RTOL}
+
+    def __init__(self, a, b, p0, nu, rtol=FIELD_RTOL):
+        self.a, self.b, self.p0, self.nu = a, b, p0, nu
+        self.rtol = max(rtol, FIELD_RTOL)
+        self.method = ("Boussinesq superposed in Love's form (derive/ellipse_stress.py): "
+                       "Carlson R_D on the axis")
+
+    def axis(self):
+        from hertzmdr.numeric import ellipse_stress as el
+        from hertzmdr.numeric import stress
+
+        z = np.linspace(0.0, 3.0 * self.b, AXIS_POINTS)
+        sxx, syy, szz = el.axis_stresses(z, self.a, self.b, self.p0, self.nu)
+        sigma = np.zeros(z.shape + (3, 3))  # on the axis the stress tensor is diagonal
+        sigma[..., 0, 0], sigma[..., 1, 1], sigma[..., 2, 2] = sxx, syy, szz
+        return Value({"z": z, "sigma_xx": sxx, "sigma_yy": syy, "sigma_zz": szz,
+                      "tau_1": stress.max_shear(sigma)}, self.method, AXIS_RTOL)
+
+    def max_shear(self):
+        from hertzmdr.numeric import ellipse_stress as el
+
+        v, zb, plane = el.max_shear(self.b / self.a, self.nu)
+        return Value({"value": v * self.p0, "depth": zb * self.b},
+                     f"largest (sigma_{plane}{plane} - sigma_zz)/2 on the axis, Brent on the "
+                     "derived slope (R_D)", MAXIMUM_RTOL)
+
+    def field(self):
+        """The von Mises stress in the x-z plane (y = 0) and the y-z plane (x = 0)."""
+        from hertzmdr.numeric import ellipse_stress as el
+
+        z = np.linspace(0.0, 2.0 * self.b, GRID_POINTS)
+        x = np.linspace(-2.0 * self.a, 2.0 * self.a, GRID_POINTS)
+        y = np.linspace(-2.0 * self.b, 2.0 * self.b, GRID_POINTS)
+        X, Z = np.meshgrid(x, z)
+        vx, ex = el.von_mises(X, 0.0 * X, Z, self.a, self.b, self.p0, self.nu,
+                              rtol=self.rtol)
+        Y, Z = np.meshgrid(y, z)
+        vy, ey = el.von_mises(0.0 * Y, Y, Z, self.a, self.b, self.p0, self.nu,
+                              rtol=self.rtol)
+        err = max(float(np.max(ex)), float(np.max(ey))) / max(float(np.max(vx)), 1e-300)
+        return Value({"x": x, "z": z, "sigma_v": vx, "y": y, "sigma_v_yz": vy},
+                     self.method + "; off the axis the ellipsoidal coordinate and "
+                     "double-exponential quadrature, (5.50)", err)
+
+    def max_von_mises(self):
+        from hertzmdr.numeric import ellipse_stress as el
+
+        v, zb = el.max_von_mises(self.b / self.a, self.nu)
+        return Value({"value": v * self.p0, "x": 0.0, "z": zb * self.b},
+                     "largest (5.50) on the axis, Brent on the derived slope (R_D)",
+                     MAXIMUM_RTOL)
+
+    def max_orthogonal_shear(self):
+        from hertzmdr.numeric import ellipse_stress as el
+
+        out = el.max_orthogonal_shear(self.b / self.a)
+        v, yb, zb = out["yz"]
+        vx, xb, zxb = out["xz"]
+        return Value({"value": v * self.p0, "x": 0.0, "y": yb * self.b, "z": zb * self.b,
+                      "value_xz": vx * self.p0, "x_xz": xb * self.b, "z_xz": zxb * self.b},
+                     "largest |tau_yz| (plane x = 0) and |tau_xz| (plane y = 0), algebraic "
+                     "in the ellipsoidal coordinate, Nelder-Mead", MAXIMUM_RTOL)
 
 
 def _deviation(got, exact) -> float:
@@ -33,7 +114,7 @@ class EllipticState(State):
     exact: ellipse.EllipticContact | None = None
 
 
-class EllipticContact(Contact):
+class EllipticContact(StressEffects, Contact):
     kind = "elliptic"
     instead = {"contact_radius": "semi_axes", "half_width": "semi_axes"}
     why_not = {"contact_radius": "the contact is an ellipse, not a circle"}
@@ -63,6 +144,21 @@ class EllipticContact(Contact):
         a, b = float(np.max(c.a)), float(np.max(c.b))
         return {"a/R": max(a / self.R1, b / self.R2),
                 "d/R": float(np.max(st.depth)) / min(self.R1, self.R2)}
+
+    def rtol_ranges(self, effects):
+        out = super().rtol_ranges(effects)
+        return out + [(f"{e} (elliptical stresses)", (EllipseStresses.ranges[e], 1.0))
+                      for e in effects if e in EllipseStresses.ranges]
+
+    def stress_solver(self, st):
+        c = st.contact if st.exact is None else st.exact  # the exact ellipse's stresses
+        a, b = float(np.atleast_1d(c.a)[-1]), float(np.atleast_1d(c.b)[-1])
+        p0 = float(np.atleast_1d(c.max_pressure)[-1])
+        return EllipseStresses(max(a, b), min(a, b), p0, self.materials.stressed.nu,
+                               self.rtol)
+
+    def effect_max_orthogonal_shear(self, solver):
+        return solver.max_orthogonal_shear()
 
     def _solve(self, **load):
         return ellipse.solve(self.R1, self.R2, self.E_star, model=self.model, **load)
