@@ -11,8 +11,9 @@ each ``--module`` is run with the ``--tests`` given after it (or MODULES' test f
 mutmut 3 copies the sources to ``mutants/`` and runs the tests there, choosing a mutant by the
 module's import name. numeric/ installs as ``hertzmdr.numeric`` (package-dir), so every module
 runs in a scratch folder ``build/mutation/<module>/`` that lays the sources out under that name
-(``hertzmdr/numeric`` -> numeric/, a link) beside ``tests`` (a link), with the repository's
-pyproject.toml whose ``[tool.mutmut]`` (the shared settings) gets this module's
+(``hertzmdr/numeric`` -> numeric/, a link) beside ``tests``, ``examples`` and ``docs`` (links,
+copied into ``mutants/``: the scene tests read the example scenes and docs/scenes.md), with the
+repository's pyproject.toml whose ``[tool.mutmut]`` (the shared settings) gets this module's
 ``only_mutate`` and test files. mutmut runs the tests that reach a function with ``-x`` for
 each of its mutants, one worker, under ``nice -n 19``.
 
@@ -41,6 +42,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 NUMERIC = ROOT / "numeric"
 NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
+#: folders besides tests/ that the tests read (the example scenes, docs/scenes.md)
+EXTRA = ("examples", "docs")
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
 
 # the stable closed-form modules, most physics first, each with the test files written for it
@@ -91,7 +94,7 @@ def mutmut_config(module: str, tests: list[str]) -> dict:
     shared = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"].get("mutmut", {})
     target = f"{PACKAGE}/{module}".rstrip("/")
     only = [target if target.endswith(".py") else target + "/*"]
-    return {**shared, "source_paths": [PACKAGE], "only_mutate": only,
+    return {**shared, "source_paths": [PACKAGE], "only_mutate": only, "also_copy": list(EXTRA),
             "pytest_add_cli_args_test_selection": list(tests)}
 
 
@@ -101,7 +104,8 @@ def scratch(module: str, tests: list[str], base: Path) -> Path:
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
     (work / PACKAGE).symlink_to(NUMERIC, target_is_directory=True)
-    (work / "tests").symlink_to(ROOT / "tests", target_is_directory=True)
+    for folder in ("tests", *EXTRA):
+        (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
     text = (ROOT / "pyproject.toml").read_text()
     text = re.sub(r"(?ms)^\[tool\.mutmut\]\n.*?(?=^\[|\Z)", "", text)  # replaced below
     cfg = mutmut_config(module, tests)
@@ -239,6 +243,14 @@ def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Ru
     return run
 
 
+def source_file(mutant: str) -> str:
+    """The file of a mutant under numeric/ (``scene/kinds/axisym.py``), from its name
+    (``hertzmdr.numeric.scene.kinds.axisym.xǁClassǁmethod__mutmut_3``): for a folder's run."""
+    dotted = re.split(r"\.x[\u01c1_]", mutant)[0].removeprefix(PACKAGE.replace("/", ".") + ".")
+    path = dotted.replace(".", "/")
+    return path + ("/__init__.py" if (NUMERIC / path).is_dir() else ".py")
+
+
 def report(runs: list[Run], argv: list[str], total: float, assembled: bool = False) -> str:
     import mutmut
 
@@ -282,7 +294,9 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         lines += [f"### `{r.module}`", ""]
         for s in r.survivors:
             why = s.note if s.note else "**unexplained**"
-            lines.append(f"- line {s.line} ({s.status}): `{s.original}` → `{s.mutant}`: {why}")
+            where = "" if r.module.endswith(".py") else f"`{source_file(s.name)}` "
+            lines.append(f"- {where}line {s.line} ({s.status}): `{s.original}` → `{s.mutant}`:"
+                         f" {why}")
         lines.append("")
     if not any_left:
         lines += ["None: every mutant was killed.", ""]
