@@ -1,0 +1,242 @@
+"""Tests that kill the surviving mutants of numeric/scene/ (docs/mutation_scene.md): each checks
+a line of the scene layer that computes something -- a value, its location, a grid, a unit
+conversion, a validation range, a rel_error -- by a route other than that line, through the
+public scene API unless the line is reachable no other way."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from hertzmdr.numeric import scene
+from hertzmdr.numeric.scene.kinds import stresses
+
+STEEL = {"E": 210e9, "nu": 0.3}
+
+
+def run(bodies, load, effects, **extra):
+    return scene.load({"effects": list(effects), "body": bodies, "load": load, **extra}).run()
+
+
+# -- the stress maxima of a superposed field (kinds/stresses.py) -------------------------------
+
+SAMPLED_R = list(np.linspace(0.0, 1e-3, 30))
+TIPS = {
+    "power_law": {"shape": "power_law", "coefficient": 1e6, "exponent": 3},
+    # a paraboloid R = 10 mm sampled on 30 points: the numerical MDR
+    "sampled": {"shape": "profile", "r": SAMPLED_R, "f": [r * r / 0.02 for r in SAMPLED_R]},
+}
+
+@pytest.mark.parametrize("body, r_s", [
+    ({"shape": "cone", "angle": "80 deg"}, 0.0),                      # the tip
+    ({"shape": "flat_punch", "radius": 1e-3}, 1e-3),                  # the punch's edge r = a
+    ({"shape": "flattened_parabola", "radius": 0.05, "flat_radius": 1e-4}, 1e-4),  # r = b
+])
+def test_unbounded_maxima_sit_at_the_singular_radius(body, r_s):
+    """Under a pressure unbounded at the surface radius r_s the largest stresses are +inf at
+    (x, z) = (r_s, 0) (the surface stress grows like (1 - 2 nu) p there): the location is the
+    singular radius of the shape's closed form, the depth 0."""
+    eff = run([{**body, "rigid": True}, {"shape": "flat", **STEEL}], {"depth": 1e-6},
+              ["max_shear", "max_von_mises"])["effects"]
+    assert eff["max_shear"]["value"] == {"value": math.inf, "depth": 0.0}
+    assert eff["max_von_mises"]["value"] == {"value": math.inf, "x": r_s, "z": 0.0}
+
+
+def test_superposed_maxima_agree_with_their_field(monkeypatch):
+    """The maxima of a superposed field (a power law, whose pressure is bounded) against the
+    von Mises field of the same run and the pointwise bounds sqrt(3) tau <= sigma_v <= 2 tau
+    (tau = (sigma_1 - sigma_3)/2; pure shear and uniaxial stress are the two ends). On a
+    4-point grid instead of GRID_SUPERPOSED's 13 (12 superposed points, not 156: a test of the
+    bookkeeping, not of the superposition, which tests/test_stress.py checks)."""
+    monkeypatch.setattr(stresses, "GRID_SUPERPOSED", 4)
+    eff = run([{**TIPS["power_law"], "rigid": True}, {"shape": "flat", **STEEL}], {"depth": 1e-6},
+              ["max_shear", "max_von_mises", "von_mises_field"])["effects"]
+    field = eff["von_mises_field"]["value"]
+    x, z, sv = np.array(field["x"]), np.array(field["z"]), np.array(field["sigma_v"])
+    assert sv.shape == (3, 7)  # z: 3 points 0 < z <= 2a; x: -2a..2a mirrored from 4 points
+    vm, tau = eff["max_von_mises"]["value"], eff["max_shear"]["value"]
+    # the largest von Mises stress is the field's largest value, where the field has it
+    k = np.unravel_index(np.argmax(sv), sv.shape)
+    assert vm["value"] == sv[k] and vm["z"] == z[k[0]] and vm["x"] == abs(x[k[1]])
+    # sigma_v <= 2 tau at every point: max sigma_v <= 2 max tau <= (2/sqrt 3) max sigma_v
+    assert vm["value"] / 2 <= tau["value"] * (1 + 1e-12)  # 1e-12: rounding of sums of ~1e9 Pa
+    assert tau["value"] <= vm["value"] / math.sqrt(3) * (1 + 1e-12)
+    assert tau["depth"] in z  # located on the grid's depths
+    # both report the plane's estimate plus the pressure's own bound (0 for a closed form;
+    # a numerical MDR's pressure makes the superposition take minutes), as the field does
+    for name in ("max_shear", "max_von_mises"):
+        assert eff[name]["rel_error"] == eff["von_mises_field"]["rel_error"] < 1e-6
+    assert f"spacing {z[1] - z[0]:.3g} m" in eff["max_shear"]["method"]
+    assert "4-point grid" in eff["max_shear"]["method"]
+    assert "4x3 grid" in eff["max_von_mises"]["method"]
+
+
+# -- the grids of the field effects (kinds/base.py, kinds/axisym.py) ---------------------------
+
+#: one scene per way an axisymmetric kind builds its fields: Hertz, a shape's closed form, the
+#: flat punch (g = 0 inside, infinite outside), the numerical MDR of a sampled paraboloid
+AXISYMMETRIC = {
+    "hertz": {"shape": "sphere", "radius": 0.01},
+    "cone": {"shape": "cone", "angle": 0.35},
+    "punch": {"shape": "flat_punch", "radius": 1e-4},
+    "sampled": TIPS["sampled"],
+}
+FIELDS = ["contact_radius", "pressure_profile", "surface_displacement", "mdr_profile",
+          "force_depth_curve"]
+
+
+@pytest.mark.parametrize("key", sorted(AXISYMMETRIC))
+def test_axisymmetric_field_grids(key):
+    """Every field effect of an axisymmetric contact on the grid its docstring gives, in units
+    of the contact radius a that the scene reports: the pressure from 0 (from 1e-3 a for a
+    shape's closed form, whose p may be singular at the axis, as under a cone) to 1.5 a, the
+    displacement to 4 a, g(x) to 1.2 a (the punch's to just inside a, where its g becomes
+    infinite), the force-depth curve from 0 (or its first step) to the load, Hertz's axis
+    stresses from 0 to 3 a; FIELD_POINTS = 201 points each."""
+    d = 2e-6
+    fields = FIELDS + (["axis_stresses"] if key == "hertz" else [])  # closed forms only
+    eff = run([{**AXISYMMETRIC[key], "rigid": True}, {"shape": "flat", **STEEL}], {"depth": d},
+              fields)["effects"]
+    a = eff["contact_radius"]["value"]
+    rel = 1e-15  # linspace's rounding of a * factor
+
+    def grid(values, start, end, n=201):
+        v = np.asarray(values)
+        assert v.shape == (n,)
+        assert v[0] == pytest.approx(start, rel=rel, abs=0.0)
+        assert v[-1] == pytest.approx(end, rel=rel)
+        assert np.allclose(np.diff(v[1:]), (end - v[1]) / (n - 2), rtol=1e-9)  # evenly spaced
+
+    r = eff["pressure_profile"]["value"]["r"]
+    grid(r, 1e-3 * a if key in ("cone", "punch") else 0.0, 1.5 * a)
+    grid(eff["surface_displacement"]["value"]["r"], 0.0, 4.0 * a)
+    g = eff["mdr_profile"]["value"]
+    if key == "punch":
+        grid(g["x"], 0.0, a * (1 - 1e-9))
+        assert not np.any(g["g"])  # g = 0 for |x| < a (Problem 7(a))
+    else:
+        grid(g["x"], 0.0, 1.2 * a)
+        # g(x) = d at x = a (5.55): the grid's point nearest a, by the slope of g there
+        x, gx = np.asarray(g["x"]), np.asarray(g["g"])
+        assert np.interp(a, x, gx) == pytest.approx(d, rel=1e-3)  # 1e-3: linear interpolation
+    curve = eff["force_depth_curve"]["value"]
+    first = 0.0 if key == "hertz" else d / 200  # the closed forms start at their first step
+    grid(curve["depth"], first, d, n=201 if key == "hertz" else 200)
+    if key == "hertz":
+        grid(eff["axis_stresses"]["value"]["z"], 0.0, 3.0 * a)
+
+
+def test_numerical_mdr_mean_pressure_bound():
+    """The numerical MDR's mean pressure F/(pi a^2) adds the bounds of F and a^2: 3 times the
+    state's rel_error (docs/scenes.md, the accuracy table)."""
+    eff = run([{**AXISYMMETRIC["sampled"], "rigid": True}, {"shape": "flat", **STEEL}],
+              {"depth": 2e-6}, ["contact_radius", "mean_pressure"])["effects"]
+    assert eff["contact_radius"]["rel_error"] > 0
+    assert eff["mean_pressure"]["rel_error"] == 3 * eff["contact_radius"]["rel_error"]
+
+
+def test_numerical_mdr_max_pressure_bound():
+    """The numerical MDR's largest pressure reports mdr.Solution.max_pressure's own bound
+    relative to the value, plus the state's rel_error (p scales with the contact radius, whose
+    error that bound leaves out): docs/scenes.md, the accuracy table. Checked against the
+    numerical MDR called directly (numeric/mdr.py)."""
+    from hertzmdr.numeric import mdr
+    from hertzmdr.numeric.scene.accuracy import DEFAULT_RTOL
+
+    E_star = STEEL["E"] / (1 - STEEL["nu"] ** 2)  # (5.26) with a rigid tip
+    tip = TIPS["sampled"]
+    sol = mdr.Profile.from_samples(tip["r"], tip["f"], k=5).solve(
+        E_star=E_star, rtol=DEFAULT_RTOL, depth=2e-6)
+    v, e = sol.max_pressure(return_error=True)
+    eff = run([{**tip, "rigid": True}, {"shape": "flat", **STEEL}], {"depth": 2e-6},
+              ["max_pressure", "contact_radius"])["effects"]
+    assert eff["max_pressure"]["value"] == pytest.approx(v, rel=1e-14)  # the same solve
+    assert eff["contact_radius"]["rel_error"] == sol.rel_error > 0
+    assert eff["max_pressure"]["rel_error"] == pytest.approx(e / v + sol.rel_error, rel=1e-12)
+
+
+# -- what every kind reports beside its values (kinds/*.py, runner.py) ------------------------
+
+#: one scene per kind (two for the elliptical contact's two models), each with every effect it
+#: offers that costs no superposition
+KIND_SCENES = {
+    "hertz": ([{"shape": "sphere", "radius": 0.01, **STEEL}, {"shape": "flat", "rigid": True}],
+              {"depth": 1e-6}, {}),
+    "elliptic": ([{"shape": "ellipsoid", "radii": [0.01, 0.04], **STEEL},
+                  {"shape": "flat", "rigid": True}], {"force": 10.0}, {}),
+    "gaussian": ([{"shape": "ellipsoid", "radii": [0.01, 0.04], **STEEL},
+                  {"shape": "flat", "rigid": True}], {"force": 10.0},
+                 {"model": {"elliptic": "gaussian"}}),
+    "line": ([{"shape": "cylinder", "radius": 0.01, "length": 0.02, **STEEL},
+              {"shape": "flat", "rigid": True}], {"force": 100.0}, {}),
+    "pressure": ([{"shape": "flat", **STEEL}, {"shape": "flat", "rigid": True}],
+                 {"pressure": {"distribution": "hertzian", "p0": 1e8, "radius": 1e-3}}, {}),
+    "cone": ([{**AXISYMMETRIC["cone"], "rigid": True}, {"shape": "flat", **STEEL}],
+             {"depth": 1e-6}, {}),
+    "sampled": ([{**TIPS["sampled"], "rigid": True}, {"shape": "flat", **STEEL}],
+                {"depth": 1e-6}, {}),
+    "bem": ([{"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]],
+              "pixels": 32, "rigid": True},
+             {"shape": "flat", **STEEL}], {"depth": 1e-6}, {"accuracy": {"rtol": 1e-6}}),
+}
+CHEAP = [name for name, e in scene.EFFECTS.items()
+         if "impact" not in e.needs and name not in ("max_shear", "max_von_mises",
+                                                     "von_mises_field")]
+
+
+def offered(bodies, load, extra):
+    """The effects of CHEAP that the contact of a scene of these bodies and load has."""
+    from hertzmdr.numeric.scene.model import build
+
+    spec = scene.load({"effects": ["force"], "body": bodies, "load": load, **extra}).spec
+    contact = build(spec)
+    # the axis stresses of kinds other than Hertz are superposed: seconds
+    return [n for n in CHEAP if contact.has(n)
+            and (n != "axis_stresses" or contact.kind == "hertz")]
+
+
+@pytest.mark.parametrize("key", sorted(KIND_SCENES))
+def test_every_effect_says_how_it_was_computed(key):
+    """Each effect's method is a text (the JSON's "method"), and the model block reports the
+    scene's rtol: what a reader of the output needs to trust a number."""
+    bodies, load, extra = KIND_SCENES[key]
+    names = offered(bodies, load, extra)
+    assert len(names) >= 4, names
+    doc = run(bodies, load, names, **extra)
+    for name in names:
+        method = doc["effects"][name]["method"]
+        assert isinstance(method, str) and method.strip(), (name, method)
+    assert doc["model"]["rtol"] == extra.get("accuracy", {}).get("rtol", 1e-10)
+
+
+def test_elliptic_model_block_and_sweep():
+    """The elliptical contact's model block names its principal radii, its Gaussian radius
+    sqrt(R1 R2) (5.30) and the model; under a force sweep its semi-axes are one [a, b] per
+    load, each that of the single load (the semi-axes of one force do not depend on the
+    others)."""
+    bodies, _, _ = KIND_SCENES["elliptic"]
+    forces = [1.0, 50.5, 100.0]
+    doc = run(bodies, {"force": {"from": 1.0, "to": 100.0, "points": 3}},
+              ["semi_axes", "stiffness"])
+    R1, R2 = doc["model"]["principal_radii"]
+    assert doc["model"]["gaussian_radius"] == pytest.approx(math.sqrt(R1 * R2), rel=1e-15)
+    assert doc["model"]["elliptic_model"] == "exact"
+    axes = doc["effects"]["semi_axes"]["value"]
+    assert np.shape(axes) == (3, 2)
+    for F, ab in zip(forces, axes, strict=True):
+        one = run(bodies, {"force": F}, ["semi_axes"])["effects"]["semi_axes"]["value"]
+        assert ab == pytest.approx(one, rel=1e-12)  # 1e-12: the same solve, rounding apart
+        # the semi-axes grow like F^(1/3) (Hertz): a check independent of the solver
+        assert ab[0] / axes[0][0] == pytest.approx((F / forces[0]) ** (1 / 3), rel=1e-9)
+
+
+def test_line_stiffness_under_a_sweep():
+    """The line contact's stiffness dF/dd = (pi/4) E* L of (5.34) does not depend on the load:
+    a sweep gets that one value at each of its points."""
+    bodies, _, _ = KIND_SCENES["line"]
+    doc = run(bodies, {"force": {"from": 10.0, "to": 100.0, "points": 4}}, ["stiffness"])
+    k = doc["effects"]["stiffness"]["value"]
+    E_star = STEEL["E"] / (1 - STEEL["nu"] ** 2)
+    assert k == pytest.approx([math.pi / 4 * E_star * 0.02] * 4, rel=1e-14)
