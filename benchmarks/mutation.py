@@ -42,6 +42,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 NUMERIC = ROOT / "numeric"
 NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
+#: the notes on numeric/scene/ (a file of their own: the scene layer's runs are separate)
+SCENE_NOTES = ROOT / "benchmarks" / "mutation_notes_scene.toml"
 #: folders besides tests/ that the tests read (the example scenes, docs/scenes.md)
 EXTRA = ("examples", "docs")
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
@@ -131,13 +133,20 @@ def function_lines(path: Path) -> dict[str, int]:
 
 
 def load_notes(kind: str = "equivalent") -> list[dict]:
-    """The notes of benchmarks/mutation_notes.toml: "equivalent" (survivors that cannot be
-    killed, with the reason), "since" (survivors of a module's last run killed by a test added
-    after it), "killed" (survivors of earlier runs and the tests added) or "finding" (defects
-    seen while writing those tests)."""
-    if not NOTES.exists():
-        return []
-    return tomllib.loads(NOTES.read_text()).get(kind, [])
+    """The notes of benchmarks/mutation_notes.toml and mutation_notes_scene.toml: "equivalent"
+    (survivors that cannot be killed, with the reason), "since" (survivors of a module's last
+    run killed by a test added after it), "text" (a line whose text-only mutants are
+    presentation), "killed" (survivors of earlier runs and the tests added) or "finding"
+    (defects seen while writing those tests)."""
+    return [n for path in (NOTES, SCENE_NOTES) if path.exists()
+            for n in tomllib.loads(path.read_text()).get(kind, [])]
+
+
+def text_only(s: Survivor) -> bool:
+    """Whether a mutant changes only the text inside string literals: wrapped in XX, or its
+    case changed (mutmut's string mutations other than None)."""
+    return (squash(s.mutant) != squash(s.original)
+            and squash(s.mutant).replace("XX", "").lower() == squash(s.original).lower())
 
 
 def squash(s: str) -> str:
@@ -151,6 +160,11 @@ def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
                       for k in load_notes("since")]:
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
+            return n["reason"]
+    # "text" notes: every mutant of the line that only changes the text of a string (a method
+    # text, a label): presentation, with the reason
+    for n in load_notes("text"):
+        if n["module"] == module and squash(n["original"]) in squash(s.original) and text_only(s):
             return n["reason"]
     return None
 

@@ -240,3 +240,41 @@ def test_line_stiffness_under_a_sweep():
     k = doc["effects"]["stiffness"]["value"]
     E_star = STEEL["E"] / (1 - STEEL["nu"] ** 2)
     assert k == pytest.approx([math.pi / 4 * E_star * 0.02] * 4, rel=1e-14)
+
+
+# -- the builders' refusals (kinds/*.py build functions, Setup.fail) ----------------------------
+
+SPHERE = {"shape": "sphere", "radius": 0.01, **STEEL}
+RIGID_FLAT = {"shape": "flat", "rigid": True}
+
+
+@pytest.mark.parametrize("bodies, load, key, fragments", [
+    ([{"shape": "flat", **STEEL}, RIGID_FLAT], {"depth": 1e-6}, "body",
+     ["two flat bodies have no contact point"]),
+    ([{"shape": "cylinder", "radius": 0.01, **STEEL}, RIGID_FLAT], {"force": 1.0}, "body",
+     ["parallel cylinders make a line contact", "give the cylinder(s) a length"]),
+    ([SPHERE, {"shape": "sphere", "radius": -0.005, "rigid": True}], {"depth": 1e-6}, "body",
+     ["a concave radius must be larger than the convex one it holds"]),
+    ([{"shape": "cone", "angle": 0.3, **STEEL}, {"shape": "cone", "angle": 0.4, "rigid": True}],
+     {"depth": 1e-6}, "body", ["two profiled bodies (cone and cone) are not supported"]),
+    ([SPHERE, {"shape": "sphere", "radius": 0.02, "rigid": True}],
+     {"impact": {"velocity": 1.0, "mass": 0.1}}, "load.impact",
+     ["a sphere striking a flat wall", "this one has sphere and sphere"]),
+    ([{"shape": "sphere", "radius": -0.01, **STEEL}, RIGID_FLAT],
+     {"impact": {"velocity": 1.0, "mass": 0.1}}, "body",
+     ["the striking sphere must be convex (radius > 0)"]),
+    ([{"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]], **STEEL},
+      {"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]], "rigid": True}],
+     {"depth": 1e-6}, "body", ["presses on a flat body"]),
+    ([{"shape": "profile", "r": [0, 1e-6, 2e-6], "f": [0, 1e-9, 4e-9], "rigid": True},
+      {"shape": "flat", **STEEL}], {"depth": 1e-9}, "body (body 1)",
+     ["profile samples: r and f must be 1-D of equal length >= 4; got (3,), (3,)"]),
+])
+def test_builder_refusals_name_the_key(bodies, load, key, fragments):
+    """A combination the schema accepts but no contact can be built from is one SceneError
+    naming the key and why."""
+    with pytest.raises(scene.SceneError) as info:
+        run(bodies, load, ["force"])
+    assert info.value.key == key and info.value.where == "<scene>"
+    for text in fragments:
+        assert text in info.value.message, (text, info.value.message)
