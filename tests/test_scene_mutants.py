@@ -252,7 +252,8 @@ RIGID_FLAT = {"shape": "flat", "rigid": True}
     ([{"shape": "flat", **STEEL}, RIGID_FLAT], {"depth": 1e-6}, "body",
      ["two flat bodies have no contact point"]),
     ([{"shape": "cylinder", "radius": 0.01, **STEEL}, RIGID_FLAT], {"force": 1.0}, "body",
-     ["parallel cylinders make a line contact", "give the cylinder(s) a length"]),
+     ["parallel cylinders make a line contact, whose force depends on the contact length: "
+      "give the cylinder(s) a length"]),
     ([SPHERE, {"shape": "sphere", "radius": -0.005, "rigid": True}], {"depth": 1e-6}, "body",
      ["a concave radius must be larger than the convex one it holds"]),
     ([{"shape": "cone", "angle": 0.3, **STEEL}, {"shape": "cone", "angle": 0.4, "rigid": True}],
@@ -266,18 +267,24 @@ RIGID_FLAT = {"shape": "flat", "rigid": True}
     ([{"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]], **STEEL},
       {"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]], "rigid": True}],
      {"depth": 1e-6}, "body", ["presses on a flat body"]),
+    ([{"shape": "cylinder", "radius": 0.01, "length": 0.0, **STEEL}, RIGID_FLAT],
+     {"depth": 1e-6}, "body", ["the cylinder length must be > 0, got 0.0"]),
     ([{"shape": "profile", "r": [0, 1e-6, 2e-6], "f": [0, 1e-9, 4e-9], "rigid": True},
       {"shape": "flat", **STEEL}], {"depth": 1e-9}, "body (body 1)",
      ["profile samples: r and f must be 1-D of equal length >= 4; got (3,), (3,)"]),
 ])
 def test_builder_refusals_name_the_key(bodies, load, key, fragments):
     """A combination the schema accepts but no contact can be built from is one SceneError
-    naming the key and why."""
+    naming the key and why (the whole message where it is one sentence)."""
     with pytest.raises(scene.SceneError) as info:
         run(bodies, load, ["force"])
     assert info.value.key == key and info.value.where == "<scene>"
     for text in fragments:
         assert text in info.value.message, (text, info.value.message)
+    if len(fragments) == 1 and fragments[0][-1] in ")0":  # the whole message
+        assert info.value.message == fragments[0]
+    if len(fragments) == 1 and "cylinder(s)" in fragments[0]:
+        assert info.value.message == fragments[0]
 
 
 def test_line_contact_under_a_depth():
@@ -306,3 +313,49 @@ def test_bem_errors_are_the_change_from_half_resolution():
     for name in ("stiffness", "mean_pressure", "force"):
         assert 0 < eff[name]["rel_error"] < 0.2, (name, eff[name]["rel_error"])
     assert 0.2 < eff["contact_area"]["rel_error"] < 1
+
+
+def test_parallel_cylinders_take_the_shorter_length():
+    """Two parallel cylinders make a line contact of the length given (one of them may omit
+    it), or of the shorter of the two: 1/R = 1/R1 + 1/R2 (5.27)."""
+    a = {"shape": "cylinder", "radius": 0.01, "length": 0.02, **STEEL}
+    b = {"shape": "cylinder", "radius": 0.02, "rigid": True}
+    model = run([a, b], {"depth": 1e-6}, ["force"])["model"]
+    assert model["length"] == 0.02
+    assert model["effective_radius"] == pytest.approx(1 / (1 / 0.01 + 1 / 0.02), rel=1e-15)
+    model = run([a, {**b, "length": 0.015}], {"depth": 1e-6}, ["force"])["model"]
+    assert model["length"] == 0.015
+
+
+def test_rtol_reaches_the_bem_and_the_numerical_mdr_curve():
+    """[accuracy] rtol is the conjugate gradients' tolerance of the BEM (the force at rtol 1e-3
+    differs from the one at 1e-14, by less than 1e-3) and the target of the numerical MDR's
+    force-depth curve (at rtol 1e-4 its error bound is above the default's 1e-10)."""
+    bodies, load, _ = KIND_SCENES["bem"]
+    F = [run(bodies, load, ["force"], accuracy={"rtol": r})["effects"]["force"]["value"]
+         for r in (1e-3, 1e-14)]
+    assert 1e-9 < abs(F[0] / F[1] - 1) < 1e-3
+    bodies, _, _ = KIND_SCENES["sampled"]
+    eff = run(bodies, {"depth": 2e-6}, ["force_depth_curve"],
+              accuracy={"rtol": 1e-4})["effects"]["force_depth_curve"]
+    assert 1e-10 < eff["rel_error"] <= 1e-4
+
+
+@pytest.mark.parametrize("load, key", [({"depth": 1e-6}, "force"), ({"force": 200.0}, "depth")])
+def test_bem_state_error_is_the_change_from_half_resolution(load, key):
+    """The BEM state's rel_error is the relative change of the computed quantity (the force
+    under a depth, the depth under a force) from the same solve on every other pixel with
+    twice the pixel size (numeric/bem.py called directly on the shape's height map)."""
+    from hertzmdr.numeric import bem
+
+    bodies, _, extra = KIND_SCENES["bem"]
+    eff = run(bodies, load, [key], **extra)["effects"][key]
+    height, dx = bem.polygon_punch(bodies[0]["vertices"], 32, margin=0.05)
+    E_star = STEEL["E"] / (1 - STEEL["nu"] ** 2)
+    fine = bem.solve(height, dx, E_star, tol=1e-6, **load)
+    coarse = bem.solve(height[::2, ::2], 2 * dx, E_star, tol=1e-6, **load)
+    # both solves stop at the CG tolerance 1e-6: a solve may differ from the scene's by that
+    assert eff["value"] == pytest.approx(getattr(fine, key), rel=1e-6)
+    # ... which moves a change of about 4 % by 1e-6 / 0.04
+    assert eff["rel_error"] == pytest.approx(abs(getattr(fine, key) / getattr(coarse, key) - 1),
+                                             rel=1e-3)
