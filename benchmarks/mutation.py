@@ -5,8 +5,9 @@ Run: ``make mutation`` (every module of MODULES with its own test files), or for
     .venv/bin/python benchmarks/mutation.py --module scene --tests tests/test_scenes.py \
         --out docs/mutation_scene.md
 
-``--module`` takes paths relative to numeric/ (a file, or a folder for all the files in it);
-each ``--module`` is run with the ``--tests`` given after it (or MODULES' test files).
+``--module`` takes paths relative to numeric/ (a file, or a folder for all the files in it, or
+several joined by commas, mutated in one run with one set of tests); each ``--module`` is run
+with the ``--tests`` given after it (or MODULES' test files).
 
 mutmut 3 copies the sources to ``mutants/`` and runs the tests there, choosing a mutant by the
 module's import name. numeric/ installs as ``hertzmdr.numeric`` (package-dir), so every module
@@ -94,15 +95,20 @@ class Run:
 def mutmut_config(module: str, tests: list[str]) -> dict:
     """The repository's [tool.mutmut] settings with this module's scope."""
     shared = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"].get("mutmut", {})
-    target = f"{PACKAGE}/{module}".rstrip("/")
-    only = [target if target.endswith(".py") else target + "/*"]
+    targets = [f"{PACKAGE}/{m}".rstrip("/") for m in module.split(",")]
+    only = [t if t.endswith(".py") else t + "/*" for t in targets]
     return {**shared, "source_paths": [PACKAGE], "only_mutate": only, "also_copy": list(EXTRA),
             "pytest_add_cli_args_test_selection": list(tests)}
 
 
+def workdir(module: str) -> str:
+    """The scratch folder's name of a --module (``scene/kinds`` -> ``scene_kinds``)."""
+    return module.replace("/", "_").replace(",", "+").replace(".py", "")
+
+
 def scratch(module: str, tests: list[str], base: Path) -> Path:
     """A fresh scratch folder laying out numeric/ as hertzmdr/numeric for mutmut."""
-    work = base / module.replace("/", "_").removesuffix(".py")
+    work = base / workdir(module)
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
     (work / PACKAGE).symlink_to(NUMERIC, target_is_directory=True)
@@ -232,7 +238,7 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> 
 def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run | None:
     """The result of an earlier run of ``module`` (``--report-only``), its notes read anew;
     None if there is none with these test files."""
-    work = base / module.replace("/", "_").removesuffix(".py")
+    work = base / workdir(module)
     path = work / "result.json"
     if not path.exists():
         if not (work / "mutants").is_dir():
@@ -308,7 +314,8 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         lines += [f"### `{r.module}`", ""]
         for s in r.survivors:
             why = s.note if s.note else "**unexplained**"
-            where = "" if r.module.endswith(".py") else f"`{source_file(s.name)}` "
+            one_file = r.module.endswith(".py") and "," not in r.module
+            where = "" if one_file else f"`{source_file(s.name)}` "
             lines.append(f"- {where}line {s.line} ({s.status}): `{s.original}` → `{s.mutant}`:"
                          f" {why}")
         lines.append("")
@@ -334,7 +341,8 @@ def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--module", action="append", default=[],
-                    help="path under numeric/ (file or folder); repeatable")
+                    help="path under numeric/ (file or folder), or several joined by commas "
+                    "(mutated in one run); repeatable")
     ap.add_argument("--tests", action="append", nargs="+", default=[],
                     help="test files for the --module before it")
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "mutation.md")
@@ -350,8 +358,9 @@ def main(argv: list[str] | None = None) -> int:
     else:
         jobs = list(MODULES.items())
     for m, tests in jobs:
-        if not (NUMERIC / m).exists():
-            ap.error(f"--module {m}: numeric/{m} does not exist")
+        for part in m.split(","):
+            if not (NUMERIC / part).exists():
+                ap.error(f"--module {m}: numeric/{part} does not exist")
         for t in tests:
             if not (ROOT / t).is_file():
                 ap.error(f"--tests {t}: no such file")
