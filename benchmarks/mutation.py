@@ -251,7 +251,10 @@ def load_run(module: str, tests: list[str], base: Path, notes: list[dict]) -> Ru
         stopped = datetime.datetime.fromtimestamp((work / "run.log").stat().st_mtime,
                                                   datetime.UTC)
         again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
-        return Run(module, list(tests), again, 0.0,
+        # the time it ran: from the scratch folder's pyproject.toml (written at its start) to
+        # the last line of its log
+        ran = (work / "run.log").stat().st_mtime - (work / "pyproject.toml").stat().st_mtime
+        return Run(module, list(tests), again, ran,
                    stopped.strftime("%Y-%m-%d %H:%M UTC") + " (stopped before the end)",
                    counts, survivors)
     data = json.loads(path.read_text())
@@ -277,10 +280,12 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
     columns = COLUMNS + (["not checked"] if any(r.counts.get("not checked") for r in runs)
                          else [])
     lines = [
-        "# Mutation testing of numeric/",
+        "# Mutation testing of numeric/" + ("scene/" if runs and all(
+            r.module.startswith("scene") for r in runs) else ""),
         "",
-        f"Made by `{' '.join(['python', 'benchmarks/mutation.py', *argv])}` (or `make mutation`)"
-        f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of "
+        f"Made by `{' '.join(['python', 'benchmarks/mutation.py', *argv])}`"
+        + (" (or `make mutation`)" if all(r.module in MODULES for r in runs) else "")
+        + f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of "
         + ("complete " if any(not r.seconds for r in runs) else "")
         + "runs on a shared 2-core machine (each module's date below"
         + ("; this page was assembled by `--report-only` from the last run of each module, "
