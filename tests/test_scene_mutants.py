@@ -353,3 +353,73 @@ def test_bem_state_error_is_the_change_from_half_resolution(load, key):
     # ... which moves a change of about 4 % by 1e-6 / 0.04
     assert eff["rel_error"] == pytest.approx(abs(getattr(fine, key) / getattr(coarse, key) - 1),
                                              rel=1e-3)
+
+
+# -- units.py: writing values with SI prefixes ------------------------------------------------
+
+@pytest.mark.parametrize("x, unit, text", [
+    (1.0134e9, "Pa", "1.0134 GPa"),
+    (1.23456789e9, "Pa", "1.2346 GPa"),      # 5 significant digits by default
+    (2.5e-6, "m", "2.5 µm"),
+    (-2e-3, "m", "-2 mm"),                    # the prefix of |x|
+    (999.99999999, "N", "1 kN"),              # rounds up to the next prefix, not "1000 N"
+    (1e-18, "m", "1e-18 m"),                  # below femto: plain scientific notation
+    (0.0, "Pa", "0 Pa"),
+    (math.inf, "Pa", "inf Pa"),
+    (math.nan, "Pa", "nan Pa"),
+    (0.5, "rad", "0.5 rad"),                  # radians, numbers: no prefix
+    (1234.5, "", "1234.5"),
+    (1234.5, "1", "1234.5 1"),
+    (2.0e5, "N/m", "2e+05 N/m"),              # compound units: no prefix
+    (3e-6, "m^2", "3e-06 m^2"),
+])
+def test_engineering(x, unit, text):
+    """engineering() writes the tables' values: the largest engineering prefix (powers of
+    1000) not above |x|, expected strings written out by hand."""
+    from hertzmdr.numeric.scene.units import engineering
+
+    assert engineering(x, unit) == text
+
+
+@pytest.mark.parametrize("top, scale, prefix", [
+    (3e-3, 1e-3, "m"), (1e3, 1e3, "k"), (999.0, 1.0, ""), (5e13, 1e12, "T"),
+    (1e-20, 1e-15, "f"),                      # below the smallest: the smallest
+])
+def test_prefixed(top, scale, prefix):
+    """prefixed() picks a figure axis' unit: the largest prefix not above the largest value."""
+    from hertzmdr.numeric.scene.units import prefixed
+
+    assert prefixed(top) == (scale, prefix)
+
+
+def test_effects_listing():
+    """`hertzmdr effects`: one line per effect, its name padded to the longest name, its unit
+    in brackets, its description."""
+    from hertzmdr.numeric.scene.effects import EFFECTS, listing
+
+    lines = listing().split("\n")
+    width = max(len(n) for n in EFFECTS)
+    assert len(lines) == len(EFFECTS)
+    for line, e in zip(lines, EFFECTS.values(), strict=True):
+        assert line == e.name.ljust(width) + f"  [{e.unit}]  {e.doc}"
+
+
+# -- schema.py: messages -----------------------------------------------------------------------
+
+def test_scene_error_without_a_key(tmp_path):
+    """A SceneError about the whole file names the file only: "<file>: <message>"."""
+    path = tmp_path / "none.toml"
+    with pytest.raises(scene.SceneError) as info:
+        scene.load(path)
+    assert str(info.value) == f"{path}: no such file"
+
+
+@pytest.mark.parametrize("shape, message", [
+    ("cyl", "unknown shape 'cyl'; did you mean 'cylinder'?"),   # similarity 0.545 >= 0.5
+    ("zzzz", "unknown shape 'zzzz'"),                           # nothing close: no hint
+])
+def test_unknown_shape_suggests_the_closest(shape, message):
+    with pytest.raises(scene.SceneError) as info:
+        run([{"shape": shape, "rigid": True}, {"shape": "flat", **STEEL}], {"depth": 1e-6},
+            ["force"])
+    assert info.value.message == message
