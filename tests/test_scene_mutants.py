@@ -363,6 +363,7 @@ def test_bem_state_error_is_the_change_from_half_resolution(load, key):
     (2.5e-6, "m", "2.5 µm"),
     (-2e-3, "m", "-2 mm"),                    # the prefix of |x|
     (999.99999999, "N", "1 kN"),              # rounds up to the next prefix, not "1000 N"
+    (1e3 * 0.9999999, "N", "1 kN"),           # ... from 0.9999999 of it on
     (1e-18, "m", "1e-18 m"),                  # below femto: plain scientific notation
     (0.0, "Pa", "0 Pa"),
     (math.inf, "Pa", "inf Pa"),
