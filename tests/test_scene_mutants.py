@@ -424,3 +424,27 @@ def test_unknown_shape_suggests_the_closest(shape, message):
         run([{"shape": shape, "rigid": True}, {"shape": "flat", **STEEL}], {"depth": 1e-6},
             ["force"])
     assert info.value.message == message
+
+
+@pytest.mark.parametrize("text, message", [
+    ("5 N", "'5 N' has the unit newton, which is not a length (convertible to m)"),
+    ("2*3", "'2*3' has the unit dimensionless, which is not a length (convertible to m)"),
+    ("5 blorbs", "cannot read '5 blorbs' as a quantity (UndefinedUnitError: 'blorbs' is not "
+                 "defined in the unit registry)"),
+])
+def test_units_read_by_pint_are_refused_by_name(text, message):
+    """A quantity pint reads (or cannot) with the wrong dimension: the message names the
+    text, its unit, the dimension wanted and its SI unit (or pint's reason)."""
+    from hertzmdr.numeric.scene.units import UnitError, to_si
+
+    with pytest.raises(UnitError) as info:
+        to_si(text, "length")
+    assert str(info.value) == message
+
+
+def test_document_numbers_are_plain_floats():
+    """The JSON document holds Python floats, never NumPy scalars (whose repr, np.float64(...),
+    would leak into messages and printed output)."""
+    doc = run(*KIND_SCENES["hertz"][:2], ["force", "max_pressure", "contact_radius"])
+    for name in ("force", "max_pressure", "contact_radius"):
+        assert type(doc["effects"][name]["value"]) is float, name
