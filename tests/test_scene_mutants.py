@@ -454,3 +454,15 @@ def test_document_numbers_are_plain_floats():
     doc = run(*KIND_SCENES["hertz"][:2], ["force", "max_pressure", "contact_radius"])
     for name in ("force", "max_pressure", "contact_radius"):
         assert type(doc["effects"][name]["value"]) is float, name
+
+
+def test_document_entry_of_each_effect():
+    """Each effect's entry in the JSON document (docs/scenes.md): its value, its unit from the
+    registry, how it was computed, its rel_error, whether that met rtol and its time."""
+    doc = run(*KIND_SCENES["hertz"][:2], ["force", "pressure_profile"])
+    for name, entry in doc["effects"].items():
+        assert set(entry) == {"value", "unit", "method", "rel_error", "met_rtol", "seconds"}
+        assert entry["unit"] == scene.EFFECTS[name].unit
+        assert entry["met_rtol"] is (entry["rel_error"] <= 1e-10)
+        assert isinstance(entry["seconds"], float) and 0 <= entry["seconds"] < 60
+    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects"}
