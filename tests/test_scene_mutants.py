@@ -313,6 +313,34 @@ def test_height_map_that_cannot_be_read(tmp_path):
     assert "'x'" in info.value.message
 
 
+def test_line_contact_under_a_depth():
+    """A line contact under a depth d (the chapter's convention a = sqrt(R d), (5.35)): the
+    force (pi/4) E* L d of (5.34), typed here from the chapter, and the model block names R
+    and L."""
+    R, L, d = 0.01, 0.02, 1e-6
+    doc = run([{"shape": "cylinder", "radius": R, "length": L, **STEEL}, RIGID_FLAT],
+              {"depth": {"from": d, "to": 3 * d, "points": 3}}, ["depth", "force"])
+    E_star = STEEL["E"] / (1 - STEEL["nu"] ** 2)  # (5.26), the other body rigid
+    assert doc["effects"]["depth"]["value"] == pytest.approx([d, 2 * d, 3 * d], rel=1e-15, abs=0)
+    assert doc["effects"]["force"]["value"] == pytest.approx(
+        [math.pi / 4 * E_star * L * x for x in (d, 2 * d, 3 * d)], rel=1e-14, abs=0)  # rounding
+    assert doc["effects"]["force"]["rel_error"] <= 1e-14
+    assert doc["model"]["effective_radius"] == R and doc["model"]["length"] == L
+
+
+def test_bem_errors_are_the_change_from_half_resolution():
+    """The BEM's rel_error of each effect is its relative change from half the resolution
+    (first order in the pixel size for a punch): positive, and below 20 % on a 32-pixel
+    triangle; the contact area's is at least the band of pixels its edge cuts (40 % of the
+    area at this resolution), below 1."""
+    bodies, load, extra = KIND_SCENES["bem"]
+    eff = run(bodies, load, ["stiffness", "mean_pressure", "contact_area", "force"],
+              **extra)["effects"]
+    for name in ("stiffness", "mean_pressure", "force"):
+        assert 0 < eff[name]["rel_error"] < 0.2, (name, eff[name]["rel_error"])
+    assert 0.2 < eff["contact_area"]["rel_error"] < 1
+
+
 def test_parallel_cylinders_take_the_shorter_length():
     """Two parallel cylinders make a line contact of the length given (one of them may omit
     it), or of the shorter of the two: 1/R = 1/R1 + 1/R2 (5.27)."""
