@@ -162,8 +162,10 @@ def squash(s: str) -> str:
 def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
     """The reason a survivor cannot be killed, or the test added since its run that kills it
     ("since" notes, for a module not run again since the test was added)."""
-    for n in notes + [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
-                      for k in load_notes("since")]:
+    # a test added since the run, checked to kill the mutant, first: it is a fact about this
+    # mutant, where a reason may be written for a whole line
+    for n in [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
+              for k in load_notes("since")] + notes:
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
             return n["reason"]
