@@ -494,3 +494,14 @@ def test_document_entry_of_each_effect():
         assert entry["met_rtol"] is (entry["rel_error"] <= 1e-10)
         assert isinstance(entry["seconds"], float) and 0 <= entry["seconds"] < 60
     assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects"}
+
+
+def test_numeric_refusal_at_the_load_names_the_effect():
+    """A ValueError from numeric/ while an effect is computed (here an ellipse beyond the
+    radius ratio numeric/ellipse.py covers) is a SceneError on `effects` naming the effect."""
+    with pytest.raises(scene.SceneError) as info:
+        run([{"shape": "ellipsoid", "radii": [1e-3, 1e7], **STEEL}, RIGID_FLAT],
+            {"depth": 1e-6}, ["force"])
+    assert (info.value.where, info.value.key) == ("<scene>", "effects")
+    assert info.value.message == ("'force' at this load: R1/R2 = 10000000000.0 (or its "
+                                  "inverse) is out of range; valid: 1/1e+08 <= R1/R2 <= 1e+08")
