@@ -505,3 +505,74 @@ def test_numeric_refusal_at_the_load_names_the_effect():
     assert (info.value.where, info.value.key) == ("<scene>", "effects")
     assert info.value.message == ("'force' at this load: R1/R2 = 10000000000.0 (or its "
                                   "inverse) is out of range; valid: 1/1e+08 <= R1/R2 <= 1e+08")
+
+
+# -- shapes -----------------------------------------------------------------------------------------
+
+def test_crossed_ellipsoids_by_their_axes():
+    """Two equal ellipsoids (R1, R2) = (10, 40) mm with their R1 directions 90 deg apart (given
+    as 30 and 120 deg) have a circular gap: each direction has curvature 1/R1 + 1/R2, so
+    R = 1/(1/10 + 1/40) mm = 8 mm in both (Problem 2); aligned (30 and 30 deg), the principal
+    radii are R1/2 and R2/2."""
+    def radii(axis_a, axis_b):
+        bodies = [{"shape": "ellipsoid", "radii": [0.01, 0.04], "axis": axis_a, **STEEL},
+                  {"shape": "ellipsoid", "radii": [0.01, 0.04], "axis": axis_b, "rigid": True}]
+        return sorted(run(bodies, {"depth": 1e-6}, ["principal_radii"])["model"]
+                      ["principal_radii"])
+
+    assert radii("30 deg", "120 deg") == pytest.approx([0.008, 0.008], rel=1e-12, abs=0)
+    assert radii("30 deg", "30 deg") == pytest.approx([0.005, 0.02], rel=1e-12, abs=0)
+
+
+SAMPLE_FILE = """r, f   # a header line
+# a comment line
+
+0, 0
+1e-4, 5e-7   # f = r^2/(2R), R = 10 mm
+2e-4 2e-6
+3e-4,4.5e-6
+4e-4, 8e-6
+5e-4, 1.25e-5
+"""
+
+
+def test_sample_file_is_read_as_the_same_samples(tmp_path):
+    """A profile read from a file (a header, comments, blank lines, commas or spaces) is the
+    profile given by r and f inline: the same force at the same depth."""
+    (tmp_path / "tip.csv").write_text(SAMPLE_FILE, encoding="utf-8")
+    r = [0.0, 1e-4, 2e-4, 3e-4, 4e-4, 5e-4]
+    f = [0.0, 5e-7, 2e-6, 4.5e-6, 8e-6, 1.25e-5]
+    inline = run([{"shape": "profile", "r": r, "f": f, "rigid": True},
+                  {"shape": "flat", **STEEL}], {"depth": 1e-6}, ["force"])
+    path = tmp_path / "scene.toml"
+    path.write_text('effects = ["force"]\n[[body]]\nshape = "profile"\nfile = "tip.csv"\n'
+                    'rigid = true\n[[body]]\nshape = "flat"\nE = 210e9\nnu = 0.3\n'
+                    '[load]\ndepth = 1e-6\n')
+    from_file = scene.load(path).run()
+    assert from_file["effects"]["force"]["value"] == inline["effects"]["force"]["value"]
+
+
+@pytest.mark.parametrize("content, message", [
+    (b"r f\n0 0\n1e-4 x\n", "tip.csv line 3: expected two numbers r, f"),
+    (b"0 0\n1e-4 5e-7 1\n", "tip.csv line 2: expected two numbers r, f"),
+    (b"r f\n0 0\n1e-4\n", "tip.csv line 3: expected two numbers r, f"),
+    (b"r f\n0 0\n", "tip.csv has fewer than two samples"),
+    (b"0 0\n\xff\xfe 1\n", None),     # not UTF-8: cannot read it
+    (None, None),                    # no such file
+])
+def test_sample_file_errors(tmp_path, content, message):
+    """A sample file that cannot be read names the file key, the file, and the line."""
+    path = tmp_path / "tip.csv"
+    if content is not None:
+        path.write_bytes(content)
+    with pytest.raises(scene.SceneError) as info:
+        run([{"shape": "profile", "file": str(path), "rigid": True},
+             {"shape": "flat", **STEEL}], {"depth": 1e-9}, ["force"])
+    assert info.value.key == "body[0] (body 1).file"
+    if content is None:
+        assert info.value.message == f"sample file {str(path)!r} not found"
+    elif message is None:
+        assert info.value.message.startswith(f"cannot read {str(path)!r} (")
+        assert "codec can't decode" in info.value.message
+    else:
+        assert info.value.message == message
