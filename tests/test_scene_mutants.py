@@ -507,7 +507,7 @@ def test_numeric_refusal_at_the_load_names_the_effect():
                                   "inverse) is out of range; valid: 1/1e+08 <= R1/R2 <= 1e+08")
 
 
-# -- shapes -----------------------------------------------------------------------------------------
+# -- shapes ----------------------------------------------------------------------------------------
 
 def test_crossed_ellipsoids_by_their_axes():
     """Two equal ellipsoids (R1, R2) = (10, 40) mm with their R1 directions 90 deg apart (given
