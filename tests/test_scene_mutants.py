@@ -527,7 +527,7 @@ def test_crossed_ellipsoids_by_their_axes():
 SAMPLE_FILE = """r, f   # a header line
 # a comment line
 
-0, 0
+0, 0   # the apex # r = 0
 1e-4, 5e-7   # f = r^2/(2R), R = 10 mm
 2e-4 2e-6
 3e-4,4.5e-6
@@ -557,6 +557,7 @@ def test_sample_file_is_read_as_the_same_samples(tmp_path):
     (b"0 0\n1e-4 5e-7 1\n", "tip.csv line 2: expected two numbers r, f"),
     (b"r f\n0 0\n1e-4\n", "tip.csv line 3: expected two numbers r, f"),
     (b"r f\n0 0\n", "tip.csv has fewer than two samples"),
+    (b"r f\nr f\n0 0\n1e-4 5e-7\n", "tip.csv line 2: expected two numbers r, f"),  # one header
     (b"0 0\n\xff\xfe 1\n", None),     # not UTF-8: cannot read it
     (None, None),                    # no such file
 ])
