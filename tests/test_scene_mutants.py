@@ -183,6 +183,8 @@ KIND_SCENES = {
              {"depth": 1e-6}, {}),
     "sampled": ([{**TIPS["sampled"], "rigid": True}, {"shape": "flat", **STEEL}],
                 {"depth": 1e-6}, {}),
+    "exact_sphere": ([{"shape": "exact_sphere", "radius": 0.01, "rigid": True},
+                      {"shape": "flat", **STEEL}], {"force": 1.0}, {}),
     "bem": ([{"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]],
               "pixels": 32, "rigid": True},
              {"shape": "flat", **STEEL}], {"depth": 1e-6}, {"accuracy": {"rtol": 1e-6}}),
@@ -215,6 +217,7 @@ def test_every_effect_says_how_it_was_computed(key):
         method = doc["effects"][name]["method"]
         assert isinstance(method, str) and method.strip(), (name, method)
     assert doc["model"]["rtol"] == extra.get("accuracy", {}).get("rtol", 1e-10)
+    assert isinstance(doc["model"]["description"], str) and doc["model"]["description"]
 
 
 def test_elliptic_model_block_and_sweep():
@@ -577,3 +580,29 @@ def test_sample_file_errors(tmp_path, content, message):
         assert "codec can't decode" in info.value.message
     else:
         assert info.value.message == message
+
+
+def test_exact_sphere_under_a_force():
+    """The exact sphere under a force F: the depth it reports gives back F through the force
+    at that depth (a depth-controlled scene), and near the Hertz depth (5.23) of the
+    paraboloid, which the spherical cap approaches for a << R (here a/R = 0.01: they differ
+    by O((a/R)^2))."""
+    bodies, load, _ = KIND_SCENES["exact_sphere"]
+    d = run(bodies, load, ["depth"])["effects"]["depth"]["value"]
+    F = run(bodies, {"depth": d}, ["force"])["effects"]["force"]["value"]
+    assert F == pytest.approx(1.0, rel=1e-12, abs=0)  # a root found to 1e-12 or better
+    E_star = STEEL["E"] / (1 - STEEL["nu"] ** 2)
+    hertz = (9 * 1.0**2 / (16 * E_star**2 * 0.01)) ** (1 / 3)  # (5.23) solved for d
+    assert d == pytest.approx(hertz, rel=1e-3, abs=0)
+
+
+def test_two_samples_in_a_file_reach_the_numerical_mdr(tmp_path):
+    """Two samples are enough for the file reader; the numerical MDR then asks for four."""
+    path = tmp_path / "tip.csv"
+    path.write_text("0 0\n1e-4 5e-7\n")
+    with pytest.raises(scene.SceneError) as info:
+        run([{"shape": "profile", "file": str(path), "rigid": True},
+             {"shape": "flat", **STEEL}], {"depth": 1e-9}, ["force"])
+    assert info.value.key == "body (body 1)"
+    assert info.value.message == ("profile samples: r and f must be 1-D of equal length >= 4; "
+                                  "got (2,), (2,)")
