@@ -6,6 +6,7 @@ public scene API unless the line is reachable no other way."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -606,3 +607,48 @@ def test_two_samples_in_a_file_reach_the_numerical_mdr(tmp_path):
     assert info.value.key == "body (body 1)"
     assert info.value.message == ("profile samples: r and f must be 1-D of equal length >= 4; "
                                   "got (2,), (2,)")
+
+
+def test_exact_sphere_fields():
+    """The exact sphere's surface displacement is d - f(r) inside the contact, with the
+    spherical cap f = R - sqrt(R^2 - r^2) (the boundary condition, typed here), and its MDR
+    profile reaches g(a) = d at the contact radius (5.55)."""
+    R, d = 0.01, 2e-5
+    eff = run([{"shape": "exact_sphere", "radius": R, "rigid": True},
+               {"shape": "flat", **STEEL}], {"depth": d},
+              ["contact_radius", "surface_displacement", "mdr_profile"])["effects"]
+    a = eff["contact_radius"]["value"]
+    u = eff["surface_displacement"]["value"]
+    r, uz = np.asarray(u["r"]), np.asarray(u["u"])
+    inside = r < a
+    cap = R - np.sqrt(R * R - r[inside] ** 2)
+    # 1e-9 of d: the rounding of R - sqrt(R^2 - r^2) (R^2 = 1e-4 against r^2 <= 1e-5)
+    assert np.allclose(uz[inside], d - cap, rtol=0, atol=1e-9 * d)
+    assert np.all(np.diff(uz[~inside]) < 0) and uz[-1] > 0  # decays outside, stays > 0
+    g = eff["mdr_profile"]["value"]
+    assert np.interp(a, g["x"], g["g"]) == pytest.approx(d, rel=1e-3, abs=0)  # interpolation
+
+
+def test_height_map_keys(tmp_path):
+    """A height map's file is relative to the scene file (whatever the working directory);
+    its spacing must be > 0; a missing file is named."""
+    import shutil
+
+    folder = tmp_path / "scenes"
+    folder.mkdir()
+    shutil.copy(Path(__file__).parents[1] / "examples" / "paraboloid_tip.csv", folder / "h.csv")
+    text = ('effects = ["force"]\n[[body]]\nshape = "height_map"\nfile = "{file}"\n'
+            'spacing = "{spacing}"\nrigid = true\n[[body]]\nshape = "flat"\nE = 2e9\n'
+            'nu = 0.4\n[load]\ndepth = 1e-7\n')
+    path = folder / "scene.toml"
+    path.write_text(text.format(file="h.csv", spacing="1 um"))
+    assert scene.load(path).run()["effects"]["force"]["value"] > 0  # the cwd is not folder
+    path.write_text(text.format(file="h.csv", spacing="0 um"))
+    with pytest.raises(scene.SceneError) as info:
+        scene.load(path)
+    assert (info.value.key, info.value.message) == ("body[0] (body 1).spacing",
+                                                    "must be > 0, got 0.0")
+    path.write_text(text.format(file="missing.csv", spacing="1 um"))
+    with pytest.raises(scene.SceneError) as info:
+        scene.load(path)
+    assert info.value.message == f"height map {str(folder / 'missing.csv')!r} not found"
