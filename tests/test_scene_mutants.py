@@ -519,13 +519,16 @@ def test_crossed_ellipsoids_by_their_axes():
     R = 1/(1/10 + 1/40) mm = 8 mm in both (Problem 2); aligned (30 and 30 deg), the principal
     radii are R1/2 and R2/2."""
     def radii(axis_a, axis_b):
-        bodies = [{"shape": "ellipsoid", "radii": [0.01, 0.04], "axis": axis_a, **STEEL},
+        bodies = [{"shape": "ellipsoid", "radii": [0.01, 0.04], **STEEL},
                   {"shape": "ellipsoid", "radii": [0.01, 0.04], "axis": axis_b, "rigid": True}]
+        if axis_a is not None:  # else the default, 0
+            bodies[0]["axis"] = axis_a
         return sorted(run(bodies, {"depth": 1e-6}, ["principal_radii"])["model"]
                       ["principal_radii"])
 
     assert radii("30 deg", "120 deg") == pytest.approx([0.008, 0.008], rel=1e-12, abs=0)
     assert radii("30 deg", "30 deg") == pytest.approx([0.005, 0.02], rel=1e-12, abs=0)
+    assert radii(None, "90 deg") == pytest.approx([0.008, 0.008], rel=1e-12, abs=0)  # 0 deg
 
 
 SAMPLE_FILE = """r, f   # a header line
