@@ -655,3 +655,16 @@ def test_height_map_keys(tmp_path):
     with pytest.raises(scene.SceneError) as info:
         scene.load(path)
     assert info.value.message == f"height map {str(folder / 'missing.csv')!r} not found"
+
+
+def test_rtol_met_at_equality_and_impact_effects_need_an_impact():
+    """An effect meets rtol when its rel_error is at most rtol: a closed form (1e-14) meets
+    rtol = 1e-14. An impact effect in a scene without an impact is refused by name."""
+    bodies, load, _ = KIND_SCENES["hertz"]
+    eff = run(bodies, load, ["force"], accuracy={"rtol": 1e-14})["effects"]["force"]
+    assert eff["rel_error"] == 1e-14 and eff["met_rtol"] is True
+    with pytest.raises(scene.SceneError) as info:
+        run(bodies, load, ["contact_time"])
+    assert (info.value.key, info.value.message) == (
+        "effects", "effect 'contact_time' needs an impact: give [load.impact] with velocity "
+        "and mass or density")
