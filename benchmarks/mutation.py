@@ -214,7 +214,7 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
                 found.append(s)
     finally:
         os.chdir(here)
-    return counts, sorted(found, key=lambda s: s.line)
+    return counts, sorted(found, key=lambda s: (source_file(s.name), s.line))
 
 
 def run_module(module: str, tests: list[str], base: Path, notes: list[dict]) -> Run:
@@ -296,6 +296,10 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "elsewhere in the suite counts as a survivor here). For each mutant, mutmut runs the tests "
         "of those files that reach the mutated function, with `-x`; the command below runs in "
         "the scratch folder that `benchmarks/mutation.py` lays out (see its docstring).",
+        *(["*not checked*: the run was stopped before its end. mutmut checks first the mutants "
+           "whose tests take least time, so those left are in the functions that most tests, "
+           "or the slowest ones, reach.", ""]
+          if any(r.counts.get("not checked") for r in runs) else []),
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles.",
