@@ -85,6 +85,7 @@ AXISYMMETRIC = {
     "cone": {"shape": "cone", "angle": 0.35},
     "punch": {"shape": "flat_punch", "radius": 1e-4},
     "sampled": TIPS["sampled"],
+    "exact_sphere": {"shape": "exact_sphere", "radius": 0.01},
 }
 FIELDS = ["contact_radius", "pressure_profile", "surface_displacement", "mdr_profile",
           "force_depth_curve"]
@@ -184,6 +185,8 @@ KIND_SCENES = {
              {"depth": 1e-6}, {}),
     "sampled": ([{**TIPS["sampled"], "rigid": True}, {"shape": "flat", **STEEL}],
                 {"depth": 1e-6}, {}),
+    "punch": ([{"shape": "flat_punch", "radius": 1e-4, "rigid": True},
+               {"shape": "flat", **STEEL}], {"force": 1.0}, {}),
     "exact_sphere": ([{"shape": "exact_sphere", "radius": 0.01, "rigid": True},
                       {"shape": "flat", **STEEL}], {"force": 1.0}, {}),
     "bem": ([{"shape": "polygon_punch", "vertices": [[0, 0], [1e-3, 0], [0, 1e-3]],
@@ -668,3 +671,31 @@ def test_rtol_met_at_equality_and_impact_effects_need_an_impact():
     assert (info.value.key, info.value.message) == (
         "effects", "effect 'contact_time' needs an impact: give [load.impact] with velocity "
         "and mass or density")
+
+
+def test_numerical_mdr_solves_each_load_to_the_scene_rtol():
+    """The numerical MDR solves each load of a sweep (the forces of two depths differ, as
+    F ~ d^(3/2) for the sampled paraboloid) to the scene's rtol (at rtol 1e-4 its bound is
+    above the default's 1e-10)."""
+    bodies, _, _ = KIND_SCENES["sampled"]
+    eff = run(bodies, {"depth": {"from": 1e-6, "to": 2e-6, "points": 2}}, ["force"],
+              accuracy={"rtol": 1e-4})["effects"]["force"]
+    F1, F2 = eff["value"]
+    assert F2 / F1 == pytest.approx(2**1.5, rel=1e-3, abs=0)  # 1e-3: the samples' paraboloid
+    assert 1e-10 < eff["rel_error"] <= 1e-4
+
+
+def test_closed_form_shapes_name_their_kind():
+    """The model block of a closed-form shape: its kind and its parameters."""
+    assert run(*KIND_SCENES["punch"][:2], ["force"])["model"]["kind"] == "flat_punch"
+    model = run(*KIND_SCENES["exact_sphere"][:2], ["force"])["model"]
+    assert (model["kind"], model["radius"]) == ("exact_sphere", 0.01)
+
+
+def test_flat_punch_has_no_max_pressure():
+    """The flat punch's pressure (5.9) is singular at its edge: max_pressure is refused with
+    that reason."""
+    with pytest.raises(scene.SceneError) as info:
+        run(*KIND_SCENES["punch"][:2], ["max_pressure"])
+    assert info.value.message == ("effect 'max_pressure' does not apply to this scene: the "
+                                  "punch pressure (5.9) is singular at the edge")
