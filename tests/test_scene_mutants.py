@@ -683,6 +683,9 @@ def test_numerical_mdr_solves_each_load_to_the_scene_rtol():
     F1, F2 = eff["value"]
     assert F2 / F1 == pytest.approx(2**1.5, rel=1e-3, abs=0)  # 1e-3: the samples' paraboloid
     assert 1e-10 < eff["rel_error"] <= 1e-4
+    tight = run(bodies, {"depth": 2e-6}, ["force"])["effects"]["force"]  # rtol 1e-10
+    # the grid refined further for the default rtol: a bound far below the loose one
+    assert tight["rel_error"] < 1e-3 * eff["rel_error"]
 
 
 def test_closed_form_shapes_name_their_kind():
