@@ -372,6 +372,8 @@ def test_rtol_reaches_the_bem_and_the_numerical_mdr_curve():
     eff = run(bodies, {"depth": 2e-6}, ["force_depth_curve"],
               accuracy={"rtol": 1e-4})["effects"]["force_depth_curve"]
     assert 1e-10 < eff["rel_error"] <= 1e-4
+    tight = run(bodies, {"depth": 2e-6}, ["force_depth_curve"])["effects"]["force_depth_curve"]
+    assert tight["rel_error"] < 1e-3 * eff["rel_error"]  # the default rtol, 1e-10, refines
 
 
 @pytest.mark.parametrize("load, key", [({"depth": 1e-6}, "force"), ({"force": 200.0}, "depth")])
