@@ -5,14 +5,16 @@ Run: ``make mutation`` (every module of MODULES with its own test files), or for
     .venv/bin/python benchmarks/mutation.py --module scene --tests tests/test_scenes.py \
         --out docs/mutation_scene.md
 
-``--module`` takes paths relative to numeric/ (a file, or a folder for all the files in it);
-each ``--module`` is run with the ``--tests`` given after it (or MODULES' test files).
+``--module`` takes paths relative to numeric/ (a file, or a folder for all the files in it, or
+several joined by commas, mutated in one run with one set of tests); each ``--module`` is run
+with the ``--tests`` given after it (or MODULES' test files).
 
 mutmut 3 copies the sources to ``mutants/`` and runs the tests there, choosing a mutant by the
 module's import name. numeric/ installs as ``hertzmdr.numeric`` (package-dir), so every module
 runs in a scratch folder ``build/mutation/<module>/`` that lays the sources out under that name
-(``hertzmdr/numeric``, a copy of numeric/) beside ``tests`` (a link), with the repository's
-pyproject.toml whose ``[tool.mutmut]`` (the shared settings) gets this module's
+(``hertzmdr/numeric``, a copy of numeric/) beside ``tests``, ``examples`` and ``docs`` (links,
+copied into ``mutants/``: the scene tests read the example scenes and docs/scenes.md), with the
+repository's pyproject.toml whose ``[tool.mutmut]`` (the shared settings) gets this module's
 ``only_mutate`` and test files. mutmut runs the tests that reach a function with ``-x`` for
 each of its mutants, one worker, under ``nice -n 19``. mutmut 3 leaves decorated functions
 alone; in the copy of the module under test, ``@representable`` is applied after the function
@@ -46,6 +48,10 @@ NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
 # the last run of each module, one JSON file each (committed: --report-only assembles the page
 # from them when build/mutation/ holds no newer run of the module)
 RUNS = ROOT / "benchmarks" / "mutation_runs"
+#: the notes on numeric/scene/ (a file of their own: the scene layer's runs are separate)
+SCENE_NOTES = ROOT / "benchmarks" / "mutation_notes_scene.toml"
+#: folders besides tests/ that the tests read (the example scenes, docs/scenes.md)
+EXTRA = ("examples", "docs")
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
 
 # test_stress.py but its 2-D quadrature sweep test_hertz_field_by_superposition (60 s for each
@@ -156,14 +162,20 @@ class Run:
 def mutmut_config(module: str, tests: list[str]) -> dict:
     """The repository's [tool.mutmut] settings with this module's scope."""
     shared = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"].get("mutmut", {})
-    target = f"{PACKAGE}/{module}".rstrip("/")
-    only = [target if target.endswith(".py") else target + "/*"]
+    targets = [f"{PACKAGE}/{m}".rstrip("/") for m in module.split(",")]
+    only = [t if t.endswith(".py") else t + "/*" for t in targets]
     # hypothesis's "mutation" profile (tests/conftest.py): no deadline (on a loaded machine a
     # test's time says nothing: DeadlineExceeded would count as a kill) and the same examples
     # for every mutant
     args = shared.get("pytest_add_cli_args", []) + ["--hypothesis-profile=mutation"]
-    return {**shared, "source_paths": [PACKAGE], "only_mutate": only,
+    return {**shared, "source_paths": [PACKAGE], "only_mutate": only, "also_copy": list(EXTRA),
             "pytest_add_cli_args": args, "pytest_add_cli_args_test_selection": list(tests)}
+
+
+def workdir(module: str) -> str:
+    """The scratch folder's name of a --module (``scene/kinds`` -> ``scene_kinds``, several
+    joined by ``+``)."""
+    return module.replace("/", "_").replace(",", "+").replace(".py", "")
 
 
 def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> Path:
@@ -171,7 +183,7 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> 
     ``resume``, the folder of a run of the same module and tests stopped before its end is
     kept (mutmut then checks only the mutants it has no result for, and those of functions
     changed since)."""
-    work = base / module.replace("/", "_").removesuffix(".py")
+    work = base / workdir(module)
     if resume and (work / "mutants").is_dir() and not (work / "result.json").exists():
         cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
         if cfg == mutmut_config(module, tests):
@@ -179,10 +191,12 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> 
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
     shutil.copytree(NUMERIC, work / PACKAGE, ignore=shutil.ignore_patterns("__pycache__"))
-    target = work / PACKAGE / module
-    for path in [target] if target.is_file() else sorted(target.rglob("*.py")):
-        undecorate(path)
-    (work / "tests").symlink_to(ROOT / "tests", target_is_directory=True)
+    for part in module.split(","):
+        target = work / PACKAGE / part
+        for path in [target] if target.is_file() else sorted(target.rglob("*.py")):
+            undecorate(path)
+    for folder in ("tests", *EXTRA):
+        (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
     text = (ROOT / "pyproject.toml").read_text()
     text = re.sub(r"(?ms)^\[tool\.mutmut\]\n.*?(?=^\[|\Z)", "", text)  # replaced below
     cfg = mutmut_config(module, tests)
@@ -225,13 +239,20 @@ def function_lines(path: Path) -> dict[str, int]:
 
 
 def load_notes(kind: str = "equivalent") -> list[dict]:
-    """The notes of benchmarks/mutation_notes.toml: "equivalent" (survivors that cannot be
-    killed, with the reason), "since" (survivors of a module's last run killed by a test added
-    after it), "killed" (survivors of earlier runs and the tests added) or "finding" (defects
-    seen while writing those tests)."""
-    if not NOTES.exists():
-        return []
-    return tomllib.loads(NOTES.read_text()).get(kind, [])
+    """The notes of benchmarks/mutation_notes.toml and mutation_notes_scene.toml: "equivalent"
+    (survivors that cannot be killed, with the reason), "since" (survivors of a module's last
+    run killed by a test added after it), "text" (a line whose text-only mutants are
+    presentation), "killed" (survivors of earlier runs and the tests added) or "finding"
+    (defects seen while writing those tests)."""
+    return [n for path in (NOTES, SCENE_NOTES) if path.exists()
+            for n in tomllib.loads(path.read_text()).get(kind, [])]
+
+
+def text_only(s: Survivor) -> bool:
+    """Whether a mutant changes only the text inside string literals: wrapped in XX, or its
+    case changed (mutmut's string mutations other than None)."""
+    return (squash(s.mutant) != squash(s.original)
+            and squash(s.mutant).replace("XX", "").lower() == squash(s.original).lower())
 
 
 def squash(s: str) -> str:
@@ -241,10 +262,17 @@ def squash(s: str) -> str:
 def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
     """The reason a survivor cannot be killed, or the test added since its run that kills it
     ("since" notes, for a module not run again since the test was added)."""
-    for n in notes + [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
-                      for k in load_notes("since")]:
+    # a test added since the run, checked to kill the mutant, first: it is a fact about this
+    # mutant, where a reason may be written for a whole line
+    for n in [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
+              for k in load_notes("since")] + notes:
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
+            return n["reason"]
+    # "text" notes: every mutant of the line that only changes the text of a string (a method
+    # text, a label): presentation, with the reason
+    for n in load_notes("text"):
+        if n["module"] == module and squash(n["original"]) in squash(s.original) and text_only(s):
             return n["reason"]
     return None
 
@@ -282,7 +310,7 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
                 s = Survivor(name, status, lineno + offset - 1 + first - skipped,
                              " / ".join(x[1:].strip() for x in body if x.startswith("-")),
                              " / ".join(x[1:].strip() for x in body if x.startswith("+")))
-                if not module.endswith(".py"):
+                if not module.endswith(".py") or "," in module:
                     s.file = str(source.relative_to(PACKAGE))
                 s.note = find_note(module, s, notes)
                 found.append(s)
@@ -317,7 +345,7 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
 
 
 def run_path(module: str) -> Path:
-    return RUNS / (module.replace("/", "_").removesuffix(".py") + ".json")
+    return RUNS / (workdir(module) + ".json")
 
 
 def save_run(run: Run) -> None:
@@ -335,7 +363,7 @@ def load_run(module: str, base: Path, notes: list[dict]) -> Run | None:
     not checked; either is kept in benchmarks/mutation_runs/), else the one kept there; None if
     there is none. The page shows the tests that run used (MODULES may have more since: their
     kills are the "since" notes)."""
-    work = base / module.replace("/", "_").removesuffix(".py")
+    work = base / workdir(module)
     path = work / "result.json"
     if not path.exists() and (work / "mutants").is_dir():
         cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
@@ -344,7 +372,10 @@ def load_run(module: str, base: Path, notes: list[dict]) -> Run | None:
         stopped = datetime.datetime.fromtimestamp((work / "run.log").stat().st_mtime,
                                                   datetime.UTC)
         again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
-        run = Run(module, list(tests), again, 0.0,
+        # the time it ran: from the scratch folder's pyproject.toml (written at its start) to
+        # the last line of its log
+        ran = (work / "run.log").stat().st_mtime - (work / "pyproject.toml").stat().st_mtime
+        run = Run(module, list(tests), again, ran,
                   stopped.strftime("%Y-%m-%d %H:%M UTC") + " (stopped before the end)",
                   counts, survivors)
         save_run(run)
@@ -386,10 +417,12 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
     columns = COLUMNS + (["not checked"] if any(r.counts.get("not checked") for r in runs)
                          else [])
     lines = [
-        "# Mutation testing of numeric/",
+        "# Mutation testing of numeric/" + ("scene/" if runs and all(
+            r.module.startswith("scene") for r in runs) else ""),
         "",
-        f"Made by `{' '.join(['python', 'benchmarks/mutation.py', *argv])}` (or `make mutation`)"
-        f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of "
+        f"Made by `{' '.join(['python', 'benchmarks/mutation.py', *argv])}`"
+        + (" (or `make mutation`)" if all(r.module in MODULES for r in runs) else "")
+        + f" with mutmut {mutmut.__version__}: {total / 60:.1f} min of "
         + ("complete " if any(not r.seconds for r in runs) else "")
         + "runs on a shared 2-core machine (each module's date below"
         + ("; this page was assembled by `--report-only` from the last run of each module, "
@@ -457,7 +490,8 @@ def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--module", action="append", default=[],
-                    help="path under numeric/ (file or folder); repeatable")
+                    help="path under numeric/ (file or folder), or several joined by commas "
+                    "(mutated in one run); repeatable")
     ap.add_argument("--tests", action="append", nargs="+", default=[],
                     help="test files (or tests: file::name) for the --module before it")
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "mutation.md")
@@ -475,8 +509,9 @@ def main(argv: list[str] | None = None) -> int:
     else:
         jobs = list(MODULES.items())
     for m, tests in jobs:
-        if not (NUMERIC / m).exists():
-            ap.error(f"--module {m}: numeric/{m} does not exist")
+        for part in m.split(","):
+            if not (NUMERIC / part).exists():
+                ap.error(f"--module {m}: numeric/{part} does not exist")
         for t in tests:
             if not (ROOT / t.partition("::")[0]).is_file():  # a file, or a test in it
                 ap.error(f"--tests {t}: no such file")
