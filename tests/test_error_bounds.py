@@ -87,11 +87,16 @@ ROUTES = {
     "beta_triangle_punch": (lambda: None, 0.5),  # check_triangle: (5.13)-(5.14)
     "exact_sphere_deep": (lambda: ExactSphere(e_star(RUBBER), 1e-3), 0.5),
     "fig5_2_surface_displacement": (lambda: Hertz(e_star(GLASS), 5e-3), 0.22),
+    # the colloidal probe's scene (the fit's tip) run at the curve's deepest point
+    "fit_colloidal_probe": (lambda: Hertz(e_star((1e6, 0.5)), 10e-6), 0.5),
     "fig5_8_fig5_9_stresses": (lambda: Hertz(e_star((70e9, 0.33)), 10e-3), 0.33),
     "height_map_tip": (lambda: Hertz(e_star((2e9, 0.4)), 1e-3), 0.4),
     "line_contact_roller": (lambda: Line(e_star(STEEL, STEEL), mp.mpf(5e-3) * mp.mpf(25e-3)
                                          / (mp.mpf(5e-3) + mp.mpf(25e-3)), 10e-3), 0.3),
     # crossed equal cylinders at 90 deg: a sphere of their radius
+    # Issue 14's rollers: radii 10 mm and 20 mm, 30 mm long; the Flamant superposition
+    "roller_pair_stresses": (lambda: Line(e_star(STEEL, STEEL), mp.mpf(10e-3) * mp.mpf(20e-3)
+                                          / (mp.mpf(10e-3) + mp.mpf(20e-3)), 30e-3), 0.3),
     "problem1_rail_wheel": (lambda: Hertz(e_star(STEEL, STEEL), 0.5), 0.3),
     "problem2_crossed_cylinders": (lambda: Gaussian(e_star(STEEL, STEEL), gap_radii(
         (0.02, 0.0), (0.02, math.pi / 4))), 0.3),
@@ -197,6 +202,8 @@ def check(case, route, eff, name):
     if case.bodies[0]["shape"] == "height_map":
         return check_bem(case, route, eff, name)
     ds = routes.depths(case, route, None)
+    if isinstance(route, Line) and name in routes.LINE_CHECKS:
+        return routes.LINE_CHECKS[name](case, route, eff, name, ds)
     if isinstance(route, Gaussian):
         return check_gaussian(case, route, eff, name, ds)
     if name == "stiffness" and isinstance(route, ExactSphere):
