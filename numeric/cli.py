@@ -2,7 +2,7 @@
 
     hertzmdr run [SCENE] [--json] [--out DIR [--force]]
     hertzmdr effects
-    hertzmdr fit CURVE.csv --scene TIP.toml [--out FIGURE.png] [--z0 GUESS] [--sigma NOISE]
+    hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
 
 ``hertzmdr run`` with no SCENE runs the built-in tour (the chapter's Problems 1-8 and figures).
 A malformed scene prints one message naming the file, the key and the problem, and exits 2.
@@ -53,6 +53,7 @@ p_fit.add_argument("curve", type=Path, help="CSV: a header `z [um], F [nN]` (any
 p_fit.add_argument("--scene", type=Path, required=True,
                    help="scene (TOML) with the tip and the flat sample (its nu converts E* to E)")
 p_fit.add_argument("--out", type=Path, help="write the figure of data, fit and residuals (PNG)")
+p_fit.add_argument("--force", action="store_true", help="allow --out to replace an existing file")
 p_fit.add_argument("--z0", help="a guess of the contact point, with a unit (e.g. \"1.2 um\")")
 p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a unit "
                    "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
@@ -194,8 +195,8 @@ def cmd_fit(args) -> int:
         z, F = fit_io.read_curve(args.curve)
         z0 = None if args.z0 is None else to_si(args.z0, "length")
         sigma = None if args.sigma is None else to_si(args.sigma, "force")
-        if args.out is not None and args.out.is_dir():
-            raise UsageError(f"--out {args.out}: is a folder; give the figure's file name")
+        if args.out is not None:
+            check_figure_out(args.out, args.force)
         result = fit.fit_curve(z, F, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
                                sigma=sigma)
     except SceneError as exc:
@@ -205,16 +206,33 @@ def cmd_fit(args) -> int:
     except ValueError as exc:  # CurveError, NoContactError and the validators' messages
         raise UsageError(f"{args.curve}: {exc}" if not isinstance(exc, fit_io.CurveError)
                          else str(exc)) from None
-    print(fit_io.report(result, scene_E))
-    if args.out is not None:
+    if args.out is not None:  # before the report: a failed write leaves nothing on stdout
         try:
             fit_io.figure(result, args.out)
         except ImportError:
             raise UsageError("--out needs matplotlib: pip install 'hertzmdr[plot]'") from None
         except OSError as exc:
             raise UsageError(f"--out {args.out}: cannot write ({exc})") from None
+    print(fit_io.report(result, scene_E))
+    if args.out is not None:
         print(f"wrote {args.out}")
     return 0
+
+
+def check_figure_out(path: Path, force: bool) -> None:
+    """Refuse a figure's --out before the fit: a folder, an existing file without --force, a
+    name that is not .png, or a parent that is a file or cannot be written."""
+    if path.is_dir():
+        raise UsageError(f"--out {path}: is a folder; give the figure's file name")
+    if path.suffix.lower() != ".png":
+        raise UsageError(f"--out {path}: the figure is a PNG; give a name ending in .png")
+    parent = next((p for p in path.parents if p.exists()), Path("."))
+    if not parent.is_dir():
+        raise UsageError(f"--out {path}: {parent} is a file, not a folder")
+    if path.exists() and not force:
+        raise UsageError(f"--out {path}: exists; pass --force to replace it")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise UsageError(f"--out {path}: {parent} is not writable")
 
 
 def cmd_accuracy(args) -> int:

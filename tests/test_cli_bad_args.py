@@ -8,15 +8,20 @@ after (``hertzmdr accuracy`` writes under the current folder by default).
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from hertzmdr.numeric.cli import main, parser, tour_scenes
 
 SCENE = str(next(p for p in tour_scenes() if p.stem == "problem1_rail_wheel"))
+EXAMPLES = Path(__file__).parents[1] / "examples"
+FIT_SCENE = str(EXAMPLES / "fit_colloidal_probe.toml")
+FIT_CURVE = str(EXAMPLES / "fit_colloidal_probe_curve.csv")
 
 #: (argv, a word the message must contain); {scene}: a valid scene, {file}: an existing file,
 #: {dir}: an existing non-empty folder, {toml}: a file of broken TOML, {binary}: bytes that
-#: are not UTF-8
+#: are not UTF-8, {curve}/{fitscene}: the fit example's curve and tip, {png}: an existing figure
 CASES = [
     ([], "required"),
     (["frob"], "invalid choice"),
@@ -42,6 +47,26 @@ CASES = [
     (["accuracy", "--out", "{dir}"], "is a folder"),
     (["accuracy", "--out", "{file}/report.md"], "is a file"),
     (["accuracy", "--quick", "3"], "3"),
+    (["fit"], "required"),
+    (["fit", "{curve}"], "--scene"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--bogus"], "--bogus"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "extra"], "extra"),
+    (["fit", "{curve}", "--scene"], "--scene"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--z0"], "--z0"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--z0", "abc"], "--z0"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--z0", "1 s"], "--z0"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--sigma", "1 m"], "--sigma"),
+    (["fit", "missing.csv", "--scene", "{fitscene}"], "no such file"),
+    (["fit", "{curve}", "--scene", "missing.toml"], "no such file"),
+    (["fit", "{curve}", "--scene", "{toml}"], "TOML"),
+    (["fit", "{curve}", "--scene", "{scene}"], "flat"),  # two cylinders: no flat sample
+    (["fit", "{dir}", "--scene", "{fitscene}"], "cannot read"),
+    (["fit", "{binary}", "--scene", "{fitscene}"], "cannot read"),
+    (["fit", "{file}", "--scene", "{fitscene}"], "two columns"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{file}"], "png"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{png}"], "--force"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{dir}"], "is a folder"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{file}/fit.png"], "is a file"),
 ]
 
 
@@ -59,9 +84,11 @@ def test_bad_arguments(argv, word, tmp_path, monkeypatch, capsys):
     (work / "folder" / "x").write_text("")
     (work / "broken.toml").write_text("title = \n")
     (work / "binary.toml").write_bytes(b"\xff\xfe\x00title")
+    (work / "fit.png").write_bytes(b"\x89PNG keep me")
     monkeypatch.chdir(work)
     subs = {"{scene}": SCENE, "{file}": "taken.txt", "{dir}": "folder",
-            "{toml}": "broken.toml", "{binary}": "binary.toml"}
+            "{toml}": "broken.toml", "{binary}": "binary.toml", "{png}": "fit.png",
+            "{curve}": FIT_CURVE, "{fitscene}": FIT_SCENE}
     args = []
     for a in argv:
         for k, v in subs.items():
