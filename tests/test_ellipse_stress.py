@@ -143,7 +143,11 @@ def test_field_by_superposition():
 
 @pytest.mark.sweep
 @SLOW
-@pytest.mark.parametrize("t", [1.0, 0.5, 0.1, 0.01])
+@pytest.mark.parametrize("t", [1.0, 0.5, 0.1, pytest.param(0.01, marks=pytest.mark.xfail(
+    strict=True, reason="unresolved at b/a = 0.01, point (0.3, 0.4 b, 0.3 b): sigma_xx is "
+    "-0.378731692 p0 here, -0.378732415 by this reference and -0.378731775 by a reference "
+    "with denser panels around the point; the references do not agree, so which is off is "
+    "not known (issue 14 stays open on it)"))])
 def test_field_by_superposition_sweep(t):
     pts = [(0.0, 0.0, 0.5 * t), (0.3, 0.4 * t, 0.3 * t), (0.9, 0.2 * t, 0.05 * t),
            (1.2, 0.5 * t, 0.5 * t), (0.2, 1.5 * t, 0.8 * t), (0.0, 0.0, 3.0)]

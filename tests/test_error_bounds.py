@@ -35,6 +35,7 @@ from test_scene_routes import (
     MDR,
     STEEL,
     Case,
+    Elliptic,
     Gaussian,
     Hertz,
     Impact,
@@ -94,6 +95,11 @@ ROUTES = {
     "fretting_sphere": (lambda: Tangential((STEEL, STEEL), mp.mpf("0.01"), 100, "0.6",
                                            amplitude=30), 0.3),
     "beta_triangle_punch": (lambda: None, 0.5),  # check_triangle: (5.13)-(5.14)
+    # issue 14's ball (R = 6 mm) in a race (25 mm) with a groove of -6.3 mm: the gap's
+    # principal radii 1/(1/6 + 1/25) mm along the rolling direction, 1/(1/6 - 1/6.3) mm across
+    "bearing_ball_groove": (lambda: Elliptic(e_star(STEEL, STEEL), [
+        1 / (1 / mp.mpf("6e-3") + 1 / mp.mpf("25e-3")),
+        1 / (1 / mp.mpf("6e-3") - 1 / mp.mpf("6.3e-3"))]), 0.3),
     "exact_sphere_deep": (lambda: ExactSphere(e_star(RUBBER), 1e-3), 0.5),
     "fig5_2_surface_displacement": (lambda: Hertz(e_star(GLASS), 5e-3), 0.22),
     # the colloidal probe's scene (the fit's tip) run at the curve's deepest point
@@ -234,7 +240,10 @@ HEAVY_FIELDS = {"exact_sphere_deep", "problem8_worn_parabola", "worn tip"}
 #: effects whose golden-section search over the Flamant superposition costs 1.5 s each: the
 #: line contact's maxima over p0 depend on nu alone, and test_scene_routes checks them at the
 #: same nu = 0.3 in CI; HERTZMDR_SWEEP=full checks the roller's own
-HEAVY_EFFECTS = {"roller_pair_stresses": {"max_shear", "max_von_mises"}}
+HEAVY_EFFECTS = {"roller_pair_stresses": {"max_shear", "max_von_mises"},
+                 # the bearing's stresses against the 20-digit superposition over the ellipse
+                 # (test_scene_routes' check_ellipse_stress): minutes each
+                 "bearing_ball_groove": set(routes.ELLIPSE_STRESS)}
 
 
 def _checked(key, effects):
@@ -252,7 +261,9 @@ def test_example_bounds(stem):
         route = case.get()
         special = {Adhesive: check_adhesive, Tangential: check_tangential}.get(type(route))
         for name in _checked(stem, case.effects):
-            if special is not None:
+            if isinstance(route, Elliptic) and name in routes.ELLIPSE_STRESS:
+                routes.check_ellipse_stress(doc, doc["effects"][name], name)
+            elif special is not None:
                 special(case, route, doc["effects"][name], name, doc)
             else:
                 check(case, route, doc["effects"][name], name)

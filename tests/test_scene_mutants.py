@@ -60,20 +60,19 @@ def test_superposed_maxima_agree_with_their_field(monkeypatch):
     x, z, sv = np.array(field["x"]), np.array(field["z"]), np.array(field["sigma_v"])
     assert sv.shape == (3, 7)  # z: 3 points 0 < z <= 2a; x: -2a..2a mirrored from 4 points
     vm, tau = eff["max_von_mises"]["value"], eff["max_shear"]["value"]
-    # the largest von Mises stress is the field's largest value, where the field has it
+    # the largest von Mises stress is refined from the field's largest value (Nelder-Mead,
+    # stress.superposed_maximum): at least that value, less its bound, and near where it is
+    bound = eff["max_von_mises"]["rel_error"]
     k = np.unravel_index(np.argmax(sv), sv.shape)
-    assert vm["value"] == sv[k] and vm["z"] == z[k[0]] and vm["x"] == abs(x[k[1]])
-    # sigma_v <= 2 tau at every point: max sigma_v <= 2 max tau <= (2/sqrt 3) max sigma_v
-    assert vm["value"] / 2 <= tau["value"] * (1 + 1e-12)  # 1e-12: rounding of sums of ~1e9 Pa
-    assert tau["value"] <= vm["value"] / math.sqrt(3) * (1 + 1e-12)
-    assert tau["depth"] in z  # located on the grid's depths
-    # both report the plane's estimate plus the pressure's own bound (0 for a closed form;
-    # a numerical MDR's pressure makes the superposition take minutes), as the field does
+    assert vm["value"] >= sv[k] * (1 - bound)
+    assert abs(vm["z"] - z[k[0]]) <= z[1] - z[0] and abs(vm["x"] - abs(x[k[1]])) <= x[1] - x[0]
+    # sigma_v <= 2 tau at every point: max sigma_v <= 2 max tau <= (2/sqrt 3) max sigma_v,
+    # each maximum within its bound
+    tol = bound + eff["max_shear"]["rel_error"]
+    assert vm["value"] / 2 <= tau["value"] * (1 + tol)
+    assert tau["value"] <= vm["value"] / math.sqrt(3) * (1 + tol)
     for name in ("max_shear", "max_von_mises"):
-        assert eff[name]["rel_error"] == eff["von_mises_field"]["rel_error"] < 1e-6
-    assert f"spacing {z[1] - z[0]:.3g} m" in eff["max_shear"]["method"]
-    assert "4-point grid" in eff["max_shear"]["method"]
-    assert "4x3 grid" in eff["max_von_mises"]["method"]
+        assert "refined by Nelder-Mead" in eff[name]["method"]
 
 
 # -- the grids of the field effects (kinds/base.py, kinds/axisym.py) ---------------------------
@@ -205,7 +204,8 @@ def offered(bodies, load, extra):
     spec = scene.load({"effects": ["force"], "body": bodies, "load": load, **extra}).spec
     contact = build(spec)
     # the axis stresses of kinds other than Hertz are superposed: seconds
-    return [n for n in CHEAP if contact.has(n)
+    # the tangential effects need [interface] friction, which these scenes do not give
+    return [n for n in CHEAP if contact.has(n) and "tangential" not in scene.EFFECTS[n].needs
             and (n != "axis_stresses" or contact.kind == "hertz")]
 
 
@@ -382,6 +382,7 @@ def test_bem_state_error_is_the_change_from_half_resolution(load, key):
     under a depth, the depth under a force) from the same solve on every other pixel with
     twice the pixel size (numeric/bem.py called directly on the shape's height map)."""
     from hertzmdr.numeric import bem
+    from hertzmdr.numeric.scene.kinds.grid import GCI_FACTOR
 
     bodies, _, extra = KIND_SCENES["bem"]
     eff = run(bodies, load, [key], **extra)["effects"][key]
@@ -394,8 +395,9 @@ def test_bem_state_error_is_the_change_from_half_resolution(load, key):
     model = run(bodies, load, [key], **extra)["model"]
     assert model["grid"] == list(height.shape) and model["pixel_size"] == dx
     # ... which moves a change of about 4 % by 1e-6 / 0.04
-    assert eff["rel_error"] == pytest.approx(abs(getattr(fine, key) / getattr(coarse, key) - 1),
-                                             rel=1e-3, abs=0)
+    # ... times Roache's safety factor of a two-grid convergence index (kinds/grid.py)
+    change = abs(getattr(fine, key) / getattr(coarse, key) - 1)
+    assert eff["rel_error"] == pytest.approx(GCI_FACTOR * change, rel=1e-3, abs=0)
 
 
 # -- units.py: writing values with SI prefixes ------------------------------------------------
@@ -502,7 +504,8 @@ def test_document_entry_of_each_effect():
         assert entry["unit"] == scene.EFFECTS[name].unit
         assert entry["met_rtol"] is (entry["rel_error"] <= 1e-10)
         assert isinstance(entry["seconds"], float) and 0 <= entry["seconds"] < 60
-    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects"}
+    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects", "warnings"}
+    assert doc["warnings"] == []  # a small Hertz contact stretches no assumption
 
 
 def test_numeric_refusal_at_the_load_names_the_effect():
