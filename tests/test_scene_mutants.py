@@ -194,6 +194,7 @@ KIND_SCENES = {
 }
 CHEAP = [name for name, e in scene.EFFECTS.items()
          if "impact" not in e.needs and name not in ("max_shear", "max_von_mises",
+                                                     "max_orthogonal_shear",
                                                      "von_mises_field")]
 
 
