@@ -89,7 +89,7 @@ def main(argv=None):
     for what, target, fn, ref in rows(args.quick):
         t = _timing.measure(fn, run.budget)
         err = abs(float(fn()) / ref - 1)
-        lines.append(f"| {what} | {_fmt(t.median)} | {_fmt(target)} | "
+        lines.append(f"| {what} | {_common.seconds(t.median)} | {_common.seconds(target)} | "
                      f"{'yes' if t.median <= target else 'no'} | {err:.1e} |\n")
     lines.append("\nThe sampled profile's pull-off solves twice (fine and coarse samples, for "
                  "the error estimate), each a scan of dF/da by the quadrature of (5.52) and "
@@ -100,13 +100,6 @@ def main(argv=None):
     out = run.docs / "adhesion_speed.md"
     out.write_text("".join(lines))
     print("".join(lines))
-
-
-def _fmt(s: float) -> str:
-    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6)):
-        if s >= scale:
-            return f"{s / scale:.3g} {unit}"
-    return f"{s * 1e9:.3g} ns"
 
 
 if __name__ == "__main__":

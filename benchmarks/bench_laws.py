@@ -60,8 +60,9 @@ def main(argv=None):
                      "difference |\n|---|---|---|---|---|\n")
         for name, fn in ways.items():
             diff = float(np.max(np.abs(np.asarray(fn(), dtype=float) / ours - 1)))
-            lines.append(f"| {name} | {_fmt(t[name].median)} | "
-                         f"{_timing.ratio(t[name], t[bare]):.2f} | {_fmt(t[name].first)} | "
+            lines.append(f"| {name} | {_common.seconds(t[name].median)} | "
+                         f"{_timing.ratio(t[name], t[bare]):.2f} | "
+                         f"{_common.seconds(t[name].first)} | "
                          f"{diff:.1e} |\n")
         lines.append("\n")
     if not any("nanite" in k for _, ways in comparisons for k in ways):
@@ -71,13 +72,6 @@ def main(argv=None):
     out = run.docs / "laws_speed.md"
     out.write_text("".join(lines))
     print("".join(lines))
-
-
-def _fmt(s: float) -> str:
-    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6)):
-        if s >= scale:
-            return f"{s / scale:.3g} {unit}"
-    return f"{s * 1e9:.3g} ns"
 
 
 if __name__ == "__main__":

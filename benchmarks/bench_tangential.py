@@ -112,8 +112,8 @@ def main(argv=None):
             "history + error estimate": "the same with the grid-error estimate"}
     for k in ways:
         target = TARGETS.get(k.split(" ")[0] if k != "history + error estimate" else "history")
-        lines.append(f"| {what[k]} | {_fmt(t[k].median)} | {_fmt(cpu[k])} | "
-                     f"{_fmt(target) if k in TARGETS else '-'} |\n")
+        lines.append(f"| {what[k]} | {_common.seconds(t[k].median)} | {_common.seconds(cpu[k])} | "
+                     f"{_common.seconds(target) if k in TARGETS else '-'} |\n")
     lines.append("\n## The incremental DEM rule against the springs\n\n"
                  + " ".join(__doc__.split("\n\n")[2].split()) + "\n\n"
                  "| history | steps | largest F_t difference / mu F | energy dissipated, "
@@ -134,13 +134,6 @@ def main(argv=None):
     out = run.docs / "tangential_speed.md"
     out.write_text("".join(lines))
     print("".join(lines))
-
-
-def _fmt(s: float) -> str:
-    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6)):
-        if s >= scale:
-            return f"{s / scale:.3g} {unit}"
-    return f"{s * 1e9:.3g} ns"
 
 
 if __name__ == "__main__":
