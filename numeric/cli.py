@@ -84,8 +84,18 @@ def check_out(folder: Path, force: bool) -> None:
     parent = next((p for p in (folder, *folder.parents) if p.exists()), Path("."))
     if not parent.is_dir():
         raise UsageError(f"--out {folder}: {parent} is a file, not a folder")
+    _probe(parent, f"--out {folder}")
+
+
+def _probe(parent: Path, what: str) -> None:
+    """Create and remove a folder in ``parent``: os.access says yes to root even where the
+    file system refuses (/proc, /sys, a read-only mount)."""
     if not os.access(parent, os.W_OK | os.X_OK):
-        raise UsageError(f"--out {folder}: {parent} is not writable")
+        raise UsageError(f"{what}: {parent} is not writable")
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=".hertzmdr-probe-", dir=parent))
+    except OSError as exc:
+        raise UsageError(f"{what}: cannot write in {parent} ({exc.strerror})") from None
 
 
 def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: bool) -> None:
@@ -93,8 +103,11 @@ def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: boo
     from hertzmdr.numeric.scene.figures import write_all
 
     check_out(folder, force)
-    folder.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
+    try:
+        folder.parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
+    except OSError as exc:
+        raise UsageError(f"--out {folder}: cannot write ({exc.strerror})") from None
     try:
         for sub_name, doc, results, title in docs:
             target = tmp / sub_name if sub_name else tmp
@@ -108,6 +121,8 @@ def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: boo
                 dest.mkdir(exist_ok=True)
             else:
                 os.replace(item, dest)
+    except OSError as exc:  # a full disk, a file system that refuses midway
+        raise UsageError(f"--out {folder}: cannot write ({exc.strerror})") from None
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
@@ -231,8 +246,7 @@ def check_figure_out(path: Path, force: bool) -> None:
         raise UsageError(f"--out {path}: {parent} is a file, not a folder")
     if path.exists() and not force:
         raise UsageError(f"--out {path}: exists; pass --force to replace it")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise UsageError(f"--out {path}: {parent} is not writable")
+    _probe(parent, f"--out {path}")
 
 
 def cmd_accuracy(args) -> int:
