@@ -1,5 +1,6 @@
 """Every malformed scene gets one clear message naming the file and the key, and exit code 2."""
 
+import re
 import subprocess
 import sys
 
@@ -244,8 +245,12 @@ def test_sampled_profile_that_decreases_names_the_sample():
 def test_sampled_profile_too_short_says_where_the_samples_end():
     from hertzmdr.numeric import scene
 
-    with pytest.raises(scene.SceneError, match=r"they end at r_max = 1e-06 m.*further out"):
+    with pytest.raises(scene.SceneError, match=r"they end at r_max = 1e-06 m.*further out") \
+            as info:
         scene.load(_profile_scene(lambda r: [x * x / 2e-6 for x in r], 1e-6)).run()
+    # prose: the reached depth printed with 6 digits, not a float's 17 (g(r_max) = 0.25 um
+    # carries the quadrature's last-digit noise)
+    assert re.search(r"g\(r_max\) = \d(\.\d{1,5})?e-0\d m", str(info.value)), str(info.value)
 
 
 def test_sample_file_unit(tmp_path):
