@@ -516,7 +516,9 @@ class _HertzArrays:
         if not np.all(np.abs(R1 - R2) <= CIRCULAR_RTOL * np.maximum(R1, R2)):
             return None
         # quadratic.build's choice, point by point: R itself when equal, else (5.30)
-        R = np.where(R1 == R2, R1, bodies.gaussian_radius(R1, R2))
+        R, unequal = R1.copy(), R1 != R2
+        if unequal.any():
+            R[unequal] = bodies.gaussian_radius(R1[unequal], R2[unequal])  # (5.30)
         return _hertz_study_contact()(mats, spec.interface, spec.rtol, R=R,
                                       principal_radii=[R1, R2])
 

@@ -194,6 +194,8 @@ def figures(doc: dict, folder: Path) -> list[Path]:
                     else:
                         cs = ax.pcolormesh(X, Y, Z, cmap="viridis", shading="auto")
                     fig.colorbar(cs, ax=ax, label=ylabel)
+                    if Z.size <= 2500:  # the points computed
+                        ax.plot(X.ravel(), Y.ravel(), "k.", ms=2)
                     ax.set_ylabel(ylabel2)
                     for j, setter in ((0, ax.set_xscale), (1, ax.set_yscale)):
                         if study["axes"][j]["spacing"] == "log":
