@@ -236,7 +236,7 @@ def read_scene(reader, data: dict, default_title: str) -> SceneSpec:
                                      np.asarray(spec.load.values, float),
                                      spec.load.spacing),))
         return spec
-    parsed = {path: (key, *sweep_values(reader, _sweep_table(reader, data, path, key), key, dim))
+    parsed = {path: (key, *sweep_values(reader, _get_raw(data, path), key, dim))
               for path, key, dim in others}
     corners = [{path: v for path, v in zip(parsed, ends, strict=True)}
                for ends in itertools.product(*((vals[0], vals[-1])
@@ -275,13 +275,11 @@ def read_scene(reader, data: dict, default_title: str) -> SceneSpec:
                     f"study up to {MAX_FIELD_POINTS} points (a von Mises map is 101 x 101 numbers "
                     f"a point); this study has {study.size}: ask for fewer points, or for scalar "
                     "effects only")
-    if first.load.tangential is not None and any(a.is_load for a in axes):
-        reader.fail("load", "a tangential load needs a constant normal load: sweep another key")
     first.study = study
     return first
 
 
-def _sweep_table(reader, data: dict, path: tuple, key: str) -> dict:
+def _get_raw(data: dict, path: tuple):
     target = data
     for p in path:
         target = target[p]
