@@ -302,3 +302,18 @@ def test_every_study_example_csv():
         doc = scene.load(path).spec.study
         assert [h for h in rows[0][:len(doc.axes)]] == [a.column for a in doc.axes]
         assert len(rows) - 1 == doc.size
+
+
+def test_out_draws_a_studys_fields_at_each_point(tmp_path):
+    """--out draws a field of a study at each of its points, named by the row of results.csv,
+    and the text table lists the points."""
+    doc = hertz_study(["pressure_profile", "force"],
+                      plate_E={"from": "10 GPa", "to": "70 GPa", "points": 3})
+    path = write(tmp_path, doc)
+    rc, out, err = run_cli(path, "--out", tmp_path / "out")
+    assert rc == 0, err
+    names = {p.name for p in (tmp_path / "out").glob("*.png")}
+    assert names == {"pressure_profile_0.png", "pressure_profile_1.png",
+                     "pressure_profile_2.png", "force.png"}
+    assert "study: body[1] (plate).E from 10 GPa to 70 GPa, 3 points (linear)" in out
+    assert "pressure_profile: " in out and "(a field per point: result.json)" in out
