@@ -165,7 +165,7 @@ def test_a_study_computes_only_the_requested_effects(monkeypatch, study):
 def test_csv_round_trip(tmp_path):
     """results.csv (read back with the csv module and with numpy) holds the JSON's numbers
     exactly, one row per point, the unit in each header; --csv prints the same table."""
-    doc = hertz_study(["force", "semi_axes", "max_pressure", "max_shear"],
+    doc = hertz_study(["force", "semi_axes", "max_pressure"],
                       ball_radius={"from": "4 mm", "to": "6 mm", "points": 3},
                       load_force={"from": "0.5 kN", "to": "2 kN", "points": 2})
     doc["body"][1] |= {"shape": "ellipsoid", "radii": ["25 mm", "-6.3 mm"]}  # a grooved race
@@ -177,22 +177,31 @@ def test_csv_round_trip(tmp_path):
         rows = list(csv.reader(f))
     head, body = rows[0], rows[1:]
     assert head == ["body[0] (ball).radius [m]", "load.force [N]", "force [N]",
-                    "semi_axes[0] [m]", "semi_axes[1] [m]", "max_pressure [Pa]",
-                    "max_shear.value [Pa]", "max_shear.depth [m]"]
+                    "semi_axes[0] [m]", "semi_axes[1] [m]", "max_pressure [Pa]"]
     assert len(body) == 6
     cols = {h: [float(r[j]) for r in body] for j, h in enumerate(head)}
     e = doc["effects"]
     assert cols["body[0] (ball).radius [m]"] == doc["study"]["points"]["body[0] (ball).radius"]
     assert cols["force [N]"] == e["force"]["value"]
     assert cols["semi_axes[1] [m]"] == [v[1] for v in e["semi_axes"]["value"]]
-    assert cols["max_shear.depth [m]"] == e["max_shear"]["value"]["depth"]
     table = np.genfromtxt(tmp_path / "out" / "results.csv", delimiter=",", skip_header=1)
-    assert table.shape == (6, 8) and table[:, 5].tolist() == e["max_pressure"]["value"]
+    assert table.shape == (6, 6) and table[:, 5].tolist() == e["max_pressure"]["value"]
     rc, out, _ = run_cli(path, "--csv")
     assert rc == 0 and out == (tmp_path / "out" / "results.csv").read_text()
     pngs = {p.name for p in (tmp_path / "out").glob("*.png")}
-    assert pngs == {"force.png", "semi_axes_0.png", "semi_axes_1.png", "max_pressure.png",
-                    "max_shear_value.png", "max_shear_depth.png"}
+    assert pngs == {"force.png", "semi_axes_0.png", "semi_axes_1.png", "max_pressure.png"}
+
+
+def test_csv_columns_of_a_table_of_numbers():
+    """An effect with several numbers (max_shear: value and depth) gives a column each, with
+    its own unit, holding the JSON's numbers."""
+    from hertzmdr.numeric.scene.table import csv_text
+
+    doc = scene.load(hertz_study(["max_shear"], ball_radius={"from": "1 mm", "to": "2 mm",
+                                                             "points": 3})).run()
+    head, *rows = list(csv.reader(io.StringIO(csv_text(doc))))
+    assert head == ["body[0] (ball).radius [m]", "max_shear.value [Pa]", "max_shear.depth [m]"]
+    assert [float(r[2]) for r in rows] == doc["effects"]["max_shear"]["value"]["depth"]
 
 
 def test_csv_of_a_single_scene_and_of_a_load_sweep(tmp_path):

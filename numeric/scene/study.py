@@ -239,7 +239,7 @@ def read_scene(reader, data: dict, default_title: str) -> SceneSpec:
     parsed = {path: (key, *sweep_values(reader, _get_raw(data, path), key, dim))
               for path, key, dim in others}
     corners = [{path: v for path, v in zip(parsed, ends, strict=True)}
-               for ends in itertools.product(*((vals[0], vals[-1])
+               for ends in itertools.product(*((float(vals[0]), float(vals[-1]))
                                                for _, vals, _ in parsed.values()))]
     for path, (_, vals, _) in parsed.items():  # a sweep across 0: the key must take 0 too
         if vals[0] < 0 < vals[-1]:
@@ -252,7 +252,9 @@ def read_scene(reader, data: dict, default_title: str) -> SceneSpec:
         try:
             spec = reader.scene(raw, default_title)
         except SceneError as exc:
-            at = ", ".join(f"{parsed[p][0]} = {v:g}" for p, v in corner.items())
+            units = {path: DIMENSIONS[dim][0] if dim != NUMBER else "1"
+                     for path, _, dim in others}
+            at = ", ".join(f"{parsed[p][0]} = {show(v, units[p])}" for p, v in corner.items())
             raise SceneError(exc.where, exc.key, f"{exc.message} (at the study point {at})") \
                 from None
         first = first or spec
@@ -316,6 +318,13 @@ def at_point(spec: SceneSpec, axes: tuple[Axis, ...], values) -> SceneSpec:
     return out
 
 
+def at_the_point(exc: SceneError, axes, values) -> SceneError:
+    """``exc`` with the study point it happened at appended to its message."""
+    at = ", ".join(f"{a.key} = {show(float(v), a.unit)}" for a, v in zip(axes, values,
+                                                                         strict=True))
+    return SceneError(exc.where, exc.key, f"{exc.message} (at the study point {at})")
+
+
 # -- running ------------------------------------------------------------------------------------
 
 @dataclass
@@ -357,9 +366,7 @@ def _per_point(spec: SceneSpec, progress) -> StudyRun:
         try:
             record, results = run_scene(at_point(spec, study.axes, point))
         except SceneError as exc:
-            at = ", ".join(f"{a.key} = {v:g}" for a, v in zip(study.axes, point, strict=True))
-            raise SceneError(exc.where, exc.key, f"{exc.message} (at the study point {at})") \
-                from None
+            raise at_the_point(exc, study.axes, point) from None
         evaluated += record.evaluated
         models.append(record.contact)
         warnings += [dict(w, point=k) for w in record.warnings]
@@ -475,10 +482,13 @@ class _HertzArrays:
         warnings, evaluated = [], []
         for k, corner in enumerate(corners):
             one = at_point(spec, study.axes, corner)
-            contact = build(one)
-            if type(contact) is not HertzContact:
-                return None
-            check_applicable(one, contact)
+            try:
+                contact = build(one)
+                if type(contact) is not HertzContact:
+                    return None
+                check_applicable(one, contact)
+            except SceneError as exc:
+                raise at_the_point(exc, study.axes, corner) from None
             r = Run(one, contact)
             for n in dict.fromkeys(n for e in spec.effects for n in EFFECTS[e].needs):
                 r.node(n)
