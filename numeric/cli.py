@@ -1,6 +1,6 @@
 """The ``hertzmdr`` command: run scenes, list effects.
 
-    hertzmdr run [SCENE] [--json] [--out DIR [--force]]
+    hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
 
@@ -43,7 +43,10 @@ sub = parser.add_subparsers(dest="command", required=True)
 p_run = sub.add_parser("run", help="run a scene file, or the built-in tour without one")
 p_run.add_argument("scene", nargs="?", help="scene file (TOML); omit for the built-in tour")
 p_run.add_argument("--json", action="store_true", help="print one JSON document to stdout")
-p_run.add_argument("--out", type=Path, help="write result.json and a PNG per field effect here")
+p_run.add_argument("--csv", action="store_true", help="print the table of the scalar results "
+                   "as CSV to stdout: a row per point of a study, `name [unit]` headers")
+p_run.add_argument("--out", type=Path, help="write result.json, results.csv, a PNG per field "
+                   "effect and, for a study, a PNG per scalar effect here")
 p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
 p_fit = sub.add_parser("fit", help="fit a force curve for the sample's modulus, the contact "
@@ -100,7 +103,7 @@ def _probe(parent: Path, what: str) -> None:
 
 def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: bool) -> None:
     """Write atomically: everything goes to a temporary folder first, then is moved in."""
-    from hertzmdr.numeric.scene.figures import write_all
+    from hertzmdr.numeric.scene.table import write
 
     check_out(folder, force)
     try:
@@ -113,7 +116,7 @@ def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: boo
             target = tmp / sub_name if sub_name else tmp
             target.mkdir(parents=True, exist_ok=True)
             (target / "result.json").write_text(json.dumps(doc, indent=2) + "\n")
-            write_all(results, title, target)
+            write(doc, results, title, target)
         folder.mkdir(exist_ok=True)
         for item in sorted(tmp.rglob("*")):
             dest = folder / item.relative_to(tmp)
@@ -131,8 +134,10 @@ def _check_figures(runs) -> None:
     """--out draws a PNG per field effect: without matplotlib (the ``plot`` extra) say so in
     one line before anything is printed or written."""
     from hertzmdr.numeric.scene.figures import FIGURES
+    from hertzmdr.numeric.scene.table import needs_matplotlib
 
     fields = sorted({name for *_, results, _ in runs for name in results if name in FIGURES})
+    fields += ["the study's plots"] if any(needs_matplotlib(doc) for *_, doc in runs) else []
     if not fields:
         return
     try:
@@ -145,23 +150,36 @@ def _check_figures(runs) -> None:
 def cmd_run(args) -> int:
     from hertzmdr.numeric import scene
     from hertzmdr.numeric.scene.report import table
+    from hertzmdr.numeric.scene.table import axes_lines, csv_text, rows_table, study_table
 
+    if args.json and args.csv:
+        raise UsageError("run: give --json or --csv, not both (see: hertzmdr run -h)")
+    if args.csv and not args.scene:
+        raise UsageError("run: --csv prints the table of one scene: give a SCENE "
+                         "(see: hertzmdr run -h)")
     paths = [Path(args.scene)] if args.scene else tour_scenes()
     if args.out:
         check_out(args.out, args.force)
     runs = []
     for path in paths:
         sc = scene.load(path)
-        _, results, doc = sc.run_full()
+        _, results, doc = sc.run_full(progress=_progress())
         runs.append((path, sc, results, doc))
     if args.out:
         _check_figures(runs)
     if args.json:
         docs = [doc for *_, doc in runs]
         print(json.dumps(docs[0] if args.scene else docs, indent=2))
+    elif args.csv:
+        sys.stdout.write(csv_text(runs[0][-1]))
     else:
         for *_, results, doc in runs:
-            print(table(doc["title"], doc["model"], results, doc["warnings"]))
+            if "route" in doc.get("study", {}):
+                print(study_table(doc, doc["warnings"]))
+            else:
+                print(table(doc["title"], doc["model"], results, doc["warnings"]))
+                if "study" in doc:  # a load sweep: its points, one row each
+                    print("\n".join(axes_lines(doc["study"]) + rows_table(doc)))
             print()
     if args.out:
         _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"])
@@ -169,6 +187,24 @@ def cmd_run(args) -> int:
         if not args.json:
             print(f"wrote {args.out}")
     return 0
+
+
+def _progress():
+    """A study run point by point reports its progress on stderr, when stderr is a terminal
+    (a pipe or a log file gets nothing), once a study has taken a second."""
+    if not sys.stderr.isatty():
+        return None
+    import time
+
+    start, shown = time.perf_counter(), []
+
+    def report(done: int, total: int) -> None:
+        if time.perf_counter() - start > 1.0 or (shown and done == total):
+            shown.append(done)
+            end = "\n" if done == total else ""
+            print(f"\rstudy: {done}/{total} points", end=end, file=sys.stderr, flush=True)
+
+    return report
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -240,6 +240,9 @@ def valid_scene(draw):
         doc["accuracy"] = {"rtol": draw(st.sampled_from([1e-6, 1e-10, 1e-3]))}
     if extra and doc_interface:
         doc["interface"] = doc_interface
+    if draw(st.integers(0, 3)) == 0:  # a study: one swept key, now and then two
+        for _ in range(draw(st.integers(1, 2))):
+            study_sweep(draw, bodies)
     return doc, files
 
 
@@ -304,6 +307,38 @@ def interface_scene(draw):
             "interface": interface}, files
 
 
+def study_sweep(draw, bodies) -> None:
+    """Sweep one numeric key of a body (docs/scenes.md, "Studies"): E, nu, a radius or an
+    axis, over 2 or 3 points, linear or log, with or without units."""
+    i = draw(st.integers(0, 1))
+    b = bodies[i]
+    keys = [k for k in ("E", "nu", "radius", "axis") if k in b and not isinstance(b[k], dict)]
+    if not keys:
+        return
+    key = draw(st.sampled_from(keys))
+    n, spacing = draw(st.integers(2, 3)), draw(st.sampled_from(["linear", "log"]))
+    if key == "nu":
+        lo, hi = draw(st.sampled_from([(0.0, 0.5), (0.1, 0.45), (-0.5, 0.3)]))
+        spacing = "linear" if lo <= 0 else spacing
+        b[key] = {"from": lo, "to": hi, "points": n, "spacing": spacing}
+    elif key == "axis":
+        b[key] = {"from": "10 deg", "to": draw(st.sampled_from(["80 deg", "1.5 rad"])),
+                  "points": n, "spacing": spacing}
+    else:
+        lo = draw(quantity("pressure", 1e6, 1e12) if key == "E" else
+                  quantity("length", 1e-5, 1.0))
+        b[key] = {"from": lo, "to": _scaled_up(lo, draw(st.floats(1.5, 10.0))), "points": n,
+                  "spacing": spacing}
+
+
+def _scaled_up(v, factor):
+    """``v`` (an SI number or a string with a unit) times ``factor``, in the same form."""
+    if isinstance(v, str):
+        number, unit = v.split(" ", 1)
+        return f"{float(number) * factor:.6g} {unit}"
+    return v * factor
+
+
 # -- broken scenes ---------------------------------------------------------------------------------
 BAD_VALUES = [True, False, "", "abc", "70", "5 N", "3 furlong", "1e400 m", "nan m", "inf mm",
               "-1 mm", "0 mm", 0, 0.0, -1.0, math.nan, math.inf, -math.inf, 1e308, -1e308,
@@ -343,7 +378,7 @@ def broken_scene(draw):
     doc = json.loads(json.dumps(doc))  # a deep copy (NaN survives: only valid numbers here)
     for _ in range(draw(st.integers(1, 3))):
         how = draw(st.sampled_from(["value", "delete", "extra", "sweep", "history", "csv",
-                                    "unicode_key", "text"]))
+                                    "unicode_key", "text", "study"]))
         paths = _paths(doc)
         if how == "value" and paths:
             path, _ = draw(st.sampled_from(paths))
@@ -402,6 +437,17 @@ def broken_scene(draw):
                     b["file"] = name
                     if b["shape"] == "profile":
                         b["unit"] = draw(st.sampled_from(["nm", "m", "N", "", "furlong", 3]))
+        elif how == "study" and isinstance(doc.get("body"), list) and doc["body"]:
+            b = doc["body"][draw(st.integers(0, len(doc["body"]) - 1))]
+            if isinstance(b, dict):
+                b[draw(st.sampled_from(["radius", "E", "nu", "axis", "shape"]))] = draw(
+                    st.fixed_dictionaries({}, optional={
+                        "from": st.sampled_from([0, "1 mm", "-1 mm", "2 GPa", 0.6, "x", True,
+                                                 math.nan, 1e308]),
+                        "to": st.sampled_from(["3 mm", "1 N", 0.2, -1.0, math.inf, "5 GPa"]),
+                        "points": st.sampled_from([1, 2, 3, 2.5, True, 10**7, "3"]),
+                        "spacing": st.sampled_from(["log", "linear", "cubic", 2]),
+                        "step": st.just(1)}))
         elif how == "unicode_key":
             doc[draw(st.text(min_size=1, max_size=6))] = draw(st.sampled_from(BAD_VALUES))
         elif how == "text":
@@ -414,6 +460,8 @@ def broken_scene(draw):
 
 # -- running ---------------------------------------------------------------------------------
 def _finite_values(v, method):
+    if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):  # a study's fields
+        return all(_finite_values(x, method) for x in v)
     if isinstance(v, dict):
         return all(_finite_values(x, method) for x in v.values())
     arr = np.asarray(v, dtype=float)
