@@ -64,6 +64,8 @@ class CLaw:
     hard
         Points of the catalogue of hard cases (tiny or huge scales, nu = 0.5, b/a -> 0, the
         onset of sliding), as values of the drawn quantities; tested beside the samples.
+    unit
+        The unit of the result, where the relation's summary does not end it in ``[unit]``.
     """
 
     relation: str
@@ -71,6 +73,7 @@ class CLaw:
     where: dict[str, str] = field(default_factory=dict)
     notes: str = ""
     hard: tuple[dict[str, float], ...] = ()
+    unit: str = ""  # the result's unit where the relation's summary has no [unit]
 
     @property
     def c_name(self) -> str:
@@ -176,8 +179,8 @@ LAWS: tuple[CLaw, ...] = (
     CLaw("tangential_modulus", {"G1": MOD, "nu1": NU, "G2": MOD, "nu2": NU},
          hard=({"G1": 8e10, "nu1": 0.5, "G2": 1e6, "nu2": 0.5},)),
     # the exact elliptical contact (5.28)-(5.33) at a given axis ratio t = b/a
-    CLaw("ellipse_radius_ratio", {"t_ba": T_BA}, hard=tuple({"t_ba": h["t_ba"]}
-                                                             for h in ELLIPSE_HARD)),
+    CLaw("ellipse_radius_ratio", {"t_ba": T_BA}, unit="1",
+         hard=tuple({"t_ba": h["t_ba"]} for h in ELLIPSE_HARD)),
     CLaw("ellipse_force", ELLIPSE, hard=ELLIPSE_HARD),
     CLaw("ellipse_stiffness", ELLIPSE, hard=ELLIPSE_HARD),
     CLaw("ellipse_max_pressure", ELLIPSE, hard=ELLIPSE_HARD),
@@ -308,10 +311,13 @@ def print_c(expr: sp.Expr) -> tuple[list[str], str]:
     return decls, printer.doprint(expr.subs(dict(zip(calls, names, strict=True))))
 
 
-def _unit(rel: Relation) -> str:
-    """The unit of the result, from the summary's ``[unit]``."""
+def _unit(law: CLaw, rel: Relation) -> str:
+    """The unit of the result: the summary's ``[unit]``, else the law's own."""
     head, sep, tail = rel.summary.rpartition("[")
-    return tail.split("]")[0] if sep else "see summary"
+    unit = tail.split("]")[0] if sep else law.unit
+    if not unit:
+        raise ValueError(f"{law.relation}: the summary gives no [unit]; set CLaw.unit")
+    return unit
 
 
 def _wrap(text: str, first: str, rest: str) -> list[str]:
@@ -342,7 +348,7 @@ def render_law(law: CLaw, rel: Relation) -> str:
     if aux:
         text = ", ".join(f"{k} in {law.spans[k].text()}" for k in aux)
         lines += _wrap(f"with {text}", " *   ", " *     ")
-    lines.append(f" * Returns: [{_unit(rel)}]")
+    lines.append(f" * Returns: [{_unit(law, rel)}]")
     if law.notes:
         lines += _wrap(f"Note: {law.notes}.", " * ", " *   ")
     args = ", ".join(f"double {s.name}" for s in rel.args)

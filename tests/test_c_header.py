@@ -247,3 +247,17 @@ def test_a_changed_constant_is_caught(tmp_path, inputs, c_driver):
     args = inputs["hertz_force"]
     (got,) = run(exe, [("hertz_force", list(args.values()))])
     assert rel_diff(got, _numpy(law, args)).min() > 1e-7
+
+
+def test_printer_refuses_what_it_cannot_print():
+    """A relation the C printer cannot print (a 2F1 other than the ellipse's two, a function
+    C99 lacks) is an error naming it, never a comment or a silent wrong call in the header."""
+    from hertzmdr.derive.c_codegen import print_c
+
+    x = sp.Symbol("x", positive=True)
+    with pytest.raises(ValueError, match="hyper"):
+        print_c(sp.hyper([1, 1], [2], 1 - x**2))
+    with pytest.raises(ValueError, match="besselj"):
+        print_c(sp.besselj(0, x))
+    decls, body = print_c(sp.Rational(4, 3) * sp.sqrt(2) * sp.pi * x ** sp.Rational(3, 2))
+    assert decls == [] and body.count("*") == 2 and "pow" not in body  # 5.92...*(x*sqrt(x))

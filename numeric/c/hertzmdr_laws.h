@@ -377,7 +377,7 @@ static inline double hertzmdr_ellipse_max_pressure(double E_star, double R1, dou
  * Stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as
  *   (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
  *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001, 1]
- * Returns: [see summary] */
+ * Returns: [1] */
 static inline double hertzmdr_ellipse_radius_ratio(double t_ba)
 {
     const double rd0 = hertzmdr_carlson_rd(0, 1, pow(t_ba, 2));
