@@ -15,6 +15,7 @@ it; ``--quick``: 10^4 calls and elements, 10 accuracy points, one round).
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import subprocess
@@ -150,6 +151,7 @@ def rel_err(got: np.ndarray, ref: np.ndarray) -> float:
 def main(argv=None) -> int:
     args = _common.parser(__doc__).parse_args(argv)
     run = _common.run_from(args)
+    load = os.getloadavg()[0]
     calls = 10**4 if args.quick else 10**6
     n_acc = 10 if args.quick else 100
     measured = run_c(calls)
@@ -173,7 +175,9 @@ def main(argv=None) -> int:
         rows.append(row)
     table = [BEGIN + "\n\n",
              "Written by `benchmarks/bench_c.py` (`make benchmark`); regenerate, do not edit.\n\n",
-             _timing.conditions() + f" C compiler: {compiler()}.\n\n",
+             _timing.conditions() + f" C compiler: {compiler()}. Load average at the start "
+             f"of the run: {load:.1f} (the machine is shared: the C times of the cheap laws are "
+             "at the resolution of the loop, the others move with the load).\n\n",
              " ".join(__doc__.split("\n\n")[1].split()) + "\n\n",
              "| function | C, ns per call | NumPy, ns per element | C / NumPy | C error | "
              "NumPy error | largest C-NumPy difference |\n|---|---|---|---|---|---|---|\n"]

@@ -92,7 +92,7 @@ DGAMMA = Span(1e-6, 1e3)  # work of adhesion [J/m^2]
 MU = Span(1e-3, 10.0)  # coefficient of friction
 FRACTION = Span(1e-12, 1.0 - 1e-9)  # t: a fraction of the limit (sliding onset, mu F)
 EXPONENT = Span(0.1, 20.0)  # power-law exponent n
-T_BA = Span(1e-4, 1.0)  # axis ratio b/a of the ellipse (R1/R2 <= 1e8 gives b/a > 3e-5)
+T_BA = Span(3e-5, 1.0)  # axis ratio b/a of the ellipse: R1/R2 <= 1e8, as numeric.ellipse
 
 KAPPA = "sqrt(pi)*gamma(n/2 + 1)/gamma(n/2 + 1/2)"  # powerlaw_kappa(n): kappa_n as it should be
 DER = {"d": DEPTH, "R": LEN, "E_star": MOD}

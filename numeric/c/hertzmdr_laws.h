@@ -303,7 +303,7 @@ static inline double hertzmdr_cone_stiffness(double E_star, double d, double the
  *   E_star  [Pa] effective modulus E* (5.8), (5.26); [0.001, 1e+15]
  *   F       [N] normal force; [1e-300, 1e+30]
  *   R1      [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
- *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001,
+ *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05,
  *           1]
  * Returns: [m] */
 static inline double hertzmdr_ellipse_depth_from_force(double E_star, double F, double R1, double t_ba)
@@ -321,7 +321,7 @@ static inline double hertzmdr_ellipse_depth_from_force(double E_star, double F, 
  * Stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as
  *   (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
  *   R1    [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
- *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001, 1]
+ *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05, 1]
  * Returns: [m] */
 static inline double hertzmdr_ellipse_equivalent_radius(double R1, double t_ba)
 {
@@ -339,7 +339,7 @@ static inline double hertzmdr_ellipse_equivalent_radius(double R1, double t_ba)
  *   E_star  [Pa] effective modulus E* (5.8), (5.26); [0.001, 1e+15]
  *   R1      [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
  *   d       [m] indentation depth; [1e-15, 1000]
- *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001,
+ *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05,
  *           1]
  * Returns: [N] */
 static inline double hertzmdr_ellipse_force(double E_star, double R1, double d, double t_ba)
@@ -358,7 +358,7 @@ static inline double hertzmdr_ellipse_force(double E_star, double R1, double d, 
  *   E_star  [Pa] effective modulus E* (5.8), (5.26); [0.001, 1e+15]
  *   R1      [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
  *   d       [m] indentation depth; [1e-15, 1000]
- *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001,
+ *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05,
  *           1]
  * Returns: [Pa] */
 static inline double hertzmdr_ellipse_max_pressure(double E_star, double R1, double d, double t_ba)
@@ -376,7 +376,7 @@ static inline double hertzmdr_ellipse_max_pressure(double E_star, double R1, dou
  *   tests/test_ellipse.py::test_displacement_by_boussinesq.
  * Stable form: K(m) and E(m) are written through D = (K - E)/m and B = (E - (1 - m) K)/m as
  *   (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
- *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001, 1]
+ *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05, 1]
  * Returns: [1] */
 static inline double hertzmdr_ellipse_radius_ratio(double t_ba)
 {
@@ -395,7 +395,7 @@ static inline double hertzmdr_ellipse_radius_ratio(double t_ba)
  *   (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
  *   R1    [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
  *   d     [m] indentation depth; [1e-15, 1000]
- *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001, 1]
+ *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05, 1]
  * Returns: [m] */
 static inline double hertzmdr_ellipse_semi_major(double R1, double d, double t_ba)
 {
@@ -413,7 +413,7 @@ static inline double hertzmdr_ellipse_semi_major(double R1, double d, double t_b
  *   (pi/4) 2F1: the K, E form cancels as t -> 1 (the circle), where R1/R2 is 0/0.
  *   R1    [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
  *   d     [m] indentation depth; [1e-15, 1000]
- *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001, 1]
+ *   t_ba  [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05, 1]
  * Returns: [m] */
 static inline double hertzmdr_ellipse_semi_minor(double R1, double d, double t_ba)
 {
@@ -431,7 +431,7 @@ static inline double hertzmdr_ellipse_semi_minor(double R1, double d, double t_b
  *   E_star  [Pa] effective modulus E* (5.8), (5.26); [0.001, 1e+15]
  *   R1      [m] radius of curvature of body 1, or first principal radius; [1e-12, 1000000]
  *   d       [m] indentation depth; [1e-15, 1000]
- *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [0.0001,
+ *   t_ba    [1] axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2); [3e-05,
  *           1]
  * Returns: [N/m] */
 static inline double hertzmdr_ellipse_stiffness(double E_star, double R1, double d, double t_ba)
