@@ -6,11 +6,14 @@ Cattaneo-Mindlin, the exact elliptical contact and the effective moduli -- and t
 which each is documented and tested; :func:`render_header` prints them from the same
 :class:`~hertzmdr.derive.relation.Relation` records as ``numeric/_generated.py``, with SymPy's
 C99 printer, in their stable form where a relation has one, as ``static inline`` double
-functions named ``hertzmdr_<relation name>``. The only hand-written code of the header is
-Carlson's duplication algorithm for R_D (the exact ellipse's hypergeometric functions), in
-:data:`CARLSON_RD`. ``python -m hertzmdr.derive`` writes the header to
-``numeric/c/hertzmdr_laws.h``; ``tests/test_c_header.py`` compiles it and compares every function
-with the NumPy route over the domains below.
+functions named ``hertzmdr_<relation name>``. Three printing choices, each for accuracy or
+speed and none changing the relation: the constant factors of a product become one correctly
+rounded literal, x^(p/2) and x^(p/3) go through sqrt and cbrt instead of pow with a rounded
+exponent, and the exact ellipse's two 2F1 become Carlson's R_D of t^2 (DLMF 19.25.1). The only
+hand-written code of the header is R_D by Carlson's duplication, :data:`CARLSON_RD`.
+``python -m hertzmdr.derive`` writes the header to ``numeric/c/hertzmdr_laws.h`` and its
+reference to ``docs/c_laws_reference.md``; ``tests/test_c_header.py`` compiles it and compares
+every function with the NumPy and the 30-digit mpmath routes over the domains below.
 """
 
 from __future__ import annotations
