@@ -7,6 +7,7 @@ import difflib
 import sys
 from pathlib import Path
 
+from hertzmdr.derive.c_codegen import HEADER, REFERENCE, render_header, render_reference
 from hertzmdr.derive.codegen import render_derivations, render_errata, render_module
 from hertzmdr.derive.relation import all_relations
 
@@ -15,8 +16,8 @@ ROOT = Path(__file__).resolve().parents[1]
 parser = argparse.ArgumentParser(
     prog="python -m hertzmdr.derive",
     description="Derive the chapter's relations with SymPy and print them into "
-    "numeric/_generated.py (NumPy), numeric/_generated_mp.py (mpmath), docs/derivations.md "
-    "and docs/errata.md.",
+    "numeric/_generated.py (NumPy), numeric/_generated_mp.py (mpmath), docs/derivations.md, "
+    "docs/errata.md, the C header numeric/c/hertzmdr_laws.h and docs/c_laws_reference.md.",
 )
 parser.add_argument("--check", action="store_true",
                     help="write nothing; exit 1 with a diff if a generated file is stale")
@@ -29,6 +30,8 @@ def targets() -> dict[Path, str]:
         ROOT / "numeric" / "_generated_mp.py": render_module(relations, "mpmath"),
         ROOT / "docs" / "derivations.md": render_derivations(relations),
         ROOT / "docs" / "errata.md": render_errata(relations),
+        ROOT / HEADER: render_header(relations),  # the contact laws for DEM codes, C99
+        ROOT / REFERENCE: render_reference(relations),
     }
 
 
@@ -50,6 +53,7 @@ def main(argv: list[str] | None = None) -> int:
                 old.splitlines(keepends=True), text.splitlines(keepends=True),
                 f"{rel} (committed)", f"{rel} (regenerated)", n=2))
         else:
+            path.parent.mkdir(parents=True, exist_ok=True)
             path.write_text(text)
             print(f"wrote {rel}")
     if stale:

@@ -18,6 +18,8 @@ the domain where it is guaranteed finite and accurate):
 - Inverse problem: ``fit`` (a force curve F(z) fitted for E*, the contact point and the
   baseline, with the derived Jacobians of ``hertzmdr.derive.fit``; ``fit_io`` its files,
   ``hertzmdr fit``).
+- ``c``: the contact laws as a C99 header for DEM codes (``c.header_path()``), printed from
+  the same relations as ``_generated.py`` (docs/c_laws.md).
 - ``scene``: a TOML scene in, exactly the asked effects out (``hertzmdr run``); ``cli`` the
   ``hertzmdr`` command; ``accuracy`` what each digit costs (``hertzmdr accuracy``).
 """

@@ -13,7 +13,7 @@ from hertzmdr.derive.__main__ import ROOT
 
 #: the files ``python -m hertzmdr.derive`` writes, relative to the source tree
 GENERATED = ["numeric/_generated.py", "numeric/_generated_mp.py", "docs/derivations.md",
-             "docs/errata.md"]
+             "docs/errata.md", "numeric/c/hertzmdr_laws.h", "docs/c_laws_reference.md"]
 
 
 def test_generated_files_are_fresh(capsys):

@@ -80,6 +80,7 @@ def test_wheel_install(tmp_path):
     names = zipfile.ZipFile(wheel).namelist()
     for name in ("hertzmdr/__init__.py", "hertzmdr/__main__.py", "hertzmdr/derive/hertz.py",
                  "hertzmdr/numeric/_generated.py", "hertzmdr/numeric/cli.py",
+                 "hertzmdr/numeric/c/__init__.py", "hertzmdr/numeric/c/hertzmdr_laws.h",
                  "hertzmdr/numeric/tour/problem1_rail_wheel.toml",
                  "hertzmdr/numeric/tour/paraboloid_tip.csv"):
         assert name in names, name
