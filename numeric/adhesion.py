@@ -140,7 +140,7 @@ class Shape:
     def force0(self, a, E_star):
         raise NotImplementedError
 
-    def profile(self, r):
+    def height(self, r):
         raise NotImplementedError
 
     def pressure0(self, r, a, E_star):
@@ -194,7 +194,7 @@ class Paraboloid(Shape):
     def force0(self, a, E_star):
         return _hertz.force(a**2 / self.R, self.R, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return r**2 / (2 * self.R)
 
     def pressure0(self, r, a, E_star):
@@ -239,7 +239,7 @@ class Cone(Shape):
     def force0(self, a, E_star):
         return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return r * np.tan(self.theta)
 
     def pressure0(self, r, a, E_star):
@@ -298,7 +298,7 @@ class PowerLaw(Shape):
     def force0(self, a, E_star):
         return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return self.c_n * r**self.n
 
     def pressure0(self, r, a, E_star):
@@ -354,7 +354,7 @@ class Sphere(Shape):
     def force0(self, a, E_star):
         return _sphere.force_from_radius(a, self.R, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return _sphere.profile(r, self.R)
 
     def pressure0(self, r, a, E_star):
@@ -401,7 +401,7 @@ class Worn(Shape):
         f = _worn.force_from_radius(np.where(above, a, 2 * self.b), self.R, self.b, E_star)
         return np.where(above, f, 0.0)
 
-    def profile(self, r):
+    def height(self, r):
         return _worn.profile(r, self.R, self.b)
 
     def pressure0(self, r, a, E_star):
@@ -436,7 +436,7 @@ class FlatPunch(Shape):
         return (a, float(gen.adhesion_punch_pull_off_force(E_star, a, dgamma)),
                 -float(gen.adhesion_critical_elongation(E_star, a, dgamma)))
 
-    def profile(self, r):
+    def height(self, r):
         return 0.0 * np.asarray(r, dtype=float)
 
 
@@ -448,7 +448,8 @@ class Sampled(Shape):
     ``coarse=True`` is the same profile on its coarse representation (every other sample, or
     half the grid): :class:`AdhesiveContact` solves on both and reports their difference as
     the error estimate of a pull-off (as :mod:`hertzmdr.numeric.mdr` does for a solve). The
-    pressure and the displacement of a sampled adhesive contact are not computed here.
+    pressure and the surface displacement are the numerical MDR's (Abel integral of g' and
+    (5.60) by quadrature of g at d = g(a)) plus the adhesive edge terms, as for every shape.
     """
 
     profile: object
@@ -460,6 +461,10 @@ class Sampled(Shape):
         if not isinstance(self.profile, mdr.Profile):
             raise ValueError(f"profile = {self.profile!r} is not a hertzmdr.numeric.mdr.Profile")
         object.__setattr__(self, "kinks", tuple(float(b) for b in self._rep().edges[1:-1]))
+
+    def __repr__(self):  # no object address: messages must be the same in every run
+        return (f"Sampled({self.profile.source!r}, r_max={self.profile.r_max!r}"
+                + (", coarse=True)" if self.coarse else ")"))
 
     def _rep(self):
         coarse, fine = self.profile._source.pair(0)
@@ -493,6 +498,42 @@ class Sampled(Shape):
 
     def scale(self, E_star, dgamma):
         return self.profile.r_max / 100
+
+    def height(self, r):
+        """f(r) - f(0) [m]: the profile's spline (numeric/_mdr/spline.py)."""
+        rep = self._rep()
+        r = np.asarray(r, float)
+        u = np.concatenate([np.ravel(r), [0.0]])
+        idx = rep.seg_index(u)
+        out = np.empty(u.shape)
+        for i, spl in enumerate(rep.segments):
+            sel = idx == i
+            if sel.any():
+                out[sel] = spl(u[sel])
+        return np.reshape(out[:-1] - out[-1], r.shape)
+
+    def pressure0(self, r, a, E_star):
+        """The non-adhesive pressure [Pa] of contact radius a [m] at r < a (5.59) with d = g(a):
+        the numerical MDR's Abel integral of g' (numeric/_mdr/operators.py); +inf at r = 0
+        under a conical tip."""
+        from hertzmdr.numeric._mdr import operators
+
+        coarse, fine = self.profile._source.pair(0)
+        rep = coarse if self.coarse else fine
+        r = np.asarray(r, float)
+        conical = bool((r == 0).any()) and operators.conical_tip(fine, coarse, float(a))
+        flat = np.ravel(r)
+        return np.reshape(operators.pressure(rep, flat, float(a), E_star, 6, conical), r.shape)
+
+    def displacement0_outside(self, r, a):
+        """The non-adhesive surface displacement [m] of contact radius a [m] at r >= a (5.60)
+        with d = g(a), by the numerical MDR's quadrature of g."""
+        from hertzmdr.numeric._mdr import operators
+
+        r = np.asarray(r, float)
+        flat = np.ravel(r)
+        d = float(self.g(float(a)))
+        return np.reshape(operators.displacement(self._rep(), flat, float(a), d), r.shape)
 
 
 # ------------------------------------------------------------------------------- results
@@ -682,7 +723,8 @@ class AdhesiveContact:
                 break
             lo, hi = hi, 2 * hi
         else:
-            raise ValueError(f"{control} = {target!r} is not reached by {self!r}")
+            raise ValueError(f"{control} = {target!r} is not reached by {self!r}: the largest "
+                             f"contact radius is {lim!r} m")
         if self._value(control, lo) >= target:
             return lo
         return brentq(lambda a: float(self._value(control, a)) - target, lo, hi,
@@ -875,7 +917,7 @@ class AdhesiveContact:
         else:
             out = (self.shape.displacement0_outside(ro, a)
                    + gen.adhesion_displacement_outside_edge(self.E_star, a, self.dgamma, ro))
-        return np.where(inside, d - self.shape.profile(np.where(inside, r, 0.0)), out)
+        return np.where(inside, d - self.shape.height(np.where(inside, r, 0.0)), out)
 
     # --------------------------------------------------------------------------- history
     def cycle(self, to: float, control: str = "depth", points: int = 1000,

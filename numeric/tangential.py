@@ -570,7 +570,8 @@ def _depth_of_force(F, table, E_star, step, x_max):
     F_nodes, W, S = table
     k = int(np.searchsorted(F_nodes, F, side="right")) - 1
     if k >= F_nodes.size - 1:
-        raise ValueError(f"normal_force[{step}] = {F!r} N needs a contact wider than the grid "
+        raise ValueError(f"normal_force[{step}] = {float(F)!r} N needs a contact wider than "
+                         "the grid "
                          f"(x_max = {x_max!r} m); valid: a larger x_max")
     return (F / E_star + S[k]) / W[k]
 
@@ -618,7 +619,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
         if depth is not None:
             d = depth[k]
             if d > gv[-1]:
-                raise ValueError(f"depth[{k}] = {d!r} m reaches beyond x_max = {x_max!r} m; "
+                raise ValueError(f"depth[{k}] = {float(d)!r} m reaches beyond x_max = {x_max!r} m; "
                                  "valid: a larger x_max")
         else:
             d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
@@ -642,7 +643,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
             D, full = u_ctrl[k] - u_prev, False
         else:
             if abs(F_ctrl[k]) > total * (1 + 1e-12) + 1e-300:
-                raise ValueError(f"F_x[{k}] = {F_ctrl[k]!r} N exceeds the sliding force "
+                raise ValueError(f"F_x[{k}] = {float(F_ctrl[k])!r} N exceeds the sliding force "
                                  f"mu F_N = {total!r} N of that step; valid: |F_x| <= mu F_N")
             D, full = _solve_shift(f, cap, w, m, G_star, F_ctrl[k], total, k) if total > 0 \
                 else (0.0, True)

@@ -185,6 +185,7 @@ class _Reader:
         for k in table:
             if k not in allowed:
                 names = ", ".join(sorted(allowed)) or "none yet"
+                k = k if k.isprintable() else repr(k)  # a message is one line
                 self.fail(f"{key}.{k}" if key else k,
                           f"unknown key{suggest(k, allowed)} (allowed: {names})")
 
