@@ -461,6 +461,7 @@ class Sampled(Shape):
         if not isinstance(self.profile, mdr.Profile):
             raise ValueError(f"profile = {self.profile!r} is not a hertzmdr.numeric.mdr.Profile")
         object.__setattr__(self, "kinks", tuple(float(b) for b in self._rep().edges[1:-1]))
+        object.__setattr__(self, "_memo", {})
 
     def __repr__(self):  # no object address: messages must be the same in every run
         return (f"Sampled({self.profile.source!r}, r_max={self.profile.r_max!r}"
@@ -477,24 +478,34 @@ class Sampled(Shape):
     def companion(self):
         return None if self.coarse else Sampled(self.profile, coarse=True)
 
-    def g(self, a):
-        from hertzmdr.numeric._mdr import quadrature
+    def _tables(self, a):
+        """g(a) (5.52), g'(a) and G(a) = integral_0^a g [m^2], from one quadrature of the
+        profile's spline for all three (``quadrature.direct``); the last few radii arrays
+        asked for are kept, because the curve asks for g, g' and G at the same radii."""
+        from hertzmdr.numeric._mdr import kinks, quadrature
 
         a = np.asarray(a, float)
-        return np.reshape(quadrature.g(self._rep(), np.atleast_1d(a)), a.shape)  # (5.52)
+        flat = np.abs(np.atleast_1d(a)).ravel()
+        key = flat.tobytes()
+        hit = self._memo.get(key)
+        if hit is None:
+            rep = self._rep()
+            g, q, G = quadrature.direct(rep, flat, with_G=True)
+            hit = (g, q + kinks.terms(rep, flat, 1), G)
+            if len(self._memo) >= 8:
+                self._memo.pop(next(iter(self._memo)))
+            self._memo[key] = hit
+        return tuple(np.reshape(v, a.shape) for v in hit)
+
+    def g(self, a):
+        return self._tables(a)[0]  # (5.52)
 
     def g_slope(self, a):
-        from hertzmdr.numeric._mdr import quadrature
-
-        a = np.asarray(a, float)
-        return np.reshape(quadrature.gprime(self._rep(), np.atleast_1d(a)), a.shape)
+        return self._tables(a)[1]
 
     def force0(self, a, E_star):
-        from hertzmdr.numeric._mdr import quadrature
-
-        a = np.asarray(a, float)
-        G = np.reshape(quadrature.G(self._rep(), np.atleast_1d(a)), a.shape)
-        return gen.mdr_force(E_star, a, self.g(a), G)  # (5.57) with d = g(a)
+        g, _, G = self._tables(a)
+        return gen.mdr_force(E_star, np.asarray(a, float), g, G)  # (5.57) with d = g(a)
 
     def scale(self, E_star, dgamma):
         return self.profile.r_max / 100
