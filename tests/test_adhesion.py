@@ -525,3 +525,26 @@ def test_state_stiffness_mean_pressure_at_a_depth(E, R, dg):
                      "punch u(r) outside")
     with pytest.raises(ValueError, match="below the pull-off depth"):
         p.equilibrium(depth=1.001 * d_c)
+
+
+def test_sampled_cycle_shares_the_profile_integrals_along_each_branch():
+    """A sampled r^2.5 tip's cycle takes d and F along each branch from Chebyshev
+    interpolation of g, g' and G (adhesion.AdhesiveContact._branch): every point against the
+    quadrature at its own radius to 1e-11 of the curve's largest value (the interpolation is
+    accepted at 1e-12 of each function's); its hysteresis against the closed-form power law's
+    within the sampled profile's own resolution (1e-7: 1000 samples, order > 4, docs/
+    adhesion.md)."""
+    from hertzmdr.numeric import mdr
+
+    E, dg, R = 2e6 / 0.75, 0.05, 20e-9
+    c_n = 0.5 * R**-1.5
+    r = np.linspace(0.0, 10 * R, 1001)
+    sam = ad.AdhesiveContact(ad.Sampled(mdr.Profile.from_samples(r, c_n * r**2.5)), E, dg)
+    cyc = sam.cycle(10e-9, "depth", 400)
+    m = cyc.contact_radius > 0
+    d_ref, F_ref = sam.depth(cyc.contact_radius[m]), sam.force(cyc.contact_radius[m])
+    assert np.max(np.abs(cyc.depth[m] - d_ref)) <= 1e-11 * np.max(np.abs(d_ref))
+    assert np.max(np.abs(cyc.force[m] - F_ref)) <= 1e-11 * np.max(np.abs(F_ref))
+    closed = ad.AdhesiveContact(ad.PowerLaw(c_n, 2.5), E, dg).cycle(10e-9, "depth", 400)
+    assert abs(cyc.hysteresis / closed.hysteresis - 1) < 1e-7
+    assert cyc.hysteresis_error <= 1e-12 * cyc.hysteresis  # Gauss-Legendre, 40 vs 80 nodes
