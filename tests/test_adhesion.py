@@ -548,3 +548,23 @@ def test_sampled_cycle_shares_the_profile_integrals_along_each_branch():
     closed = ad.AdhesiveContact(ad.PowerLaw(c_n, 2.5), E, dg).cycle(10e-9, "depth", 400)
     assert abs(cyc.hysteresis / closed.hysteresis - 1) < 1e-7
     assert cyc.hysteresis_error <= 1e-12 * cyc.hysteresis  # Gauss-Legendre, 40 vs 80 nodes
+
+
+@pytest.mark.parametrize("name", ["cone", "paraboloid"])
+def test_sampled_cone_and_paraboloid_pull_off(name):
+    """The numerical MDR with adhesion of a sampled cone (conical tip: g' jumps at the apex)
+    and a sampled paraboloid (200 samples on [0, 10 a_c], which a quintic spline reproduces)
+    against their closed-form pull-offs under both controls: within the estimate, and to
+    1e-12 (the spline is exact; the quadrature and the roots are not)."""
+    from hertzmdr.numeric import mdr
+
+    E, dg, th = 3e6, 0.04, np.radians(20)
+    shape, f = ((ad.Cone(th), lambda r: r * np.tan(th)) if name == "cone" else
+                (ad.Paraboloid(1e-6), lambda r: r**2 / 2e-6))
+    ref = ad.AdhesiveContact(shape, E, dg)
+    r = np.linspace(0.0, 10 * ref.pull_off("force").contact_radius, 201)
+    c = ad.AdhesiveContact(ad.Sampled(mdr.Profile.from_samples(r, f(r))), E, dg)
+    for control in ad.CONTROLS:
+        po, pr = c.pull_off(control), ref.pull_off(control)
+        err = abs(po.force / pr.force - 1)
+        assert err <= po.rel_error and err < 1e-12, (control, err, po.rel_error)
