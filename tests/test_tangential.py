@@ -592,3 +592,29 @@ def test_sampled_and_exact_sphere_scenes_run_the_springs():
         assert np.max(np.abs(q["q"] - ref)) <= (eff["traction_profile"]["rel_error"] + floor) \
             * np.max(np.abs(q["q"]))
         assert eff["hysteresis_loop"]["value"]["F"][-1] == pytest.approx(30.0, rel=1e-12)
+
+
+def test_dissimilar_poisson_ratios():
+    """nu1 != nu2 (steel on a polymer, G*/E* = 0.61 instead of one body's 2 (1 - nu)/(2 - nu)):
+    Johnson's Cattaneo-Mindlin with the pair's compliance sum (2 - nu1)/G1 + (2 - nu2)/G2 at
+    30 digits, from the closed forms (1e-13) and from the springs' history (within its
+    estimate). The MDR leaves out the coupling of normal and tangential loads through Dundurs'
+    second constant, as Johnson's forms do."""
+    E1, nu1, E2, nu2 = 210e9, 0.3, 3e9, 0.45
+    G1, G2 = E1 / (2 * (1 + nu1)), E2 / (2 * (1 + nu2))
+    Es = 1 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)
+    Gs = float(tg.effective_modulus(G1, nu1, G2, nu2))
+    a = float(hertz.contact_radius_from_force(F_N, R, Es))
+    ct = tg.Contact(tg.Paraboloid(R), a, Es, Gs, MU)
+    Fx = 0.7 * MU * F_N
+    with mp.workdps(30):
+        comp = (2 - mp.mpf(nu1)) / mp.mpf(G1) + (2 - mp.mpf(nu2)) / mp.mpf(G2)
+        x = mp.mpf(Fx) / (MU * mp.mpf(F_N))
+        delta = 3 * MU * mp.mpf(F_N) / (16 * mp.mpf(a)) * comp * (1 - (1 - x) ** (
+            mp.mpf(2) / 3))
+        assert_close(float(ct.displacement(Fx)), delta, 1e-13, "delta, nu1 != nu2")
+        assert_close(float(ct.stick_radius_from_force(Fx)), a * (1 - x) ** (mp.mpf(1) / 3),
+                     1e-13, "c, nu1 != nu2")
+    h = tg.history(tg.Paraboloid(R), E_star=Es, G_star=Gs, mu=MU, x_max=1.2 * a,
+                   normal_force=[F_N, F_N], F_x=[0.0, Fx], n_grid=1000)
+    assert abs(h.u_x[-1] - float(delta)) <= h.u_x_error
