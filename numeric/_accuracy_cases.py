@@ -419,7 +419,60 @@ def line_stress_near_edge() -> Quantity:
                     "points.", truth, ways)
 
 
+def mindlin_energy_small_amplitude() -> Quantity:
+    from hertzmdr.numeric import hertz, tangential
+
+    G = float(tangential.shear_modulus(210e9, 0.3))
+    G_star = float(tangential.effective_modulus(G, 0.3, G, 0.3))
+    R, F, mu = 0.01, 100.0, 0.6  # the tour's fretting sphere
+    a = float(hertz.contact_radius_from_force(F, R, E_STEEL))
+    Fa = 1e-2 * mu * F  # a small amplitude: the textbook bracket cancels like x^3
+
+    def truth():
+        import mpmath as mp
+
+        X = mp.mpf(Fa) / (mp.mpf(mu) * F)
+        return (9 * mp.mpf(mu) ** 2 * F**2 / (10 * mp.mpf(a)) * 4 / mp.mpf(G_star)
+                * (1 - (1 - X) ** (mp.mpf(5) / 3) - 5 * X / 6 * (1 + (1 - X) ** (mp.mpf(2) / 3))))
+
+    def ways():
+        import numpy as np
+
+        ct = tangential.Contact(tangential.Paraboloid(R), a, E_STEEL, G_star, mu)
+
+        def textbook():
+            X = Fa / (mu * F)
+            return (9 * mu**2 * F**2 / (10 * a) * 4 / G_star
+                    * (1 - (1 - X) ** (5 / 3) - 5 * X / 6 * (1 + (1 - X) ** (2 / 3))))
+
+        out = [Way("closed form, stable (derive/tangential.py)", "float64",
+                   lambda: float(ct.energy(Fa))),
+               Way("Johnson (7.59) as printed", "float64", textbook),
+               Way("cubic term F*^3/(9 G* a mu F)", "float64",
+                   lambda: float(ct.energy_small(Fa)))]
+        path = np.concatenate([np.linspace(0, Fa, 11), np.linspace(Fa, -Fa, 21)[1:],
+                               np.linspace(-Fa, Fa, 21)[1:]])
+        for n in (1000, 4000, 16000):
+            def springs(n=n):
+                h = tangential.history(tangential.Paraboloid(R), E_star=E_STEEL,
+                                       G_star=G_star, mu=mu, x_max=1.2 * a,
+                                       normal_force=np.full(path.size, F), F_x=path,
+                                       n_grid=n, estimate_error=False)
+                return float(h.dissipated[-1] - h.dissipated[10])
+            out.append(Way("the MDR's springs on a grid (history solver)",
+                           f"{n} intervals", springs))
+        return out
+
+    return Quantity("Mindlin-Deresiewicz energy per cycle at F* = 0.01 mu F",
+                    "The energy dissipated per cycle of a tangential force oscillating with a "
+                    "small amplitude under a sphere (numeric/tangential.py): the stable closed "
+                    "form, the textbook form (its bracket cancels like x^3), the leading cubic "
+                    "term, and the history solver's springs on grids of three sizes.",
+                    truth, ways)
+
+
 def all_quantities() -> list[Quantity]:
     return [hertz_force(), hertz_far_displacement(), kappa_large_n(), worn_small_depth(),
             powerlaw_pressure_large_n(), numerical_mdr_force(), impact_time(),
-            stress_superposition(), adhesive_pull_off(), line_stress_near_edge()]
+            stress_superposition(), adhesive_pull_off(), line_stress_near_edge(),
+            mindlin_energy_small_amplitude()]

@@ -140,7 +140,7 @@ class Shape:
     def force0(self, a, E_star):
         raise NotImplementedError
 
-    def profile(self, r):
+    def height(self, r):
         raise NotImplementedError
 
     def pressure0(self, r, a, E_star):
@@ -194,7 +194,7 @@ class Paraboloid(Shape):
     def force0(self, a, E_star):
         return _hertz.force(a**2 / self.R, self.R, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return r**2 / (2 * self.R)
 
     def pressure0(self, r, a, E_star):
@@ -239,7 +239,7 @@ class Cone(Shape):
     def force0(self, a, E_star):
         return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return r * np.tan(self.theta)
 
     def pressure0(self, r, a, E_star):
@@ -298,7 +298,7 @@ class PowerLaw(Shape):
     def force0(self, a, E_star):
         return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return self.c_n * r**self.n
 
     def pressure0(self, r, a, E_star):
@@ -354,7 +354,7 @@ class Sphere(Shape):
     def force0(self, a, E_star):
         return _sphere.force_from_radius(a, self.R, E_star)
 
-    def profile(self, r):
+    def height(self, r):
         return _sphere.profile(r, self.R)
 
     def pressure0(self, r, a, E_star):
@@ -401,7 +401,7 @@ class Worn(Shape):
         f = _worn.force_from_radius(np.where(above, a, 2 * self.b), self.R, self.b, E_star)
         return np.where(above, f, 0.0)
 
-    def profile(self, r):
+    def height(self, r):
         return _worn.profile(r, self.R, self.b)
 
     def pressure0(self, r, a, E_star):
@@ -436,7 +436,7 @@ class FlatPunch(Shape):
         return (a, float(gen.adhesion_punch_pull_off_force(E_star, a, dgamma)),
                 -float(gen.adhesion_critical_elongation(E_star, a, dgamma)))
 
-    def profile(self, r):
+    def height(self, r):
         return 0.0 * np.asarray(r, dtype=float)
 
 
@@ -448,7 +448,8 @@ class Sampled(Shape):
     ``coarse=True`` is the same profile on its coarse representation (every other sample, or
     half the grid): :class:`AdhesiveContact` solves on both and reports their difference as
     the error estimate of a pull-off (as :mod:`hertzmdr.numeric.mdr` does for a solve). The
-    pressure and the displacement of a sampled adhesive contact are not computed here.
+    pressure and the surface displacement are the numerical MDR's (Abel integral of g' and
+    (5.60) by quadrature of g at d = g(a)) plus the adhesive edge terms, as for every shape.
     """
 
     profile: object
@@ -460,6 +461,11 @@ class Sampled(Shape):
         if not isinstance(self.profile, mdr.Profile):
             raise ValueError(f"profile = {self.profile!r} is not a hertzmdr.numeric.mdr.Profile")
         object.__setattr__(self, "kinks", tuple(float(b) for b in self._rep().edges[1:-1]))
+        object.__setattr__(self, "_memo", {})
+
+    def __repr__(self):  # no object address: messages must be the same in every run
+        return (f"Sampled({self.profile.source!r}, r_max={self.profile.r_max!r}"
+                + (", coarse=True)" if self.coarse else ")"))
 
     def _rep(self):
         coarse, fine = self.profile._source.pair(0)
@@ -472,27 +478,73 @@ class Sampled(Shape):
     def companion(self):
         return None if self.coarse else Sampled(self.profile, coarse=True)
 
-    def g(self, a):
-        from hertzmdr.numeric._mdr import quadrature
+    def _tables(self, a):
+        """g(a) (5.52), g'(a) and G(a) = integral_0^a g [m^2], from one quadrature of the
+        profile's spline for all three (``quadrature.direct``); the last few radii arrays
+        asked for are kept, because the curve asks for g, g' and G at the same radii."""
+        from hertzmdr.numeric._mdr import kinks, quadrature
 
         a = np.asarray(a, float)
-        return np.reshape(quadrature.g(self._rep(), np.atleast_1d(a)), a.shape)  # (5.52)
+        flat = np.abs(np.atleast_1d(a)).ravel()
+        key = flat.tobytes()
+        hit = self._memo.get(key)
+        if hit is None:
+            rep = self._rep()
+            g, q, G = quadrature.direct(rep, flat, with_G=True)
+            hit = (g, q + kinks.terms(rep, flat, 1), G)
+            if len(self._memo) >= 8:
+                self._memo.pop(next(iter(self._memo)))
+            self._memo[key] = hit
+        return tuple(np.reshape(v, a.shape) for v in hit)
+
+    def g(self, a):
+        return self._tables(a)[0]  # (5.52)
 
     def g_slope(self, a):
-        from hertzmdr.numeric._mdr import quadrature
-
-        a = np.asarray(a, float)
-        return np.reshape(quadrature.gprime(self._rep(), np.atleast_1d(a)), a.shape)
+        return self._tables(a)[1]
 
     def force0(self, a, E_star):
-        from hertzmdr.numeric._mdr import quadrature
-
-        a = np.asarray(a, float)
-        G = np.reshape(quadrature.G(self._rep(), np.atleast_1d(a)), a.shape)
-        return gen.mdr_force(E_star, a, self.g(a), G)  # (5.57) with d = g(a)
+        g, _, G = self._tables(a)
+        return gen.mdr_force(E_star, np.asarray(a, float), g, G)  # (5.57) with d = g(a)
 
     def scale(self, E_star, dgamma):
         return self.profile.r_max / 100
+
+    def height(self, r):
+        """f(r) - f(0) [m]: the profile's spline (numeric/_mdr/spline.py)."""
+        rep = self._rep()
+        r = np.asarray(r, float)
+        u = np.concatenate([np.ravel(r), [0.0]])
+        idx = rep.seg_index(u)
+        out = np.empty(u.shape)
+        for i, spl in enumerate(rep.segments):
+            sel = idx == i
+            if sel.any():
+                out[sel] = spl(u[sel])
+        return np.reshape(out[:-1] - out[-1], r.shape)
+
+    def pressure0(self, r, a, E_star):
+        """The non-adhesive pressure [Pa] of contact radius a [m] at r < a (5.59) with d = g(a):
+        the numerical MDR's Abel integral of g' (numeric/_mdr/operators.py); +inf at r = 0
+        under a conical tip."""
+        from hertzmdr.numeric._mdr import operators
+
+        coarse, fine = self.profile._source.pair(0)
+        rep = coarse if self.coarse else fine
+        r = np.asarray(r, float)
+        conical = bool((r == 0).any()) and operators.conical_tip(fine, coarse, float(a))
+        flat = np.ravel(r)
+        return np.reshape(operators.pressure(rep, flat, float(a), E_star, 6, conical), r.shape)
+
+    def displacement0_outside(self, r, a):
+        """The non-adhesive surface displacement [m] of contact radius a [m] at r >= a (5.60)
+        with d = g(a), by the numerical MDR's quadrature of g."""
+        from hertzmdr.numeric._mdr import operators
+
+        r = np.asarray(r, float)
+        flat = np.ravel(r)
+        d = float(self.g(float(a)))
+        return np.reshape(operators.displacement(self._rep(), flat, float(a), d), r.shape)
 
 
 # ------------------------------------------------------------------------------- results
@@ -878,7 +930,7 @@ class AdhesiveContact:
         else:
             out = (self.shape.displacement0_outside(ro, a)
                    + gen.adhesion_displacement_outside_edge(self.E_star, a, self.dgamma, ro))
-        return np.where(inside, d - self.shape.profile(np.where(inside, r, 0.0)), out)
+        return np.where(inside, d - self.shape.height(np.where(inside, r, 0.0)), out)
 
     # --------------------------------------------------------------------------- history
     def cycle(self, to: float, control: str = "depth", points: int = 1000,
@@ -1006,10 +1058,45 @@ class AdhesiveContact:
             out.append(np.linspace(a, b, k))
         return out
 
-    def _work(self, branches):
+    def _branch(self, a, b):
+        """(d, F, dd/da) as functions of arrays of radii in the branch [min(a, b), max(a, b)].
+
+        The closed forms: the shape's. A sampled profile: its g, g' and G (one quadrature each
+        for all radii asked at once) are shared along the branch by Chebyshev interpolation
+        on ``n`` points (32, 64 or 128), accepted where it reproduces the quadrature at the
+        midpoints between nodes to 1e-12 of each function's largest value (else the
+        quadrature at every radius); a branch across a kink of the profile always takes the
+        quadrature."""
+        lo, hi = min(a, b), max(a, b)
+        sh, E, dg = self.shape, self.E_star, self.dgamma
+
+        def curve(x, g, gs, G):
+            dl = gen.adhesion_critical_elongation(E, x, dg)
+            return g - dl, gen.mdr_force(E, x, g, G) - 2 * E * x * dl, \
+                gen.adhesion_depth_slope(E, x, dg, gs)  # (5.55), (5.57), adhesive
+
+        direct = (lambda x: (self.depth(x), self.force(x),  # noqa: E731
+                             gen.adhesion_depth_slope(E, x, dg, sh.g_slope(x))))
+        if not isinstance(sh, Sampled) or not hi > lo or any(lo < k <= hi for k in sh.kinks):
+            return direct
+        from scipy.interpolate import BarycentricInterpolator
+
+        for n in (32, 64, 128):
+            t = np.cos(np.pi * np.arange(n + 1) / n)  # Chebyshev points of the second kind
+            mid = np.cos(np.pi * (np.arange(n) + 0.5) / n)
+            x = lo + (hi - lo) * (np.concatenate([t, mid]) + 1) / 2
+            vals = sh._tables(x)
+            fits = [BarycentricInterpolator(x[:n + 1], v[:n + 1]) for v in vals]
+            if all(np.max(np.abs(f(x[n + 1:]) - v[n + 1:])) <= 1e-12 * np.max(np.abs(v))
+                   for f, v in zip(fits, vals, strict=True)):
+                return lambda xx, fits=fits: curve(np.asarray(xx, float),
+                                                   *(f(xx) for f in fits))
+        return direct
+
+    def _work(self, branches, evals):
         """sum of the integrals of F d'(a) da along the branches, and an error estimate."""
         tot, err = 0.0, 0.0
-        for a, b in branches:
+        for (a, b), ev in zip(branches, evals, strict=True):
             if a == b:
                 continue
             vals = []
@@ -1018,8 +1105,8 @@ class AdhesiveContact:
                 s = 3 * u**2 - 2 * u**3  # smoothstep: kills 1/sqrt endpoint singularities
                 x = a + (b - a) * s
                 jac = (b - a) * 6 * u * (1 - u)
-                dd = gen.adhesion_depth_slope(self.E_star, x, self.dgamma, self.shape.g_slope(x))
-                vals.append(float(np.sum(w * jac * self.force(x) * dd)))
+                _, F, dd = ev(x)
+                vals.append(float(np.sum(w * jac * F * dd)))
             tot += vals[1]
             err += abs(vals[1] - vals[0])
         return tot, err
@@ -1037,17 +1124,21 @@ class AdhesiveContact:
             a_parts.append(np.asarray(a, float))
             l_parts.append(np.full(np.shape(d), loading))
 
+        ev_load = [self._branch(a, b) for a, b in branches_load]
+        ev_un = [self._branch(a, b) for a, b in branches_un]
         dz = np.linspace(start, 0.0, n_free)
         add(dz, 0 * dz, 0 * dz, True)
-        for aa in load:
-            add(self.depth(aa), self.force(aa), aa, True)
-        for aa in unload:
+        for aa, ev in zip(load, ev_load, strict=True):
+            d, F, _ = ev(aa)
+            add(d, F, aa, True)
+        for aa, ev in zip(unload, ev_un, strict=True):
             aa = aa[aa > 0]
-            add(self.depth(aa), self.force(aa), aa, False)
+            d, F, _ = ev(aa)
+            add(d, F, aa, False)
         dr = np.linspace(d_sep, start, n_free)
         add(dr, 0 * dr, 0 * dr, False)
-        w_load, e_load = self._work(branches_load)
-        w_un, e_un = self._work(branches_un)
+        w_load, e_load = self._work(branches_load, ev_load)
+        w_un, e_un = self._work(branches_un, ev_un)
         # jumps at constant force do work F * (d_after - d_before); at constant depth none
         w_jumps = sum(j.before[1] * (j.after[0] - j.before[0]) for j in jumps)
         W = w_load + w_un + w_jumps

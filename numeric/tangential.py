@@ -489,9 +489,13 @@ class History:
     pointwise error oscillates as the stick and contact edges cross the nodes, hence one
     number for the history), or None when the run was made with ``estimate_error=False``.
     When both loads change at once, the steps add an error of first order in the step size
-    (not included: refine the steps). Final state on
-    the grid ``x`` [m]: the normal and tangential line loads ``q_z``, ``q_x`` [N/m] and
-    ``stuck`` (bool).
+    (not included: refine the steps). ``normal_force_error`` and ``contact_radius_error``
+    are the same estimates for the normal springs; ``traction_error`` [Pa] is the largest
+    difference of the final :meth:`traction` of the two runs at the coarse run's nodes,
+    divided by sqrt(2) - 1: next to a stick-slip edge the traction converges like sqrt(h),
+    where the difference of the runs on h and 2 h is (sqrt(2) - 1) times the error on h.
+    Final state on the grid ``x`` [m]: the normal and tangential line loads ``q_z``, ``q_x``
+    [N/m] and ``stuck`` (bool).
     """
 
     depth: np.ndarray
@@ -510,6 +514,9 @@ class History:
     F_x_error: float | None = None
     stick_radius_error: float | None = None
     dissipated_error: float | None = None
+    normal_force_error: float | None = None
+    contact_radius_error: float | None = None
+    traction_error: float | None = None
 
     def traction(self):
         """Final tangential traction q(r) [Pa] at r = ``x``: (5.59) applied to ``q_x``
@@ -517,13 +524,16 @@ class History:
         traction has a square-root cusp: on the few nodes next to an edge the error is
         O(sqrt(h)) (0.3-0.9 % of the largest traction on 500-4000 intervals for the sphere),
         elsewhere about 1e-4 of it."""
-        from hertzmdr.numeric import abel
+        return _traction(self.x, self.q_x, float(self.contact_radius[-1]))
 
-        a = float(self.contact_radius[-1])
-        h = float(self.x[1] - self.x[0])
-        if a <= 0:
-            return np.zeros_like(self.x)
-        return abel.pressure_from_line_load(np.where(self.x < a, self.q_x, 0.0), h, edge=a)
+
+def _traction(x, q_x, a):
+    """(5.59) of the tangential line load q_x [N/m] on the grid x [m] in a contact of radius a."""
+    from hertzmdr.numeric import abel
+
+    if a <= 0:
+        return np.zeros_like(x)
+    return abel.pressure_from_line_load(np.where(x < a, q_x, 0.0), float(x[1] - x[0]), edge=a)
 
 
 def _g_callable(g) -> Callable[[np.ndarray], np.ndarray]:
@@ -560,7 +570,8 @@ def _depth_of_force(F, table, E_star, step, x_max):
     F_nodes, W, S = table
     k = int(np.searchsorted(F_nodes, F, side="right")) - 1
     if k >= F_nodes.size - 1:
-        raise ValueError(f"normal_force[{step}] = {F!r} N needs a contact wider than the grid "
+        raise ValueError(f"normal_force[{step}] = {float(F)!r} N needs a contact wider than "
+                         "the grid "
                          f"(x_max = {x_max!r} m); valid: a larger x_max")
     return (F / E_star + S[k]) / W[k]
 
@@ -608,7 +619,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
         if depth is not None:
             d = depth[k]
             if d > gv[-1]:
-                raise ValueError(f"depth[{k}] = {d!r} m reaches beyond x_max = {x_max!r} m; "
+                raise ValueError(f"depth[{k}] = {float(d)!r} m reaches beyond x_max = {x_max!r} m; "
                                  "valid: a larger x_max")
         else:
             d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
@@ -632,7 +643,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
             D, full = u_ctrl[k] - u_prev, False
         else:
             if abs(F_ctrl[k]) > total * (1 + 1e-12) + 1e-300:
-                raise ValueError(f"F_x[{k}] = {F_ctrl[k]!r} N exceeds the sliding force "
+                raise ValueError(f"F_x[{k}] = {float(F_ctrl[k])!r} N exceeds the sliding force "
                                  f"mu F_N = {total!r} N of that step; valid: |F_x| <= mu F_N")
             D, full = _solve_shift(f, cap, w, m, G_star, F_ctrl[k], total, k) if total > 0 \
                 else (0.0, True)
@@ -658,8 +669,12 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
         elif not any_slip:
             c = out["contact_radius"][k]
         else:
+            # the edge where the stuck springs' |f| (linear through nodes i - 2, i - 1: it
+            # varies along x after a normal load changed under a tangential one) meets cap
+            # (linear between i - 1 and i)
             level = abs(f[i - 1])
-            denom = cap[i - 1] - cap[i]
+            rise = level - abs(f[i - 2]) if i >= 2 else 0.0
+            denom = cap[i - 1] - cap[i] + rise
             c = x[i - 1] + (h * (cap[i - 1] - level) / denom if denom > 0 else 0.0)
         out["stick_radius"][k] = c
     stuck = (qz > 0) & (np.abs(f) < cap)
@@ -730,8 +745,13 @@ def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=
                   fine["F_x"], fine["stick_radius"], sliding, fine["dissipated"], x, qz, qx,
                   stuck)
     if estimate_error:
-        coarse = _run(gfun, x_max, int(n_grid) // 2, E_star, G_star, mu, dep, frc, uc, Fc)[0]
-        res.u_x_error, res.F_x_error, res.stick_radius_error, res.dissipated_error = (
+        coarse, _, xc, _, qxc, _ = _run(gfun, x_max, int(n_grid) // 2, E_star, G_star, mu,
+                                        dep, frc, uc, Fc)
+        (res.u_x_error, res.F_x_error, res.stick_radius_error, res.dissipated_error,
+         res.normal_force_error, res.contact_radius_error) = (
             float(np.max(np.abs(fine[k] - coarse[k])))
-            for k in ("u_x", "F_x", "stick_radius", "dissipated"))
+            for k in ("u_x", "F_x", "stick_radius", "dissipated", "normal_force",
+                      "contact_radius"))
+        q_c = _traction(xc, qxc, float(coarse["contact_radius"][-1]))
+        res.traction_error = float(np.max(np.abs(res.traction()[::2] - q_c))) / (np.sqrt(2) - 1)
     return res

@@ -525,3 +525,46 @@ def test_state_stiffness_mean_pressure_at_a_depth(E, R, dg):
                      "punch u(r) outside")
     with pytest.raises(ValueError, match="below the pull-off depth"):
         p.equilibrium(depth=1.001 * d_c)
+
+
+def test_sampled_cycle_shares_the_profile_integrals_along_each_branch():
+    """A sampled r^2.5 tip's cycle takes d and F along each branch from Chebyshev
+    interpolation of g, g' and G (adhesion.AdhesiveContact._branch): every point against the
+    quadrature at its own radius to 1e-11 of the curve's largest value (the interpolation is
+    accepted at 1e-12 of each function's); its hysteresis against the closed-form power law's
+    within the sampled profile's own resolution (1e-7: 1000 samples, order > 4, docs/
+    adhesion.md)."""
+    from hertzmdr.numeric import mdr
+
+    E, dg, R = 2e6 / 0.75, 0.05, 20e-9
+    c_n = 0.5 * R**-1.5
+    r = np.linspace(0.0, 10 * R, 1001)
+    sam = ad.AdhesiveContact(ad.Sampled(mdr.Profile.from_samples(r, c_n * r**2.5)), E, dg)
+    cyc = sam.cycle(10e-9, "depth", 400)
+    m = cyc.contact_radius > 0
+    d_ref, F_ref = sam.depth(cyc.contact_radius[m]), sam.force(cyc.contact_radius[m])
+    assert np.max(np.abs(cyc.depth[m] - d_ref)) <= 1e-11 * np.max(np.abs(d_ref))
+    assert np.max(np.abs(cyc.force[m] - F_ref)) <= 1e-11 * np.max(np.abs(F_ref))
+    closed = ad.AdhesiveContact(ad.PowerLaw(c_n, 2.5), E, dg).cycle(10e-9, "depth", 400)
+    assert abs(cyc.hysteresis / closed.hysteresis - 1) < 1e-7
+    assert cyc.hysteresis_error <= 1e-12 * cyc.hysteresis  # Gauss-Legendre, 40 vs 80 nodes
+
+
+@pytest.mark.parametrize("name", ["cone", "paraboloid"])
+def test_sampled_cone_and_paraboloid_pull_off(name):
+    """The numerical MDR with adhesion of a sampled cone (conical tip: g' jumps at the apex)
+    and a sampled paraboloid (200 samples on [0, 10 a_c], which a quintic spline reproduces)
+    against their closed-form pull-offs under both controls: within the estimate, and to
+    1e-12 (the spline is exact; the quadrature and the roots are not)."""
+    from hertzmdr.numeric import mdr
+
+    E, dg, th = 3e6, 0.04, np.radians(20)
+    shape, f = ((ad.Cone(th), lambda r: r * np.tan(th)) if name == "cone" else
+                (ad.Paraboloid(1e-6), lambda r: r**2 / 2e-6))
+    ref = ad.AdhesiveContact(shape, E, dg)
+    r = np.linspace(0.0, 10 * ref.pull_off("force").contact_radius, 201)
+    c = ad.AdhesiveContact(ad.Sampled(mdr.Profile.from_samples(r, f(r))), E, dg)
+    for control in ad.CONTROLS:
+        po, pr = c.pull_off(control), ref.pull_off(control)
+        err = abs(po.force / pr.force - 1)
+        assert err <= po.rel_error and err < 1e-12, (control, err, po.rel_error)

@@ -90,8 +90,11 @@ ROUTES = {
     "afm_cone_tip_pdms": (lambda: _jkr_cone(e_star(PDMS), 20, "0.05"), 0.5),
     "afm_sphere_tip_pdms": (lambda: _jkr_sphere(e_star(SI3N4, PDMS), 20e-9, "0.05"), 0.5),
     # tangential contact: Cattaneo-Mindlin and Mindlin-Deresiewicz (Johnson 7.2)
-    "dem_glass_beads": (lambda: Tangential((BEAD, BEAD), mp.mpf("0.5e-3"), "0.5", "0.3",
-                                           displacement="40e-9"), 0.22),
+    # a history of overlap and tangential displacement: proportional loading (no slip,
+    # Mindlin-Deresiewicz), then Cattaneo-Mindlin from that state at constant overlap
+    "dem_glass_beads": (lambda: TangentialHistory((BEAD, BEAD), mp.mpf("0.5e-3"), "0.3",
+                                                  EXAMPLES / "dem_glass_beads_history.csv",
+                                                  mp.mpf("1e-9")), 0.22),
     "fretting_sphere": (lambda: Tangential((STEEL, STEEL), mp.mpf("0.01"), 100, "0.6",
                                            amplitude=30), 0.3),
     "beta_triangle_punch": (lambda: None, 0.5),  # check_triangle: (5.13)-(5.14)
@@ -266,7 +269,8 @@ def test_example_bounds(stem):
     case, doc = _case_of(stem)
     with mp.workdps(DPS):
         route = case.get()
-        special = {Adhesive: check_adhesive, Tangential: check_tangential}.get(type(route))
+        special = {Adhesive: check_adhesive, Tangential: check_tangential,
+                   TangentialHistory: check_tangential_history}.get(type(route))
         for name in _checked(stem, case.effects):
             if isinstance(route, Elliptic) and name in routes.ELLIPSE_STRESS:
                 routes.check_ellipse_stress(doc, doc["effects"][name], name)
@@ -606,3 +610,81 @@ def check_loop(route, v, tol, Fa, ua):
             refs.append(turn[1] - 2 * route.F_of((turn[0] - x) / 2))
     assert turn is not None and max(F) > 0 > min(F), "no closed loop"
     routes.close_field(F, refs, tol, "hysteresis loop")
+
+
+class TangentialHistory(Tangential):
+    """The DEM example's history of overlap d and tangential displacement u (read from its
+    file with numpy, in the unit ``unit``): while the beads are pressed with u = kappa d the
+    springs enter proportionally and none slips (Mindlin-Deresiewicz): F_x = lambda F(d),
+    lambda = kappa G*/E*, c = a; then, at the constant overlap d0, each spring starts from
+    lambda q_z and sticks until mu q_z: Cattaneo-Mindlin with mu - lambda for the increment
+    u - kappa d0 on top of lambda F. The dissipated energy is the slip work of the sliding
+    springs, 2 int_c^a mu q_z (du - (mu - lambda) q_z/G*) dx, by mpmath quadrature."""
+
+    def __init__(self, materials, R, mu, path, unit):
+        data = np.loadtxt(path, delimiter=",", comments="#", skiprows=5)
+        self.d = [mp.mpf(float(v)) * unit for v in data[:, 0]]
+        self.u = [mp.mpf(float(v)) * unit for v in data[:, 1]]
+        d0 = max(self.d)
+        super().__init__(materials, R, 4 * e_star(*materials) * mp.sqrt(R) * d0 ** 1.5 / 3, mu)
+        k0 = self.d.index(d0)
+        self.d0, self.kappa, self.k0 = d0, self.u[k0] / d0, k0
+        self.lam = self.kappa * self.G / self.E
+        self.mu2 = self.mu - self.lam  # the friction left to the increment
+        self.slide2 = 3 * self.mu2 * self.F / (4 * self.a * self.G)
+
+    def state(self, k):
+        """(a, F_N, F_x, c, du) of state k."""
+        d, u = self.d[k], self.u[k]
+        a = mp.sqrt(self.R * d)
+        N = 4 * self.E * mp.sqrt(self.R) * d ** 1.5 / 3
+        if k <= self.k0:
+            return a, N, self.lam * N, a, mp.mpf(0)
+        du = u - self.kappa * self.d0
+        x = du / self.slide2
+        return (a, N, self.lam * N + self.mu2 * N * (1 - (1 - x) ** 1.5), a * mp.sqrt(1 - x),
+                du)
+
+    def dissipated(self):
+        a, N, _, c, du = self.state(len(self.d) - 1)
+
+        def q(x):
+            return self.E * (self.d0 - x * x / self.R)
+
+        return 2 * mp.quad(lambda x: self.mu * q(x) * (du - self.mu2 * q(x) / self.G), [c, a])
+
+    def traction_final(self, r, c):
+        """mu p(r; a) - (mu - lambda) p(r; c) inside the stick zone, mu p(r; a) outside."""
+        r, a = mp.mpf(r), self.a
+        k = 2 * self.E / (mp.pi * self.R)
+        q = self.mu * k * mp.sqrt(a * a - r * r) if r < a else mp.mpf(0)
+        return q - (self.mu2 * k * mp.sqrt(c * c - r * r) if r < c else 0)
+
+
+def check_tangential_history(case, route, eff, name, doc):
+    """Every state of the history against the route, norm-wise (a history's rel_error is its
+    grid error over the largest value, docs/scenes.md); the scalar effects of the normal
+    contact (contact_radius, force) state by state."""
+    tol, v = routes.tol_of(eff), eff["value"]
+    states = [route.state(k) for k in range(len(route.d))]
+    if name in ("contact_radius", "force"):
+        return routes.each(v, [s[0] if name == "contact_radius" else s[1] for s in states],
+                           tol, name)
+    refs = {"sliding_force": [route.mu * s[1] for s in states],
+            "tangential_stiffness": [2 * route.G * s[0] for s in states],
+            "tangential_force": [s[2] for s in states],
+            "tangential_displacement": route.u,
+            "stick_radius": [s[3] for s in states]}
+    if name in refs:
+        return routes.close_field(v, refs[name], tol, name)
+    if name == "dissipated_energy":
+        return routes.close(v, route.dissipated(), tol, name)
+    if name == "hysteresis_loop":
+        routes.close_field(v["u"], route.u, tol, "loop: u_x")
+        return routes.close_field(v["F"], [s[2] for s in states], tol, "loop: F_x")
+    assert name == "traction_profile", name
+    c = states[-1][3]
+    r, q = v["r"], v["q"]
+    k = routes.picks(len(r), 24, at=[c, route.a], values=r)
+    return routes.close_field([q[i] for i in k], [route.traction_final(r[i], c) for i in k],
+                              tol, name)

@@ -470,3 +470,151 @@ def test_history_traction():
     err = np.abs(q - ref) / ref.max()
     assert np.max(err[inside & ~band]) < 2e-4 and np.max(err[inside]) < 2e-2
     assert np.all(q[h.x >= ct.a * 1.01] == 0)
+
+
+# -- scenes: a history from a file, and the springs for profiles without closed forms ----------
+_STEEL_BODIES = [{"shape": "sphere", "radius": "10 mm", "E": "210 GPa", "nu": 0.3},
+                 {"shape": "flat", "E": "210 GPa", "nu": 0.3}]
+
+
+def _history_scene(tmp_path, text, effects=("tangential_force",), **hist):
+    (tmp_path / "h.csv").write_text(text, encoding="utf-8")
+    table = {"file": "h.csv", "normal": "force", "tangential": "force", **hist}
+    body = "\n".join(
+        "[[body]]\n" + "\n".join(f"{k} = {v!r}".replace("'", '"') for k, v in b.items())
+        for b in _STEEL_BODIES)
+    (tmp_path / "s.toml").write_text(
+        f"effects = {list(effects)!r}\n".replace("'", '"') + body
+        + "\n[interface]\nfriction = 0.6\n[load]\nhistory = {"
+        + ", ".join(f"{k} = {v!r}".replace("'", '"') for k, v in table.items()) + "}\n",
+        encoding="utf-8")
+    from hertzmdr.numeric import scene
+
+    return scene.load(tmp_path / "s.toml")
+
+
+def test_scene_history_from_a_file(tmp_path):
+    """A history at constant normal force that loads to F_a, then cycles -F_a .. F_a: the
+    springs' u_x at the turning points against Cattaneo-Mindlin's and the energy of the cycle
+    (total minus the first loading's, which is the cycle's own half of the friction work
+    beyond it) against Mindlin-Deresiewicz, within the reported grid errors; units from the
+    table; the file's rows are the states."""
+    ct = _sphere()
+    Fa = 30.0
+    Fs = np.concatenate([np.linspace(0, Fa, 41), np.linspace(Fa, -Fa, 81)[1:],
+                         np.linspace(-Fa, Fa, 81)[1:]])
+    rows = "normal_kN, shear_N  # a header, then the states\n" + "".join(
+        f"{F_N / 1e3!r}, {float(F)!r}\n" for F in Fs)
+    sc = _history_scene(tmp_path, rows, effects=["tangential_displacement", "dissipated_energy",
+                                                 "sliding_force", "hysteresis_loop"],
+                        units=["kN", "N"])
+    assert sc.spec.load.values == pytest.approx([F_N] * Fs.size, rel=1e-15)
+    eff = sc.run()["effects"]
+    u = np.asarray(eff["tangential_displacement"]["value"])
+    err = eff["tangential_displacement"]["rel_error"] * np.max(np.abs(u))
+    ustar = float(ct.displacement(Fa))
+    assert abs(u[40] - ustar) <= err and abs(u[120] + ustar) <= err
+    assert abs(u[200] - ustar) <= err
+    assert 0 < err < 1e-5 * ustar  # 1000 intervals, second order
+    W = eff["dissipated_energy"]["value"]
+    first = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU,
+                       x_max=float(1.25 * ct.a), normal_force=np.full(41, F_N), F_x=Fs[:41],
+                       n_grid=1000, estimate_error=False).dissipated[-1]
+    W_md = float(ct.energy(Fa))
+    assert abs(W - first - W_md) <= 2 * eff["dissipated_energy"]["rel_error"] * W + 1e-9 * W_md
+    assert eff["sliding_force"]["value"] == pytest.approx([MU * F_N] * Fs.size, rel=1e-5)
+    assert len(eff["hysteresis_loop"]["value"]["u"]) == Fs.size
+
+
+def test_scene_history_errors(tmp_path):
+    """Every bad history ends in one line naming the key and, for a row, the file and line."""
+    from hertzmdr.numeric import scene
+    from hertzmdr.numeric.scene.schema import SceneError
+
+    cases = [
+        ("0, 0\n1, 2, 3\n", {}, r"load.history.file: h.csv line 2: expected two numbers"),
+        ("n, t\nx, y\n1, 2\n", {}, r"line 2: expected two numbers"),
+        ("0, 0\n", {}, r"h.csv has 1 state\(s\); a history needs at least two"),
+        ("0, 0\n-5, 0\n", {}, r"h.csv line 2: the normal force -5.0 is below 0"),
+        ("0, 0\n1e308, 0\n", {"units": ["kN", "N"]}, r"line 2: the values must be finite"),
+        ("0, 0\n100, 0\n", {"units": ["nm", "N"]}, r"load.history.units\[0\]: "),
+        ("0, 0\n100, 0\n", {"units": "N"}, r"load.history.units: must be a list of two"),
+        ("0, 0\n100, 0\n", {"normal": "pressure"}, r"load.history.normal: must be \"depth\""),
+        ("0, 0\n100, 0\n", {"tangential": "speed"}, r"load.history.tangential: must be"),
+        ("0, 0\n100, 0\n", {"control": "x"}, r"load.history.control: unknown key"),
+        ("0, 0\n100, 0\n100, 70\n", {}, r"load.history: F_x of h.csv line 3 = 70.0 N exceeds "
+                                       r"the sliding force"),
+    ]
+    for text, hist, match in cases:
+        with pytest.raises(SceneError, match=match) as info:
+            _history_scene(tmp_path, text, **hist).run()
+        assert "\n" not in str(info.value)
+    with pytest.raises(SceneError, match="load.history.file: history file .* not found"):
+        scene.load({"effects": ["force"], "body": _STEEL_BODIES,
+                    "load": {"history": {"file": "nowhere.csv", "normal": "force",
+                                         "tangential": "force"}}})
+    with pytest.raises(SceneError, match="give history alone, not with force"):
+        scene.load({"effects": ["force"], "body": _STEEL_BODIES,
+                    "load": {"force": "1 N", "history": {"file": "h.csv"}}})
+    with pytest.raises(SceneError, match="load.history.file: missing"):
+        scene.load({"effects": ["force"], "body": _STEEL_BODIES,
+                    "load": {"history": {"normal": "force", "tangential": "force"}}})
+
+
+def test_sampled_and_exact_sphere_scenes_run_the_springs():
+    """Profiles without a tangential closed form (a sampled paraboloid, an exact sphere at
+    a/R = 0.01) run the springs on a grid: the fretting numbers of Mindlin-Deresiewicz within
+    the reported errors, which are small; the method says so."""
+    from hertzmdr.numeric import scene
+
+    ct = _sphere()
+    r = np.linspace(0, 1e-3, 401)
+    sampled = {"shape": "profile", "r": list(r), "f": list(r**2 / (2 * R)), "E": "210 GPa",
+               "nu": 0.3}
+    exact = {"shape": "exact_sphere", "radius": "10 mm", "E": "210 GPa", "nu": 0.3}
+    for tip, floor in ((sampled, 0.0), (exact, 1e-4)):  # the exact sphere is not Hertz: a/R
+        doc = scene.load({"effects": ["stick_radius", "dissipated_energy", "tangential_force",
+                                      "tangential_displacement", "traction_profile",
+                                      "hysteresis_loop"],
+                          "body": [tip, _STEEL_BODIES[1]], "interface": {"friction": MU},
+                          "load": {"force": "100 N",
+                                   "oscillating": {"amplitude": "30 N"}}}).run()
+        eff = doc["effects"]
+        c_ref = float(ct.stick_radius_from_force(30.0))
+        for name, ref in (("stick_radius", c_ref), ("dissipated_energy", float(ct.energy(30.0))),
+                          ("tangential_displacement", float(ct.displacement(30.0)))):
+            got = eff[name]
+            assert abs(got["value"] / ref - 1) <= got["rel_error"] + floor, (tip["shape"], name)
+            assert got["rel_error"] < 1e-2 and "springs" in got["method"]
+        assert eff["tangential_force"]["value"] == pytest.approx(30.0, rel=1e-12)
+        q = eff["traction_profile"]["value"]
+        ref = ct.traction(np.asarray(q["r"]), float(ct.displacement(30.0)))
+        assert np.max(np.abs(q["q"] - ref)) <= (eff["traction_profile"]["rel_error"] + floor) \
+            * np.max(np.abs(q["q"]))
+        assert eff["hysteresis_loop"]["value"]["F"][-1] == pytest.approx(30.0, rel=1e-12)
+
+
+def test_dissimilar_poisson_ratios():
+    """nu1 != nu2 (steel on a polymer, G*/E* = 0.61 instead of one body's 2 (1 - nu)/(2 - nu)):
+    Johnson's Cattaneo-Mindlin with the pair's compliance sum (2 - nu1)/G1 + (2 - nu2)/G2 at
+    30 digits, from the closed forms (1e-13) and from the springs' history (within its
+    estimate). The MDR leaves out the coupling of normal and tangential loads through Dundurs'
+    second constant, as Johnson's forms do."""
+    E1, nu1, E2, nu2 = 210e9, 0.3, 3e9, 0.45
+    G1, G2 = E1 / (2 * (1 + nu1)), E2 / (2 * (1 + nu2))
+    Es = 1 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)
+    Gs = float(tg.effective_modulus(G1, nu1, G2, nu2))
+    a = float(hertz.contact_radius_from_force(F_N, R, Es))
+    ct = tg.Contact(tg.Paraboloid(R), a, Es, Gs, MU)
+    Fx = 0.7 * MU * F_N
+    with mp.workdps(30):
+        comp = (2 - mp.mpf(nu1)) / mp.mpf(G1) + (2 - mp.mpf(nu2)) / mp.mpf(G2)
+        x = mp.mpf(Fx) / (MU * mp.mpf(F_N))
+        delta = 3 * MU * mp.mpf(F_N) / (16 * mp.mpf(a)) * comp * (1 - (1 - x) ** (
+            mp.mpf(2) / 3))
+        assert_close(float(ct.displacement(Fx)), delta, 1e-13, "delta, nu1 != nu2")
+        assert_close(float(ct.stick_radius_from_force(Fx)), a * (1 - x) ** (mp.mpf(1) / 3),
+                     1e-13, "c, nu1 != nu2")
+    h = tg.history(tg.Paraboloid(R), E_star=Es, G_star=Gs, mu=MU, x_max=1.2 * a,
+                   normal_force=[F_N, F_N], F_x=[0.0, Fx], n_grid=1000)
+    assert abs(h.u_x[-1] - float(delta)) <= h.u_x_error

@@ -55,6 +55,8 @@ class Run:
             with np.errstate(over="raise", invalid="raise", divide="raise"):
                 args = [self.node(n) for n in eff.needs]
                 v = getattr(self.contact, "effect_" + name)(*args)
+        except SceneError:  # a node's own message names its key already
+            raise
         except (ValueError, ArithmeticError) as exc:  # numeric/'s validators name the input
             raise SceneError(self.spec.source, "effects",  # and its valid range
                              f"{name!r} at this load: {reason(exc)}") from exc

@@ -44,12 +44,37 @@ class Body:
 
 
 @dataclass(frozen=True)
-class Tangential:
-    """The tangential part of a load, at constant normal load (docs/tangential.md)."""
+class History:
+    """An explicit (normal, tangential) load history read from a file (``[load] history``).
 
-    kind: str  # "force", "displacement" (monotonic from 0) or "oscillating"
-    value: float  # F_x [N], u_x [m], or the amplitude of the tangential force [N]
+    Attributes
+    ----------
+    file : str
+        The file's name, for messages.
+    control : str
+        What the tangential column is: "force" [N] or "displacement" [m].
+    values : tuple of float
+        The tangential column in SI units, one entry per state.
+    lines : tuple of int
+        The line of the file each state was read from (errors name it).
+    """
+
+    file: str
+    control: str
+    values: tuple[float, ...]
+    lines: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Tangential:
+    """The tangential part of a load (docs/tangential.md): at constant normal load, or an
+    explicit history of both."""
+
+    kind: str  # "force", "displacement" (monotonic from 0), "oscillating" or "history"
+    value: float  # F_x [N], u_x [m], the amplitude of the tangential force [N], or a
+    # history's largest |tangential value| (its unit by history.control)
     cycles: int = 0  # oscillating: the number of full cycles after the first loading
+    history: History | None = None  # "history": the states read from the file
 
 
 @dataclass
@@ -110,6 +135,45 @@ def _read(reader: _Reader, data: dict, default_title: str) -> SceneSpec:
     return read_scene(reader, data, default_title)
 
 
+#: the most states a history file may hold
+HISTORY_MAX_ROWS = 100_000
+
+
+def read_history(path: Path, fail) -> list[tuple[int, tuple[float, float]]]:
+    """The rows (line number, (normal, tangential)) of a history file: two numbers a line,
+    separated by a comma and/or spaces; ``#`` starts a comment; one header line may come before
+    the first state.
+    ``fail(message)`` is called on the first problem, naming the file and the line."""
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except FileNotFoundError:
+        fail(f"history file {str(path)!r} not found")
+    except (OSError, UnicodeDecodeError) as exc:
+        fail(f"cannot read {str(path)!r} ({exc})")
+    rows, header = [], False
+    for n, line in enumerate(text.splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = [s for s in line.replace(",", " ").split() if s]
+        try:
+            if len(parts) != 2:
+                raise ValueError
+            vals = (float(parts[0]), float(parts[1]))
+        except ValueError:
+            if not rows and not header:  # one header line before the first state
+                header = True
+                continue
+            fail(f"{path.name} line {n}: expected two numbers (normal, tangential), got "
+                 f"{line[:60]!r}")
+        rows.append((n, vals))
+        if len(rows) > HISTORY_MAX_ROWS:
+            fail(f"{path.name} has more than {HISTORY_MAX_ROWS} states")
+    if len(rows) < 2:
+        fail(f"{path.name} has {len(rows)} state(s); a history needs at least two")
+    return rows
+
+
 def suggest(name: str, choices) -> str:
     close = difflib.get_close_matches(name, sorted(choices), n=1, cutoff=0.5)
     return f"; did you mean {close[0]!r}?" if close else ""
@@ -131,6 +195,7 @@ class _Reader:
         for k in table:
             if k not in allowed:
                 names = ", ".join(sorted(allowed)) or "none yet"
+                k = k if k.isprintable() else repr(k)  # a message is one line
                 self.fail(f"{key}.{k}" if key else k,
                           f"unknown key{suggest(k, allowed)} (allowed: {names})")
 
@@ -307,7 +372,13 @@ class _Reader:
 
     def load(self, ld: dict) -> Load:
         kinds = ("depth", "force", "impact", "pressure", "cycle")
-        self.extra_keys(ld, set(kinds) | {"tangential", "oscillating"}, "load")
+        self.extra_keys(ld, set(kinds) | {"tangential", "oscillating", "history"}, "load")
+        if "history" in ld:
+            others = sorted(k for k in ld if k != "history")
+            if others:
+                self.fail("load", "a history gives both the normal and the tangential load: "
+                          f"give history alone, not with {' and '.join(others)}")
+            return self.history(self.table(ld["history"], "load.history"))
         tangential = self.tangential(ld)
         load = self.normal_load({k: v for k, v in ld.items()
                                  if k not in ("tangential", "oscillating")})
@@ -317,6 +388,56 @@ class _Reader:
                           "or force, not a sweep, an impact or a prescribed pressure")
             load.tangential = tangential
         return load
+
+    def history(self, h: dict) -> Load:
+        """``history = {file = "h.csv", normal = "depth" | "force", tangential =
+        "displacement" | "force", units = ["nm", "nm"]}``: two columns (normal, tangential)
+        of a text file, one state a row (docs/scenes.md)."""
+        key = "load.history"
+        self.extra_keys(h, {"file", "normal", "tangential", "units"}, key)
+        for k in ("file", "normal", "tangential"):
+            if k not in h:
+                self.fail(f"{key}.{k}", "missing: a history is {file = \"h.csv\", normal = "
+                          "\"depth\" or \"force\", tangential = \"displacement\" or "
+                          "\"force\"} (units = [..., ...] optional)")
+        normal, tang = h["normal"], h["tangential"]
+        if normal not in ("depth", "force"):
+            self.fail(f"{key}.normal", f"must be \"depth\" or \"force\", got {normal!r}")
+        if tang not in ("displacement", "force"):
+            self.fail(f"{key}.tangential", f"must be \"displacement\" or \"force\", got "
+                      f"{tang!r}")
+        dims = ("length" if normal == "depth" else "force",
+                "length" if tang == "displacement" else "force")
+        scale = [1.0, 1.0]
+        if "units" in h:
+            units = h["units"]
+            if not (isinstance(units, list) and len(units) == 2
+                    and all(isinstance(u, str) and u.strip() for u in units)):
+                self.fail(f"{key}.units", "must be a list of two unit strings [normal, "
+                          f"tangential], e.g. [\"nm\", \"nm\"] or [\"N\", \"mN\"]; got "
+                          f"{units!r}")
+            scale = [self.positive(f"1 {u.strip()}", dim, f"{key}.units[{j}]")
+                     for j, (u, dim) in enumerate(zip(units, dims, strict=True))]
+        name = h["file"]
+        if not isinstance(name, str) or not name.strip():
+            self.fail(f"{key}.file", f"must be a file name (a string), got {name!r}")
+        path = (self.base_dir or Path.cwd()) / name
+        rows = read_history(path, lambda msg: self.fail(f"{key}.file", msg))
+        nv, tv, lines = [], [], []
+        for line, (a, b) in rows:
+            a, b = a * scale[0], b * scale[1]
+            if not (math.isfinite(a) and math.isfinite(b)):
+                self.fail(f"{key}.file", f"{path.name} line {line}: the values must be "
+                          "finite after the unit is applied")
+            if a < 0:
+                self.fail(f"{key}.file", f"{path.name} line {line}: the normal {normal} "
+                          f"{a!r} is below 0; valid: >= 0 (a state out of contact is 0)")
+            nv.append(a)
+            tv.append(b)
+            lines.append(line)
+        hist = History(path.name, tang, tuple(tv), tuple(lines))
+        return Load(normal, nv, sweep=True, tangential=Tangential(
+            "history", max(abs(v) for v in tv), history=hist))
 
     def tangential(self, ld: dict) -> Tangential | None:
         if "tangential" in ld and "oscillating" in ld:

@@ -4,8 +4,9 @@ MDR, numeric/adhesion.py).
 :func:`adhesive` turns the contact the registry built for the bodies into an
 :class:`AdhesiveKind`: the Hertz contact becomes the JKR paraboloid, the closed-form MDR
 profiles their adhesive counterparts (cone, power law n > 1/2, flat punch, exact sphere, worn
-parabola). Other contacts (elliptical, line, BEM, sampled profiles, prescribed pressures,
-impacts) are refused with the reason. Delta gamma = 0 is never made adhesive (the model keeps
+parabola), a sampled profile its numerical-MDR counterpart (every field with the coarse-vs-fine
+error of its samples). Other contacts (elliptical, line, BEM, prescribed pressures, impacts)
+are refused with the reason. Delta gamma = 0 is never made adhesive (the model keeps
 the non-adhesive contact, exactly), unless the load is a ``cycle``, whose history it walks.
 
 The state at a depth (force) is the stable equilibrium under depth (force) control: the
@@ -34,12 +35,13 @@ WHY_NOT = {
 }
 
 
-#: effects of a sampled profile's adhesive contact that are not computed
+#: effects of a sampled profile's adhesive contact that are not computed, and why
 SAMPLED_NOT = dict.fromkeys(
-    ("pressure_profile", "surface_displacement", "axis_stresses", "max_shear",
-     "von_mises_field", "max_von_mises"),
-    "the adhesive pressure and displacement of a sampled profile are not computed (its "
-    "force, depth, contact radius, pull-off and cycle are, by the numerical MDR)")
+    ("axis_stresses", "max_shear", "von_mises_field", "max_von_mises", "max_orthogonal_shear"),
+    "the stresses under a sampled profile's adhesive pressure are not computed: the "
+    "superposition would evaluate the numerical MDR's Abel integral of the pressure at every "
+    "ring of every stress point (minutes a field); its pressure_profile and "
+    "surface_displacement are")
 
 
 def _shape(contact) -> ad.Shape:
@@ -212,16 +214,51 @@ class AdhesiveKind(StressEffects, Contact):
 
     def pressure_radii(self, a):
         r = super().pressure_radii(a)
-        if getattr(self.inner, "off_axis", False):  # a cone's p is log-infinite on the axis:
-            r[0] = a * 1e-3  # off it, as the inner kind's own profile
+        if getattr(self.inner, "off_axis", False):  # a cone's p is log-infinite at r = 0
+            r[0] = 1e-3 * a
         return r[np.abs(r - a) > 1e-12 * a]  # p is -inf at the edge itself
+
+    def _twin_error(self, field: str, r, d, value) -> float:
+        """A sampled profile's field error: the largest difference of the fine and the coarse
+        representation's field at the same radii and depth (each at its own contact radius),
+        over the field's largest |value|, plus twice the state's (a and d move the field);
+        0 for the closed forms (their error is the state's)."""
+        twin = self.shape.companion()
+        if twin is None:
+            return 0.0
+        other = ad.AdhesiveContact(twin, self.E_star, self.interface.work_of_adhesion)
+        with np.errstate(invalid="ignore"):  # -inf - -inf where both meet their edges
+            v2 = np.asarray(getattr(other, field)(r, d), float)
+            diff = np.abs(v2 - value)
+        fin = np.isfinite(value) & np.isfinite(v2)
+        scale = float(np.max(np.abs(value[fin]))) if fin.any() else 0.0
+        return float(np.max(diff[fin])) / scale if scale > 0 else 0.0
+
+    def effect_pressure_profile(self, st):
+        v = super().effect_pressure_profile(st)
+        if not isinstance(self.shape, ad.Sampled):
+            return v
+        d = self.last(st)
+        r, p = v.value["r"], v.value["p"]
+        a = self.extent(d)
+        # the edge's -inf of one representation is finite in the other: the points next to
+        # it are left out, as is the axis of a conical tip (+inf)
+        keep = (np.abs(r - a) > 1e-3 * a) & np.isfinite(p)
+        r, p = r[keep], p[keep]
+        err = self._twin_error("pressure_at_depth", r, d, p) + 2 * st.rel_error
+        return Value({"r": r, "p": p}, "numerical MDR: " + self.pressure_method
+                     + " (error: coarse vs fine samples)", err)
 
     def effect_surface_displacement(self, st):
         d = self.last(st)
         r = np.linspace(0.0, 4.0 * self.extent(d), FIELD_POINTS)
-        u = self.model.surface_displacement_at_depth(r, d)
-        return Value({"r": r, "u": np.asarray(u, float)}, "d - f(r) inside, (5.60) outside "
-                     "with the edge term -(2/pi) Delta l asin(a/r)", st.rel_error)
+        u = np.asarray(self.model.surface_displacement_at_depth(r, d), float)
+        err = st.rel_error
+        method = "d - f(r) inside, (5.60) outside with the edge term -(2/pi) Delta l asin(a/r)"
+        if isinstance(self.shape, ad.Sampled):
+            err = self._twin_error("surface_displacement_at_depth", r, d, u) + 2 * st.rel_error
+            method = "numerical MDR: " + method + " (error: coarse vs fine samples)"
+        return Value({"r": r, "u": u}, method, err)
 
     def effect_mdr_profile(self, st):
         if isinstance(self.shape, ad.FlatPunch):

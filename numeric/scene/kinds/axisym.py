@@ -299,6 +299,11 @@ class ClosedFormContact(Axisymmetric):
 class PunchContact(ClosedFormContact):
     """The flat punch: its g is 0 inside the contact and infinite outside (Problem 7(a))."""
 
+    def spring_profile(self):
+        """The tangential springs of a history: g = 0 on a grid that ends at the radius."""
+        return (lambda x: np.zeros_like(np.asarray(x, float)),
+                float(self.form.params["radius"]))
+
     def effect_mdr_profile(self, st):
         a = float(self.form.params["radius"])
         x = np.linspace(0.0, a * (1 - 1e-9), FIELD_POINTS)
