@@ -27,9 +27,8 @@ MAX_SEARCH_RTOL = 1e-12
 class Axisymmetric(TangentialEffects, StressEffects, Contact):
     """Base: the effects of an axisymmetric contact, from the primitives ``radius(d)``,
     ``force_of(d)``, ``depth_of(F)``, ``p(r, d)``, ``u(r, d)`` and ``g(x)`` of a subclass
-    (a subclass that writes a state or an effect itself leaves out the primitives only that
-    effect would call: the numerical MDR solves each load and writes its fields from its
-    solution; the Hertz contact inverts (5.23) in its state)."""
+    (a subclass that writes an effect itself leaves out the primitives only that effect would
+    call: the numerical MDR writes its surface displacement from its solution, without u)."""
 
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
     #: the method of the contact state (and of the force-depth curve)
@@ -390,8 +389,15 @@ class NumericalMDR(Axisymmetric):
         d = np.atleast_1d(np.asarray(d, float))
         return np.array([self._solve(depth=float(v)).force for v in d])
 
+    def depth_of(self, F):
+        F = np.atleast_1d(np.asarray(F, float))
+        return np.array([self._solve(force=float(v)).depth for v in F])
+
     def p(self, r, d):
         return self._solve(depth=float(d)).pressure(r)
+
+    def g(self, x):
+        return self.profile.g(x)  # the tangential springs' profile (kinds/friction.py)
 
     # -- every effect with the solver's own bound (numeric/mdr.py) ----------------------------
     # Field effects report max |error| / max |value| over their points; the pressure's bound is
