@@ -84,21 +84,37 @@ class HalfSpace:
         self.dx, self.dy, self.E_star = float(dx), float(dy), float(E_star)
         self.workers = workers
         self._fft = fft
-        # circulant embedding of the Toeplitz kernel on a (2nx, 2ny) grid: offsets 0..nx-1
-        # then -nx..-1 (the offset nx is never used by the linear convolution)
-        ix = np.fft.fftfreq(2 * nx, 1.0 / (2 * nx))
-        iy = np.fft.fftfreq(2 * ny, 1.0 / (2 * ny))
-        K = influence_kernel(ix[:, None] * self.dx, iy[None, :] * self.dy,
-                             self.dx, self.dy, self.E_star)
-        self.kernel_hat = fft.rfft2(K, workers=workers)
+        # the kernel at the offsets (i dx, j dy), i = 0..nx, j = 0..ny (it is even in both):
+        # (5.7) over the pixel is the mixed difference of Love's primitive F at the pixel's
+        # corners, which lie on the lattice ((m - 1/2) dx, (l - 1/2) dy): F once per lattice
+        # point, (nx + 2)(ny + 2) of them
+        X = (np.arange(nx + 2) - 0.5) * self.dx
+        Y = (np.arange(ny + 2) - 0.5) * self.dy
+        F = _love_primitive(X[:, None], Y[None, :])
+        Kq = (F[1:, 1:] - F[1:, :-1] - F[:-1, 1:] + F[:-1, :-1]) / (np.pi * self.E_star)
+        # circulant embedding of the Toeplitz kernel on a (2nx, 2ny) grid: offsets 0..nx-1,
+        # then -nx..-1 (the offset nx is never used by the linear convolution); the kernel is
+        # even, so the embedding is too and its transform is real
+        K = np.empty((2 * nx, 2 * ny))
+        K[:nx + 1, :ny + 1] = Kq
+        K[nx + 1:, :ny + 1] = Kq[nx - 1:0:-1]
+        K[:, ny + 1:] = K[:, ny - 1:0:-1]
+        self.kernel_hat = fft.rfft2(K, workers=workers).real
         self.self_influence = float(K[0, 0])
 
     def __call__(self, p: np.ndarray) -> np.ndarray:
-        """u_z [m] at the pixel centres under the pixel pressures p [Pa] (linear convolution)."""
+        """u_z [m] at the pixel centres under the pixel pressures p [Pa] (linear convolution).
+
+        The zero-padded 2-D transform, pruned: the rows of p are transformed alone (the
+        padding rows are zero) and only the first nx rows of the product are transformed
+        back, so the padded rows cost one column transform each way."""
         nx, ny = self.shape
-        fft = self._fft
-        ph = fft.rfft2(p, s=(2 * nx, 2 * ny), workers=self.workers)
-        return fft.irfft2(ph * self.kernel_hat, s=(2 * nx, 2 * ny), workers=self.workers)[:nx, :ny]
+        fft, w = self._fft, self.workers
+        ph = fft.fft(fft.rfft(p, n=2 * ny, axis=1, workers=w), n=2 * nx, axis=0,
+                     overwrite_x=True, workers=w)
+        ph *= self.kernel_hat
+        back = fft.ifft(ph, axis=0, overwrite_x=True, workers=w)[:nx]
+        return fft.irfft(back, n=2 * ny, axis=1, workers=w)[:, :ny]
 
 
 @dataclass(frozen=True)
