@@ -226,9 +226,11 @@ def boundary_area(contact: np.ndarray, dx: float, dy: float) -> float:
     return float(np.count_nonzero(edge_in | edge_out)) * dx * dy
 
 
-def _residual(g, S, allowed, scale):
+def _residual(g, G, S, allowed, scale):
+    """The relative residual of :func:`solve`: the gap on the contact (G = its sum of
+    squares) and the overlap outside it, over ``scale``."""
     viol = np.where(allowed & ~S & (g < 0), g, 0.0)
-    return float(np.sqrt(np.sum(g[S] ** 2) + np.sum(viol**2)) / scale)
+    return float(np.sqrt(G + np.sum(viol**2)) / scale)
 
 
 def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1e-8,
@@ -319,16 +321,18 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
             g = u + hh - d
         g = np.where(allowed, g, 0.0)
         scale = np.sqrt(np.sum(u[S] ** 2)) or 1.0
-        res = _residual(g, S, allowed, scale)
+        gS = g[S]
+        G = np.sum(gS**2)
+        res = _residual(g, G, S, allowed, scale)
         if res < tol:
             break
-        G = np.sum(g[S] ** 2)
         t = np.where(S, g + delta * (G / G_old) * t, 0.0)
         G_old = G
-        r = op.on_support(t, S)  # t and what is used of r live on S
+        tS = t[S]
+        rS = op.on_support(t, S)[S]  # t and what is used of its image live on S
         if force is not None:
-            r = r - r[S].mean()
-        tau = np.sum(g[S] * t[S]) / np.sum(r[S] * t[S])
+            rS = rS - rS.mean()
+        tau = np.sum(gS * tS) / np.sum(rS * tS)
         p = np.where(S, p - tau * t, 0.0)
         p = np.maximum(p, 0.0)
         overlap = allowed & (p == 0) & (g < 0)
