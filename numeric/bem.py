@@ -130,6 +130,8 @@ class HalfSpace:
         if mx * my > nx * ny // 2:
             return self(p)
         if (mx, my) not in self._box_hats:
+            if len(self._box_hats) >= 8:  # the contact's box settles: keep the recent sizes
+                self._box_hats.pop(next(iter(self._box_hats)))
             Lx, Ly = fft.next_fast_len(2 * mx - 1, real=True), fft.next_fast_len(2 * my - 1,
                                                                                  real=True)
             self._box_hats[(mx, my)] = (Lx, Ly, self._embedded_hat(mx, my, Lx, Ly))
