@@ -5,7 +5,10 @@ The displacement at a pixel centre is the Boussinesq integral (5.7) over every p
 exactly: for a uniformly loaded rectangle the integral of 1/s has the closed form of Love
 (1929, Phil. Trans. R. Soc. A 228, 377), see :func:`influence_kernel`. The influence matrix is
 Toeplitz-block-Toeplitz, so the displacement of the whole grid is a linear convolution, done by
-zero-padding to twice the grid and FFT (:class:`HalfSpace`, O(N log N), no periodic images).
+zero-padding to twice the grid and FFT (:class:`HalfSpace`, O(N log N), no periodic images; the
+kernel is even, so its transform is real; the padding is skipped where it is known to be zero),
+and for a pressure confined to a box (the conjugate direction, which lives on the contact) by
+padding that box alone (:meth:`HalfSpace.on_support`).
 
 The contact problem -- find p >= 0 with gap g = h - d + u >= 0 and p g = 0 -- is solved by the
 constrained conjugate-gradient iteration of Polonsky & Keer (1999, Wear 231, 206), depth- or
