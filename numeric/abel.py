@@ -110,6 +110,7 @@ from hertzmdr.numeric._abel.operators import (
     _apply,
     _build_kink,
     _cached,
+    _operator,
 )
 from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
@@ -289,9 +290,9 @@ def _matrix(direction: str, N, dx, edge, degree, kink=None) -> np.ndarray:
                              "a sample at the kink")
     scale = 1 / h if direction == "inverse" else h
     M = np.zeros((N, N))
-    # the transform is linear in the samples 0..K: the images of the unit vectors are the
-    # columns of the operator
-    M[:K + 1, :K + 1] = _apply(direction, K, A, int(degree), N, np.eye(K + 1), beta).T * scale
+    # the transform is linear in the samples 0..K: its cached operator (for (5.59) with an
+    # edge, the edge-free one plus this edge's correction), as _apply applies it
+    M[:K + 1, :K + 1] = _operator(direction, K, A, int(degree), N, beta) * scale
     return M
 
 

@@ -280,6 +280,28 @@ def _cached(key, make):
     return value
 
 
+def _operator(direction: str, K: int, A: float | None, degree: int, N: int,
+              beta: float | None = None) -> np.ndarray:
+    """The matrix M (K+1, K+1) of ``_apply``: _apply(..., y) == y @ M.T for a kink off the
+    grid (a kink on a sample has an infinite entry), the same numbers as _apply(..., identity)
+    without its O(K^3) product."""
+    if beta is not None and beta < (A if A is not None else K**2):
+        W, j_kink, _ = _cached(("inverse-kink", K, A, beta, degree),
+                               lambda: _build_kink(K, A, beta, degree))
+        if j_kink >= 0:
+            raise ValueError("a kink on a sample: the operator has an infinite entry")
+        return W.copy()
+    if direction == "inverse" and A is not None:
+        base = _cached(("inverse", N - 1, None, degree),
+                       lambda: _build("inverse", N - 1, None, degree))
+        c0, corr = _cached(("inverse-edge", K, A, degree, N),
+                           lambda: _edge_correction(K, A, degree, N))
+        M = np.array(base[:K + 1, :K + 1])
+        M[:, c0:] += corr
+        return M
+    return np.array(_cached((direction, K, A, degree), lambda: _build(direction, K, A, degree)))
+
+
 def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: np.ndarray,
            beta: float | None = None):
     """The transform of the rows ``block`` (B, K+1) in units dx = 1."""
