@@ -391,9 +391,9 @@ def test_inverse_moments_in_closed_form(kmax):
     [s_lo, s_hi] (v = (s - s_lo)/(s_hi - s_lo)), taken as a polynomial in one parameter with
     positive coefficients (numeric/_abel/moments.py), against mpmath's tanh-sinh quadrature
     of the integral in s - s_lo at 30 digits (the endpoint singularity at s = t handled by
-    the quadrature, not by the substitution s = t + w^2 the code uses). Pieces of the grid s = i^2 (units
-    dx = 1): adjacent to the output point t = j^2, next to it, far from it (j = 0 and
-    j = 3000), and a last piece ending at a non-integer edge. Tolerance 16 eps: a sum of
+    the quadrature, not by the substitution s = t + w^2 the code uses). Pieces of the grid
+    s = i^2 (units dx = 1): adjacent to the output point t = j^2, next to it, far from it
+    (j = 0 and j = 3000), and a last piece ending at a non-integer edge. Tolerance 16 eps: a sum of
     <= 9 positive terms, each a few roundings (sqrt, the division by w_a + w_b, the powers)."""
     from hertzmdr.numeric._abel.moments import _BETA_TABLES, _half_powers
 
