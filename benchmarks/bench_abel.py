@@ -320,10 +320,11 @@ def first_call_section(firsts):
                             f"{r['method']} (error {r['error']:.0e})" for r in slower)
                         if slower else "") + ".")
     out.append("\n" + " ".join(text) + " Against three_point, the method issue 18 names as "
-               "PyAbel's fastest, the goal is met where its ratio is >= 1. Where PyAbel's "
-               "daun (degree 0) and hansenlaw are faster on the first call, it is at the errors "
-               "listed: hansenlaw has no operator (an O(N) recursion, the same cost again on "
-               "every call), daun's degree-0 operator is a few closed-form terms an entry. "
+               "PyAbel's fastest, the goal is met where its ratio is >= 1. Where other PyAbel "
+               "methods are faster on the first call, it is at the errors listed: hansenlaw "
+               "has no operator (an O(N) recursion, the same cost again on every call), the "
+               "operators of daun (degree 0) and two_point are a few closed-form terms an "
+               "entry. "
                "hertzmdr's first call is the O(N^2) operator of the exact "
                "moments (one square root and about 40 flops an entry, plus writing N^2 "
                "doubles, 134 MB at N = 4097), cached for every later call; its accuracy is "
