@@ -8,6 +8,9 @@ Polonsky-Keer-Rey solver at tolerance 1e-8; its depth is taken as the mean of u 
 contact, u computed by our operator from its pressure (its model does not return the
 non-periodic displacement).
 
+The large problem (issue 18: 1024 x 1024 to 1e-8 in <= 20 s): the same solve on a 1024^2 grid,
+each side once in a process of its own (wall and CPU time, peak memory).
+
 Run: ``python benchmarks/bench_bem.py [--quick] [--out DIR]`` (``make benchmark`` runs it);
 writes benchmarks/results/bem.json, which ``make_nonaxi_doc.py`` turns into
 docs/non_axisymmetric.md. Timings: medians of ``--repeat`` solves of each side, their rounds
@@ -92,6 +95,46 @@ def side_by_side(n, budget):
     return mine, other
 
 
+def _one_solve(solver):
+    """One solve in this (forked) process: wall and CPU seconds, the pressures, and the peak
+    resident memory of the process [bytes] (Linux reports ru_maxrss in KiB)."""
+    import resource
+    import time
+
+    t0, c0 = time.perf_counter(), time.process_time()
+    out = solver()
+    c1, t1 = time.process_time(), time.perf_counter()
+    p = out.pressure if hasattr(out, "pressure") else out
+    extra = {"iterations": out.iterations, "residual": out.residual,
+             "depth_solved": out.depth} if hasattr(out, "iterations") else {}
+    return {"seconds": t1 - t0, "cpu_seconds": c1 - c0, "pressure": p,
+            "max_rss_bytes": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024,
+            **extra}
+
+
+def big(n):
+    """Issue 18's large problem: the Hertz solve of this benchmark on an n x n grid, each side
+    once, in a process of its own (forked: its memory is its own), wall and CPU time."""
+    ours, theirs = solvers(n)
+    h, dx = sphere(n)
+    mine = _timing.in_fork(_one_solve, ours)
+    p = mine.pop("pressure")
+    mine.update(hertz_errors(p, mine.pop("depth_solved"), dx))
+    out = {"grid": n, "hertzmdr": mine}
+    if theirs is None:
+        out["tamaas"] = {"error": "tamaas not installed"}
+        return out
+    other = _timing.in_fork(_one_solve, theirs)
+    pt = other.pop("pressure")
+    u = bem.HalfSpace((n, n), dx, dx, E)(pt)
+    S = pt > 0
+    other.update(hertz_errors(pt, float(np.mean(u[S] + h[S])), dx))
+    other["cpu_over_hertzmdr"] = other["cpu_seconds"] / mine["cpu_seconds"]
+    other["max_pressure_difference_to_ours"] = float(np.max(np.abs(pt - p)) / p.max())
+    out["tamaas"] = other
+    return out
+
+
 def convergence(ns):
     rows = []
     for n in ns:
@@ -127,6 +170,8 @@ def main(argv=None):
     ap.add_argument("--repeat", type=int, default=3, help="solves of each side (default 3)")
     ap.add_argument("--nmax", type=int, help="largest grid of the convergence study (default "
                     "512; --quick: 64)")
+    ap.add_argument("--big", type=int, help="grid of the one large solve of each side "
+                    "(default 1024, issue 18's goal; --quick: 96; 0: none)")
     args = ap.parse_args(argv)
     run = _common.run_from(args)
     n = args.n or (64 if args.quick else 256)
@@ -136,12 +181,15 @@ def main(argv=None):
     print("hertzmdr.bem:", mine)
     print("tamaas:", theirs)
     rows = convergence([m for m in (32, 64, 128, 256, 512, 1024) if m <= nmax])
+    n_big = (96 if args.quick else 1024) if args.big is None else args.big
+    large = big(n_big) if n_big else None
+    print("large:", large)
     out = run.results / "bem.json"
     out.write_text(json.dumps({
         "machine": f"{platform.machine()}, {platform.python_implementation()} "
                    f"{platform.python_version()}, numpy {np.__version__}",
         "conditions": _timing.conditions(), "repeat": budget.repeats,
-        "grid": n, "hertzmdr": mine, "tamaas": theirs, "convergence": rows,
+        "grid": n, "hertzmdr": mine, "tamaas": theirs, "convergence": rows, "large": large,
     }, indent=1) + "\n")
     print(f"wrote {out}")
 

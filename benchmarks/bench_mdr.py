@@ -337,9 +337,40 @@ def write_docs(res, abel_section, docs_dir):
                "ms per depth, the first one included: " + "; ".join(
                    f"N = {N}: {'met' if t <= 20 and e <= 1e-8 else 'NOT met'} ({t:.1f} ms with "
                    f"the error estimate, error {e:.1e})" for N, t, e in goal) + ".\n\n")
+    out.append(_issue18(res["speed"]))
     out.append("## Abel transforms (5.59), (5.61) from samples: PyAbel on the same grids\n\n")
     out.append(abel_section)
     (docs_dir / "mdr.md").write_text("".join(out))
+
+
+def _issue18(speed):
+    """Issue 18's goal for the sampled profile, from the speed table: the verdict, what bounds
+    the time and why."""
+    s = speed.get("1000")
+    if s is None:
+        return ("Issue 18's goal (N = 1000: first depth <= 5 ms, later depths <= 1 ms): no "
+                "N = 1000 in this run (--quick).\n\n")
+    first, later = s["solve_e"] + s["p_err"], s["next_err"]
+    return (
+        "Issue 18's goal, N = 1000 samples at rtol = 1e-8: the first depth (from_samples, "
+        "solve and the pressure profile with its error bound) in <= 5 ms, each later depth in "
+        f"<= 1 ms. Measured: first depth {first:.1f} ms ({s['solve'] + s['p']:.1f} ms without "
+        f"the pressure's bound), later depths {later:.1f} ms ({s['next']:.1f} ms without it): "
+        + ("met" if first <= 5 and later <= 1 else "NOT met") + ". What bounds it: "
+        "(1) the first pressure builds the tables of g and g' (5.52) of both representations, "
+        "by quadrature of the spline at ~180 (fine) and ~120 (coarse) table nodes: every node "
+        "sums the Abel kernel over all the spline's pieces below it (6 Gauss points a piece), "
+        "a dense O(nodes x N) sum that is about half the first depth; (2) the solve compares "
+        "two representations (the error bound) and runs Newton's method on g by quadrature, "
+        "not on the tables, about 15 quadratures of (5.52) a depth, each a few dozen NumPy "
+        "calls (~0.2 ms); (3) the pressure's bound is a second Abel quadrature on the coarse "
+        "tables plus the integral of their difference. Why it stays: the error contract "
+        "(`rel_error` a bound, tests/test_mdr_bounds.py) needs the second representation, and "
+        "the tables' accuracy needs the quadrature as it is. What would meet it: the spline "
+        "pieces' moments against the kernel in closed form (as numeric/_abel does for (5.59)) "
+        "instead of Gauss points, tables built only up to the contact radius and extended "
+        "with it, and Newton started from the tables (1-2 quadratures a depth); not done in "
+        "issue 18's session.\n\n")
 
 
 def _num(x, fmt):

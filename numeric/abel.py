@@ -26,9 +26,12 @@ With s = x^2 and t = r^2 both transforms become Riemann-Liouville integrals with
   <= 2*degree are reproduced to rounding.
 - (5.59): the moments of the derivative of the interpolant against (s - t)^(-1/2) are
   integrated EXACTLY: with s = t + w^2 the kernel disappears, ds/sqrt(s - t) = 2 dw, and the
-  integrand is a polynomial in w of degree 2*degree - 2, which Gauss-Legendre with
-  ``degree`` nodes integrates exactly (the piece boundaries in w are computed without
-  cancellation, w_b - w_a = (s_b - s_a)/(w_a + w_b)). The 1/sqrt singularity is therefore
+  integrand is a polynomial in w of degree 2*degree - 2. On the piece [s_a, s_b], with
+  w = w_a + (w_b - w_a) x, the local variable is v = x (x + beta (1 - x)), beta =
+  2 w_a/(w_a + w_b), so each moment is 2 (w_b - w_a) times a polynomial in beta with
+  positive coefficients, exact and free of cancellation (w_b - w_a = (s_b - s_a)/(w_a +
+  w_b)); the coefficients are folded into the derivative's once per piece, and an operator
+  entry costs one square root and about 40 flops. The 1/sqrt singularity is therefore
   integrated analytically -- no point is dropped or shifted.
 - (5.61) with a contact edge: p ~ sqrt(a^2 - r^2) at the edge, so the interpolated function is
   the smooth R(t) = P(t)/sqrt(A - t) (R_i = p_i/sqrt(a^2 - r_i^2) at the samples; the last
@@ -107,6 +110,7 @@ from hertzmdr.numeric._abel.operators import (
     _apply,
     _build_kink,
     _cached,
+    _operator,
 )
 from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
@@ -286,9 +290,9 @@ def _matrix(direction: str, N, dx, edge, degree, kink=None) -> np.ndarray:
                              "a sample at the kink")
     scale = 1 / h if direction == "inverse" else h
     M = np.zeros((N, N))
-    # the transform is linear in the samples 0..K: the images of the unit vectors are the
-    # columns of the operator
-    M[:K + 1, :K + 1] = _apply(direction, K, A, int(degree), N, np.eye(K + 1), beta).T * scale
+    # the transform is linear in the samples 0..K: its cached operator (for (5.59) with an
+    # edge, the edge-free one plus this edge's correction), as _apply applies it
+    M[:K + 1, :K + 1] = _operator(direction, K, A, int(degree), N, beta) * scale
     return M
 
 

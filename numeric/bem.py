@@ -5,7 +5,10 @@ The displacement at a pixel centre is the Boussinesq integral (5.7) over every p
 exactly: for a uniformly loaded rectangle the integral of 1/s has the closed form of Love
 (1929, Phil. Trans. R. Soc. A 228, 377), see :func:`influence_kernel`. The influence matrix is
 Toeplitz-block-Toeplitz, so the displacement of the whole grid is a linear convolution, done by
-zero-padding to twice the grid and FFT (:class:`HalfSpace`, O(N log N), no periodic images).
+zero-padding to twice the grid and FFT (:class:`HalfSpace`, O(N log N), no periodic images; the
+kernel is even, so its transform is real; the padding is skipped where it is known to be zero),
+and for a pressure confined to a box (the conjugate direction, which lives on the contact) by
+padding that box alone (:meth:`HalfSpace.on_support`).
 
 The contact problem -- find p >= 0 with gap g = h - d + u >= 0 and p g = 0 -- is solved by the
 constrained conjugate-gradient iteration of Polonsky & Keer (1999, Wear 231, 206), depth- or
@@ -84,21 +87,81 @@ class HalfSpace:
         self.dx, self.dy, self.E_star = float(dx), float(dy), float(E_star)
         self.workers = workers
         self._fft = fft
-        # circulant embedding of the Toeplitz kernel on a (2nx, 2ny) grid: offsets 0..nx-1
-        # then -nx..-1 (the offset nx is never used by the linear convolution)
-        ix = np.fft.fftfreq(2 * nx, 1.0 / (2 * nx))
-        iy = np.fft.fftfreq(2 * ny, 1.0 / (2 * ny))
-        K = influence_kernel(ix[:, None] * self.dx, iy[None, :] * self.dy,
-                             self.dx, self.dy, self.E_star)
-        self.kernel_hat = fft.rfft2(K, workers=workers)
-        self.self_influence = float(K[0, 0])
+        # the kernel at the offsets (i dx, j dy), i = 0..nx, j = 0..ny (it is even in both):
+        # (5.7) over the pixel is the mixed difference of Love's primitive F at the pixel's
+        # corners, which lie on the lattice ((m - 1/2) dx, (l - 1/2) dy): F once per lattice
+        # point, (nx + 2)(ny + 2) of them
+        X = (np.arange(nx + 2) - 0.5) * self.dx
+        Y = (np.arange(ny + 2) - 0.5) * self.dy
+        F = _love_primitive(X[:, None], Y[None, :])
+        Kq = (F[1:, 1:] - F[1:, :-1] - F[:-1, 1:] + F[:-1, :-1]) / (np.pi * self.E_star)
+        # circulant embedding of the Toeplitz kernel on a (2nx, 2ny) grid: offsets 0..nx-1,
+        # then -nx..-1 (the offset nx is never used by the linear convolution); the kernel is
+        # even, so the embedding is too and its transform is real
+        self._Kq = Kq
+        self._box_hats: dict = {}  # (mx, my) -> (Lx, Ly, transform): see ``on_support``
+        self.kernel_hat = self._embedded_hat(nx, ny, 2 * nx, 2 * ny)
+        self.self_influence = float(Kq[0, 0])
+
+    def _embedded_hat(self, mx, my, Lx, Ly):
+        """The real transform of the kernel's offsets |i| < mx, |j| < my embedded in an
+        (Lx, Ly) circulant (Lx >= 2 mx - 1; the offset -mx at index mx when Lx = 2 mx):
+        even, so its transform is real."""
+        Kq = self._Kq
+        K = np.zeros((Lx, Ly))
+        hx, hy = mx + (Lx == 2 * mx), my + (Ly == 2 * my)
+        K[:hx, :hy] = Kq[:hx, :hy]
+        K[Lx - mx + 1:, :hy] = Kq[mx - 1:0:-1, :hy]
+        K[:, Ly - my + 1:] = K[:, my - 1:0:-1]
+        return self._fft.rfft2(K, workers=self.workers).real
+
+    def on_support(self, p: np.ndarray, support: np.ndarray) -> np.ndarray:
+        """u_z [m] under pressures p [Pa] that vanish outside ``support`` (bool, the grid's
+        shape), exact on the bounding box of the support and 0 outside it.
+
+        When the box is small (a contact away from the grid's border), the convolution of the
+        box alone is zero-padded to about twice the box instead of twice the grid; its
+        kernel transform is kept per box size, rounded up to a sixteenth of the grid."""
+        nx, ny = self.shape
+        rows, cols = np.flatnonzero(support.any(axis=1)), np.flatnonzero(support.any(axis=0))
+        if not len(rows):
+            return np.zeros(self.shape)
+        fft, w = self._fft, self.workers
+        step_x, step_y = max(nx // 16, 1), max(ny // 16, 1)
+        mx = min(-(-(rows[-1] + 1 - rows[0]) // step_x) * step_x, nx)
+        my = min(-(-(cols[-1] + 1 - cols[0]) // step_y) * step_y, ny)
+        if mx * my > nx * ny // 2:
+            return self(p)
+        if (mx, my) not in self._box_hats:
+            if len(self._box_hats) >= 8:  # the contact's box settles: keep the recent sizes
+                self._box_hats.pop(next(iter(self._box_hats)))
+            Lx, Ly = fft.next_fast_len(2 * mx - 1, real=True), fft.next_fast_len(2 * my - 1,
+                                                                                 real=True)
+            self._box_hats[(mx, my)] = (Lx, Ly, self._embedded_hat(mx, my, Lx, Ly))
+        Lx, Ly, hat = self._box_hats[(mx, my)]
+        i0, j0 = min(rows[0], nx - mx), min(cols[0], ny - my)
+        box = p[i0:i0 + mx, j0:j0 + my]
+        ph = fft.fft(fft.rfft(box, n=Ly, axis=1, workers=w), n=Lx, axis=0, overwrite_x=True,
+                     workers=w)
+        ph *= hat
+        back = fft.ifft(ph, axis=0, overwrite_x=True, workers=w)[:mx]
+        u = np.zeros(self.shape)
+        u[i0:i0 + mx, j0:j0 + my] = fft.irfft(back, n=Ly, axis=1, workers=w)[:, :my]
+        return u
 
     def __call__(self, p: np.ndarray) -> np.ndarray:
-        """u_z [m] at the pixel centres under the pixel pressures p [Pa] (linear convolution)."""
+        """u_z [m] at the pixel centres under the pixel pressures p [Pa] (linear convolution).
+
+        The zero-padded 2-D transform, pruned: the rows of p are transformed alone (the
+        padding rows are zero) and only the first nx rows of the product are transformed
+        back, so the padded rows cost one column transform each way."""
         nx, ny = self.shape
-        fft = self._fft
-        ph = fft.rfft2(p, s=(2 * nx, 2 * ny), workers=self.workers)
-        return fft.irfft2(ph * self.kernel_hat, s=(2 * nx, 2 * ny), workers=self.workers)[:nx, :ny]
+        fft, w = self._fft, self.workers
+        ph = fft.fft(fft.rfft(p, n=2 * ny, axis=1, workers=w), n=2 * nx, axis=0,
+                     overwrite_x=True, workers=w)
+        ph *= self.kernel_hat
+        back = fft.ifft(ph, axis=0, overwrite_x=True, workers=w)[:nx]
+        return fft.irfft(back, n=2 * ny, axis=1, workers=w)[:, :ny]
 
 
 @dataclass(frozen=True)
@@ -168,9 +231,11 @@ def boundary_area(contact: np.ndarray, dx: float, dy: float) -> float:
     return float(np.count_nonzero(edge_in | edge_out)) * dx * dy
 
 
-def _residual(g, S, allowed, scale):
+def _residual(g, G, S, allowed, scale):
+    """The relative residual of :func:`solve`: the gap on the contact (G = its sum of
+    squares) and the overlap outside it, over ``scale``."""
     viol = np.where(allowed & ~S & (g < 0), g, 0.0)
-    return float(np.sqrt(np.sum(g[S] ** 2) + np.sum(viol**2)) / scale)
+    return float(np.sqrt(G + np.sum(viol**2)) / scale)
 
 
 def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1e-8,
@@ -261,16 +326,18 @@ def solve(height, dx, E_star, *, depth=None, force=None, dy=None, tol: float = 1
             g = u + hh - d
         g = np.where(allowed, g, 0.0)
         scale = np.sqrt(np.sum(u[S] ** 2)) or 1.0
-        res = _residual(g, S, allowed, scale)
+        gS = g[S]
+        G = np.sum(gS**2)
+        res = _residual(g, G, S, allowed, scale)
         if res < tol:
             break
-        G = np.sum(g[S] ** 2)
         t = np.where(S, g + delta * (G / G_old) * t, 0.0)
         G_old = G
-        r = op(t)
+        tS = t[S]
+        rS = op.on_support(t, S)[S]  # t and what is used of its image live on S
         if force is not None:
-            r = r - r[S].mean()
-        tau = np.sum(g[S] * t[S]) / np.sum(r[S] * t[S])
+            rS = rS - rS.mean()
+        tau = np.sum(gS * tS) / np.sum(rS * tS)
         p = np.where(S, p - tau * t, 0.0)
         p = np.maximum(p, 0.0)
         overlap = allowed & (p == 0) & (g < 0)
@@ -334,14 +401,14 @@ def punch_stiffness(mask, dx, E_star, *, dy=None, tol: float = 1e-10, max_iter: 
     op = operator or HalfSpace(S.shape, dx, dy, float(positive("E_star", E_star)))
     b = S.astype(float)
     p = b / op.self_influence  # Jacobi start
-    r = np.where(S, b - op(p), 0.0)
+    r = np.where(S, b - op.on_support(p, S), 0.0)
     z = r.copy()
     rr = np.sum(r * r)
     nb = np.sqrt(S.sum())
     for _ in range(max_iter):
         if np.sqrt(rr) / nb < tol:
             break
-        Az = np.where(S, op(z), 0.0)
+        Az = np.where(S, op.on_support(z, S), 0.0)
         alpha = rr / np.sum(z * Az)
         p += alpha * z
         r -= alpha * Az

@@ -385,6 +385,45 @@ def test_operators_are_cached():
     assert len(abel._CACHE) == 4
 
 
+@pytest.mark.parametrize("kmax", [0, 2, 4, 8])
+def test_inverse_moments_in_closed_form(kmax):
+    """The (5.59) operator's moments mu_k = int v^k (s - t)^(-1/2) ds over a piece
+    [s_lo, s_hi] (v = (s - s_lo)/(s_hi - s_lo)), taken as a polynomial in one parameter with
+    positive coefficients (numeric/_abel/moments.py), against mpmath's tanh-sinh quadrature
+    of the integral in s - s_lo at 30 digits (the endpoint singularity at s = t handled by
+    the quadrature, not by the substitution s = t + w^2 the code uses). Pieces of the grid
+    s = i^2 (units dx = 1): adjacent to the output point t = j^2, next to it, far from it
+    (j = 0 and j = 3000), and a last piece ending at a non-integer edge. Tolerance 16 eps: a sum of
+    <= 9 positive terms, each a few roundings (sqrt, the division by w_a + w_b, the powers)."""
+    from hertzmdr.numeric._abel.moments import _BETA_TABLES, _half_powers
+
+    t = np.array([[0.0, 4.0, 9.0, 3000.0**2]])
+    i = np.array([0, 2, 3, 4, 7, 40, 3000, 3001, 5000], float)
+    lo, hi = (i**2)[:, None], ((i + 1) ** 2)[:, None]
+    hi[-1, 0] = 5000.0**2 + 1234.56789  # an edge inside the piece after the last sample
+    # the pieces one at a time (the function takes consecutive pieces: [i^2, (i+1)^2], ...)
+    mu = np.concatenate([_BETA_TABLES[kmax] @ _half_powers(t, lo[a:a + 1], hi[a:a + 1], kmax)
+                         for a in range(len(i))])
+    # and consecutive pieces at once: the same numbers
+    run = np.arange(3000, 3010, dtype=float)
+    together = _BETA_TABLES[kmax] @ _half_powers(t, (run**2)[:, None], ((run + 1)**2)[:, None],
+                                                 kmax)
+    np.testing.assert_array_equal(together[0], mu[6])
+    worst = 0.0
+    with mp.workdps(30):
+        for a in range(len(i)):
+            for b in range(t.shape[1]):
+                sl, sh, tt = mp.mpf(lo[a, 0]), mp.mpf(hi[a, 0]), mp.mpf(t[0, b])
+                if sl < tt:
+                    assert np.all(mu[a, :, b] == 0.0)  # a piece left of the output point
+                    continue
+                for k in range(kmax + 1):  # in u = s - s_lo (no cancellation near s_lo)
+                    ref = mp.quad(lambda u, w=sh - sl, o=sl - tt, k=k:
+                                  (u / w) ** k / mp.sqrt(u + o), [0, sh - sl])
+                    worst = max(worst, abs(float(mu[a, k, b] / ref) - 1))
+    _record(f"abel exact moments kmax={kmax}", worst, 16 * np.finfo(float).eps)
+
+
 def test_imports_neither_sympy_nor_scipy():
     code = ("import sys, hertzmdr.numeric.abel;"
             "print(','.join(m for m in ('sympy', 'scipy', 'matplotlib') if m in sys.modules))")

@@ -1,12 +1,15 @@
 """Abel transforms, moments: integrals of v^k against the kernels of (5.59) and (5.61).
 
-mu_k of the local variable v of one piece against (s - t)^(-1/2) (exact in w = sqrt(s - t)),
+mu_k of the local variable v of one piece against (s - t)^(-1/2) (exact: in closed form, a
+polynomial in one parameter, for (5.59); by Gauss-Legendre in w = sqrt(s - t) elsewhere),
 against sqrt(A - s)/sqrt(s - t) (the (5.61) weight at a contact edge, in theta), and against
 1/sqrt((s - beta)(s - t)) (a square-root kink of q, in u with s = c + h cosh u); numeric/abel.py's
 docstring has the error model of each.
 """
 
 from __future__ import annotations
+
+from math import comb, factorial
 
 import numpy as np
 
@@ -22,6 +25,53 @@ def _gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
     """Gauss-Legendre nodes mapped to [0, 1] and their weights (summing to 1)."""
     t, w = gauss(n)
     return (t + 1) / 2, w / 2
+
+
+def _beta_table(kmax: int) -> np.ndarray:
+    """c[k, j] = C(k, j) (2k - j)! j! / (2k + 1)! (j <= k, else 0): int_0^1 x^k (x + beta
+    (1 - x))^k dx = sum_j c[k, j] beta^j, every coefficient positive."""
+    c = np.zeros((kmax + 1, kmax + 1))
+    for k in range(kmax + 1):
+        for j in range(k + 1):
+            c[k, j] = comb(k, j) * factorial(2 * k - j) * factorial(j) / factorial(2 * k + 1)
+    return c
+
+
+# the tables for degree <= 9 (kmax <= 8), times the 2^(j+1) that ``_half_powers`` leaves out
+# (mu_k = 2 (w_b - w_a) sum_j c[k, j] 2^j (beta/2)^j; powers of 2: exact)
+_BETA_TABLES = {k: _beta_table(k) * 2.0 ** np.arange(1, k + 2) for k in range(9)}
+
+
+def _half_powers(tau, s_lo, s_hi, kmax):
+    """The exact moments mu_k = int_{s_lo}^{s_hi} v^k (s - tau)^(-1/2) ds, v = (s - s_lo)/
+    (s_hi - s_lo), k = 0..kmax, are ``_BETA_TABLES[kmax] @`` this (0 where s_lo > tau).
+
+    With s = tau + w^2 (ds/sqrt(s - tau) = 2 dw) and w = w_a + (w_b - w_a) x, x in [0, 1]:
+    v = x (x + beta (1 - x)) with beta = 2 w_a/(w_a + w_b) in [0, 1], so
+    mu_k = 2 (w_b - w_a) sum_j c[k, j] beta^j with the positive c of ``_beta_table``: no
+    cancellation for any beta (the integral _moments_w takes by Gauss-Legendre in w, here a
+    polynomial in one parameter per piece and output point, without nodes). Returned:
+    (w_b - w_a) (beta/2)^j, j = 0..kmax (the powers of 2 are in the table), with
+    w_b - w_a = (s_hi - s_lo)/(w_a + w_b) and w = sqrt(s - tau) taken once at every piece end
+    (a piece's w_b is the next one's w_a: consecutive pieces, s_hi[i] = s_lo[i + 1]).
+    Shapes: s_lo/s_hi (P, 1) and tau (1, B), both increasing -> (P, kmax+1, B).
+    """
+    ends = np.append(s_lo[:, 0], s_hi[-1, 0])[:, None]
+    w = np.sqrt(np.maximum(ends - tau, 0.0))
+    den = w[:-1] + w[1:]  # w_a + w_b
+    valid = np.searchsorted(tau[0], s_lo[:, 0], side="right")  # rows with tau <= s_lo
+    for i in np.flatnonzero(valid < tau.shape[1]):
+        den[i, valid[i]:] = 1.0  # rows right of the piece: w_a = 0, zeroed below
+    inv = np.divide(1.0, den, out=den)
+    powers = np.empty((den.shape[0], kmax + 1, den.shape[1]))
+    np.multiply(s_hi - s_lo, inv, out=powers[:, 0])  # (s_hi - s_lo)/(w_a + w_b) = w_b - w_a
+    for i in np.flatnonzero(valid < tau.shape[1]):
+        powers[i, 0, valid[i]:] = 0.0
+    if kmax:
+        half_beta = np.multiply(w[:-1], inv, out=w[:-1])  # w_a/(w_a + w_b) = beta/2
+        for j in range(1, kmax + 1):
+            np.multiply(powers[:, j - 1], half_beta, out=powers[:, j])
+    return powers
 
 
 def _moments_w(tau, s_lo, s_hi, width, kmax, n_gauss, A=None):

@@ -13,7 +13,13 @@ from collections import OrderedDict
 import numpy as np
 
 from hertzmdr.numeric._abel.interpolation import _lagrange_power, _pieces
-from hertzmdr.numeric._abel.moments import _moments_cosh, _moments_theta, _moments_w
+from hertzmdr.numeric._abel.moments import (
+    _BETA_TABLES,
+    _half_powers,
+    _moments_cosh,
+    _moments_theta,
+    _moments_w,
+)
 
 _CACHE: OrderedDict = OrderedDict()
 
@@ -43,21 +49,69 @@ def _config(direction, M, A, degree):
     return s, edges, idx, width, D, deg
 
 
+def _scatter_t(WT, rows, contrib, start):
+    """WT[start[i] + l, rows] += contrib[i, l, :] (the transposed operator).
+
+    The stencils are consecutive nodes from ``start``, which rises by 1 from piece to piece
+    except where it is clipped at the ends of the support (a run of equal starts at either
+    end): the pieces h-1 .. P-t of distinct starts go in as one slice per l, the rest of the
+    two runs summed first. Any other pattern goes in piece by piece."""
+    P = len(start)
+    h = int(np.searchsorted(start, start[0], side="right"))  # the run of start[0]
+    t = P - int(np.searchsorted(start, start[-1], side="left"))  # the run of start[-1]
+    lo, hi = h - 1, P - t + 1
+    c0 = int(start[0])
+    if not (lo < hi and int(start[-1]) - c0 + 1 == hi - lo
+            and np.all(np.diff(start[lo:hi]) == 1)):
+        for i, c in enumerate(start):
+            WT[c:c + contrib.shape[1], rows] += contrib[i]
+        return
+    n = hi - lo
+    head = contrib[:lo].sum(axis=0) if lo > 0 else None
+    tail = contrib[hi:].sum(axis=0) if hi < len(contrib) else None
+    for ll in range(contrib.shape[1]):
+        WT[c0 + ll:c0 + ll + n, rows] += contrib[lo:hi, ll]
+        if head is not None:
+            WT[c0 + ll, rows] += head[ll]
+        if tail is not None:
+            WT[c0 + n - 1 + ll, rows] += tail[ll]
+
+
+def _assemble_inverse(cfg, p0, p1, n_rows):
+    """(5.59): contributions of the pieces p0..p1-1 to the rows 0..n_rows-1, (n_rows,
+    len(edges)) (the transpose of a C-ordered array): the exact moments of each piece
+    against the kernel (``_half_powers``) times the derivative of its Lagrange basis."""
+    s, edges, idx, width, D, deg = cfg
+    WT = np.zeros((len(edges), n_rows))
+    if deg == 0:
+        return WT.T  # a single node: Q' = 0
+    # the moments are _BETA_TABLES @ powers of one parameter per piece and row (_half_powers):
+    # the table goes into the derivative's coefficients once per piece, E = D^T c
+    E = np.ascontiguousarray(D.transpose(0, 2, 1)) @ _BETA_TABLES[deg - 1]  # (pieces, l, j)
+    # blocks of pieces, each with every row it reaches (rows <= its last piece): each l adds
+    # one contiguous band of rows of WT
+    block = max(16, 2**18 // max(n_rows, 1))
+    for i0 in range(p0, p1, block):
+        i1 = min(i0 + block, p1)
+        rows = min(n_rows, i1)
+        powers = _half_powers(s[None, :rows], edges[i0:i1, None], edges[i0 + 1:i1 + 1, None],
+                              deg - 1)  # (pieces, j, rows)
+        _scatter_t(WT, slice(0, rows), E[i0:i1] @ powers, idx[i0:i1, 0])  # -> idx[i, l]
+    return WT.T
+
+
 def _assemble(direction, cfg, A, p0, p1, n_rows):
     """Contributions of the pieces p0..p1-1 to the rows 0..n_rows-1: (n_rows, len(edges))."""
+    if direction == "inverse":
+        return _assemble_inverse(cfg, p0, p1, n_rows)
     s, edges, idx, width, D, deg = cfg
     W = np.zeros((n_rows, len(edges)))
-    if direction == "inverse":
-        if deg == 0:
-            return W  # a single node: Q' = 0
-        kmax, n_gauss = deg - 1, deg
-    else:
-        # with an edge, sqrt(A - s) is analytic on the pieces done in w (>= _NEAR_EDGE widths
-        # from A; its branch point then lies >= 3 piece widths away in w as well): the
-        # polynomial v^k takes 2k of the 2n - 1 exact degrees, the rest converges like
-        # (7 + sqrt 48)^-(2n - 2k): deg + 6 points give 1e-15 for every k (checked against
-        # mpmath for k <= 5, 3 <= eps <= 1000); theta: 9 points on panels <= 0.1 rad, 1e-15
-        kmax, n_gauss = deg, max(deg + 6, 9) if A is not None else deg + 1
+    # (5.61): with an edge, sqrt(A - s) is analytic on the pieces done in w (>= _NEAR_EDGE
+    # widths from A; its branch point then lies >= 3 piece widths away in w as well): the
+    # polynomial v^k takes 2k of the 2n - 1 exact degrees, the rest converges like
+    # (7 + sqrt 48)^-(2n - 2k): deg + 6 points give 1e-15 for every k (checked against
+    # mpmath for k <= 5, 3 <= eps <= 1000); theta: 9 points on panels <= 0.1 rad, 1e-15
+    kmax, n_gauss = deg, max(deg + 6, 9) if A is not None else deg + 1
     cols = len(edges)
     rows = min(n_rows, p1)  # the pieces left of an output point contribute nothing
     for j0 in range(0, rows, _BLOCK):
@@ -65,7 +119,7 @@ def _assemble(direction, cfg, A, p0, p1, n_rows):
         tau = s[j0:j1, None]
         a0 = max(p0, j0)
         lo, hi, wd = edges[None, a0:p1], edges[None, a0 + 1:p1 + 1], width[None, a0:p1]
-        if direction == "forward" and A is not None:
+        if A is not None:
             # the last pieces (both end singularities close) by theta, the others by w
             near = int(np.searchsorted(-((A - hi[0]) / wd[0]), -_NEAR_EDGE))
             mu = np.concatenate([
@@ -89,7 +143,8 @@ def _build(direction: str, K: int, A: float | None, degree: int) -> np.ndarray:
     n_pieces = len(cfg[1]) - 1
     W = _assemble(direction, cfg, A, 0, n_pieces, K + 1)[:, :K + 1]
     if direction == "inverse":
-        return W * (-1 / np.pi)
+        W *= -1 / np.pi  # in place: W is the transpose of a C-ordered array (W.T is applied)
+        return W
     if A is not None:
         W /= np.sqrt(A - cfg[0])[None, :]  # R_i = P_i / sqrt(A - s_i)
     return W
@@ -223,6 +278,28 @@ def _cached(key, make):
     while len(_CACHE) > 1 and sum(nbytes(v) for v in _CACHE.values()) > _CACHE_BYTES:
         _CACHE.popitem(last=False)
     return value
+
+
+def _operator(direction: str, K: int, A: float | None, degree: int, N: int,
+              beta: float | None = None) -> np.ndarray:
+    """The matrix M (K+1, K+1) of ``_apply``: _apply(..., y) == y @ M.T for a kink off the
+    grid (a kink on a sample has an infinite entry), the same numbers as _apply(..., identity)
+    without its O(K^3) product."""
+    if beta is not None and beta < (A if A is not None else K**2):
+        W, j_kink, _ = _cached(("inverse-kink", K, A, beta, degree),
+                               lambda: _build_kink(K, A, beta, degree))
+        if j_kink >= 0:
+            raise ValueError("a kink on a sample: the operator has an infinite entry")
+        return W.copy()
+    if direction == "inverse" and A is not None:
+        base = _cached(("inverse", N - 1, None, degree),
+                       lambda: _build("inverse", N - 1, None, degree))
+        c0, corr = _cached(("inverse-edge", K, A, degree, N),
+                           lambda: _edge_correction(K, A, degree, N))
+        M = np.array(base[:K + 1, :K + 1])
+        M[:, c0:] += corr
+        return M
+    return np.array(_cached((direction, K, A, degree), lambda: _build(direction, K, A, degree)))
 
 
 def _apply(direction: str, K: int, A: float | None, degree: int, N: int, block: np.ndarray,
