@@ -40,12 +40,25 @@ MAX_DISTANCE = 1e100
 
 def _within_reach(r, z, a):
     """ValueError naming the point if max(r, z) > MAX_DISTANCE a."""
+    if np.size(r) > 64 and max(r.max(), z.max()) <= MAX_DISTANCE * a.min():
+        return  # two reductions decide the common case (NaN cannot reach here: validated)
     far = np.maximum(r, z) > MAX_DISTANCE * a
     if far.any():
         i = np.unravel_index(np.argmax(far), far.shape) if far.ndim else ()
         raise ValueError(f"r = {float(r[i])!r}, z = {float(z[i])!r}, a = {float(a[i])!r}: "
                          f"max(r, z) is out of range; valid: max(r, z) <= {MAX_DISTANCE:g} a "
                          "(the stresses there are below 1e-200 p0)")
+
+
+def _take(v, idx):
+    """v at the flat indices idx, or v itself when it is a scalar (broadcast later)."""
+    return v if np.ndim(v) == 0 else v.ravel()[idx]
+
+
+#: beyond this many contact radii (2^200 ~ 1.6e60) the spheroidal forms are evaluated in units
+#: of a power of 2 near max(r, z), so that the (r^2 + z^2)^2 inside them does not overflow
+#: (it would beyond ~1e77); below, with s = 1, which gives the same bits
+_SCALE_BEYOND = 2.0**200
 
 
 def spheroidal(r, z, a):
@@ -83,31 +96,41 @@ def spheroidal(r, z, a):
     r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
     _within_reach(r, z, a)
     r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
-    # far away (r or z > 1e154 a) q^2 would overflow: outside the sphere r^2 + z^2 = a^2
-    # the lengths are taken in units of s, the power of 2 below max(r, z) (exact), with the
-    # contact radius 1/s; inside it s = 1
-    s = np.maximum(pow2_scale(np.maximum(r, z)), 1.0)
+    shape = r.shape
+    r, z = r.ravel(), z.ravel()
+    # Speed (issue 18): the outside form on every point at once, then the few points that need
+    # another form are recomputed and put back: inside the sphere r^2 + z^2 = a^2 the
+    # cancellation-free forms; far away (max(r, z) > 2^200: r^4 would overflow) lengths in units
+    # of s, the power of 2 below max(r, z) (exact; s = 1 elsewhere gives the same bits)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        u = gen.stress_spheroidal_u(1.0, r, z)  # recomputed below where it is not used
+        cos_b = z / np.sqrt(u)  # u >= q > 0 outside the sphere
+        sin_b = r / np.sqrt(1 + u)
     q = (r - 1) * (r + 1) + z * z
-    edge = (q == 0) & (z * z == 0)  # the edge circle (to within z^2 underflow, z < 1e-154 a)
-    i = (q <= 0) & ~edge
-    o = q > 0
-    u = np.zeros(r.shape)
-    cos_b = np.zeros(r.shape)  # at the edge: the limit beta = pi/2
-    one = np.ones(r.shape)
-    u[i] = gen.stress_spheroidal_u_inside(one[i], r[i], z[i])
-    cos_b[i] = gen.stress_spheroidal_cos_beta_inside(one[i], r[i], z[i])
-    so = s[o]  # u/s^2 in units of s (the contact radius 1/s): u = s^2 u', sqrt(u) = s sqrt(u')
-    uo = gen.stress_spheroidal_u(1.0 / so, r[o] / so, z[o] / so)
-    cos_b[o] = (z[o] / so) / np.sqrt(uo)  # u >= q > 0 outside the sphere r^2 + z^2 = a^2
-    xi = np.empty(r.shape)
-    xi[...] = np.sqrt(u)
-    xi[o] = so * np.sqrt(uo)
-    sin_b = np.empty(r.shape)
-    sin_b[~o] = r[~o] / np.sqrt(1 + u[~o])
-    sin_b[o] = (r[o] / so) / np.sqrt(1.0 / so**2 + uo)  # 1/s^2 underflows harmlessly
-    # on the edge circle the field is the limit beta -> pi/2, xi = 0, which every generated
-    # form reaches continuously; 1e-100 keeps eta^3/(xi^2 + eta^2) from being 0/0
-    cos_b[edge] = 1e-100
+    i = np.flatnonzero(q <= 0)  # inside the sphere, the edge circle included
+    if i.size:
+        # the edge circle (to within z^2 underflow, z < 1e-154 a): the limit beta = pi/2,
+        # xi = 0, which every generated form reaches continuously; 1e-100 keeps
+        # eta^3/(xi^2 + eta^2) from being 0/0
+        edge = (q[i] == 0) & (z[i] * z[i] == 0)
+        e, i = i[edge], i[~edge]
+        ri, zi = r[i], z[i]
+        ui = gen.stress_spheroidal_u_inside(1.0, ri, zi)
+        u[i] = ui
+        cos_b[i] = gen.stress_spheroidal_cos_beta_inside(1.0, ri, zi)
+        sin_b[i] = ri / np.sqrt(1 + ui)
+        u[e] = 0.0
+        cos_b[e] = 1e-100
+        sin_b[e] = r[e]
+    xi = np.sqrt(u)
+    f = np.flatnonzero(np.maximum(r, z) > _SCALE_BEYOND)
+    if f.size:
+        so = pow2_scale(np.maximum(r[f], z[f]))
+        uo = gen.stress_spheroidal_u(1.0 / so, r[f] / so, z[f] / so)  # u = s^2 u'
+        cos_b[f] = (z[f] / so) / np.sqrt(uo)
+        xi[f] = so * np.sqrt(uo)
+        sin_b[f] = (r[f] / so) / np.sqrt(1.0 / so**2 + uo)  # 1/s^2 underflows harmlessly
+    xi, cos_b, sin_b = (v.reshape(shape) for v in (xi, cos_b, sin_b))
     return result(xi), result(cos_b), result(sin_b)
 
 
@@ -143,37 +166,62 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     tuple of four ndarrays
         sigma_rr, sigma_theta, sigma_zz, tau_rz [Pa].
     """
-    r, z, a, p0, nu = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z),
-                                          positive("a", a), nonnegative("p0", p0),
-                                          poisson("nu", nu))
-    _within_reach(r, z, a)
-    xi, eta, chi = (np.asarray(v) for v in spheroidal(r, z, a))
-    srr, stt = np.empty(r.shape), np.empty(r.shape)
-    n = xi < 1.0  # the form with atan; beyond, the hypergeometric form without cancellation
-    f = ~n
-    srr[n] = gen.stress_hertz_sigma_rr(nu[n], p0[n], xi[n], eta[n], chi[n])
-    stt[n] = gen.stress_hertz_sigma_tt(nu[n], p0[n], xi[n], eta[n])
-    srr[f] = gen.stress_hertz_sigma_rr_far(nu[f], p0[f], xi[f], eta[f], chi[f])
-    stt[f] = gen.stress_hertz_sigma_tt_far(nu[f], p0[f], xi[f], eta[f])
+    r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
+    p0, nu = nonnegative("p0", p0), poisson("nu", nu)
+    shape = np.broadcast_shapes(r.shape, p0.shape, nu.shape)
+    if shape != r.shape:
+        r, z, a = (np.broadcast_to(v, shape) for v in (r, z, a))
+    p0, nu = (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in (p0, nu))
+    xi, eta, chi = (np.asarray(v).ravel() for v in spheroidal(r, z, a))
+    # Speed (issue 18): the form with atan on every point at once (xi >= 1 gives harmless
+    # inf/0 there), then the hypergeometric form without its cancellation only at xi >= 1;
+    # p0 and nu stay scalars when they are
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        srr = gen.stress_hertz_sigma_rr(nu, p0, xi, eta, chi)
+        stt = gen.stress_hertz_sigma_tt(nu, p0, xi, eta)
+    f = np.flatnonzero(xi >= 1.0)
+    if f.size:
+        nuf, p0f, xif, etaf = _take(nu, f), _take(p0, f), xi[f], eta[f]
+        srr[f] = gen.stress_hertz_sigma_rr_far(nuf, p0f, xif, etaf, chi[f])
+        stt[f] = gen.stress_hertz_sigma_tt_far(nuf, p0f, xif, etaf)
     szz = gen.stress_hertz_sigma_zz(p0, xi, eta)
     trz = gen.stress_hertz_tau_rz(p0, xi, eta, chi)
+    srr, stt, szz, trz = (np.broadcast_to(v, (xi.size,)).reshape(shape)
+                          for v in (srr, stt, szz, trz))
     return tuple(result(v) for v in (srr, stt, szz, trz))
 
 
-def _rotate(x, y, srr, stt, szz, trz):
-    """Cartesian tensor (..., 3, 3) from cylindrical components at azimuth atan2(y, x)."""
-    rr = np.hypot(x, y)
-    safe = np.where(rr > 0, rr, 1.0)
-    c = np.where(rr > 0, x / safe, 1.0)  # on the axis sigma_rr = sigma_theta: any angle
-    s = np.where(rr > 0, y / safe, 0.0)
-    out = np.empty(np.shape(srr) + (3, 3))
-    out[..., 0, 0] = srr * c * c + stt * s * s
-    out[..., 1, 1] = srr * s * s + stt * c * c
-    out[..., 2, 2] = szz
-    out[..., 0, 1] = out[..., 1, 0] = (srr - stt) * s * c
-    out[..., 0, 2] = out[..., 2, 0] = trz * c
-    out[..., 1, 2] = out[..., 2, 1] = trz * s
-    return out
+def _rotate(x, y, srr, stt, szz, trz, rr=None):
+    """Cartesian tensor (..., 3, 3) from cylindrical components at azimuth atan2(y, x).
+
+    ``rr`` = hypot(x, y) when the caller has it. The components are written into a (3, 3, ...)
+    buffer (each one contiguous) and returned as its (..., 3, 3) view: no strided writes,
+    and a component read back (``sigma[..., 0, 0]``) is contiguous too."""
+    x, y = np.broadcast_arrays(x, y)
+    srr, stt, szz, trz = np.broadcast_arrays(srr, stt, szz, trz)
+    if rr is None:
+        rr = np.hypot(x, y)
+    on = rr > 0
+    c = np.ones(srr.shape)  # on the axis sigma_rr = sigma_theta: any angle
+    s = np.zeros(srr.shape)
+    np.divide(x, rr, out=c, where=on)
+    np.divide(y, rr, out=s, where=on)
+    out = np.empty((3, 3) + srr.shape)
+    t = np.empty(srr.shape)
+    for k, (p, q) in enumerate(((c, s), (s, c))):  # srr p p + stt q q
+        np.multiply(srr, p, out=out[k, k, ...])
+        out[k, k, ...] *= p
+        np.multiply(stt, q, out=t)
+        t *= q
+        out[k, k, ...] += t
+    out[2, 2, ...] = szz
+    np.subtract(srr, stt, out=out[0, 1, ...])
+    out[0, 1, ...] *= s
+    out[0, 1, ...] *= c
+    np.multiply(trz, c, out=out[0, 2, ...])
+    np.multiply(trz, s, out=out[1, 2, ...])
+    out[1, 0, ...], out[2, 0, ...], out[2, 1, ...] = out[0, 1, ...], out[0, 2, ...], out[1, 2, ...]
+    return np.moveaxis(out, (0, 1), (-2, -1))
 
 
 def hertz_stress(x, y, z, a, p0, nu):
@@ -200,9 +248,10 @@ def hertz_stress(x, y, z, a, p0, nu):
         sigma_ij [Pa], tension positive.
     """
     x, y = as_float("x", x), as_float("y", y)
-    x, y, z, a, p0, nu = np.broadcast_arrays(x, y, z, a, p0, nu)
-    srr, stt, szz, trz = hertz_stress_cylindrical(np.hypot(x, y), z, a, p0, nu)
-    return _rotate(x, y, srr, stt, szz, trz)
+    x, y, z = np.broadcast_arrays(x, y, z)  # a, p0, nu: broadcast where they are used
+    rr = np.hypot(x, y)
+    srr, stt, szz, trz = hertz_stress_cylindrical(rr, z, a, p0, nu)
+    return _rotate(x, y, srr, stt, szz, trz, rr)
 
 
 def axis_stresses(z, a, p0, nu):
