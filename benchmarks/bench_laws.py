@@ -15,11 +15,12 @@ runs it; ``--quick``: 10^3 depths).
 from __future__ import annotations
 
 import math
+import os
 
 import _common
 import numpy as np
 
-from hertzmdr.numeric import _timing, hertz
+from hertzmdr.numeric import _timing, bodies, cone, hertz, line, powerlaw
 
 E, R = 1e9, 1e-5  # E* [Pa], tip radius [m]: an AFM-like contact
 
@@ -41,13 +42,37 @@ def cases(n: int):
             ("Hertz force (5.23) on one Python float", scalars)]
 
 
+def every_closed_form():
+    """{name: call on Python floats} for the public closed forms with a scalar path (issue 18:
+    <= 2 µs a call), at an AFM-like contact."""
+    d, F, th, L = 3e-7, 1e-6, 1.2, 1e-3
+    return {
+        "hertz.contact_radius": lambda: hertz.contact_radius(d, R),
+        "hertz.max_pressure": lambda: hertz.max_pressure(d, R, E),
+        "hertz.force": lambda: hertz.force(d, R, E),
+        "hertz.stiffness": lambda: hertz.stiffness(d, R, E),
+        "hertz.energy": lambda: hertz.energy(d, R, E),
+        "hertz.depth_from_force": lambda: hertz.depth_from_force(F, R, E),
+        "hertz.max_pressure_from_force": lambda: hertz.max_pressure_from_force(F, R, E),
+        "cone.force": lambda: cone.force(d, th, E),
+        "cone.depth_from_force": lambda: cone.depth_from_force(F, th, E),
+        "line.force": lambda: line.force(d, L, E),
+        "line.half_width_from_force": lambda: line.half_width_from_force(F, L, R, E),
+        "powerlaw.force_from_radius": lambda: powerlaw.force_from_radius(1e-6, d, 3.0, E),
+        "bodies.gaussian_radius": lambda: bodies.gaussian_radius(R, 2 * R),
+        "bodies.gaussian_approx_force": lambda: bodies.gaussian_approx_force(d, R, 2 * R, E),
+    }
+
+
 def main(argv=None):
     args = _common.parser(__doc__).parse_args(argv)
     run = _common.run_from(args)
     n = 10**3 if args.quick else 10**6
     lines = ["# Closed-form laws from Python: hertzmdr, the bare expression, nanite\n\n",
              "<!-- Written by `benchmarks/bench_laws.py`; regenerate, do not edit. -->\n\n",
-             _timing.conditions() + "\n\n",
+             _timing.conditions() + f" Load average at the start: {os.getloadavg()[0]:.1f} "
+             f"({os.cpu_count()} cores): the times scale with it; the ratios, from "
+             "interleaved rounds, much less.\n\n",
              " ".join(__doc__.split("\n\n")[1].split()) + "\n\n",
              "'time / bare': the way's median over the bare expression's (1: as fast). "
              "'largest difference': relative, against hertzmdr's values.\n\n"]
@@ -65,6 +90,26 @@ def main(argv=None):
                          f"{_common.seconds(t[name].first)} | "
                          f"{diff:.1e} |\n")
         lines.append("\n")
+    lines.append(
+        "What the array path costs beyond the bare expression (issue 18 asks <= 1.1): the "
+        "checks, one pass over each array argument's bits (`numeric/_validate.py`: finite and "
+        "in range in one uint64 maximum) and one sum over the result (finite: the "
+        "OverflowError of `representable`), both whole reads of the 8 MB array that no check "
+        "can skip; NumPy's pow, which the expression needs, costs about ten such reads. "
+        "Before issue 18 the checks took six passes and two boolean temporaries (1.4-1.6).\n\n")
+    ways = every_closed_form()
+    t = _timing.compare(ways, run.budget)
+    lines.append("## Every closed form with a scalar path, on Python floats\n\n"
+                 "The public functions whose body is a check of each argument and one "
+                 "generated relation take the scalar path (`numeric/_validate.py`: the checks "
+                 "as one line of comparisons, the relation's math-module form, a finite "
+                 "result; anything else goes the array way, which words every error). "
+                 "Goal (issue 18): <= 2 µs a call.\n\n"
+                 "| function | time a call | first call |\n|---|---|---|\n")
+    for name in ways:
+        lines.append(f"| `{name}` | {_common.seconds(t[name].median)} | "
+                     f"{_common.seconds(t[name].first)} |\n")
+    lines.append("\n")
     if not any("nanite" in k for _, ways in comparisons for k in ways):
         lines.append("nanite is not installed for this run: its column is skipped.\n")
     else:

@@ -168,6 +168,60 @@ def render_function(rel: Relation, flavor: str = "numpy") -> str:
     return head + (_scalar_path(rel) if flavor == "numpy" else "") + f"    return {code}\n"
 
 
+def fused_groups() -> dict[str, tuple[str, ...]]:
+    """Every family's ``FUSED``: {function name: names of the relations it returns at once}."""
+    import importlib
+
+    from hertzmdr.derive.relation import family_modules
+
+    out: dict[str, tuple[str, ...]] = {}
+    for fam in family_modules():
+        for name, members in getattr(importlib.import_module(f"hertzmdr.derive.{fam}"),
+                                     "FUSED", {}).items():
+            if name in out:
+                raise ValueError(f"fused function {name} defined twice")
+            out[name] = tuple(members)
+    return dict(sorted(out.items()))
+
+
+class _FusedPrinter(_Printer):
+    """For fused fields: a reciprocal as a quotient and a square or cube as products (NumPy's
+    pow costs several times a product; each is within an ulp of it); the rest as _Printer."""
+
+    def _print_Pow(self, expr, rational=False):
+        base, exp = expr.as_base_exp()
+        if exp == -1:
+            return f"1/{self.parenthesize(base, precedence(expr), strict=True)}"
+        if exp in (2, 3):
+            b = self.parenthesize(base, precedence(expr), strict=True)
+            return "(" + "*".join([b] * int(exp)) + ")"
+        return super()._print_Pow(expr, rational)
+
+
+def render_fused(name: str, members: list[Relation]) -> str:
+    """One NumPy function returning several relations at once, their common subexpressions
+    (SymPy's ``cse``) computed once: for a field whose components share most of their work.
+    Each value is the member relation's expression, to rounding (cse writes a quotient as a
+    product with a reciprocal, and sums in another order; _FusedPrinter's products)."""
+    args = sorted({s for rel in members for s in rel.args}, key=lambda s: s.name)
+    repl, reduced = sp.cse([rel.expr for rel in members], symbols=sp.numbered_symbols("_c"))
+    printer = _FusedPrinter({"fully_qualified_modules": True, "inline": True,
+                             "allow_unknown_functions": False})
+    body = [f"    {sym} = {printer.doprint(e)}\n" for sym, e in repl]
+    ret = ", ".join(printer.doprint(e) for e in reduced)
+    code = "".join(body) + ret
+    needed = [m for m in ("functools", "scipy.special") if f"{m}." in code]
+    imports = "".join(f"    import {m}\n" for m in needed) + ("\n" if needed else "")
+    listing = ", ".join(f"``{rel.name}``" for rel in members)
+    doc = textwrap.fill(f"({listing}) at once, their common subexpressions computed once "
+                        "(SymPy's cse): each as the relation's own function gives it, to "
+                        "rounding. Arguments as there.", 88, initial_indent="    ",
+                        subsequent_indent="    ").lstrip()
+    argstr = ", ".join(s.name for s in args)
+    return (f'def {name}({argstr}):\n    """{doc}\n    """\n{imports}' + "".join(body)
+            + f"    return {ret}\n")
+
+
 def math_name(name: str) -> str:
     """The name of a relation's math-module function in the generated module."""
     return f"_math_{name}"
@@ -234,7 +288,10 @@ def render_module(relations, flavor: str = "numpy") -> str:
     for rel in relations:
         if rel.stable is not None:
             parts.append("\n\n" + render_function(textbook(rel), flavor))
-    if flavor == "numpy":  # the math-module forms the scalar paths call
+    if flavor == "numpy":  # fused fields, then the math-module forms the scalar paths call
+        by_name = {rel.name: rel for rel in relations}
+        for name, members in fused_groups().items():
+            parts.append("\n\n" + render_fused(name, [by_name[m] for m in members]))
         for rel in relations:
             parts.append("\n\n" + render_math_function(rel))
             if rel.stable is not None:

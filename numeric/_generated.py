@@ -11387,6 +11387,54 @@ def textbook_worn_force(E_star, R, b, d):
     return (1/3)*E_star*numpy.sqrt(-2*b**2 + 2*numpy.sqrt(4*R**2*d**2 + b**4))*(2*b**2 + numpy.sqrt(4*R**2*d**2 + b**4))/R
 
 
+def stress_hertz_field(chi, eta, nu, p0, xi):
+    """(``stress_hertz_sigma_rr``, ``stress_hertz_sigma_tt``, ``stress_hertz_sigma_zz``,
+    ``stress_hertz_tau_rz``) at once, their common subexpressions computed once (SymPy's
+    cse): each as the relation's own function gives it, to rounding. Arguments as there.
+    """
+    _c0 = 1 - 2*nu
+    _c1 = 1/(3*eta + 3)
+    _c2 = (xi*xi)
+    _c3 = _c2 + 1
+    _c4 = 1/_c3
+    _c5 = (eta*eta)
+    _c6 = 1/(_c2 + _c5)
+    _c7 = eta*(nu + 1)*(-1/3*_c4 - xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1)
+    _c8 = _c6*p0
+    return p0*(_c0*_c1*_c4 - _c2*_c4*_c6*(chi*chi)*eta - _c7), p0*(_c0*_c1*_c4*(_c5 + eta - 1) - _c7), -_c8*(eta*eta*eta), -_c5*_c8*chi*xi/numpy.sqrt(_c3)
+
+
+def stress_hertz_field_far(chi, eta, nu, p0, xi):
+    """(``stress_hertz_sigma_rr_far``, ``stress_hertz_sigma_tt_far``) at once, their common
+    subexpressions computed once (SymPy's cse): each as the relation's own function
+    gives it, to rounding. Arguments as there.
+    """
+    import scipy.special
+
+    _c0 = xi**(-2.0)
+    _c1 = 1 - 2*nu
+    _c2 = 1/(_c0 + 1)
+    _c3 = 1/(3*eta + 3)
+    _c4 = (eta*eta)
+    _c5 = (2/15)*_c2*eta*xi**(-4.0)*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -_c0)
+    return p0*(_c0*_c1*_c2*_c3 - _c0*_c2*(chi*chi)*eta/(_c0*_c4 + 1) - _c5), p0*(_c0*_c1*_c2*_c3*(_c4 + eta - 1) - _c5)
+
+
+def stress_spheroidal(a, r, z):
+    """(``stress_spheroidal_u``, ``stress_spheroidal_u_inside``,
+    ``stress_spheroidal_cos_beta_inside``) at once, their common subexpressions computed
+    once (SymPy's cse): each as the relation's own function gives it, to rounding.
+    Arguments as there.
+    """
+    _c0 = (z*z)
+    _c1 = _c0*(a*a)
+    _c2 = (-a + r)*(a + r)
+    _c3 = _c0 + _c2
+    _c4 = numpy.sqrt(4*_c1 + (_c3*_c3))
+    _c5 = (1/2)*_c0 + (1/2)*_c2
+    return (1/2)*_c4 + _c5, 2*_c1/(-_c3 + _c4), numpy.sqrt((1/2)*_c4 - _c5)/a
+
+
 def _math_adhesion_cone_depth(E_star, a, dgamma, theta):
     """``adhesion_cone_depth`` for Python floats (the math module); raises where it does."""
     return (1/2)*math.pi*a*math.tan(theta) - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)

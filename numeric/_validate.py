@@ -214,6 +214,27 @@ def representable(func):
     return wrapper
 
 
+def scalar_path(func):
+    """Decorate a public closed form whose body is ``return result(gen.NAME(<checked
+    arguments>))`` (and that is not :func:`representable`): calls on Python floats whose
+    result is finite take the scalar path below; every other call runs ``func`` as before."""
+    import functools
+
+    fast = _scalar_path(func)
+    if fast is None:
+        raise TypeError(f"{func.__qualname__}: no scalar path for this body")
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        if not kwargs and len(args) == fast.arity:
+            value = fast(*args)
+            if value is not None:
+                return value
+        return func(*args, **kwargs)
+
+    return wrapper
+
+
 # -- the scalar path of representable() --------------------------------------------------------
 
 def _scalar_check(validator, extra: list, keywords: dict) -> str | None:

@@ -61,6 +61,50 @@ def _take(v, idx):
 _SCALE_BEYOND = 2.0**200
 
 
+#: points per block: the field is evaluated block by block, so that its ~50 intermediate
+#: arrays stay in the processor's cache (2-3 times faster than whole 10^6-point arrays)
+_BLOCK = 16384
+
+
+def _blocks(n):
+    return [slice(k, min(k + _BLOCK, n)) for k in range(0, n, _BLOCK)] or [slice(0, 0)]
+
+
+def _spheroidal_flat(r, z):
+    """(xi, cos(beta), sin(beta)) at flat arrays r/a, z/a (validated, within reach)."""
+    # Speed (issue 18): both forms of u on every point at once (stress_spheroidal: their
+    # common subexpressions once), each kept where it does not cancel: inside the sphere
+    # r^2 + z^2 = a^2 (q <= 0) the cancellation-free forms, outside the other; far away
+    # (max(r, z) > 2^200: r^4 would overflow) lengths in units of s, the power of 2 below
+    # max(r, z), recomputed below (exact; s = 1 elsewhere gives the same bits)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        u_out, u_in, cos_in = gen.stress_spheroidal(1.0, r, z)
+    q = (r - 1) * (r + 1) + z * z
+    inside = q <= 0
+    u = np.where(inside, u_in, u_out)
+    xi = np.sqrt(u)
+    with np.errstate(invalid="ignore", divide="ignore"):  # 0/0 where the other form is kept
+        cos_b = np.where(inside, cos_in, z / xi)  # u >= q > 0 outside the sphere
+    sin_b = r / np.sqrt(1 + u)
+    # the edge circle (to within z^2 underflow, z < 1e-154 a): the limit beta = pi/2, xi = 0,
+    # which every generated form reaches continuously; 1e-100 keeps eta^3/(xi^2 + eta^2) from
+    # being 0/0
+    e = np.flatnonzero(q == 0)
+    e = e[z[e] * z[e] == 0]
+    xi[e] = 0.0
+    cos_b[e] = 1e-100
+    sin_b[e] = r[e]
+    f = np.flatnonzero(np.maximum(r, z) > _SCALE_BEYOND) if max(
+        r.max(initial=0.0), z.max(initial=0.0)) > _SCALE_BEYOND else ()
+    if len(f):
+        so = pow2_scale(np.maximum(r[f], z[f]))
+        uo = gen.stress_spheroidal_u(1.0 / so, r[f] / so, z[f] / so)  # u = s^2 u'
+        cos_b[f] = (z[f] / so) / np.sqrt(uo)
+        xi[f] = so * np.sqrt(uo)
+        sin_b[f] = (r[f] / so) / np.sqrt(1.0 / so**2 + uo)  # 1/s^2 underflows harmlessly
+    return xi, cos_b, sin_b
+
+
 def spheroidal(r, z, a):
     """Oblate spheroidal coordinates (xi, cos(beta), sin(beta)) of the contact disc at (r, z).
 
@@ -93,43 +137,16 @@ def spheroidal(r, z, a):
     eta, chi : ndarray
         cos(beta), sin(beta) [1], 0 <= beta <= pi/2.
     """
-    r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
-    _within_reach(r, z, a)
-    r, z = r / a, z / a  # dimensionless: u/a^2 below; no over- or underflow of a^4
-    shape = r.shape
+    r, z, a = nonnegative("r", r), nonnegative("z", z), positive("a", a)
+    shape = np.broadcast_shapes(r.shape, z.shape, a.shape)
+    r, z = (np.broadcast_to(v, shape) for v in (r, z))
+    _within_reach(r, z, np.broadcast_to(a, shape))
+    if a.ndim or a != 1.0:  # dimensionless: u/a^2 below; no over- or underflow of a^4
+        r, z = r / a, z / a
     r, z = r.ravel(), z.ravel()
-    # Speed (issue 18): the outside form on every point at once, then the few points that need
-    # another form are recomputed and put back: inside the sphere r^2 + z^2 = a^2 the
-    # cancellation-free forms; far away (max(r, z) > 2^200: r^4 would overflow) lengths in units
-    # of s, the power of 2 below max(r, z) (exact; s = 1 elsewhere gives the same bits)
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        u = gen.stress_spheroidal_u(1.0, r, z)  # recomputed below where it is not used
-        cos_b = z / np.sqrt(u)  # u >= q > 0 outside the sphere
-        sin_b = r / np.sqrt(1 + u)
-    q = (r - 1) * (r + 1) + z * z
-    i = np.flatnonzero(q <= 0)  # inside the sphere, the edge circle included
-    if i.size:
-        # the edge circle (to within z^2 underflow, z < 1e-154 a): the limit beta = pi/2,
-        # xi = 0, which every generated form reaches continuously; 1e-100 keeps
-        # eta^3/(xi^2 + eta^2) from being 0/0
-        edge = (q[i] == 0) & (z[i] * z[i] == 0)
-        e, i = i[edge], i[~edge]
-        ri, zi = r[i], z[i]
-        ui = gen.stress_spheroidal_u_inside(1.0, ri, zi)
-        u[i] = ui
-        cos_b[i] = gen.stress_spheroidal_cos_beta_inside(1.0, ri, zi)
-        sin_b[i] = ri / np.sqrt(1 + ui)
-        u[e] = 0.0
-        cos_b[e] = 1e-100
-        sin_b[e] = r[e]
-    xi = np.sqrt(u)
-    f = np.flatnonzero(np.maximum(r, z) > _SCALE_BEYOND)
-    if f.size:
-        so = pow2_scale(np.maximum(r[f], z[f]))
-        uo = gen.stress_spheroidal_u(1.0 / so, r[f] / so, z[f] / so)  # u = s^2 u'
-        cos_b[f] = (z[f] / so) / np.sqrt(uo)
-        xi[f] = so * np.sqrt(uo)
-        sin_b[f] = (r[f] / so) / np.sqrt(1.0 / so**2 + uo)  # 1/s^2 underflows harmlessly
+    xi, cos_b, sin_b = np.empty(r.shape), np.empty(r.shape), np.empty(r.shape)
+    for b in _blocks(r.size):
+        xi[b], cos_b[b], sin_b[b] = _spheroidal_flat(r[b], z[b])
     xi, cos_b, sin_b = (v.reshape(shape) for v in (xi, cos_b, sin_b))
     return result(xi), result(cos_b), result(sin_b)
 
@@ -166,28 +183,31 @@ def hertz_stress_cylindrical(r, z, a, p0, nu):
     tuple of four ndarrays
         sigma_rr, sigma_theta, sigma_zz, tau_rz [Pa].
     """
-    r, z, a = np.broadcast_arrays(nonnegative("r", r), nonnegative("z", z), positive("a", a))
+    r, z, a = nonnegative("r", r), nonnegative("z", z), positive("a", a)
     p0, nu = nonnegative("p0", p0), poisson("nu", nu)
-    shape = np.broadcast_shapes(r.shape, p0.shape, nu.shape)
-    if shape != r.shape:
-        r, z, a = (np.broadcast_to(v, shape) for v in (r, z, a))
+    shape = np.broadcast_shapes(r.shape, z.shape, a.shape, p0.shape, nu.shape)
+    r, z = (np.broadcast_to(v, shape) for v in (r, z))
+    _within_reach(r, z, np.broadcast_to(a, shape))
+    if a.ndim or a != 1.0:  # dimensionless: u/a^2 below; no over- or underflow of a^4
+        r, z = r / a, z / a
+    r, z = r.ravel(), z.ravel()
     p0, nu = (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in (p0, nu))
-    xi, eta, chi = (np.asarray(v).ravel() for v in spheroidal(r, z, a))
-    # Speed (issue 18): the form with atan on every point at once (xi >= 1 gives harmless
-    # inf/0 there), then the hypergeometric form without its cancellation only at xi >= 1;
-    # p0 and nu stay scalars when they are
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        srr = gen.stress_hertz_sigma_rr(nu, p0, xi, eta, chi)
-        stt = gen.stress_hertz_sigma_tt(nu, p0, xi, eta)
-    f = np.flatnonzero(xi >= 1.0)
-    if f.size:
-        nuf, p0f, xif, etaf = _take(nu, f), _take(p0, f), xi[f], eta[f]
-        srr[f] = gen.stress_hertz_sigma_rr_far(nuf, p0f, xif, etaf, chi[f])
-        stt[f] = gen.stress_hertz_sigma_tt_far(nuf, p0f, xif, etaf)
-    szz = gen.stress_hertz_sigma_zz(p0, xi, eta)
-    trz = gen.stress_hertz_tau_rz(p0, xi, eta, chi)
-    srr, stt, szz, trz = (np.broadcast_to(v, (xi.size,)).reshape(shape)
-                          for v in (srr, stt, szz, trz))
+    srr, stt, szz, trz = (np.empty(r.size) for _ in range(4))
+    for b in _blocks(r.size):
+        xi, eta, chi = _spheroidal_flat(r[b], z[b])
+        p0b, nub = (v if v.ndim == 0 else v[b] for v in (p0, nu))
+        # Speed (issue 18): the form with atan on every point at once (xi >= 1 gives harmless
+        # inf/0 there; stress_hertz_field: the four components, common subexpressions once),
+        # then the hypergeometric form without its cancellation only at xi >= 1; p0 and nu
+        # stay scalars when they are
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            srr[b], stt[b], szz[b], trz[b] = gen.stress_hertz_field(chi, eta, nub, p0b, xi)
+        f = np.flatnonzero(xi >= 1.0)
+        if f.size:
+            fb = f + b.start
+            srr[fb], stt[fb] = gen.stress_hertz_field_far(chi[f], eta[f], _take(nub, f),
+                                                          _take(p0b, f), xi[f])
+    srr, stt, szz, trz = (v.reshape(shape) for v in (srr, stt, szz, trz))
     return tuple(result(v) for v in (srr, stt, szz, trz))
 
 

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric import bodies, cone, hertz, line, powerlaw
+from hertzmdr.numeric import bodies, cone, contact, hertz, impact, line, powerlaw, tangential
 from hertzmdr.numeric._validate import (
     _scalar_path,
     between,
@@ -21,7 +21,7 @@ from hertzmdr.numeric._validate import (
     positive,
 )
 
-MODULES = (hertz, cone, line, powerlaw, bodies)
+MODULES = (hertz, cone, line, powerlaw, bodies, contact, impact, tangential)
 
 
 def _public(module):
@@ -78,11 +78,14 @@ FAST = {
     "cone": {"contact_radius", "depth", "force", "mean_pressure", "stiffness",
              "depth_from_force", "contact_radius_from_force"},
     "line": {"half_width", "force", "depth_from_force", "half_width_from_force",
-             "max_pressure", "max_pressure_from_force"},
+             "max_pressure", "max_pressure_from_force", "stiffness"},
     "bodies": {"gaussian_radius", "crossed_cylinders_gaussian_radius", "gaussian_approx_area",
                "gaussian_approx_force", "gaussian_approx_max_pressure",
                "gaussian_approx_depth_from_force"},
     "powerlaw": {"force_from_radius"},
+    "contact": {"stiffness", "punch_force", "punch_depth_from_force"},
+    "impact": {"sphere_mass"},
+    "tangential": {"shear_modulus", "stiffness", "stiffness_ratio"},
 }
 
 
@@ -141,7 +144,7 @@ def test_scalar_and_array_paths_give_the_same_errors(name, f):
             for call in (args, [np.asarray(a) for a in args]):
                 try:
                     outcomes.append(("value", float(f(*call))))
-                except (ValueError, OverflowError) as exc:
+                except (ValueError, OverflowError, RuntimeWarning) as exc:  # warnings: errors
                     outcomes.append((type(exc).__name__, str(exc)))
             assert outcomes[0] == outcomes[1], (name, k, bad)
 
