@@ -9,6 +9,8 @@ runs it; ``--quick``: a 40 x 40 grid, two superposition settings at 5 points). T
 
 from __future__ import annotations
 
+import os
+
 import _common
 import mpmath as mp
 import numpy as np
@@ -120,7 +122,7 @@ def accuracy_on_grid(x, y, z, rs, nu, k, cm):
     return out
 
 
-def contactmechanics_table(m, budget):
+def contactmechanics_table(m, rounds):
     """hertzmdr and ContactMechanics's Hertz reference solutions on the same m^3 points (x, y
     log-spaced in +-[1e-8, 2] a: near the axis too; z log-spaced in [1e-3, 2] a) and m^3
     surface radii (log-spaced in [1e-3, 1e5] a): times (rounds interleaved), their ratio, and
@@ -161,9 +163,9 @@ def contactmechanics_table(m, budget):
     acc = accuracy_on_grid(x, y, z, rs, nu, 40 if m <= 10 else 400, cm)
     for (name, (ours, theirs, diff, unit)), key in zip(cases.items(), ("cart", "cyl", "disp"),
                                                       strict=True):
-        t = _timing.compare({"hertzmdr": ours, "ContactMechanics": theirs}, budget)
-        rows.append((name, t["hertzmdr"].median, t["ContactMechanics"].median,
-                     _timing.ratio(t["hertzmdr"], t["ContactMechanics"]),
+        t = _common.cpu_compare({"hertzmdr": ours, "ContactMechanics": theirs}, 1, rounds)
+        rows.append((name, t["hertzmdr"].best, t["ContactMechanics"].best,
+                     t["hertzmdr"].best / t["ContactMechanics"].best,
                      float(diff(ours(), theirs())), unit, acc[key], acc[f"cm {key}"]))
     return rows, acc
 
@@ -178,8 +180,7 @@ def main(argv=None):
         raise RuntimeError("the closed-form von Mises field is not finite on the grid")
     rows = (superposition_table(SETTINGS_QUICK, 5) if args.quick else superposition_table())
     cm_m = 10 if args.quick else 100
-    cm_out = contactmechanics_table(
-        cm_m, run.budget if args.quick else _timing.Budget(repeats=5, min_time=0.0))
+    cm_out = contactmechanics_table(cm_m, 2 if args.quick else 7)
     cm_rows, acc = cm_out if cm_out is not None else (None, None)
     figures = run.docs / "figures"
     figures.mkdir(exist_ok=True)
@@ -233,8 +234,11 @@ def main(argv=None):
             f"`hertz.surface_displacement`) on the same {cm_m ** 3:,} points: x, y "
             f"log-spaced in +-[1e-8, 2] a ({cm_m} each: the axis is approached to 1e-8 a), z "
             f"log-spaced in [1e-3, 2] a ({cm_m}), nu = 0.3; the displacement at "
-            f"{cm_m ** 3:,} radii log-spaced in [1e-3, 1e5] a. Medians of "
-            f"the interleaved rounds; the ratio from the same run. 'largest difference': "
+            f"{cm_m ** 3:,} radii log-spaced in [1e-3, 1e5] a. CPU times of this process "
+            f"(`time.process_time`: other processes' turns on the shared machine do not "
+            f"count; load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores at the "
+            f"start), best of 7 interleaved rounds; the ratio from the same run. "
+            "'largest difference': "
             "over all points and components, between the two. 'error' on the same grid: on "
             f"{acc['points']} of its points (random, and those nearest the axis and the "
             f"surface) and {acc['radii']} of its radii (with both ends), against 50-digit "
