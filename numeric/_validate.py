@@ -217,12 +217,13 @@ def representable(func):
 def scalar_path(func):
     """Decorate a public closed form whose body is ``return result(gen.NAME(<checked
     arguments>))`` (and that is not :func:`representable`): calls on Python floats whose
-    result is finite take the scalar path below; every other call runs ``func`` as before."""
+    result is finite take the scalar path below; every other call runs ``func`` as before.
+    A function with another body is returned unchanged."""
     import functools
 
     fast = _scalar_path(func)
-    if fast is None:
-        raise TypeError(f"{func.__qualname__}: no scalar path for this body")
+    if fast is None:  # another body: the function as it is (tests/test_scalar_path.py lists
+        return func   # the ones that must have the path)
 
     @functools.wraps(func)
     def wrapper(*args, **kwargs):
