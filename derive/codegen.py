@@ -10,7 +10,8 @@ import textwrap
 
 import sympy as sp
 from sympy.printing.numpy import SciPyPrinter
-from sympy.printing.pycode import MpmathPrinter
+from sympy.printing.precedence import precedence
+from sympy.printing.pycode import MpmathPrinter, PythonCodePrinter
 
 from hertzmdr.derive.relation import Relation
 from hertzmdr.derive.symbols import DESCRIPTIONS
@@ -24,8 +25,11 @@ GENERATED FILE -- DO NOT EDIT. Written by ``{COMMAND}`` (``make generate``);
 ``{COMMAND} --check`` fails when this file is stale. Each function cites the chapter's
 equation, the derivation it comes from and the test that verifies it by an independent route.
 Arguments are floats or NumPy arrays in SI units; they are not validated here -- the
-hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
+hand-written modules of ``hertzmdr.numeric`` validate and broadcast. Called with Python floats
+only, a function evaluates the same expression with the math module (its scalar path).
 """
+
+import math
 
 import numpy
 
@@ -101,8 +105,34 @@ class _MpPrinter(MpmathPrinter):
         return f"mpmath.ellipf({', '.join(self._print(e) for e in expr.args)})"
 
 
+class _MathPrinter(PythonCodePrinter):
+    """The same expression for Python floats, with the math module: the scalar fast path.
+
+    A non-integer power is ``math.pow``, which raises ValueError for a negative base where
+    ``**`` would return a complex number; a square is a product, exactly NumPy's ``x**2``
+    (its square loop); anything the math module lacks (hypergeometric and elliptic
+    functions) is refused, and that relation gets no scalar path."""
+
+    def _print_Pow(self, expr, rational=False):
+        base, exp = expr.as_base_exp()
+        if exp == sp.S.Half or exp == -sp.S.Half:
+            return super()._print_Pow(expr, rational)
+        b = self.parenthesize(base, precedence(expr), strict=True)
+        if exp == 2:
+            return f"({b}*{b})"
+        if exp.is_Integer or (exp.is_Float and exp == int(exp)):
+            return super()._print_Pow(expr, rational)
+        return f"math.pow({self._print(base)}, {self._print(exp)})"
+
+    def _print_not_supported(self, expr):
+        raise ValueError(f"cannot print {expr!r} with the math module")
+
+    _print_hyper = _print_elliptic_k = _print_elliptic_e = _print_elliptic_f = \
+        _print_carlson_rd = _print_not_supported
+
+
 def print_expr(expr: sp.Expr, flavor: str = "numpy") -> str:
-    cls = _Printer if flavor == "numpy" else _MpPrinter
+    cls = {"numpy": _Printer, "math": _MathPrinter}.get(flavor, _MpPrinter)
     printer = cls({"fully_qualified_modules": True, "inline": True,
                    "allow_unknown_functions": False})
     return printer.doprint(expr)
@@ -134,7 +164,98 @@ def render_function(rel: Relation, flavor: str = "numpy") -> str:
     doc = textwrap.indent(doc, "    ").rstrip() + "\n    "
     doc = doc.replace("\\", "\\\\")
     argstr = ", ".join(s.name for s in rel.args)
-    return f'def {rel.name}({argstr}):\n    """{doc.lstrip()}"""\n{imports}    return {code}\n'
+    head = f'def {rel.name}({argstr}):\n    """{doc.lstrip()}"""\n{imports}'
+    return head + (_scalar_path(rel) if flavor == "numpy" else "") + f"    return {code}\n"
+
+
+def fused_groups() -> dict[str, tuple[str, ...]]:
+    """Every family's ``FUSED``: {function name: names of the relations it returns at once}."""
+    import importlib
+
+    from hertzmdr.derive.relation import family_modules
+
+    out: dict[str, tuple[str, ...]] = {}
+    for fam in family_modules():
+        for name, members in getattr(importlib.import_module(f"hertzmdr.derive.{fam}"),
+                                     "FUSED", {}).items():
+            if name in out:
+                raise ValueError(f"fused function {name} defined twice")
+            out[name] = tuple(members)
+    return dict(sorted(out.items()))
+
+
+class _FusedPrinter(_Printer):
+    """For fused fields: a reciprocal as a quotient and a square or cube as products (NumPy's
+    pow costs several times a product; each is within an ulp of it); the rest as _Printer."""
+
+    def _print_Pow(self, expr, rational=False):
+        base, exp = expr.as_base_exp()
+        if exp == -1:
+            return f"1/{self.parenthesize(base, precedence(expr), strict=True)}"
+        if exp in (2, 3):
+            b = self.parenthesize(base, precedence(expr), strict=True)
+            return "(" + "*".join([b] * int(exp)) + ")"
+        return super()._print_Pow(expr, rational)
+
+
+def render_fused(name: str, members: list[Relation]) -> str:
+    """One NumPy function returning several relations at once, their common subexpressions
+    (SymPy's ``cse``) computed once: for a field whose components share most of their work.
+    Each value is the member relation's expression, to rounding (cse writes a quotient as a
+    product with a reciprocal, and sums in another order; _FusedPrinter's products)."""
+    args = sorted({s for rel in members for s in rel.args}, key=lambda s: s.name)
+    repl, reduced = sp.cse([rel.expr for rel in members], symbols=sp.numbered_symbols("_c"))
+    printer = _FusedPrinter({"fully_qualified_modules": True, "inline": True,
+                             "allow_unknown_functions": False})
+    body = [f"    {sym} = {printer.doprint(e)}\n" for sym, e in repl]
+    ret = ", ".join(printer.doprint(e) for e in reduced)
+    code = "".join(body) + ret
+    needed = [m for m in ("functools", "scipy.special") if f"{m}." in code]
+    imports = "".join(f"    import {m}\n" for m in needed) + ("\n" if needed else "")
+    listing = ", ".join(f"``{rel.name}``" for rel in members)
+    doc = textwrap.fill(f"({listing}) at once, their common subexpressions computed once "
+                        "(SymPy's cse): each as the relation's own function gives it, to "
+                        "rounding. Arguments as there.", 88, initial_indent="    ",
+                        subsequent_indent="    ").lstrip()
+    argstr = ", ".join(s.name for s in args)
+    return (f'def {name}({argstr}):\n    """{doc}\n    """\n{imports}' + "".join(body)
+            + f"    return {ret}\n")
+
+
+def math_name(name: str) -> str:
+    """The name of a relation's math-module function in the generated module."""
+    return f"_math_{name}"
+
+
+def render_math_function(rel: Relation) -> str:
+    """The relation for Python floats, with the math module: ``_math_<name>``, ~50 times faster
+    than NumPy on scalars. It raises where the math module does (overflow, division by zero, a
+    domain error). "" when the math module cannot print the expression (SciPy's functions)."""
+    try:
+        code = print_expr(rel.expr, "math")
+    except ValueError:
+        return ""
+    argstr = ", ".join(s.name for s in rel.args)
+    return (f"def {math_name(rel.name)}({argstr}):\n"
+            f'    """``{rel.name}`` for Python floats (the math module); raises where it does."""\n'
+            f"    return {code}\n")
+
+
+def _scalar_path(rel: Relation) -> str:
+    """The branch of a generated function for Python floats: its math-module form; where that
+    raises, the NumPy form runs as before (its inf/nan and warnings)."""
+    if not rel.args or not render_math_function(rel):
+        return ""
+    floats = " and ".join(f"type({s.name})\0is\0float" for s in rel.args)  # \0: no break
+    cond = textwrap.fill(f"if {floats}:", 92, initial_indent="    ",
+                         subsequent_indent="            ").replace("\0", " ")
+    if "\n" in cond:
+        cond = cond.replace("    if ", "    if (", 1)[:-1] + "):"
+    argstr = ", ".join(s.name for s in rel.args)
+    return (f"{cond}\n        try:  # the scalar path: Python floats, the math module\n"
+            f"            return {math_name(rel.name)}({argstr})\n"
+            "        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings\n"
+            "            pass\n")
 
 
 def textbook(rel: Relation) -> Relation:
@@ -167,7 +288,15 @@ def render_module(relations, flavor: str = "numpy") -> str:
     for rel in relations:
         if rel.stable is not None:
             parts.append("\n\n" + render_function(textbook(rel), flavor))
-    return "".join(parts)
+    if flavor == "numpy":  # fused fields, then the math-module forms the scalar paths call
+        by_name = {rel.name: rel for rel in relations}
+        for name, members in fused_groups().items():
+            parts.append("\n\n" + render_fused(name, [by_name[m] for m in members]))
+        for rel in relations:
+            parts.append("\n\n" + render_math_function(rel))
+            if rel.stable is not None:
+                parts.append("\n\n" + render_math_function(textbook(rel)))
+    return "".join(p for p in parts if p != "\n\n")
 
 
 def _latex(expr: sp.Expr) -> str:

@@ -241,6 +241,17 @@ def johnson_field() -> dict[str, sp.Expr]:
     }
 
 
+#: relations printed together as one function as well (``codegen.render_fused``): the Hertz
+#: field's components share most of their work (issue 18: the field on 10^6 points)
+FUSED = {
+    "stress_hertz_field": ("stress_hertz_sigma_rr", "stress_hertz_sigma_tt",
+                           "stress_hertz_sigma_zz", "stress_hertz_tau_rz"),
+    "stress_hertz_field_far": ("stress_hertz_sigma_rr_far", "stress_hertz_sigma_tt_far"),
+    "stress_spheroidal": ("stress_spheroidal_u", "stress_spheroidal_u_inside",
+                          "stress_spheroidal_cos_beta_inside"),
+}
+
+
 def relations() -> list[Relation]:
     s = axis_stresses()
     printed_zz = -p0 / (1 + z**2 / a**2)  # (5.48)

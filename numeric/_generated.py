@@ -4,8 +4,11 @@ GENERATED FILE -- DO NOT EDIT. Written by ``python -m hertzmdr.derive`` (``make 
 ``python -m hertzmdr.derive --check`` fails when this file is stale. Each function cites the chapter's
 equation, the derivation it comes from and the test that verifies it by an independent route.
 Arguments are floats or NumPy arrays in SI units; they are not validated here -- the
-hand-written modules of ``hertzmdr.numeric`` validate and broadcast.
+hand-written modules of ``hertzmdr.numeric`` validate and broadcast. Called with Python floats
+only, a function evaluates the same expression with the math module (its scalar path).
 """
+
+import math
 
 import numpy
 
@@ -670,6 +673,12 @@ def adhesion_cone_depth(E_star, a, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(theta) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_depth(E_star, a, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.pi*a*numpy.tan(theta) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
 
 
@@ -692,6 +701,12 @@ def adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(theta) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_force_from_radius(E_star, a, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma) + (1/2)*numpy.pi*E_star*a**2*numpy.tan(theta)
 
 
@@ -712,6 +727,11 @@ def adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -dgamma/(E_star*numpy.tan(theta))
 
 
@@ -732,6 +752,11 @@ def adhesion_cone_pull_off_depth_fc(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_pull_off_depth_fc(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 3*dgamma/(E_star*numpy.tan(theta))
 
 
@@ -752,6 +777,11 @@ def adhesion_cone_pull_off_force_dc(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_pull_off_force_dc(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -6*dgamma**2/(numpy.pi*E_star*numpy.tan(theta)**3)
 
 
@@ -772,6 +802,11 @@ def adhesion_cone_pull_off_force_fc(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_pull_off_force_fc(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -54*dgamma**2/(numpy.pi*E_star*numpy.tan(theta)**3)
 
 
@@ -792,6 +827,11 @@ def adhesion_cone_pull_off_radius_dc(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_pull_off_radius_dc(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*dgamma/(numpy.pi*E_star*numpy.tan(theta)**2)
 
 
@@ -812,6 +852,11 @@ def adhesion_cone_pull_off_radius_fc(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_pull_off_radius_fc(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 18*dgamma/(numpy.pi*E_star*numpy.tan(theta)**2)
 
 
@@ -832,6 +877,11 @@ def adhesion_cone_zero_load_radius(E_star, dgamma, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(dgamma) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_zero_load_radius(E_star, dgamma, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 32*dgamma/(numpy.pi*E_star*numpy.tan(theta)**2)
 
 
@@ -852,6 +902,11 @@ def adhesion_critical_elongation(E_star, a, dgamma):
     dgamma : float or ndarray
         work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
     """
+    if type(E_star) is float and type(a) is float and type(dgamma) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_critical_elongation(E_star, a, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
 
 
@@ -874,6 +929,12 @@ def adhesion_depth(E_star, a, dgamma, g_a):
     g_a : float or ndarray
         MDR profile g(a) at the contact radius (5.55) [m]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(g_a) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_depth(E_star, a, dgamma, g_a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return g_a - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
 
 
@@ -896,6 +957,12 @@ def adhesion_depth_slope(E_star, a, dgamma, g_slope):
     g_slope : float or ndarray
         slope g'(a) of the MDR profile at the contact radius [1]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(g_slope) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_depth_slope(E_star, a, dgamma, g_slope)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return g_slope - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(dgamma)/(numpy.sqrt(E_star)*numpy.sqrt(a))
 
 
@@ -919,6 +986,12 @@ def adhesion_displacement_outside_edge(E_star, a, dgamma, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_displacement_outside_edge(E_star, a, dgamma, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*numpy.sqrt(2)*numpy.sqrt(a)*numpy.sqrt(dgamma)*numpy.arcsin(a/r)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star))
 
 
@@ -942,6 +1015,12 @@ def adhesion_energy_release_rate(E_star, a, d, g_a):
     g_a : float or ndarray
         MDR profile g(a) at the contact radius (5.55) [m]
     """
+    if (type(E_star) is float and type(a) is float and type(d) is float and
+            type(g_a) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_energy_release_rate(E_star, a, d, g_a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*(d - g_a)**2/(numpy.pi*a)
 
 
@@ -965,6 +1044,12 @@ def adhesion_force_slope(E_star, a, dgamma, g_slope):
     g_slope : float or ndarray
         slope g'(a) of the MDR profile at the contact radius [1]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(g_slope) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_force_slope(E_star, a, dgamma, g_slope)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma) + 2*E_star*a*g_slope
 
 
@@ -991,6 +1076,12 @@ def adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(c_n) is float and type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a**n*c_n*kappa_n - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
 
 
@@ -1017,6 +1108,12 @@ def adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(c_n) is float and type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)*n/(n + 1) - 2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)
 
 
@@ -1041,6 +1138,12 @@ def adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(dgamma)*(2*n - 1)*numpy.sqrt(((1/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))/(numpy.sqrt(E_star)*n)
 
 
@@ -1065,6 +1168,12 @@ def adhesion_powerlaw_pull_off_depth_fc(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_pull_off_depth_fc(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(dgamma)*(2*n - 3)*numpy.sqrt(((9/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))/(numpy.sqrt(E_star)*n)
 
 
@@ -1089,6 +1198,12 @@ def adhesion_powerlaw_pull_off_force_dc(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_pull_off_force_dc(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(dgamma)*(2*n + 1)*(((1/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))**(3/2)/(n + 1)
 
 
@@ -1113,6 +1228,12 @@ def adhesion_powerlaw_pull_off_force_fc(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_pull_off_force_fc(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(dgamma)*(2*n - 1)*(((9/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0)))**(3/2)/(n + 1)
 
 
@@ -1137,6 +1258,12 @@ def adhesion_powerlaw_pull_off_radius_dc(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_pull_off_radius_dc(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return ((1/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0))
 
 
@@ -1161,6 +1288,12 @@ def adhesion_powerlaw_pull_off_radius_fc(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_pull_off_radius_fc(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return ((9/2)*numpy.pi*dgamma/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0))
 
 
@@ -1185,6 +1318,12 @@ def adhesion_powerlaw_zero_load_radius(E_star, dgamma, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(dgamma) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_zero_load_radius(E_star, dgamma, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2*numpy.pi*dgamma*(n**2 + 2*n + 1)/(E_star*c_n**2*kappa_n**2*n**2))**((2*n - 1)**(-1.0))
 
 
@@ -1210,6 +1349,12 @@ def adhesion_pressure_edge(E_star, a, dgamma, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_pressure_edge(E_star, a, dgamma, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a - r)*numpy.sqrt(a + r))
 
 
@@ -1230,6 +1375,11 @@ def adhesion_punch_pull_off_force(E_star, a, dgamma):
     dgamma : float or ndarray
         work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
     """
+    if type(E_star) is float and type(a) is float and type(dgamma) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_punch_pull_off_force(E_star, a, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)
 
 
@@ -1252,6 +1402,11 @@ def adhesion_sphere_g_slope(R, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_sphere_g_slope(R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R*x/((R - x)*(R + x)) + (1/2)*numpy.log1p(2*x/(R - x))
 
 
@@ -1275,6 +1430,12 @@ def adhesion_tabor_parameter(E_star, R, dgamma, z0):
     z0 : float or ndarray
         range of the adhesive forces (equilibrium distance) of the Tabor parameter [m]
     """
+    if (type(E_star) is float and type(R) is float and type(dgamma) is float and
+            type(z0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_tabor_parameter(E_star, R, dgamma, z0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R**(1/3)*dgamma**(2/3)/(E_star**(2/3)*z0)
 
 
@@ -1298,6 +1459,11 @@ def adhesion_worn_g_slope(R, b, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(R) is float and type(b) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_worn_g_slope(R, b, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (-b**2 + 2*x**2)/(R*numpy.sqrt(-b + x)*numpy.sqrt(b + x))
 
 
@@ -1319,6 +1485,11 @@ def bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
     alpha : float or ndarray
         angle between the axes of two crossed cylinders [rad]
     """
+    if type(R1) is float and type(R2) is float and type(alpha) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_crossed_cylinders_curvature_1(R1, R2, alpha)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + (1/2)/R2 + (1/2)/R1
 
 
@@ -1344,6 +1515,11 @@ def bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     alpha : float or ndarray
         angle between the axes of two crossed cylinders [rad]
     """
+    if type(R1) is float and type(R2) is float and type(alpha) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_crossed_cylinders_curvature_2(R1, R2, alpha)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*numpy.sin(alpha)**2/(R1*R2*(numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + R2**(-1.0) + R1**(-1.0)))
 
 
@@ -1364,6 +1540,11 @@ def bodies_crossed_cylinders_gaussian_radius(R1, R2, alpha):
     alpha : float or ndarray
         angle between the axes of two crossed cylinders [rad]
     """
+    if type(R1) is float and type(R2) is float and type(alpha) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_crossed_cylinders_gaussian_radius(R1, R2, alpha)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(R1)*numpy.sqrt(R2)/abs(numpy.sin(alpha))
 
 
@@ -1390,6 +1571,12 @@ def bodies_effective_modulus(E1, nu1, E2, nu2):
     nu2 : float or ndarray
         Poisson's ratio of body 2 [1]
     """
+    if (type(E1) is float and type(nu1) is float and type(E2) is float and
+            type(nu2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_effective_modulus(E1, nu1, E2, nu2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return ((1 - nu2)*(nu2 + 1)/E2 + (1 - nu1)*(nu1 + 1)/E1)**(-1.0)
 
 
@@ -1411,6 +1598,11 @@ def bodies_effective_modulus_rigid(E, nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(E) is float and type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_effective_modulus_rigid(E, nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E/((1 - nu)*(nu + 1))
 
 
@@ -1431,6 +1623,11 @@ def bodies_effective_radius(R1, R2):
     R2 : float or ndarray
         radius of curvature of body 2, or second principal radius [m]
     """
+    if type(R1) is float and type(R2) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_effective_radius(R1, R2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (R2**(-1.0) + R1**(-1.0))**(-1.0)
 
 
@@ -1451,6 +1648,11 @@ def bodies_gaussian_approx_area(R1, R2, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(R1) is float and type(R2) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_area(R1, R2, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.pi*numpy.sqrt(R1)*numpy.sqrt(R2)*d
 
 
@@ -1474,6 +1676,12 @@ def bodies_gaussian_approx_depth_from_force(E_star, F, R1, R2):
     R2 : float or ndarray
         radius of curvature of body 2, or second principal radius [m]
     """
+    if (type(E_star) is float and type(F) is float and type(R1) is float and
+            type(R2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_depth_from_force(E_star, F, R1, R2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*6**(2/3)*F**(2/3)/(E_star**(2/3)*R1**(1/6)*R2**(1/6))
 
 
@@ -1497,6 +1705,12 @@ def bodies_gaussian_approx_force(E_star, R1, R2, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if (type(E_star) is float and type(R1) is float and type(R2) is float and
+            type(d) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_force(E_star, R1, R2, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*E_star*R1**(1/4)*R2**(1/4)*d**(3/2)
 
 
@@ -1519,6 +1733,12 @@ def bodies_gaussian_approx_max_pressure(E_star, R1, R2, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if (type(E_star) is float and type(R1) is float and type(R2) is float and
+            type(d) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_max_pressure(E_star, R1, R2, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*numpy.sqrt(d)/(numpy.pi*R1**(1/4)*R2**(1/4))
 
 
@@ -1548,6 +1768,12 @@ def bodies_gaussian_approx_pressure(E_star, R1, R2, d, x, y):
     """
     import functools
 
+    if (type(E_star) is float and type(R1) is float and type(R2) is float and
+            type(d) is float and type(x) is float and type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_pressure(E_star, R1, R2, d, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - y**2/(R2*d) - x**2/(R1*d)]))/(numpy.pi*R1**(1/4)*R2**(1/4))
 
 
@@ -1566,6 +1792,11 @@ def bodies_gaussian_approx_semi_axis_1(R1, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(R1) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_semi_axis_1(R1, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(R1)*numpy.sqrt(d)
 
 
@@ -1584,6 +1815,11 @@ def bodies_gaussian_approx_semi_axis_2(R2, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(R2) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_approx_semi_axis_2(R2, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(R2)*numpy.sqrt(d)
 
 
@@ -1603,6 +1839,11 @@ def bodies_gaussian_radius(R1, R2):
     R2 : float or ndarray
         radius of curvature of body 2, or second principal radius [m]
     """
+    if type(R1) is float and type(R2) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_gaussian_radius(R1, R2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(R1)*numpy.sqrt(R2)
 
 
@@ -1628,6 +1869,12 @@ def bodies_principal_curvature_1(R1a, R1b, R2a, R2b, omega):
     omega : float or ndarray
         angle between the first principal directions of the two bodies [rad]
     """
+    if (type(R1a) is float and type(R1b) is float and type(R2a) is float and
+            type(R2b) is float and type(omega) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_principal_curvature_1(R1a, R1b, R2a, R2b, omega)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
 
 
@@ -1657,6 +1904,12 @@ def bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
     omega : float or ndarray
         angle between the first principal directions of the two bodies [rad]
     """
+    if (type(R1a) is float and type(R1b) is float and type(R2a) is float and
+            type(R2b) is float and type(omega) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2*(1/(R1b*R2a) + 1/(R1a*R2b))*numpy.cos(omega)**2 + 2*(1/(R1b*R2b) + 1/(R1a*R2a))*numpy.sin(omega)**2 + 2/(R2a*R2b) + 2/(R1a*R1b))/(numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + R2b**(-1.0) + R2a**(-1.0) + R1b**(-1.0) + R1a**(-1.0))
 
 
@@ -1682,6 +1935,11 @@ def bodies_problem2_force(E, nu, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E) is float and type(nu) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_problem2_force(E, nu, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*2**(1/4)*E*numpy.sqrt(R)*d**(3/2)/(3*nu**2 - 3)
 
 
@@ -1702,6 +1960,11 @@ def bodies_problem2_gaussian_radius(R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_problem2_gaussian_radius(R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(2)*R
 
 
@@ -1722,6 +1985,11 @@ def bodies_problem2_principal_radius_1(R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_problem2_principal_radius_1(R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.sqrt(2)*R + 2*R
 
 
@@ -1741,6 +2009,11 @@ def bodies_problem2_principal_radius_2(R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_bodies_problem2_principal_radius_2(R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(2)*R + 2*R
 
 
@@ -1765,6 +2038,12 @@ def boussinesq_sigma_xx(F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(F) is float and type(nu) is float and type(x) is float and type(y) is float and
+            type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_sigma_xx(F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) + 2*nu*z**3*(x**2 + y**2 + z**2) + 4*nu*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*numpy.sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) - z**3*(x**2 + y**2 + z**2) - 2*z**2*(x**2 + y**2 + z**2)**(3/2) + (x**2 + y**2 + z**2)**(5/2))/(numpy.pi*(z + numpy.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))
 
 
@@ -1789,6 +2068,12 @@ def boussinesq_sigma_xy(F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(F) is float and type(nu) is float and type(x) is float and type(y) is float and
+            type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_sigma_xy(F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*F*x*y*(2*nu*z*(x**2 + y**2 + z**2) + 4*nu*(x**2 + y**2 + z**2)**(3/2) + 3*z**3 + 6*z**2*numpy.sqrt(x**2 + y**2 + z**2) + 2*z*(x**2 + y**2 + z**2) - 2*(x**2 + y**2 + z**2)**(3/2))/(numpy.pi*(z + numpy.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))
 
 
@@ -1818,6 +2103,12 @@ def boussinesq_sigma_xz(F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(F) is float and type(nu) is float and type(x) is float and type(y) is float and
+            type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_sigma_xz(F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3/2*F*x*z**2/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
 
 
@@ -1842,6 +2133,12 @@ def boussinesq_sigma_yy(F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(F) is float and type(nu) is float and type(x) is float and type(y) is float and
+            type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_sigma_yy(F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*z*(x**2 + y**2 + z**2)**2 - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*numpy.sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) + 3*z**5 + 6*z**4*numpy.sqrt(x**2 + y**2 + z**2) - 6*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*z*(x**2 + y**2 + z**2)**2 + (x**2 + y**2 + z**2)**(5/2))/(numpy.pi*(z + numpy.sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))
 
 
@@ -1871,6 +2168,12 @@ def boussinesq_sigma_yz(F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(F) is float and type(nu) is float and type(x) is float and type(y) is float and
+            type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_sigma_yz(F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3/2*F*y*z**2/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
 
 
@@ -1895,6 +2198,12 @@ def boussinesq_sigma_zz(F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(F) is float and type(nu) is float and type(x) is float and type(y) is float and
+            type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_sigma_zz(F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3/2*F*z**3/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
 
 
@@ -1919,6 +2228,12 @@ def boussinesq_surface_ux(E, F, nu, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if (type(E) is float and type(F) is float and type(nu) is float and type(x) is float and
+            type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_surface_ux(E, F, nu, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*x*(nu + 1)*(2*nu - 1)/(numpy.pi*E*(x**2 + y**2))
 
 
@@ -1943,6 +2258,12 @@ def boussinesq_surface_uy(E, F, nu, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if (type(E) is float and type(F) is float and type(nu) is float and type(x) is float and
+            type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_surface_uy(E, F, nu, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*y*(nu + 1)*(2*nu - 1)/(numpy.pi*E*(x**2 + y**2))
 
 
@@ -1967,6 +2288,12 @@ def boussinesq_surface_uz(E, F, nu, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if (type(E) is float and type(F) is float and type(nu) is float and type(x) is float and
+            type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_surface_uz(E, F, nu, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -F*(nu - 1)*(nu + 1)/(numpy.pi*E*numpy.sqrt(x**2 + y**2))
 
 
@@ -1993,6 +2320,12 @@ def boussinesq_ux(E, F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(E) is float and type(F) is float and type(nu) is float and type(x) is float and
+            type(y) is float and type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_ux(E, F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*(nu + 1)*(x*z/(x**2 + y**2 + z**2)**(3/2) - x*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))*numpy.sqrt(x**2 + y**2 + z**2)))/(numpy.pi*E)
 
 
@@ -2019,6 +2352,12 @@ def boussinesq_uy(E, F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(E) is float and type(F) is float and type(nu) is float and type(x) is float and
+            type(y) is float and type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_uy(E, F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*(nu + 1)*(y*z/(x**2 + y**2 + z**2)**(3/2) - y*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))*numpy.sqrt(x**2 + y**2 + z**2)))/(numpy.pi*E)
 
 
@@ -2045,6 +2384,12 @@ def boussinesq_uz(E, F, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(E) is float and type(F) is float and type(nu) is float and type(x) is float and
+            type(y) is float and type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_uz(E, F, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*(nu + 1)*(z**2/(x**2 + y**2 + z**2)**(3/2) + (2 - 2*nu)/numpy.sqrt(x**2 + y**2 + z**2))/(numpy.pi*E)
 
 
@@ -2073,6 +2418,12 @@ def cattaneo_displacement(a, F, G_star, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cattaneo_displacement(a, F, G_star, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3/4*F*mu_f*numpy.expm1((2/3)*numpy.log1p(-F_x/(F*mu_f)))/(G_star*a)
 
 
@@ -2103,6 +2454,12 @@ def cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(R) is float and type(E_star) is float and
+            type(G_star) is float and type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cattaneo_force(a, R, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*G_star*u_x*(a**2 + (E_star*a**2*mu_f - G_star*R*u_x)/(E_star*mu_f) + a*numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(numpy.sqrt(E_star)*numpy.sqrt(mu_f)))/(a + numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(numpy.sqrt(E_star)*numpy.sqrt(mu_f)))
 
 
@@ -2130,6 +2487,12 @@ def cattaneo_stick_radius(a, R, E_star, G_star, mu_f, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(R) is float and type(E_star) is float and
+            type(G_star) is float and type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cattaneo_stick_radius(a, R, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x)/(numpy.sqrt(E_star)*numpy.sqrt(mu_f))
 
 
@@ -2153,6 +2516,11 @@ def cattaneo_stick_radius_from_force(a, F, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if type(a) is float and type(F) is float and type(mu_f) is float and type(F_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cattaneo_stick_radius_from_force(a, F, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*(F*mu_f - F_x)**(1/3)/(F**(1/3)*mu_f**(1/3))
 
 
@@ -2178,6 +2546,12 @@ def cattaneo_traction_slip(r, a, R, E_star, mu_f):
     mu_f : float or ndarray
         coefficient of (Coulomb) friction mu [1]
     """
+    if (type(r) is float and type(a) is float and type(R) is float and type(E_star) is float
+            and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cattaneo_traction_slip(r, a, R, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*mu_f*numpy.sqrt(a**2 - r**2)/(numpy.pi*R)
 
 
@@ -2207,6 +2581,12 @@ def cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
     mu_f : float or ndarray
         coefficient of (Coulomb) friction mu [1]
     """
+    if (type(r) is float and type(a) is float and type(c) is float and type(R) is float and
+            type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cattaneo_traction_stick(r, a, c, R, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*mu_f*(a - c)*(a + c)/(numpy.pi*R*(numpy.sqrt(a - r)*numpy.sqrt(a + r) + numpy.sqrt(c - r)*numpy.sqrt(c + r)))
 
 
@@ -2232,6 +2612,12 @@ def cerruti_surface_ux(G, Q, nu, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if (type(G) is float and type(Q) is float and type(nu) is float and type(x) is float and
+            type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cerruti_surface_ux(G, Q, nu, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*Q*(-nu*y**2 + x**2 + y**2)/(numpy.pi*G*(x**2 + y**2)**(3/2))
 
 
@@ -2257,6 +2643,12 @@ def cerruti_surface_uy(G, Q, nu, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if (type(G) is float and type(Q) is float and type(nu) is float and type(x) is float and
+            type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cerruti_surface_uy(G, Q, nu, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*Q*nu*x*y/(numpy.pi*G*(x**2 + y**2)**(3/2))
 
 
@@ -2282,6 +2674,12 @@ def cerruti_surface_uz(G, Q, nu, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if (type(G) is float and type(Q) is float and type(nu) is float and type(x) is float and
+            type(y) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cerruti_surface_uz(G, Q, nu, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/4*Q*x*(2*nu - 1)/(numpy.pi*G*(x**2 + y**2))
 
 
@@ -2309,6 +2707,12 @@ def cerruti_ux(G, Q, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(G) is float and type(Q) is float and type(nu) is float and type(x) is float and
+            type(y) is float and type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cerruti_ux(G, Q, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*Q*(x**2/(x**2 + y**2 + z**2)**(3/2) + (1 - 2*nu)*(-x**2/((z + numpy.sqrt(x**2 + y**2 + z**2))**2*numpy.sqrt(x**2 + y**2 + z**2)) + (z + numpy.sqrt(x**2 + y**2 + z**2))**(-1.0)) + 1/numpy.sqrt(x**2 + y**2 + z**2))/(numpy.pi*G)
 
 
@@ -2336,6 +2740,12 @@ def cerruti_uy(G, Q, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(G) is float and type(Q) is float and type(nu) is float and type(x) is float and
+            type(y) is float and type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cerruti_uy(G, Q, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*Q*(-x*y*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))**2*numpy.sqrt(x**2 + y**2 + z**2)) + x*y/(x**2 + y**2 + z**2)**(3/2))/(numpy.pi*G)
 
 
@@ -2363,6 +2773,12 @@ def cerruti_uz(G, Q, nu, x, y, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if (type(G) is float and type(Q) is float and type(nu) is float and type(x) is float and
+            type(y) is float and type(z) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cerruti_uz(G, Q, nu, x, y, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*Q*(x*z/(x**2 + y**2 + z**2)**(3/2) + x*(1 - 2*nu)/((z + numpy.sqrt(x**2 + y**2 + z**2))*numpy.sqrt(x**2 + y**2 + z**2)))/(numpy.pi*G)
 
 
@@ -2381,6 +2797,11 @@ def cone_contact_radius(d, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(d) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_contact_radius(d, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*d/(numpy.pi*numpy.tan(theta))
 
 
@@ -2401,6 +2822,11 @@ def cone_contact_radius_from_force(E_star, F, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(F) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_contact_radius_from_force(E_star, F, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(2)*numpy.sqrt(F)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(numpy.tan(theta)))
 
 
@@ -2419,6 +2845,11 @@ def cone_depth(a, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(a) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_depth(a, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.pi*a*numpy.tan(theta)
 
 
@@ -2439,6 +2870,11 @@ def cone_depth_from_force(E_star, F, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(F) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_depth_from_force(E_star, F, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(F)*numpy.sqrt(numpy.tan(theta))/numpy.sqrt(E_star)
 
 
@@ -2459,6 +2895,11 @@ def cone_force(E_star, d, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(d) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_force(E_star, d, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*d**2/(numpy.pi*numpy.tan(theta))
 
 
@@ -2477,6 +2918,11 @@ def cone_mean_pressure(E_star, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_mean_pressure(E_star, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*numpy.tan(theta)
 
 
@@ -2507,6 +2953,12 @@ def cone_pressure(E_star, d, theta, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(d) is float and type(theta) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_pressure(E_star, d, theta, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*numpy.tan(theta)*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(2*d/(numpy.pi*numpy.tan(theta)) - r)/numpy.sqrt(r))
 
 
@@ -2527,6 +2979,11 @@ def cone_stiffness(E_star, d, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(d) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_stiffness(E_star, d, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 4*E_star*d/(numpy.pi*numpy.tan(theta))
 
 
@@ -2545,6 +3002,11 @@ def contact_mean_pressure(A, F):
     F : float or ndarray
         normal force [N]
     """
+    if type(A) is float and type(F) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_contact_mean_pressure(A, F)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return F/A
 
 
@@ -2563,6 +3025,11 @@ def disc_mean_pressure(F, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(F) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_disc_mean_pressure(F, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return F/(numpy.pi*a**2)
 
 
@@ -2588,6 +3055,11 @@ def disc_pressure(a, n_p, p0, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(a) is float and type(n_p) is float and type(p0) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_disc_pressure(a, n_p, p0, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*((a - r)*(a + r)/a**2)**n_p
 
 
@@ -3115,6 +3587,11 @@ def ellipse_stress_axis_sigma_zz(a, b_e, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(b_e) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_axis_sigma_zz(a, b_e, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*b_e*p0/(numpy.sqrt(a**2 + z**2)*numpy.sqrt(b_e**2 + z**2))
 
 
@@ -3194,6 +3671,12 @@ def ellipse_stress_cubic_lam(a, b_e, z, w1_e, d_e, lam_e):
     lam_e : float or ndarray
         ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
     """
+    if (type(a) is float and type(b_e) is float and type(z) is float and type(w1_e) is float
+            and type(d_e) is float and type(lam_e) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_cubic_lam(a, b_e, z, w1_e, d_e, lam_e)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return lam_e*(lam_e - w1_e)*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e)*(b_e**2 + lam_e)
 
 
@@ -3220,6 +3703,12 @@ def ellipse_stress_cubic_lam_slope(a, b_e, z, w1_e, d_e, lam_e):
     lam_e : float or ndarray
         ellipsoidal coordinate lambda >= 0 of the field point: the largest root of x^2/(a^2 + lam) + y^2/(b^2 + lam) + z^2/lam = 1 [m^2]
     """
+    if (type(a) is float and type(b_e) is float and type(z) is float and type(w1_e) is float
+            and type(d_e) is float and type(lam_e) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_cubic_lam_slope(a, b_e, z, w1_e, d_e, lam_e)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return lam_e*(lam_e - w1_e) + lam_e*(d_e + lam_e - w1_e) - z**2*(a**2 + lam_e) - z**2*(b_e**2 + lam_e) + (lam_e - w1_e)*(d_e + lam_e - w1_e)
 
 
@@ -3246,6 +3735,12 @@ def ellipse_stress_cubic_q(z, w1_e, w1_a, w1_b, d_e, q_e):
     q_e : float or ndarray
         lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
     """
+    if (type(z) is float and type(w1_e) is float and type(w1_a) is float and
+            type(w1_b) is float and type(d_e) is float and type(q_e) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_cubic_q(z, w1_e, w1_a, w1_b, d_e, q_e)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return q_e*(d_e + q_e)*(q_e + w1_e) - z**2*(q_e + w1_a)*(q_e + w1_b)
 
 
@@ -3272,6 +3767,12 @@ def ellipse_stress_cubic_q_slope(z, w1_e, w1_a, w1_b, d_e, q_e):
     q_e : float or ndarray
         lam - w1 >= 0, w1 the largest root of the surface quadratic P2 [m^2]
     """
+    if (type(z) is float and type(w1_e) is float and type(w1_a) is float and
+            type(w1_b) is float and type(d_e) is float and type(q_e) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_cubic_q_slope(z, w1_e, w1_a, w1_b, d_e, q_e)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return q_e*(d_e + q_e) + q_e*(q_e + w1_e) - z**2*(q_e + w1_a) - z**2*(q_e + w1_b) + (d_e + q_e)*(q_e + w1_e)
 
 
@@ -3294,6 +3795,11 @@ def ellipse_stress_d(a, b_e, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if type(a) is float and type(b_e) is float and type(x) is float and type(y) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_d(a, b_e, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)
 
 
@@ -3318,6 +3824,12 @@ def ellipse_stress_e_sq(a, b_e, lam_e, q_e, d_e):
     d_e : float or ndarray
         w1 - w2 >= 0, the difference of the roots of P2 [m^2]
     """
+    if (type(a) is float and type(b_e) is float and type(lam_e) is float and
+            type(q_e) is float and type(d_e) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_e_sq(a, b_e, lam_e, q_e, d_e)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return q_e*(d_e + q_e)/((a**2 + lam_e)*(b_e**2 + lam_e))
 
 
@@ -3343,6 +3855,12 @@ def ellipse_stress_jxx_integrand(x, w1_a, w1_b, d_e, v_q):
     v_q : float or ndarray
         integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
     """
+    if (type(x) is float and type(w1_a) is float and type(w1_b) is float and
+            type(d_e) is float and type(v_q) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_jxx_integrand(x, w1_a, w1_b, d_e, v_q)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*(-d_e*v_q**2 - v_q**4 + v_q**2*x**2 + w1_b*x**2)/(numpy.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)**2*(v_q**2 + w1_b))
 
 
@@ -3370,6 +3888,12 @@ def ellipse_stress_jxy_integrand(x, y, w1_a, w1_b, d_e, v_q):
     v_q : float or ndarray
         integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
     """
+    if (type(x) is float and type(y) is float and type(w1_a) is float and type(w1_b) is float
+            and type(d_e) is float and type(v_q) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_jxy_integrand(x, y, w1_a, w1_b, d_e, v_q)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*x*y/(numpy.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b))
 
 
@@ -3395,6 +3919,12 @@ def ellipse_stress_jyy_integrand(y, w1_a, w1_b, d_e, v_q):
     v_q : float or ndarray
         integration variable v >= (lam - w1)^(1/2) of the field integrals, w = w1 + v^2 [m]
     """
+    if (type(y) is float and type(w1_a) is float and type(w1_b) is float and
+            type(d_e) is float and type(v_q) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_jyy_integrand(y, w1_a, w1_b, d_e, v_q)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*(-d_e*v_q**2 - v_q**4 + v_q**2*y**2 + w1_a*y**2)/(numpy.sqrt(d_e + v_q**2)*(v_q**2 + w1_a)*(v_q**2 + w1_b)**2)
 
 
@@ -3432,6 +3962,14 @@ def ellipse_stress_sigma_xx(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_xx):
     J_xx : float or ndarray
         integral over v of the H_xx integrand (ellipse_stress_jxx_integrand) [m^-2]
     """
+    if (type(a) is float and type(b_e) is float and type(nu) is float and type(p0) is float
+            and type(x) is float and type(y) is float and type(lam_e) is float and
+            type(e_c) is float and type(I_x) is float and type(I_y) is float and
+            type(J_xx) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_sigma_xx(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_xx)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return I_x*a*b_e*e_c*numpy.sqrt(lam_e)*p0 + I_y*a*b_e*e_c*numpy.sqrt(lam_e)*nu*p0 + (1/2)*J_xx*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*x**2 + 2*nu*(a**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/((a**2 + lam_e)**(5/2)*numpy.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
 
 
@@ -3469,6 +4007,14 @@ def ellipse_stress_sigma_yy(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_yy):
     J_yy : float or ndarray
         integral over v of the H_yy integrand (ellipse_stress_jyy_integrand) [m^-2]
     """
+    if (type(a) is float and type(b_e) is float and type(nu) is float and type(p0) is float
+            and type(x) is float and type(y) is float and type(lam_e) is float and
+            type(e_c) is float and type(I_x) is float and type(I_y) is float and
+            type(J_yy) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_sigma_yy(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_yy)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return I_x*a*b_e*e_c*numpy.sqrt(lam_e)*nu*p0 + I_y*a*b_e*e_c*numpy.sqrt(lam_e)*p0 + (1/2)*J_yy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*y**2 + 2*nu*(b_e**2 + lam_e)**2*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))/(numpy.sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(5/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
 
 
@@ -3498,6 +4044,12 @@ def ellipse_stress_sigma_zz(a, b_e, p0, x, y, lam_e, e_c):
     e_c : float or ndarray
         z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
     """
+    if (type(a) is float and type(b_e) is float and type(p0) is float and type(x) is float
+            and type(y) is float and type(lam_e) is float and type(e_c) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_sigma_zz(a, b_e, p0, x, y, lam_e, e_c)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*b_e*e_c**3*p0/(numpy.sqrt(a**2 + lam_e)*numpy.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
 
 
@@ -3531,6 +4083,13 @@ def ellipse_stress_tau_xy(a, b_e, nu, p0, x, y, lam_e, e_c, J_xy):
     J_xy : float or ndarray
         integral over v of the H_xy integrand (ellipse_stress_jxy_integrand) [m^-2]
     """
+    if (type(a) is float and type(b_e) is float and type(nu) is float and type(p0) is float
+            and type(x) is float and type(y) is float and type(lam_e) is float and
+            type(e_c) is float and type(J_xy) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_tau_xy(a, b_e, nu, p0, x, y, lam_e, e_c, J_xy)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*J_xy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*lam_e*p0*x*y/((a**2 + lam_e)**(3/2)*(b_e**2 + lam_e)**(3/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
 
 
@@ -3560,6 +4119,12 @@ def ellipse_stress_tau_xz(a, b_e, p0, x, y, lam_e, e_c):
     e_c : float or ndarray
         z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
     """
+    if (type(a) is float and type(b_e) is float and type(p0) is float and type(x) is float
+            and type(y) is float and type(lam_e) is float and type(e_c) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_tau_xz(a, b_e, p0, x, y, lam_e, e_c)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*b_e*e_c**2*numpy.sqrt(lam_e)*p0*x/((a**2 + lam_e)**(3/2)*numpy.sqrt(b_e**2 + lam_e)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
 
 
@@ -3589,6 +4154,12 @@ def ellipse_stress_tau_yz(a, b_e, p0, x, y, lam_e, e_c):
     e_c : float or ndarray
         z/lam^(1/2) in [0, 1] (finite on the surface, where z and lam vanish) [1]
     """
+    if (type(a) is float and type(b_e) is float and type(p0) is float and type(x) is float
+            and type(y) is float and type(lam_e) is float and type(e_c) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_tau_yz(a, b_e, p0, x, y, lam_e, e_c)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*b_e*e_c**2*numpy.sqrt(lam_e)*p0*y/(numpy.sqrt(a**2 + lam_e)*(b_e**2 + lam_e)**(3/2)*(e_c**2 + lam_e*(x**2/(a**2 + lam_e)**2 + y**2/(b_e**2 + lam_e)**2)))
 
 
@@ -3611,6 +4182,11 @@ def ellipse_stress_w1(a, b_e, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if type(a) is float and type(b_e) is float and type(x) is float and type(y) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_w1(a, b_e, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.select([numpy.less_equal(a**2 + b_e**2 - x**2 - y**2, 0),True], [-1/2*a**2 - 1/2*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),(-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
 
 
@@ -3633,6 +4209,11 @@ def ellipse_stress_w1_a(a, b_e, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if type(a) is float and type(b_e) is float and type(x) is float and type(y) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_w1_a(a, b_e, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*x**2 + (1/2)*y**2 + (1/2)*(a - b_e)*(a + b_e) + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)
 
 
@@ -3655,6 +4236,11 @@ def ellipse_stress_w1_b(a, b_e, x, y):
     y : float or ndarray
         coordinate [m]
     """
+    if type(a) is float and type(b_e) is float and type(x) is float and type(y) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_ellipse_stress_w1_b(a, b_e, x, y)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.select([numpy.greater_equal(-a**2 + b_e**2 + x**2 + y**2, 0),True], [-1/2*a**2 + (1/2)*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
 
 
@@ -3683,6 +4269,12 @@ def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
     """
     import functools
 
+    if (type(E_star) is float and type(theta) is float and type(z_p) is float and
+            type(z_0) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**2/(numpy.pi*numpy.tan(theta)) + F_0 + s_0*z_p
 
 
@@ -3706,6 +4298,11 @@ def fit_cone_force_dE(theta, z_p, z_0):
     """
     import functools
 
+    if type(theta) is float and type(z_p) is float and type(z_0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_cone_force_dE(theta, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**2/(numpy.pi*numpy.tan(theta))
 
 
@@ -3731,6 +4328,12 @@ def fit_cone_force_dz0(E_star, theta, z_p, z_0):
     """
     import functools
 
+    if (type(E_star) is float and type(theta) is float and type(z_p) is float and
+            type(z_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_cone_force_dz0(E_star, theta, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -4*E_star*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(numpy.pi*numpy.tan(theta))
 
 
@@ -3759,6 +4362,12 @@ def fit_hertz_force(E_star, R, z_p, z_0, F_0, s_0):
     """
     import functools
 
+    if (type(E_star) is float and type(R) is float and type(z_p) is float and
+            type(z_0) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_hertz_force(E_star, R, z_p, z_0, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*E_star*numpy.sqrt(R)*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**(3/2) + F_0 + s_0*z_p
 
 
@@ -3782,6 +4391,11 @@ def fit_hertz_force_dE(R, z_p, z_0):
     """
     import functools
 
+    if type(R) is float and type(z_p) is float and type(z_0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_hertz_force_dE(R, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*numpy.sqrt(R)*functools.reduce(numpy.maximum, [0, -z_0 + z_p])**(3/2)
 
 
@@ -3807,6 +4421,12 @@ def fit_hertz_force_dz0(E_star, R, z_p, z_0):
     """
     import functools
 
+    if (type(E_star) is float and type(R) is float and type(z_p) is float and
+            type(z_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_hertz_force_dz0(E_star, R, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*E_star*numpy.sqrt(R)*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*numpy.sqrt(functools.reduce(numpy.maximum, [0, -z_0 + z_p]))
 
 
@@ -3839,6 +4459,13 @@ def fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):
     """
     import functools
 
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(z_p) is float and type(z_0) is float and
+            type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*n*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(n + 1) + F_0 + s_0*z_p
 
 
@@ -3866,6 +4493,12 @@ def fit_powerlaw_force_dE(c_n, kappa_n, n, z_p, z_0):
     """
     import functools
 
+    if (type(c_n) is float and type(kappa_n) is float and type(n) is float and
+            type(z_p) is float and type(z_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_powerlaw_force_dE(c_n, kappa_n, n, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*n*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(n + 1)
 
 
@@ -3895,6 +4528,12 @@ def fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0):
     """
     import functools
 
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(z_p) is float and type(z_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*E_star*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
 
 
@@ -3923,6 +4562,12 @@ def fit_punch_force(E_star, a, z_p, z_0, F_0, s_0):
     """
     import functools
 
+    if (type(E_star) is float and type(a) is float and type(z_p) is float and
+            type(z_0) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_punch_force(E_star, a, z_p, z_0, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a*functools.reduce(numpy.maximum, [0, -z_0 + z_p]) + F_0 + s_0*z_p
 
 
@@ -3946,6 +4591,11 @@ def fit_punch_force_dE(a, z_p, z_0):
     """
     import functools
 
+    if type(a) is float and type(z_p) is float and type(z_0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_punch_force_dE(a, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*a*functools.reduce(numpy.maximum, [0, -z_0 + z_p])
 
 
@@ -3969,6 +4619,12 @@ def fit_punch_force_dz0(E_star, a, z_p, z_0):
     z_0 : float or ndarray
         contact point: the position z_p where the tip first touches the sample [m]
     """
+    if (type(E_star) is float and type(a) is float and type(z_p) is float and
+            type(z_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_punch_force_dz0(E_star, a, z_p, z_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*E_star*a*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
 
 
@@ -3991,6 +4647,12 @@ def fit_sample_modulus(E_star, nu1, E2, nu2):
     nu2 : float or ndarray
         Poisson's ratio of body 2 [1]
     """
+    if (type(E_star) is float and type(nu1) is float and type(E2) is float and
+            type(nu2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sample_modulus(E_star, nu1, E2, nu2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)
 
 
@@ -4013,6 +4675,12 @@ def fit_sample_modulus_dE(E_star, nu1, E2, nu2):
     nu2 : float or ndarray
         Poisson's ratio of body 2 [1]
     """
+    if (type(E_star) is float and type(nu1) is float and type(E2) is float and
+            type(nu2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sample_modulus_dE(E_star, nu1, E2, nu2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2
 
 
@@ -4031,6 +4699,11 @@ def fit_sample_modulus_rigid(E_star, nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(E_star) is float and type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sample_modulus_rigid(E_star, nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*(1 - nu**2)
 
 
@@ -4047,6 +4720,11 @@ def fit_sample_modulus_rigid_dE(nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sample_modulus_rigid_dE(nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 1 - nu**2
 
 
@@ -4121,6 +4799,11 @@ def fit_sphere_force_dz0(E_star, R, lam):
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
+    if type(E_star) is float and type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sphere_force_dz0(E_star, R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*E_star*R*numpy.tanh(lam)
 
 
@@ -4142,6 +4825,11 @@ def flamant_sigma_xx(F_L, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(F_L) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_flamant_sigma_xx(F_L, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*F_L*x**2*z/(numpy.pi*(x**2 + z**2)**2)
 
 
@@ -4163,6 +4851,11 @@ def flamant_sigma_zz(F_L, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(F_L) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_flamant_sigma_zz(F_L, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*F_L*z**3/(numpy.pi*(x**2 + z**2)**2)
 
 
@@ -4184,6 +4877,11 @@ def flamant_tau_xz(F_L, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(F_L) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_flamant_tau_xz(F_L, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*F_L*x*z**2/(numpy.pi*(x**2 + z**2)**2)
 
 
@@ -4207,6 +4905,12 @@ def flat_punch_tangential_traction(r, a, G_star, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(r) is float and type(a) is float and type(G_star) is float and
+            type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_flat_punch_tangential_traction(r, a, G_star, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return G_star*u_x/(numpy.pi*numpy.sqrt(a**2 - r**2))
 
 
@@ -4225,6 +4929,11 @@ def hertz_contact_radius(R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_contact_radius(R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(R)*numpy.sqrt(d)
 
 
@@ -4245,6 +4954,11 @@ def hertz_contact_radius_from_force(E_star, F, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(F) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_contact_radius_from_force(E_star, F, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*6**(1/3)*F**(1/3)*R**(1/3)/E_star**(1/3)
 
 
@@ -4265,6 +4979,11 @@ def hertz_depth_from_force(E_star, F, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(F) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_depth_from_force(E_star, F, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*6**(2/3)*F**(2/3)/(E_star**(2/3)*R**(1/3))
 
 
@@ -4285,6 +5004,11 @@ def hertz_displacement_inside(R, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(R) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_displacement_inside(R, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return d - 1/2*r**2/R
 
 
@@ -4332,6 +5056,11 @@ def hertz_energy(E_star, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_energy(E_star, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (8/15)*E_star*numpy.sqrt(R)*d**(5/2)
 
 
@@ -4352,6 +5081,11 @@ def hertz_force(E_star, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_force(E_star, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*E_star*numpy.sqrt(R)*d**(3/2)
 
 
@@ -4372,6 +5106,11 @@ def hertz_max_pressure(E_star, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_max_pressure(E_star, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*numpy.sqrt(d)/(numpy.pi*numpy.sqrt(R))
 
 
@@ -4392,6 +5131,11 @@ def hertz_max_pressure_from_force(E_star, F, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(F) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_max_pressure_from_force(E_star, F, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 6**(1/3)*E_star**(2/3)*F**(1/3)/(numpy.pi*R**(2/3))
 
 
@@ -4412,6 +5156,11 @@ def hertz_mean_pressure(E_star, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_mean_pressure(E_star, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*E_star*numpy.sqrt(d)/(numpy.pi*numpy.sqrt(R))
 
 
@@ -4436,6 +5185,11 @@ def hertz_pressure(E_star, R, d, r):
     """
     import functools
 
+    if type(E_star) is float and type(R) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_pressure(E_star, R, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - r**2/(R*d)]))/(numpy.pi*numpy.sqrt(R))
 
 
@@ -4458,6 +5212,12 @@ def hertz_pressure_displacement(E_star, a, p0, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(a) is float and type(p0) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_pressure_displacement(E_star, a, p0, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*numpy.pi*p0*(2*a**2 - r**2)/(E_star*a)
 
 
@@ -4480,6 +5240,12 @@ def hertz_pressure_displacement_outside(E_star, a, p0, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(a) is float and type(p0) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_pressure_displacement_outside(E_star, a, p0, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*p0*(2*a**2*numpy.arcsin(a/r) + a*numpy.sqrt(-a**2 + r**2) - r**2*numpy.arcsin(a/r))/(E_star*a)
 
 
@@ -4498,6 +5264,11 @@ def hertz_pressure_force(a, p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(a) is float and type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_pressure_force(a, p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2/3)*numpy.pi*a**2*p0
 
 
@@ -4518,6 +5289,11 @@ def hertz_stiffness(E_star, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_stiffness(E_star, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*numpy.sqrt(R)*numpy.sqrt(d)
 
 
@@ -4543,6 +5319,12 @@ def impact_contact_time(E_star, R, m, v0):
     """
     import scipy.special
 
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_contact_time(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/5)*30**(2/5)*numpy.sqrt(numpy.pi)*m**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*R**(1/5)*v0**(1/5)*scipy.special.gamma(9/10))
 
 
@@ -4568,6 +5350,12 @@ def impact_contact_time_density(E_star, R, rho, v0):
     """
     import scipy.special
 
+    if (type(E_star) is float and type(R) is float and type(rho) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_contact_time_density(E_star, R, rho, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2/5)*2**(1/5)*5**(2/5)*numpy.pi**(9/10)*R*rho**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*v0**(1/5)*scipy.special.gamma(9/10))
 
 
@@ -4590,6 +5378,12 @@ def impact_max_contact_radius(E_star, R, m, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_contact_radius(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*30**(1/5)*R**(2/5)*m**(1/5)*v0**(2/5)/E_star**(1/5)
 
 
@@ -4612,6 +5406,12 @@ def impact_max_contact_radius_density(E_star, R, rho, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(rho) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_contact_radius_density(E_star, R, rho, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*2**(3/5)*5**(1/5)*numpy.pi**(1/5)*R*rho**(1/5)*v0**(2/5)/E_star**(1/5)
 
 
@@ -4634,6 +5434,12 @@ def impact_max_depth(E_star, R, m, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_depth(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*30**(2/5)*m**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))
 
 
@@ -4656,6 +5462,12 @@ def impact_max_depth_density(E_star, R, rho, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(rho) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_depth_density(E_star, R, rho, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*2**(1/5)*5**(2/5)*numpy.pi**(2/5)*R*rho**(2/5)*v0**(4/5)/E_star**(2/5)
 
 
@@ -4678,6 +5490,12 @@ def impact_max_force(E_star, R, m, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_force(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/6)*30**(3/5)*E_star**(2/5)*R**(1/5)*m**(3/5)*v0**(6/5)
 
 
@@ -4700,6 +5518,12 @@ def impact_max_force_density(E_star, R, rho, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(rho) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_force_density(E_star, R, rho, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/3)*2**(4/5)*5**(3/5)*numpy.pi**(3/5)*E_star**(2/5)*R**2*rho**(3/5)*v0**(6/5)
 
 
@@ -4722,6 +5546,12 @@ def impact_max_pressure(E_star, R, m, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_pressure(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 30**(1/5)*E_star**(4/5)*m**(1/5)*v0**(2/5)/(numpy.pi*R**(3/5))
 
 
@@ -4742,6 +5572,11 @@ def impact_max_pressure_density(E_star, rho, v0):
     v0 : float or ndarray
         impact velocity [m/s]
     """
+    if type(E_star) is float and type(rho) is float and type(v0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_max_pressure_density(E_star, rho, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/numpy.pi**(4/5)
 
 
@@ -4761,6 +5596,11 @@ def impact_sphere_mass(R, rho):
     rho : float or ndarray
         density [kg/m^3]
     """
+    if type(R) is float and type(rho) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_sphere_mass(R, rho)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*numpy.pi*R**3*rho
 
 
@@ -4784,6 +5624,12 @@ def jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
     dgamma : float or ndarray
         work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
     """
+    if (type(E_star) is float and type(F_load) is float and type(R) is float and
+            type(dgamma) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_contact_radius_from_force(E_star, F_load, R, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*(numpy.sqrt(3)*numpy.sqrt(R)*numpy.sqrt(2*F_load + 3*numpy.pi*R*dgamma) + 3*numpy.sqrt(numpy.pi)*R*numpy.sqrt(dgamma))**(2/3)/E_star**(1/3)
 
 
@@ -4806,6 +5652,12 @@ def jkr_depth(E_star, R, a, dgamma):
     dgamma : float or ndarray
         work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
     """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(dgamma) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_depth(E_star, R, a, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a**2/R - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*numpy.sqrt(dgamma)/numpy.sqrt(E_star)
 
 
@@ -4828,6 +5680,12 @@ def jkr_force_from_radius(E_star, R, a, dgamma):
     dgamma : float or ndarray
         work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
     """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(dgamma) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_force_from_radius(E_star, R, a, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma) + (4/3)*E_star*a**3/R
 
 
@@ -4856,6 +5714,12 @@ def jkr_pressure(E_star, R, a, dgamma, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(dgamma) is float and type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pressure(E_star, R, a, dgamma, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a - r)*numpy.sqrt(a + r)) + 2*E_star*numpy.sqrt(a - r)*numpy.sqrt(a + r)/(numpy.pi*R)
 
 
@@ -4876,6 +5740,11 @@ def jkr_pull_off_depth_dc(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pull_off_depth_dc(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3/4*numpy.pi**(2/3)*R**(1/3)*dgamma**(2/3)/E_star**(2/3)
 
 
@@ -4896,6 +5765,11 @@ def jkr_pull_off_depth_fc(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pull_off_depth_fc(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/4*3**(1/3)*numpy.pi**(2/3)*R**(1/3)*dgamma**(2/3)/E_star**(2/3)
 
 
@@ -4916,6 +5790,11 @@ def jkr_pull_off_force_dc(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pull_off_force_dc(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -5/6*numpy.pi*R*dgamma
 
 
@@ -4936,6 +5815,11 @@ def jkr_pull_off_force_fc(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pull_off_force_fc(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -3/2*numpy.pi*R*dgamma
 
 
@@ -4956,6 +5840,11 @@ def jkr_pull_off_radius_dc(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pull_off_radius_dc(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.pi**(1/3)*R**(2/3)*dgamma**(1/3)/E_star**(1/3)
 
 
@@ -4976,6 +5865,11 @@ def jkr_pull_off_radius_fc(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_pull_off_radius_fc(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*3**(2/3)*numpy.pi**(1/3)*R**(2/3)*dgamma**(1/3)/E_star**(1/3)
 
 
@@ -4996,6 +5890,11 @@ def jkr_zero_load_radius(E_star, dgamma, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(dgamma) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_jkr_zero_load_radius(E_star, dgamma, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*6**(2/3)*numpy.pi**(1/3)*R**(2/3)*dgamma**(1/3)/E_star**(1/3)
 
 
@@ -5016,6 +5915,11 @@ def line_depth_from_force(E_star, F, L):
     L : float or ndarray
         length of a line contact [m]
     """
+    if type(E_star) is float and type(F) is float and type(L) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_depth_from_force(E_star, F, L)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 4*F/(numpy.pi*E_star*L)
 
 
@@ -5036,6 +5940,11 @@ def line_force(E_star, L, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(L) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_force(E_star, L, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*numpy.pi*E_star*L*d
 
 
@@ -5056,6 +5965,11 @@ def line_force_per_length_from_half_width(E_star, R, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(R) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_force_per_length_from_half_width(E_star, R, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*numpy.pi*E_star*a**2/R
 
 
@@ -5074,6 +5988,11 @@ def line_half_width(R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_half_width(R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(R)*numpy.sqrt(d)
 
 
@@ -5096,6 +6015,11 @@ def line_half_width_from_force(E_star, F, L, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(F) is float and type(L) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_half_width_from_force(E_star, F, L, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*numpy.sqrt(F)*numpy.sqrt(R)/(numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(L))
 
 
@@ -5116,6 +6040,11 @@ def line_max_pressure(E_star, R, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_max_pressure(E_star, R, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*numpy.sqrt(d)/numpy.sqrt(R)
 
 
@@ -5136,6 +6065,11 @@ def line_max_pressure_depth_width(E_star, a, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_max_pressure_depth_width(E_star, a, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*d/a
 
 
@@ -5162,6 +6096,11 @@ def line_max_pressure_from_force(E_star, F, L, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(F) is float and type(L) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_max_pressure_from_force(E_star, F, L, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(E_star)*numpy.sqrt(F)/(numpy.sqrt(numpy.pi)*numpy.sqrt(L)*numpy.sqrt(R))
 
 
@@ -5183,6 +6122,11 @@ def line_max_pressure_from_half_width(E_star, R, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(R) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_max_pressure_from_half_width(E_star, R, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*a/R
 
 
@@ -5207,6 +6151,11 @@ def line_pressure(E_star, R, d, x):
     """
     import functools
 
+    if type(E_star) is float and type(R) is float and type(d) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_pressure(E_star, R, d, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*numpy.sqrt(d)*numpy.sqrt(functools.reduce(numpy.maximum, [0, 1 - x**2/(R*d)]))/numpy.sqrt(R)
 
 
@@ -5225,6 +6174,11 @@ def line_stiffness(E_star, L):
     L : float or ndarray
         length of a line contact [m]
     """
+    if type(E_star) is float and type(L) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stiffness(E_star, L)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*numpy.pi*E_star*L
 
 
@@ -5245,6 +6199,11 @@ def line_stress_axis_max_shear(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_axis_max_shear(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*p0*z/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2)))
 
 
@@ -5265,6 +6224,11 @@ def line_stress_axis_max_shear_slope(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_axis_max_shear_slope(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*p0*z**2/((a**2 + z**2)**(3/2)*(z + numpy.sqrt(a**2 + z**2))) + a*p0*z*(-z/numpy.sqrt(a**2 + z**2) - 1)/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2)))
 
 
@@ -5289,6 +6253,11 @@ def line_stress_axis_sigma_xx(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_axis_sigma_xx(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2)
 
 
@@ -5310,6 +6279,11 @@ def line_stress_axis_sigma_zz(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_axis_sigma_zz(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*p0/numpy.sqrt(a**2 + z**2)
 
 
@@ -5336,6 +6310,11 @@ def line_stress_axis_von_mises(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_axis_von_mises(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-1/2*a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - 1/2*a*p0/numpy.sqrt(a**2 + z**2))**2)
 
 
@@ -5358,6 +6337,11 @@ def line_stress_axis_von_mises_slope(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_axis_von_mises_slope(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (-3*a**2*p0**2*z**3/((a**2 + z**2)**2*(z + numpy.sqrt(a**2 + z**2))**2) + (3/2)*a**2*p0**2*z**2*(-2*z/numpy.sqrt(a**2 + z**2) - 2)/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**3) + 3*a**2*p0**2*z/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + (1/2)*(1 - 2*nu)**2*(-1/2*a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - 1/2*a*p0/numpy.sqrt(a**2 + z**2))*(a**3*p0*z/((a**2 + z**2)**(3/2)*(z + numpy.sqrt(a**2 + z**2))**2) - a**3*p0*(-2*z/numpy.sqrt(a**2 + z**2) - 2)/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**3) + a*p0*z/(a**2 + z**2)**(3/2)))/numpy.sqrt(3*a**2*p0**2*z**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + (1 - 2*nu)**2*(-1/2*a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - 1/2*a*p0/numpy.sqrt(a**2 + z**2))**2)
 
 
@@ -5383,6 +6367,11 @@ def line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if type(sigma_xx) is float and type(sigma_zz) is float and type(tau_xz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*sigma_xx + (1/2)*sigma_zz + numpy.sqrt(tau_xz**2 + (1/4)*(sigma_xx - sigma_zz)**2)
 
 
@@ -5408,6 +6397,11 @@ def line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if type(sigma_xx) is float and type(sigma_zz) is float and type(tau_xz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*sigma_xx + (1/2)*sigma_zz - numpy.sqrt(tau_xz**2 + (1/4)*(sigma_xx - sigma_zz)**2)
 
 
@@ -5434,6 +6428,11 @@ def line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if type(sigma_xx) is float and type(sigma_zz) is float and type(tau_xz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(tau_xz**2 + (1/4)*(sigma_xx - sigma_zz)**2)
 
 
@@ -5457,6 +6456,11 @@ def line_stress_sigma_xx_core(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_xx_core(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -p0*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*(2*x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/(a*(z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5480,6 +6484,11 @@ def line_stress_sigma_xx_deep(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_xx_deep(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*a*p0*z**2*(2*a**2*z**2*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) + 2*x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/((z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5503,6 +6512,11 @@ def line_stress_sigma_xx_side(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_xx_side(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*a*p0*z**2*(2*a**2*x*z**3/((x*z/numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))) - z**2 - (a - x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5524,6 +6538,11 @@ def line_stress_sigma_yy(nu, sigma_xx, sigma_zz):
     sigma_zz : float or ndarray
         normal stress component sigma_zz [Pa]
     """
+    if type(nu) is float and type(sigma_xx) is float and type(sigma_zz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_yy(nu, sigma_xx, sigma_zz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return nu*(sigma_xx + sigma_zz)
 
 
@@ -5547,6 +6566,11 @@ def line_stress_sigma_zz_core(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_zz_core(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -p0*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(a*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5570,6 +6594,11 @@ def line_stress_sigma_zz_deep(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_zz_deep(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*a*p0*z**2*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5593,6 +6622,11 @@ def line_stress_sigma_zz_side(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_sigma_zz_side(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*a*p0*x*z**3/(numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5616,6 +6650,11 @@ def line_stress_tau_1_core(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_1_core(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z**2)*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*(z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5639,6 +6678,11 @@ def line_stress_tau_1_deep(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_1_deep(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*a*p0*z**2*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z**2)/((z + numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*numpy.sqrt(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5662,6 +6706,11 @@ def line_stress_tau_1_side(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_1_side(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*a*p0*z**2*numpy.sqrt((1/2)*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((x*z/numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + z)*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*numpy.sqrt(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5685,6 +6734,11 @@ def line_stress_tau_xz_core(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_xz_core(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -p0*x*z*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (a - x)*(a + x))/(a*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5708,6 +6762,11 @@ def line_stress_tau_xz_deep(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_xz_deep(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*a*p0*x*z**3/(numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5731,6 +6790,11 @@ def line_stress_tau_xz_side(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_xz_side(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*a*p0*z**2*numpy.sqrt(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/((z**2 + (-a + x)*(a + x) + numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/(-1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) - 1/2*z**2 - 1/2*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))
 
 
@@ -5754,6 +6818,11 @@ def line_stress_tau_xz_slope_x(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_xz_slope_x(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a*p0*z*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(-3*x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3
 
 
@@ -5777,6 +6846,11 @@ def line_stress_tau_xz_slope_z(a, p0, x, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(x) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_tau_xz_slope_z(a, p0, x, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (numpy.pi*a*p0*x*z**2*(-x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (3/2)*z**2 + (3/2)*(a - x)*(a + x) + (3/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))/(numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))**3) - numpy.pi*p0*(-x*z**2/numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + x*numpy.sqrt((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)))/(a*(x**2*z**2/((1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2)) + (1/2)*z**2 + (1/2)*(a - x)*(a + x) + (1/2)*numpy.sqrt(4*x**2*z**2 + (z**2 + (a - x)*(a + x))**2))))/numpy.pi
 
 
@@ -5803,6 +6877,12 @@ def line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if (type(nu) is float and type(sigma_xx) is float and type(sigma_zz) is float and
+            type(tau_xz) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(3*tau_xz**2 + (1 - 2*nu)**2*((1/2)*sigma_xx + (1/2)*sigma_zz)**2 + (3/4)*(sigma_xx - sigma_zz)**2)
 
 
@@ -5824,6 +6904,11 @@ def line_stress_von_mises_c_tau(nu, c_mean, tau_1):
     tau_1 : float or ndarray
         principal shear stress in the x-z plane, the radius of Mohr's circle [Pa]
     """
+    if type(nu) is float and type(c_mean) is float and type(tau_1) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_line_stress_von_mises_c_tau(nu, c_mean, tau_1)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)
 
 
@@ -5843,6 +6928,11 @@ def masing_unloading_force(F_amp, F_half):
     F_half : float or ndarray
         tangential force of the monotonic loading at half the displacement travelled since the turning point [N]
     """
+    if type(F_amp) is float and type(F_half) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_masing_unloading_force(F_amp, F_half)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return F_amp - 2*F_half
 
 
@@ -5865,6 +6955,12 @@ def mdr_force(E_star, a, d, g_integral):
     g_integral : float or ndarray
         integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
     """
+    if (type(E_star) is float and type(a) is float and type(d) is float and
+            type(g_integral) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_force(E_star, a, d, g_integral)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*(a*d - g_integral)
 
 
@@ -5888,6 +6984,11 @@ def mdr_kink_g(b, slope_jump, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_kink_g(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*b*slope_jump*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(-b + x)/numpy.sqrt(b))
 
 
@@ -5909,6 +7010,11 @@ def mdr_kink_gprime(b, slope_jump, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_kink_gprime(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return b*slope_jump/(numpy.sqrt(-b + x)*numpy.sqrt(b + x))
 
 
@@ -5955,6 +7061,11 @@ def mdr_stiffness(E_star, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_stiffness(E_star, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a
 
 
@@ -5984,6 +7095,12 @@ def mindlin_energy(a, F, G_star, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_mindlin_energy(a, F, G_star, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/5*(3*F**2*mu_f**2*numpy.exp((2/3)*numpy.log1p(-F_amp/(F*mu_f))) + 9*F**2*mu_f**2*numpy.exp((1/3)*numpy.log1p(-F_amp/(F*mu_f))) + 3*F**2*mu_f**2)*numpy.expm1((1/3)*numpy.log1p(-F_amp/(F*mu_f)))**3/(G_star*a)
 
 
@@ -6009,6 +7126,12 @@ def mindlin_energy_small(a, F, G_star, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_mindlin_energy_small(a, F, G_star, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/9)*F_amp**3/(F*G_star*a*mu_f)
 
 
@@ -6031,6 +7154,12 @@ def powerlaw_contact_radius(c_n, d, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(c_n) is float and type(d) is float and type(kappa_n) is float and
+            type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_contact_radius(c_n, d, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (d/(c_n*kappa_n))**(n**(-1.0))
 
 
@@ -6060,6 +7189,12 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(F) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (c_n*kappa_n)**((n + 1)**(-1.0))*((1/2)*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
@@ -6112,6 +7247,12 @@ def powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
     w_out : float or ndarray
         integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
     """
+    if (type(a) is float and type(d) is float and type(n) is float and type(r) is float and
+            type(w_out) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_displacement_outside_integrand(a, d, n, r, w_out)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*d*numpy.expm1(n*numpy.log1p(-2*numpy.sin((1/2)*w_out)**2 - numpy.sqrt(-a + r)*numpy.sqrt(a + r)*numpy.sin(w_out)/a))/numpy.pi
 
 
@@ -6140,6 +7281,12 @@ def powerlaw_force(E_star, c_n, d, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(c_n) is float and type(d) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_force(E_star, c_n, d, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*d*n*(d/(c_n*kappa_n))**(n**(-1.0))/(n + 1)
 
 
@@ -6162,6 +7309,11 @@ def powerlaw_force_from_radius(E_star, a, d, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(n) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_force_from_radius(E_star, a, d, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a*d*n/(n + 1)
 
 
@@ -6184,6 +7336,12 @@ def powerlaw_g(c_n, kappa_n, n, x):
     x : float or ndarray
         coordinate [m]
     """
+    if (type(c_n) is float and type(kappa_n) is float and type(n) is float and
+            type(x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_g(c_n, kappa_n, n, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return c_n*kappa_n*x**n
 
 
@@ -6202,6 +7360,11 @@ def powerlaw_kappa(n):
     """
     import scipy.special
 
+    if type(n) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_kappa(n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(numpy.pi)*scipy.special.gamma((1/2)*n + 1)/scipy.special.gamma((1/2)*n + 1/2)
 
 
@@ -6219,6 +7382,11 @@ def powerlaw_kappa_asymptotic(n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if type(n) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_kappa_asymptotic(n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(n)*numpy.exp(2*n**(-1.0)*(4*n**(-2.0)*(4*n**(-2.0)*(4*n**(-2.0)*((31/4608)*n**(-2.0) - 17/14336) + 1/640) - 1/192) + 1/8))
 
 
@@ -6241,6 +7409,11 @@ def powerlaw_mean_pressure(E_star, a, d, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(n) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_mean_pressure(E_star, a, d, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*d*n/(numpy.pi*a*(n + 1))
 
 
@@ -6269,6 +7442,12 @@ def powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(c_n) is float and type(d) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*d*n*(c_n*kappa_n/d)**(n**(-1.0))/(numpy.pi*(n + 1))
 
 
@@ -6328,6 +7507,12 @@ def powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
     w_quad : float or ndarray
         integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
     """
+    if (type(E_star) is float and type(a) is float and type(d) is float and type(n) is float
+            and type(r) is float and type(w_quad) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*d*n*numpy.sqrt(a - r)*numpy.sqrt(a + r)*numpy.exp(((1/2)*n - 1)*numpy.log1p(-w_quad*(2 - w_quad)*(a - r)*(a + r)/a**2))/(numpy.pi*a**2)
 
 
@@ -6350,6 +7535,11 @@ def powerlaw_pressure_n1(E_star, a, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_pressure_n1(E_star, a, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*d*numpy.log((a + numpy.sqrt(a**2 - r**2))/r)/(numpy.pi*a)
 
 
@@ -6372,6 +7562,11 @@ def powerlaw_pressure_n2(E_star, a, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_pressure_n2(E_star, a, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*d*numpy.sqrt(a**2 - r**2)/(numpy.pi*a**2)
 
 
@@ -6394,6 +7589,11 @@ def powerlaw_pressure_n3(E_star, a, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_pressure_n3(E_star, a, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (3/2)*E_star*d*(a*numpy.sqrt(a**2 - r**2) - r**2*numpy.log(r) + r**2*numpy.log(a + numpy.sqrt(a**2 - r**2)))/(numpy.pi*a**3)
 
 
@@ -6416,6 +7616,11 @@ def powerlaw_pressure_n4(E_star, a, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_pressure_n4(E_star, a, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*E_star*d*numpy.sqrt(a**2 - r**2)*(a**2 + 2*r**2)/(numpy.pi*a**4)
 
 
@@ -6485,6 +7690,11 @@ def powerlaw_punch_displacement_outside(a, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(a) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_punch_displacement_outside(a, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*d*numpy.arcsin(a/r)/numpy.pi
 
 
@@ -6506,6 +7716,11 @@ def powerlaw_punch_force(E_star, a, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_punch_force(E_star, a, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a*d
 
 
@@ -6528,6 +7743,11 @@ def powerlaw_punch_pressure(E_star, a, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(E_star) is float and type(a) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_punch_pressure(E_star, a, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*d/(numpy.pi*numpy.sqrt(a**2 - r**2))
 
 
@@ -6548,6 +7768,11 @@ def punch_depth_from_force(E_star, F, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(F) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_punch_depth_from_force(E_star, F, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F/(E_star*a)
 
 
@@ -6568,6 +7793,11 @@ def punch_pressure_displacement(E_star, a, p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(E_star) is float and type(a) is float and type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_punch_pressure_displacement(E_star, a, p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.pi*a*p0/E_star
 
 
@@ -6590,6 +7820,12 @@ def punch_pressure_displacement_outside(E_star, a, p0, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(a) is float and type(p0) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_punch_pressure_displacement_outside(E_star, a, p0, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*a*p0*numpy.arcsin(a/r)/E_star
 
 
@@ -6608,6 +7844,11 @@ def punch_pressure_force(a, p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(a) is float and type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_punch_pressure_force(a, p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*numpy.pi*a**2*p0
 
 
@@ -6626,6 +7867,11 @@ def punch_stiffness(E_star, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_punch_stiffness(E_star, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a
 
 
@@ -6644,6 +7890,11 @@ def shear_modulus(E, nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(E) is float and type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_shear_modulus(E, nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E/(2*nu + 2)
 
 
@@ -6665,6 +7916,11 @@ def sphere_depth(R, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(R) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_depth(R, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*a*numpy.log1p(2*a/(R - a))
 
 
@@ -6712,6 +7968,11 @@ def sphere_g(R, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_g(R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*x*numpy.log1p(2*x/(R - x))
 
 
@@ -6730,6 +7991,11 @@ def sphere_lam_contact_radius(R, lam):
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
+    if type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_lam_contact_radius(R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R*numpy.tanh(lam)
 
 
@@ -6748,6 +8014,11 @@ def sphere_lam_depth(R, lam):
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
+    if type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_lam_depth(R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R*lam*numpy.tanh(lam)
 
 
@@ -6800,6 +8071,12 @@ def sphere_lam_pressure_pole(E_star, R, lam, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(R) is float and type(lam) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_lam_pressure_pole(E_star, R, lam, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*R*numpy.log1p(2*numpy.sqrt(R*numpy.tanh(lam) - r)*numpy.sqrt(R*numpy.tanh(lam) + r)*(numpy.sqrt(R - r)*numpy.sqrt(R + r) + numpy.sqrt(R*numpy.tanh(lam) - r)*numpy.sqrt(R*numpy.tanh(lam) + r))*numpy.cosh(lam)**2/R**2)/(numpy.pi*numpy.sqrt(R - r)*numpy.sqrt(R + r))
 
 
@@ -6824,6 +8101,11 @@ def sphere_pressure_atanh_kernel(E_star, R, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(E_star) is float and type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_pressure_atanh_kernel(E_star, R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*numpy.log1p(2*x/(R - x))/(numpy.pi*x)
 
 
@@ -6845,6 +8127,11 @@ def sphere_profile(R, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(R) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_profile(R, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return r**2/(R + numpy.sqrt(R - r)*numpy.sqrt(R + r))
 
 
@@ -6864,6 +8151,11 @@ def sphere_stiffness(E_star, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_sphere_stiffness(E_star, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a
 
 
@@ -6886,6 +8178,11 @@ def stress_axis_max_shear(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_axis_max_shear(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*p0*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
 
 
@@ -6905,6 +8202,11 @@ def stress_axis_max_shear_bracket(a, nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(a) is float and type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_axis_max_shear_bracket(a, nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.pi*a*(nu + 1)/(8*nu + 20)
 
 
@@ -6927,6 +8229,11 @@ def stress_axis_max_shear_slope(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_axis_max_shear_slope(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*p0*z*(3*a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2)**2) + (1/4)*p0*(-4*a*z*(nu + 1) - 2*a*(a**2 + z**2)*(nu + 1)/(z*(a**2/z**2 + 1)) + 4*z**2*(nu + 1)*numpy.arctan(a/z) + 2*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
 
 
@@ -6949,6 +8256,11 @@ def stress_axis_sigma_xx(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_axis_sigma_xx(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
 
 
@@ -6999,6 +8311,11 @@ def stress_axis_sigma_zz(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_axis_sigma_zz(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a**2*p0/(a**2 + z**2)
 
 
@@ -7019,6 +8336,11 @@ def stress_hertz_max_orthogonal_shear(p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_max_orthogonal_shear(p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt(2)*p0*(5 - numpy.sqrt(17))**(3/2)/numpy.sqrt(-5 + 3*numpy.sqrt(17))
 
 
@@ -7036,6 +8358,11 @@ def stress_hertz_max_orthogonal_shear_r(a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_max_orthogonal_shear_r(a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*numpy.sqrt(7/4 - 1/4*numpy.sqrt(17))
 
 
@@ -7056,6 +8383,11 @@ def stress_hertz_max_orthogonal_shear_z(a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_max_orthogonal_shear_z(a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a/numpy.sqrt(4 + numpy.sqrt(17))
 
 
@@ -7081,6 +8413,12 @@ def stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
     chi : float or ndarray
         sin(beta) of the oblate spheroidal angle beta [1]
     """
+    if (type(nu) is float and type(p0) is float and type(xi) is float and type(eta) is float
+            and type(chi) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_sigma_rr(nu, p0, xi, eta, chi)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
@@ -7135,6 +8473,11 @@ def stress_hertz_sigma_tt(nu, p0, xi, eta):
     eta : float or ndarray
         cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
+    if type(nu) is float and type(p0) is float and type(xi) is float and type(eta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_sigma_tt(nu, p0, xi, eta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*(-eta*(nu + 1)*(-xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
@@ -7185,6 +8528,11 @@ def stress_hertz_sigma_zz(p0, xi, eta):
     eta : float or ndarray
         cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
+    if type(p0) is float and type(xi) is float and type(eta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_sigma_zz(p0, xi, eta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -eta**3*p0/(eta**2 + xi**2)
 
 
@@ -7208,6 +8556,12 @@ def stress_hertz_tau_rz(p0, xi, eta, chi):
     chi : float or ndarray
         sin(beta) of the oblate spheroidal angle beta [1]
     """
+    if (type(p0) is float and type(xi) is float and type(eta) is float and
+            type(chi) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_hertz_tau_rz(p0, xi, eta, chi)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -chi*eta**2*p0*xi/((eta**2 + xi**2)*numpy.sqrt(xi**2 + 1))
 
 
@@ -7229,6 +8583,11 @@ def stress_spheroidal_cos_beta_inside(a, r, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(r) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_spheroidal_cos_beta_inside(a, r, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(-1/2*z**2 - 1/2*(-a + r)*(a + r) + (1/2)*numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))/a
 
 
@@ -7252,6 +8611,11 @@ def stress_spheroidal_u(a, r, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(r) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_spheroidal_u(a, r, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*z**2 + (1/2)*(-a + r)*(a + r) + (1/2)*numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2)
 
 
@@ -7275,6 +8639,11 @@ def stress_spheroidal_u_inside(a, r, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(r) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_spheroidal_u_inside(a, r, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*a**2*z**2/(-z**2 - (-a + r)*(a + r) + numpy.sqrt(4*a**2*z**2 + (z**2 + (-a + r)*(a + r))**2))
 
 
@@ -7306,6 +8675,12 @@ def stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if (type(sigma_xx) is float and type(sigma_yy) is float and type(sigma_zz) is float and
+            type(tau_xy) is float and type(tau_yz) is float and type(tau_xz) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt(2)*numpy.sqrt(6*tau_xy**2 + 6*tau_xz**2 + 6*tau_yz**2 + (sigma_xx - sigma_yy)**2 + (sigma_xx - sigma_zz)**2 + (-sigma_yy + sigma_zz)**2)
 
 
@@ -7326,6 +8701,11 @@ def strip_mean_pressure(F, L, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(F) is float and type(L) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_strip_mean_pressure(F, L, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F/(L*a)
 
 
@@ -7353,6 +8733,12 @@ def tangential_cone_displacement(a, F, G_star, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_cone_displacement(a, F, G_star, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return F_x/(G_star*a*(numpy.sqrt(1 - F_x/(F*mu_f)) + 1))
 
 
@@ -7381,6 +8767,12 @@ def tangential_cone_energy(a, F, G_star, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_cone_energy(a, F, G_star, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*F_amp**3/(F*G_star*a*mu_f*(numpy.sqrt(1 - F_amp/(F*mu_f)) + 1)**3)
 
 
@@ -7408,6 +8800,12 @@ def tangential_cone_force(a, theta, E_star, G_star, mu_f, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(theta) is float and type(E_star) is float and
+            type(G_star) is float and type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_cone_force(a, theta, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*G_star*u_x*(numpy.pi*E_star*a*mu_f - G_star*u_x/numpy.tan(theta))/(numpy.pi*E_star*mu_f)
 
 
@@ -7435,6 +8833,12 @@ def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(theta) is float and type(E_star) is float and
+            type(G_star) is float and type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a - 2*G_star*u_x/(numpy.pi*E_star*mu_f*numpy.tan(theta))
 
 
@@ -7460,6 +8864,12 @@ def tangential_modulus(G1, nu1, G2, nu2):
     nu2 : float or ndarray
         Poisson's ratio of body 2 [1]
     """
+    if (type(G1) is float and type(nu1) is float and type(G2) is float and
+            type(nu2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_modulus(G1, nu1, G2, nu2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return ((1/4)*(2 - nu2)/G2 + (1/4)*(2 - nu1)/G1)**(-1.0)
 
 
@@ -7489,6 +8899,12 @@ def tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(n) is float and type(F) is float and type(G_star) is float
+            and type(mu_f) is float and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*F*mu_f*(n + 1)*numpy.expm1(n*numpy.log1p(-F_x/(F*mu_f))/(n + 1))/(G_star*a*n)
 
 
@@ -7516,6 +8932,12 @@ def tangential_powerlaw_energy(a, n, F, G_star, mu_f, c_a):
     c_a : float or ndarray
         stick ratio c/a (stick radius over contact radius) [1]
     """
+    if (type(a) is float and type(n) is float and type(F) is float and type(G_star) is float
+            and type(mu_f) is float and type(c_a) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_energy(a, n, F, G_star, mu_f, c_a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*F**2*mu_f**2*(-2*c_a**n*n**2 - 3*c_a**n*n - c_a**n + 2*c_a**(n + 1)*n**2 + 3*c_a**(n + 1)*n + c_a**(n + 1) - c_a**(2*n + 1)*n - c_a**(2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))
 
 
@@ -7538,6 +8960,11 @@ def tangential_powerlaw_energy_density(n, d_c, s_x):
     s_x : float or ndarray
         position (x - c)/(a - c) in the slip zone c < x < a, in (0, 1) [1]
     """
+    if type(n) is float and type(d_c) is float and type(s_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_energy_density(n, d_c, s_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -(1 - d_c)**n*numpy.expm1(n*numpy.log1p(-d_c*(1 - s_x)))*numpy.expm1(n*numpy.log1p(d_c*s_x/(1 - d_c)))
 
 
@@ -7563,6 +8990,12 @@ def tangential_powerlaw_energy_scale(a, n, F, G_star, mu_f):
     mu_f : float or ndarray
         coefficient of (Coulomb) friction mu [1]
     """
+    if (type(a) is float and type(n) is float and type(F) is float and type(G_star) is float
+            and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_energy_scale(a, n, F, G_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*F**2*mu_f**2*(n + 1)**2/(G_star*a*n**2)
 
 
@@ -7590,6 +9023,12 @@ def tangential_powerlaw_energy_small(a, n, F, G_star, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(a) is float and type(n) is float and type(F) is float and type(G_star) is float
+            and type(mu_f) is float and type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_energy_small(a, n, F, G_star, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/3)*F_amp**3/(F*G_star*a*mu_f*(n + 1))
 
 
@@ -7624,6 +9063,13 @@ def tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(c_n) is float and type(n) is float and
+            type(kappa_n) is float and type(E_star) is float and type(G_star) is float and
+            type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*numpy.expm1((n + 1)*numpy.log1p(-G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)/(n + 1)
 
 
@@ -7649,6 +9095,12 @@ def tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(n) is float and type(F) is float and type(mu_f) is float and
+            type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.expm1(numpy.log1p(-F_amp/(F*mu_f))/(n + 1))
 
 
@@ -7683,6 +9135,13 @@ def tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(c_n) is float and type(n) is float and
+            type(kappa_n) is float and type(E_star) is float and type(G_star) is float and
+            type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*numpy.exp(numpy.log1p(-G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)
 
 
@@ -7708,6 +9167,12 @@ def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(n) is float and type(F) is float and type(mu_f) is float
+            and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*(1 - F_x/(F*mu_f))**((n + 1)**(-1.0))
 
 
@@ -7727,6 +9192,11 @@ def tangential_stiffness(G_star, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(G_star) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_stiffness(G_star, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*G_star*a
 
 
@@ -7744,6 +9214,11 @@ def tangential_stiffness_ratio(nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_stiffness_ratio(nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*(nu - 1)/(nu - 2)
 
 
@@ -7789,6 +9264,11 @@ def uniform_pressure_displacement_centre(E_star, a, p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(E_star) is float and type(a) is float and type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_uniform_pressure_displacement_centre(E_star, a, p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*a*p0/E_star
 
 
@@ -7809,6 +9289,11 @@ def uniform_pressure_displacement_edge(E_star, a, p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(E_star) is float and type(a) is float and type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_uniform_pressure_displacement_edge(E_star, a, p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 4*a*p0/(numpy.pi*E_star)
 
 
@@ -7855,6 +9340,11 @@ def uniform_pressure_force(a, p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(a) is float and type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_uniform_pressure_force(a, p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.pi*a**2*p0
 
 
@@ -7875,6 +9365,11 @@ def worn_contact_radius(R, b, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(R) is float and type(b) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_contact_radius(R, b, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt((1/2)*b**2 + (1/2)*numpy.sqrt(4*R**2*d**2 + b**4))
 
 
@@ -7895,6 +9390,11 @@ def worn_depth(R, a, b):
     b : float or ndarray
         radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     """
+    if type(R) is float and type(a) is float and type(b) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_depth(R, a, b)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*numpy.sqrt(a**2 - b**2)/R
 
 
@@ -7920,6 +9420,11 @@ def worn_displacement_inside(R, b, d, r):
     """
     import functools
 
+    if type(R) is float and type(b) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_displacement_inside(R, b, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return d - 1/2*functools.reduce(numpy.maximum, [0, (-b + r)*(b + r)])/R
 
 
@@ -7973,6 +9478,11 @@ def worn_force(E_star, R, b, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(b) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_force(E_star, R, b, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2/3)*numpy.sqrt(2)*E_star*b*d*(numpy.sqrt(4*R**2*d**2/b**4 + 1) + 2)/numpy.sqrt(numpy.sqrt(4*R**2*d**2/b**4 + 1) + 1)
 
 
@@ -7995,6 +9505,11 @@ def worn_force_from_radius(E_star, R, a, b):
     b : float or ndarray
         radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
     """
+    if type(E_star) is float and type(R) is float and type(a) is float and type(b) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_force_from_radius(E_star, R, a, b)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2/3)*E_star*numpy.sqrt(a - b)*numpy.sqrt(a + b)*(2*a**2 + b**2)/R
 
 
@@ -8017,6 +9532,11 @@ def worn_g(R, b, x):
     """
     import functools
 
+    if type(R) is float and type(b) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_g(R, b, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return x*numpy.sqrt(functools.reduce(numpy.maximum, [0, (-b + x)*(b + x)]))/R
 
 
@@ -8067,6 +9587,11 @@ def worn_profile(R, b, r):
     """
     import functools
 
+    if type(R) is float and type(b) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_worn_profile(R, b, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*functools.reduce(numpy.maximum, [0, (-b + r)*(b + r)])/R
 
 
@@ -8089,6 +9614,12 @@ def textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(a) is float and type(dgamma) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_adhesion_pressure_edge(E_star, a, dgamma, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a**2 - r**2))
 
 
@@ -8108,6 +9639,11 @@ def textbook_adhesion_sphere_g_slope(R, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_adhesion_sphere_g_slope(R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (R*x + (R**2 - x**2)*numpy.arctanh(x/R))/(R**2 - x**2)
 
 
@@ -8129,6 +9665,11 @@ def textbook_adhesion_worn_g_slope(R, b, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(R) is float and type(b) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_adhesion_worn_g_slope(R, b, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (-b**2 + 2*x**2)/(R*numpy.sqrt(-b**2 + x**2))
 
 
@@ -8150,6 +9691,11 @@ def textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
     alpha : float or ndarray
         angle between the axes of two crossed cylinders [rad]
     """
+    if type(R1) is float and type(R2) is float and type(alpha) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*numpy.sqrt((numpy.cos(2*alpha)/R2 + R1**(-1.0))**2 + numpy.sin(2*alpha)**2/R2**2) + (1/2)/R2 + (1/2)/R1
 
 
@@ -8173,6 +9719,12 @@ def textbook_bodies_effective_modulus(E1, nu1, E2, nu2):
     nu2 : float or ndarray
         Poisson's ratio of body 2 [1]
     """
+    if (type(E1) is float and type(nu1) is float and type(E2) is float and
+            type(nu2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_bodies_effective_modulus(E1, nu1, E2, nu2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -E1*E2/(E1*nu2**2 - E1 + E2*nu1**2 - E2)
 
 
@@ -8191,6 +9743,11 @@ def textbook_bodies_effective_modulus_rigid(E, nu):
     nu : float or ndarray
         Poisson's ratio [1]
     """
+    if type(E) is float and type(nu) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_bodies_effective_modulus_rigid(E, nu)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -E/(nu**2 - 1)
 
 
@@ -8209,6 +9766,11 @@ def textbook_bodies_effective_radius(R1, R2):
     R2 : float or ndarray
         radius of curvature of body 2, or second principal radius [m]
     """
+    if type(R1) is float and type(R2) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_bodies_effective_radius(R1, R2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R1*R2/(R1 + R2)
 
 
@@ -8234,6 +9796,12 @@ def textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
     omega : float or ndarray
         angle between the first principal directions of the two bodies [rad]
     """
+    if (type(R1a) is float and type(R1b) is float and type(R2a) is float and
+            type(R2b) is float and type(omega) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*numpy.sqrt((-1/R2b + R2a**(-1.0))**2*numpy.sin(2*omega)**2 + ((-1/R2b + R2a**(-1.0))*numpy.cos(2*omega) - 1/R1b + R1a**(-1.0))**2) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
 
 
@@ -8259,6 +9827,12 @@ def textbook_cattaneo_displacement(a, F, G_star, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_cattaneo_displacement(a, F, G_star, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (3/4)*(-F**(1/3)*mu_f**(1/3)*(F*mu_f - F_x)**(2/3) + F*mu_f)/(G_star*a)
 
 
@@ -8286,6 +9860,12 @@ def textbook_cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(R) is float and type(E_star) is float and
+            type(G_star) is float and type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_cattaneo_force(a, R, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*(E_star**(3/2)*a**3*mu_f**(3/2) - E_star*a**2*mu_f*numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x) + G_star*R*u_x*numpy.sqrt(E_star*a**2*mu_f - G_star*R*u_x))/(numpy.sqrt(E_star)*R*numpy.sqrt(mu_f))
 
 
@@ -8313,6 +9893,12 @@ def textbook_cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
     mu_f : float or ndarray
         coefficient of (Coulomb) friction mu [1]
     """
+    if (type(r) is float and type(a) is float and type(c) is float and type(R) is float and
+            type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_cattaneo_traction_stick(r, a, c, R, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*mu_f*(numpy.sqrt(a**2 - r**2) - numpy.sqrt(c**2 - r**2))/(numpy.pi*R)
 
 
@@ -8339,6 +9925,12 @@ def textbook_cone_pressure(E_star, d, theta, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(d) is float and type(theta) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_cone_pressure(E_star, d, theta, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*E_star*numpy.tan(theta)*numpy.arccosh(2*d/(numpy.pi*r*numpy.tan(theta)))
 
 
@@ -8361,6 +9953,11 @@ def textbook_disc_pressure(a, n_p, p0, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(a) is float and type(n_p) is float and type(p0) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_disc_pressure(a, n_p, p0, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*(1 - r**2/a**2)**n_p
 
 
@@ -8643,6 +10240,12 @@ def textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
     s_0 : float or ndarray
         slope of the force baseline before contact (drift, drag) [N/m]
     """
+    if (type(E_star) is float and type(R) is float and type(lam) is float and
+            type(z_p) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam)) + F_0 + s_0*z_p
 
 
@@ -8661,6 +10264,11 @@ def textbook_fit_sphere_force_dE(R, lam):
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
+    if type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_fit_sphere_force_dE(R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
 
 
@@ -8682,6 +10290,11 @@ def textbook_hertz_displacement_outside(R, d, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(R) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_hertz_displacement_outside(R, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
 
 
@@ -8707,6 +10320,12 @@ def textbook_jkr_pressure(E_star, R, a, dgamma, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(dgamma) is float and type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_jkr_pressure(E_star, R, a, dgamma, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (-numpy.sqrt(2)*numpy.pi*numpy.sqrt(E_star)*R*numpy.sqrt(a)*numpy.sqrt(dgamma) + 2*numpy.sqrt(numpy.pi)*E_star*(a**2 - r**2))/(numpy.pi**(3/2)*R*numpy.sqrt(a**2 - r**2))
 
 
@@ -8728,6 +10347,11 @@ def textbook_line_stress_axis_sigma_xx(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_line_stress_axis_sigma_xx(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*(2*a**2*z - a**2*numpy.sqrt(a**2 + z**2) + 2*z**3 - 2*z**2*numpy.sqrt(a**2 + z**2))/(a*(a**2 + z**2))
 
 
@@ -8751,6 +10375,11 @@ def textbook_line_stress_axis_von_mises(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_line_stress_axis_von_mises(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(a**6*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**4) - a**4*p0**2/((a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**3*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) + a**2*p0**2/(a**2 + z**2) + a*nu*p0*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))/numpy.sqrt(a**2 + z**2) + nu**2*(-a**3*p0/(numpy.sqrt(a**2 + z**2)*(z + numpy.sqrt(a**2 + z**2))**2) - a*p0/numpy.sqrt(a**2 + z**2))**2)
 
 
@@ -8771,6 +10400,11 @@ def textbook_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if type(sigma_xx) is float and type(sigma_zz) is float and type(tau_xz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*sigma_xx + (1/2)*sigma_zz + (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
 
 
@@ -8791,6 +10425,11 @@ def textbook_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if type(sigma_xx) is float and type(sigma_zz) is float and type(tau_xz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*sigma_xx + (1/2)*sigma_zz - 1/2*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
 
 
@@ -8812,6 +10451,11 @@ def textbook_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if type(sigma_xx) is float and type(sigma_zz) is float and type(tau_xz) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*numpy.sqrt(sigma_xx**2 - 2*sigma_xx*sigma_zz + sigma_zz**2 + 4*tau_xz**2)
 
 
@@ -8834,6 +10478,12 @@ def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if (type(nu) is float and type(sigma_xx) is float and type(sigma_zz) is float and
+            type(tau_xz) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
@@ -8854,6 +10504,11 @@ def textbook_mdr_kink_g(b, slope_jump, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_mdr_kink_g(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*b*slope_jump*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b))
 
 
@@ -8879,6 +10534,12 @@ def textbook_mindlin_energy(a, F, G_star, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_mindlin_energy(a, F, G_star, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (3/5)*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(G_star*a)
 
 
@@ -8903,6 +10564,12 @@ def textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(F) is float and type(c_n) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return ((1/2)*F*(c_n*kappa_n)**(n**(-1.0))*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
@@ -8927,6 +10594,12 @@ def textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
     w_out : float or ndarray
         integration variable in (0, asin(a/r)) of (5.60) outside the contact: x = r sin(asin(a/r) - w) [rad]
     """
+    if (type(a) is float and type(d) is float and type(n) is float and type(r) is float and
+            type(w_out) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (-2*d*(-r*numpy.sin(w_out - numpy.arcsin(a/r))/a)**n + 2*d)/numpy.pi
 
 
@@ -8951,6 +10624,12 @@ def textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(c_n) is float and type(d) is float and
+            type(kappa_n) is float and type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*d*n*(c_n*kappa_n/d)**(n**(-1.0))/(numpy.pi*(n + 1))
 
 
@@ -8978,6 +10657,12 @@ def textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
     w_quad : float or ndarray
         integration variable in (0, 1) of (5.59): x^2 = r^2 + (a^2 - r^2)(1 - w)^2 [1]
     """
+    if (type(E_star) is float and type(a) is float and type(d) is float and type(n) is float
+            and type(r) is float and type(w_quad) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*a**(-n)*d*n*numpy.sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**((1/2)*n - 1)/numpy.pi
 
 
@@ -8996,6 +10681,11 @@ def textbook_sphere_depth(R, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(R) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_depth(R, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*numpy.arctanh(a/R)
 
 
@@ -9016,6 +10706,11 @@ def textbook_sphere_force_from_radius(E_star, R, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(R) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_force_from_radius(E_star, R, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*(R**2*numpy.arctanh(a/R) - R*a + a**2*numpy.arctanh(a/R))
 
 
@@ -9034,6 +10729,11 @@ def textbook_sphere_g(R, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_g(R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return x*numpy.arctanh(x/R)
 
 
@@ -9054,6 +10754,11 @@ def textbook_sphere_lam_force(E_star, R, lam):
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
+    if type(E_star) is float and type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_lam_force(E_star, R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
 
 
@@ -9077,6 +10782,12 @@ def textbook_sphere_lam_pressure_pole(E_star, R, lam, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if (type(E_star) is float and type(R) is float and type(lam) is float and
+            type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_lam_pressure_pole(E_star, R, lam, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*R*numpy.arctanh(numpy.sqrt(R**2*numpy.tanh(lam)**2 - r**2)/numpy.sqrt(R**2 - r**2))/(numpy.pi*numpy.sqrt(R**2 - r**2))
 
 
@@ -9098,6 +10809,11 @@ def textbook_sphere_pressure_atanh_kernel(E_star, R, x):
     x : float or ndarray
         coordinate [m]
     """
+    if type(E_star) is float and type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_pressure_atanh_kernel(E_star, R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return E_star*numpy.arctanh(x/R)/(numpy.pi*x)
 
 
@@ -9116,6 +10832,11 @@ def textbook_sphere_profile(R, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(R) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_sphere_profile(R, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return R - numpy.sqrt(R**2 - r**2)
 
 
@@ -9138,6 +10859,11 @@ def textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(nu) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_axis_sigma_xx_deep(a, nu, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*p0*(a**3 - 2*a*(a**2 + z**2)*(nu + 1) + 2*z*(a**2 + z**2)*(nu + 1)*numpy.arctan(a/z))/(a*(a**2 + z**2))
 
 
@@ -9158,6 +10884,11 @@ def textbook_stress_axis_sigma_zz(a, p0, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(p0) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_axis_sigma_zz(a, p0, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -a**2*p0/(a**2 + z**2)
 
 
@@ -9175,6 +10906,11 @@ def textbook_stress_hertz_max_orthogonal_shear(p0):
     p0 : float or ndarray
         pressure scale of p0*(1 - r^2/a^2)^n; the maximum pressure for n >= 0 [Pa]
     """
+    if type(p0) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_hertz_max_orthogonal_shear(p0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/32)*p0*numpy.sqrt(1 + numpy.sqrt(17))*(-7*numpy.sqrt(34) + 31*numpy.sqrt(2))
 
 
@@ -9192,6 +10928,11 @@ def textbook_stress_hertz_max_orthogonal_shear_z(a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_hertz_max_orthogonal_shear_z(a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*numpy.sqrt(-4 + numpy.sqrt(17))
 
 
@@ -9217,6 +10958,12 @@ def textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
     chi : float or ndarray
         sin(beta) of the oblate spheroidal angle beta [1]
     """
+    if (type(nu) is float and type(p0) is float and type(xi) is float and type(eta) is float
+            and type(chi) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*(-chi**2*eta*xi**2/((eta**2 + xi**2)*(xi**2 + 1)) - eta*(nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)/((3*eta + 3)*(xi**2 + 1)))
 
 
@@ -9240,6 +10987,11 @@ def textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
     eta : float or ndarray
         cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) sin(beta), z = a xi cos(beta) [1]
     """
+    if type(nu) is float and type(p0) is float and type(xi) is float and type(eta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return p0*(-eta*(nu + 1)*(-xi*numpy.arctan(xi**(-1.0)) + 1 - (1/3)/(xi**2 + 1)) + (1 - 2*nu)*(eta**2 + eta - 1)/((3*eta + 3)*(xi**2 + 1)))
 
 
@@ -9260,6 +11012,11 @@ def textbook_stress_spheroidal_u(a, r, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(r) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_spheroidal_u(a, r, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*a**2 + (1/2)*r**2 + (1/2)*z**2 + (1/2)*numpy.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
 
 
@@ -9280,6 +11037,11 @@ def textbook_stress_spheroidal_u_inside(a, r, z):
     z : float or ndarray
         depth below the surface [m]
     """
+    if type(a) is float and type(r) is float and type(z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_spheroidal_u_inside(a, r, z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -1/2*a**2 + (1/2)*r**2 + (1/2)*z**2 + (1/2)*numpy.sqrt(a**4 - 2*a**2*r**2 + 2*a**2*z**2 + r**4 + 2*r**2*z**2 + z**4)
 
 
@@ -9307,6 +11069,12 @@ def textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_
     tau_xz : float or ndarray
         shear stress component tau_xz [Pa]
     """
+    if (type(sigma_xx) is float and type(sigma_yy) is float and type(sigma_zz) is float and
+            type(tau_xy) is float and type(tau_yz) is float and type(tau_xz) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return numpy.sqrt(sigma_xx**2 - sigma_xx*sigma_yy - sigma_xx*sigma_zz + sigma_yy**2 - sigma_yy*sigma_zz + sigma_zz**2 + 3*tau_xy**2 + 3*tau_xz**2 + 3*tau_yz**2)
 
 
@@ -9332,6 +11100,12 @@ def textbook_tangential_cone_displacement(a, F, G_star, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_cone_displacement(a, F, G_star, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (-numpy.sqrt(F)*numpy.sqrt(mu_f)*numpy.sqrt(F*mu_f - F_x) + F*mu_f)/(G_star*a)
 
 
@@ -9357,6 +11131,12 @@ def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(a) is float and type(F) is float and type(G_star) is float and
+            type(mu_f) is float and type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*numpy.sqrt(F)*numpy.sqrt(mu_f)*(numpy.sqrt(F)*numpy.sqrt(mu_f) - numpy.sqrt(F*mu_f - F_amp))**3/(G_star*a)
 
 
@@ -9380,6 +11160,12 @@ def textbook_tangential_modulus(G1, nu1, G2, nu2):
     nu2 : float or ndarray
         Poisson's ratio of body 2 [1]
     """
+    if (type(G1) is float and type(nu1) is float and type(G2) is float and
+            type(nu2) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_modulus(G1, nu1, G2, nu2)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return -4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))
 
 
@@ -9407,6 +11193,12 @@ def textbook_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
     F_x : float or ndarray
         tangential force [N]
     """
+    if (type(a) is float and type(n) is float and type(F) is float and type(G_star) is float
+            and type(mu_f) is float and type(F_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/2)*F*mu_f*(1 - (1 - F_x/(F*mu_f))**(n/(n + 1)))*(n + 1)/(G_star*a*n)
 
 
@@ -9438,6 +11230,13 @@ def textbook_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f,
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(c_n) is float and type(n) is float and
+            type(kappa_n) is float and type(E_star) is float and type(G_star) is float and
+            type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a**(n + 1)*c_n*kappa_n*mu_f*n*(1 - (1 - G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))**((n + 1)/n))/(n + 1)
 
 
@@ -9461,6 +11260,12 @@ def textbook_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
     F_amp : float or ndarray
         amplitude F_x* of an oscillating tangential force [N]
     """
+    if (type(n) is float and type(F) is float and type(mu_f) is float and
+            type(F_amp) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 1 - (1 - F_amp/(F*mu_f))**((n + 1)**(-1.0))
 
 
@@ -9492,6 +11297,13 @@ def textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star
     u_x : float or ndarray
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
+    if (type(a) is float and type(c_n) is float and type(n) is float and
+            type(kappa_n) is float and type(E_star) is float and type(G_star) is float and
+            type(mu_f) is float and type(u_x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return a*(1 - G_star*a**(-n)*u_x/(E_star*c_n*kappa_n*mu_f))**(n**(-1.0))
 
 
@@ -9540,6 +11352,11 @@ def textbook_worn_displacement_outside(R, a, b, r):
     r : float or ndarray
         radial coordinate on the surface [m]
     """
+    if type(R) is float and type(a) is float and type(b) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_worn_displacement_outside(R, a, b, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (2*a*numpy.sqrt(a**2 - b**2)*numpy.arcsin(a/r) - (b - r)*(b + r)*(numpy.sqrt((-a**2 + b**2)/(b**2 - r**2))*numpy.sqrt((-a**2 + r**2)/(-b**2 + r**2)) - numpy.arcsin(numpy.sqrt((-a**2 + b**2)/(b**2 - r**2)))))/(numpy.pi*R)
 
 
@@ -9562,4 +11379,1722 @@ def textbook_worn_force(E_star, R, b, d):
     d : float or ndarray
         indentation depth [m]
     """
+    if type(E_star) is float and type(R) is float and type(b) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_worn_force(E_star, R, b, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/3)*E_star*numpy.sqrt(-2*b**2 + 2*numpy.sqrt(4*R**2*d**2 + b**4))*(2*b**2 + numpy.sqrt(4*R**2*d**2 + b**4))/R
+
+
+def stress_hertz_field(chi, eta, nu, p0, xi):
+    """(``stress_hertz_sigma_rr``, ``stress_hertz_sigma_tt``, ``stress_hertz_sigma_zz``,
+    ``stress_hertz_tau_rz``) at once, their common subexpressions computed once (SymPy's
+    cse): each as the relation's own function gives it, to rounding. Arguments as there.
+    """
+    _c0 = 1 - 2*nu
+    _c1 = 1/(3*eta + 3)
+    _c2 = (xi*xi)
+    _c3 = _c2 + 1
+    _c4 = 1/_c3
+    _c5 = (eta*eta)
+    _c6 = 1/(_c2 + _c5)
+    _c7 = eta*(nu + 1)*(-1/3*_c4 - xi*(-numpy.arctan(xi) + (1/2)*numpy.pi) + 1)
+    _c8 = _c6*p0
+    return p0*(_c0*_c1*_c4 - _c2*_c4*_c6*(chi*chi)*eta - _c7), p0*(_c0*_c1*_c4*(_c5 + eta - 1) - _c7), -_c8*(eta*eta*eta), -_c5*_c8*chi*xi/numpy.sqrt(_c3)
+
+
+def stress_hertz_field_far(chi, eta, nu, p0, xi):
+    """(``stress_hertz_sigma_rr_far``, ``stress_hertz_sigma_tt_far``) at once, their common
+    subexpressions computed once (SymPy's cse): each as the relation's own function
+    gives it, to rounding. Arguments as there.
+    """
+    import scipy.special
+
+    _c0 = xi**(-2.0)
+    _c1 = 1 - 2*nu
+    _c2 = 1/(_c0 + 1)
+    _c3 = 1/(3*eta + 3)
+    _c4 = (eta*eta)
+    _c5 = (2/15)*_c2*eta*xi**(-4.0)*(nu + 1)*scipy.special.hyp2f1(1, 3/2, 7/2, -_c0)
+    return p0*(_c0*_c1*_c2*_c3 - _c0*_c2*(chi*chi)*eta/(_c0*_c4 + 1) - _c5), p0*(_c0*_c1*_c2*_c3*(_c4 + eta - 1) - _c5)
+
+
+def stress_spheroidal(a, r, z):
+    """(``stress_spheroidal_u``, ``stress_spheroidal_u_inside``,
+    ``stress_spheroidal_cos_beta_inside``) at once, their common subexpressions computed
+    once (SymPy's cse): each as the relation's own function gives it, to rounding.
+    Arguments as there.
+    """
+    _c0 = (z*z)
+    _c1 = _c0*(a*a)
+    _c2 = (-a + r)*(a + r)
+    _c3 = _c0 + _c2
+    _c4 = numpy.sqrt(4*_c1 + (_c3*_c3))
+    _c5 = (1/2)*_c0 + (1/2)*_c2
+    return (1/2)*_c4 + _c5, 2*_c1/(-_c3 + _c4), numpy.sqrt((1/2)*_c4 - _c5)/a
+
+
+def _math_adhesion_cone_depth(E_star, a, dgamma, theta):
+    """``adhesion_cone_depth`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pi*a*math.tan(theta) - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)
+
+
+def _math_adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
+    """``adhesion_cone_force_from_radius`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma) + (1/2)*math.pi*E_star*(a*a)*math.tan(theta)
+
+
+def _math_adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
+    """``adhesion_cone_pull_off_depth_dc`` for Python floats (the math module); raises where it does."""
+    return -dgamma/(E_star*math.tan(theta))
+
+
+def _math_adhesion_cone_pull_off_depth_fc(E_star, dgamma, theta):
+    """``adhesion_cone_pull_off_depth_fc`` for Python floats (the math module); raises where it does."""
+    return 3*dgamma/(E_star*math.tan(theta))
+
+
+def _math_adhesion_cone_pull_off_force_dc(E_star, dgamma, theta):
+    """``adhesion_cone_pull_off_force_dc`` for Python floats (the math module); raises where it does."""
+    return -6*(dgamma*dgamma)/(math.pi*E_star*math.tan(theta)**3)
+
+
+def _math_adhesion_cone_pull_off_force_fc(E_star, dgamma, theta):
+    """``adhesion_cone_pull_off_force_fc`` for Python floats (the math module); raises where it does."""
+    return -54*(dgamma*dgamma)/(math.pi*E_star*math.tan(theta)**3)
+
+
+def _math_adhesion_cone_pull_off_radius_dc(E_star, dgamma, theta):
+    """``adhesion_cone_pull_off_radius_dc`` for Python floats (the math module); raises where it does."""
+    return 2*dgamma/(math.pi*E_star*(math.tan(theta)*math.tan(theta)))
+
+
+def _math_adhesion_cone_pull_off_radius_fc(E_star, dgamma, theta):
+    """``adhesion_cone_pull_off_radius_fc`` for Python floats (the math module); raises where it does."""
+    return 18*dgamma/(math.pi*E_star*(math.tan(theta)*math.tan(theta)))
+
+
+def _math_adhesion_cone_zero_load_radius(E_star, dgamma, theta):
+    """``adhesion_cone_zero_load_radius`` for Python floats (the math module); raises where it does."""
+    return 32*dgamma/(math.pi*E_star*(math.tan(theta)*math.tan(theta)))
+
+
+def _math_adhesion_critical_elongation(E_star, a, dgamma):
+    """``adhesion_critical_elongation`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)
+
+
+def _math_adhesion_depth(E_star, a, dgamma, g_a):
+    """``adhesion_depth`` for Python floats (the math module); raises where it does."""
+    return g_a - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)
+
+
+def _math_adhesion_depth_slope(E_star, a, dgamma, g_slope):
+    """``adhesion_depth_slope`` for Python floats (the math module); raises where it does."""
+    return g_slope - 1/2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(dgamma)/(math.sqrt(E_star)*math.sqrt(a))
+
+
+def _math_adhesion_displacement_outside_edge(E_star, a, dgamma, r):
+    """``adhesion_displacement_outside_edge`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(a)*math.sqrt(dgamma)*math.asin(a/r)/(math.sqrt(math.pi)*math.sqrt(E_star))
+
+
+def _math_adhesion_energy_release_rate(E_star, a, d, g_a):
+    """``adhesion_energy_release_rate`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*((d - g_a)*(d - g_a))/(math.pi*a)
+
+
+def _math_adhesion_force_slope(E_star, a, dgamma, g_slope):
+    """``adhesion_force_slope`` for Python floats (the math module); raises where it does."""
+    return -3*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma) + 2*E_star*a*g_slope
+
+
+def _math_adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_depth`` for Python floats (the math module); raises where it does."""
+    return math.pow(a, n)*c_n*kappa_n - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)
+
+
+def _math_adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_force_from_radius`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)*n/(n + 1) - 2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)/(n + 1) + 2*E_star*a*math.pow(a, n)*c_n*kappa_n*n/(n + 1)
+
+
+def _math_adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_pull_off_depth_dc`` for Python floats (the math module); raises where it does."""
+    return -1/2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(dgamma)*(2*n - 1)*math.sqrt(math.pow((1/2)*math.pi*dgamma/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1)))/(math.sqrt(E_star)*n)
+
+
+def _math_adhesion_powerlaw_pull_off_depth_fc(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_pull_off_depth_fc`` for Python floats (the math module); raises where it does."""
+    return -1/2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(dgamma)*(2*n - 3)*math.sqrt(math.pow((9/2)*math.pi*dgamma/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1)))/(math.sqrt(E_star)*n)
+
+
+def _math_adhesion_powerlaw_pull_off_force_dc(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_pull_off_force_dc`` for Python floats (the math module); raises where it does."""
+    return -math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.sqrt(dgamma)*(2*n + 1)*math.pow(math.pow((1/2)*math.pi*dgamma/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1)), 3/2)/(n + 1)
+
+
+def _math_adhesion_powerlaw_pull_off_force_fc(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_pull_off_force_fc`` for Python floats (the math module); raises where it does."""
+    return -math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.sqrt(dgamma)*(2*n - 1)*math.pow(math.pow((9/2)*math.pi*dgamma/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1)), 3/2)/(n + 1)
+
+
+def _math_adhesion_powerlaw_pull_off_radius_dc(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_pull_off_radius_dc`` for Python floats (the math module); raises where it does."""
+    return math.pow((1/2)*math.pi*dgamma/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1))
+
+
+def _math_adhesion_powerlaw_pull_off_radius_fc(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_pull_off_radius_fc`` for Python floats (the math module); raises where it does."""
+    return math.pow((9/2)*math.pi*dgamma/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1))
+
+
+def _math_adhesion_powerlaw_zero_load_radius(E_star, dgamma, c_n, kappa_n, n):
+    """``adhesion_powerlaw_zero_load_radius`` for Python floats (the math module); raises where it does."""
+    return math.pow(2*math.pi*dgamma*((n*n) + 2*n + 1)/(E_star*(c_n*c_n)*(kappa_n*kappa_n)*(n*n)), 1/(2*n - 1))
+
+
+def _math_adhesion_pressure_edge(E_star, a, dgamma, r):
+    """``adhesion_pressure_edge`` for Python floats (the math module); raises where it does."""
+    return -math.sqrt(2)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma)/(math.sqrt(math.pi)*math.sqrt(a - r)*math.sqrt(a + r))
+
+
+def _math_textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
+    """``textbook_adhesion_pressure_edge`` for Python floats (the math module); raises where it does."""
+    return -math.sqrt(2)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma)/(math.sqrt(math.pi)*math.sqrt((a*a) - (r*r)))
+
+
+def _math_adhesion_punch_pull_off_force(E_star, a, dgamma):
+    """``adhesion_punch_pull_off_force`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)
+
+
+def _math_adhesion_sphere_g_slope(R, x):
+    """``adhesion_sphere_g_slope`` for Python floats (the math module); raises where it does."""
+    return R*x/((R - x)*(R + x)) + (1/2)*math.log1p(2*x/(R - x))
+
+
+def _math_textbook_adhesion_sphere_g_slope(R, x):
+    """``textbook_adhesion_sphere_g_slope`` for Python floats (the math module); raises where it does."""
+    return (R*x + ((R*R) - (x*x))*math.atanh(x/R))/((R*R) - (x*x))
+
+
+def _math_adhesion_tabor_parameter(E_star, R, dgamma, z0):
+    """``adhesion_tabor_parameter`` for Python floats (the math module); raises where it does."""
+    return math.pow(R, 1/3)*math.pow(dgamma, 2/3)/(math.pow(E_star, 2/3)*z0)
+
+
+def _math_adhesion_worn_g_slope(R, b, x):
+    """``adhesion_worn_g_slope`` for Python floats (the math module); raises where it does."""
+    return (-(b*b) + 2*(x*x))/(R*math.sqrt(-b + x)*math.sqrt(b + x))
+
+
+def _math_textbook_adhesion_worn_g_slope(R, b, x):
+    """``textbook_adhesion_worn_g_slope`` for Python floats (the math module); raises where it does."""
+    return (-(b*b) + 2*(x*x))/(R*math.sqrt(-(b*b) + (x*x)))
+
+
+def _math_bodies_crossed_cylinders_curvature_1(R1, R2, alpha):
+    """``bodies_crossed_cylinders_curvature_1`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt(((math.cos(2*alpha)/R2 + 1/R1)*(math.cos(2*alpha)/R2 + 1/R1)) + (math.sin(2*alpha)*math.sin(2*alpha))/(R2*R2)) + (1/2)/R2 + (1/2)/R1
+
+
+def _math_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
+    """``bodies_crossed_cylinders_curvature_2`` for Python floats (the math module); raises where it does."""
+    return 2*(math.sin(alpha)*math.sin(alpha))/(R1*R2*(math.sqrt(((math.cos(2*alpha)/R2 + 1/R1)*(math.cos(2*alpha)/R2 + 1/R1)) + (math.sin(2*alpha)*math.sin(2*alpha))/(R2*R2)) + 1/R2 + 1/R1))
+
+
+def _math_textbook_bodies_crossed_cylinders_curvature_2(R1, R2, alpha):
+    """``textbook_bodies_crossed_cylinders_curvature_2`` for Python floats (the math module); raises where it does."""
+    return -1/2*math.sqrt(((math.cos(2*alpha)/R2 + 1/R1)*(math.cos(2*alpha)/R2 + 1/R1)) + (math.sin(2*alpha)*math.sin(2*alpha))/(R2*R2)) + (1/2)/R2 + (1/2)/R1
+
+
+def _math_bodies_crossed_cylinders_gaussian_radius(R1, R2, alpha):
+    """``bodies_crossed_cylinders_gaussian_radius`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(R1)*math.sqrt(R2)/abs(math.sin(alpha))
+
+
+def _math_bodies_effective_modulus(E1, nu1, E2, nu2):
+    """``bodies_effective_modulus`` for Python floats (the math module); raises where it does."""
+    return 1/((1 - nu2)*(nu2 + 1)/E2 + (1 - nu1)*(nu1 + 1)/E1)
+
+
+def _math_textbook_bodies_effective_modulus(E1, nu1, E2, nu2):
+    """``textbook_bodies_effective_modulus`` for Python floats (the math module); raises where it does."""
+    return -E1*E2/(E1*(nu2*nu2) - E1 + E2*(nu1*nu1) - E2)
+
+
+def _math_bodies_effective_modulus_rigid(E, nu):
+    """``bodies_effective_modulus_rigid`` for Python floats (the math module); raises where it does."""
+    return E/((1 - nu)*(nu + 1))
+
+
+def _math_textbook_bodies_effective_modulus_rigid(E, nu):
+    """``textbook_bodies_effective_modulus_rigid`` for Python floats (the math module); raises where it does."""
+    return -E/((nu*nu) - 1)
+
+
+def _math_bodies_effective_radius(R1, R2):
+    """``bodies_effective_radius`` for Python floats (the math module); raises where it does."""
+    return 1/(1/R2 + 1/R1)
+
+
+def _math_textbook_bodies_effective_radius(R1, R2):
+    """``textbook_bodies_effective_radius`` for Python floats (the math module); raises where it does."""
+    return R1*R2/(R1 + R2)
+
+
+def _math_bodies_gaussian_approx_area(R1, R2, d):
+    """``bodies_gaussian_approx_area`` for Python floats (the math module); raises where it does."""
+    return math.pi*math.sqrt(R1)*math.sqrt(R2)*d
+
+
+def _math_bodies_gaussian_approx_depth_from_force(E_star, F, R1, R2):
+    """``bodies_gaussian_approx_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pow(6, 2/3)*math.pow(F, 2/3)/(math.pow(E_star, 2/3)*math.pow(R1, 1/6)*math.pow(R2, 1/6))
+
+
+def _math_bodies_gaussian_approx_force(E_star, R1, R2, d):
+    """``bodies_gaussian_approx_force`` for Python floats (the math module); raises where it does."""
+    return (4/3)*E_star*math.pow(R1, 1/4)*math.pow(R2, 1/4)*math.pow(d, 3/2)
+
+
+def _math_bodies_gaussian_approx_max_pressure(E_star, R1, R2, d):
+    """``bodies_gaussian_approx_max_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.sqrt(d)/(math.pi*math.pow(R1, 1/4)*math.pow(R2, 1/4))
+
+
+def _math_bodies_gaussian_approx_pressure(E_star, R1, R2, d, x, y):
+    """``bodies_gaussian_approx_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.sqrt(d)*math.sqrt(max(0, 1 - (y*y)/(R2*d) - (x*x)/(R1*d)))/(math.pi*math.pow(R1, 1/4)*math.pow(R2, 1/4))
+
+
+def _math_bodies_gaussian_approx_semi_axis_1(R1, d):
+    """``bodies_gaussian_approx_semi_axis_1`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(R1)*math.sqrt(d)
+
+
+def _math_bodies_gaussian_approx_semi_axis_2(R2, d):
+    """``bodies_gaussian_approx_semi_axis_2`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(R2)*math.sqrt(d)
+
+
+def _math_bodies_gaussian_radius(R1, R2):
+    """``bodies_gaussian_radius`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(R1)*math.sqrt(R2)
+
+
+def _math_bodies_principal_curvature_1(R1a, R1b, R2a, R2b, omega):
+    """``bodies_principal_curvature_1`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt(((-1/R2b + 1/R2a)*(-1/R2b + 1/R2a))*(math.sin(2*omega)*math.sin(2*omega)) + (((-1/R2b + 1/R2a)*math.cos(2*omega) - 1/R1b + 1/R1a)*((-1/R2b + 1/R2a)*math.cos(2*omega) - 1/R1b + 1/R1a))) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def _math_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
+    """``bodies_principal_curvature_2`` for Python floats (the math module); raises where it does."""
+    return (2*(1/(R1b*R2a) + 1/(R1a*R2b))*(math.cos(omega)*math.cos(omega)) + 2*(1/(R1b*R2b) + 1/(R1a*R2a))*(math.sin(omega)*math.sin(omega)) + 2/(R2a*R2b) + 2/(R1a*R1b))/(math.sqrt(((-1/R2b + 1/R2a)*(-1/R2b + 1/R2a))*(math.sin(2*omega)*math.sin(2*omega)) + (((-1/R2b + 1/R2a)*math.cos(2*omega) - 1/R1b + 1/R1a)*((-1/R2b + 1/R2a)*math.cos(2*omega) - 1/R1b + 1/R1a))) + 1/R2b + 1/R2a + 1/R1b + 1/R1a)
+
+
+def _math_textbook_bodies_principal_curvature_2(R1a, R1b, R2a, R2b, omega):
+    """``textbook_bodies_principal_curvature_2`` for Python floats (the math module); raises where it does."""
+    return -1/2*math.sqrt(((-1/R2b + 1/R2a)*(-1/R2b + 1/R2a))*(math.sin(2*omega)*math.sin(2*omega)) + (((-1/R2b + 1/R2a)*math.cos(2*omega) - 1/R1b + 1/R1a)*((-1/R2b + 1/R2a)*math.cos(2*omega) - 1/R1b + 1/R1a))) + (1/2)/R2b + (1/2)/R2a + (1/2)/R1b + (1/2)/R1a
+
+
+def _math_bodies_problem2_force(E, nu, R, d):
+    """``bodies_problem2_force`` for Python floats (the math module); raises where it does."""
+    return -2*math.pow(2, 1/4)*E*math.sqrt(R)*math.pow(d, 3/2)/(3*(nu*nu) - 3)
+
+
+def _math_bodies_problem2_gaussian_radius(R):
+    """``bodies_problem2_gaussian_radius`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(2)*R
+
+
+def _math_bodies_problem2_principal_radius_1(R):
+    """``bodies_problem2_principal_radius_1`` for Python floats (the math module); raises where it does."""
+    return -math.sqrt(2)*R + 2*R
+
+
+def _math_bodies_problem2_principal_radius_2(R):
+    """``bodies_problem2_principal_radius_2`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(2)*R + 2*R
+
+
+def _math_boussinesq_sigma_xx(F, nu, x, y, z):
+    """``boussinesq_sigma_xx`` for Python floats (the math module); raises where it does."""
+    return -1/2*F*(2*nu*(x*x)*z*((x*x) + (y*y) + (z*z)) + 4*nu*(x*x)*math.pow((x*x) + (y*y) + (z*z), 3/2) + 2*nu*z**3*((x*x) + (y*y) + (z*z)) + 4*nu*(z*z)*math.pow((x*x) + (y*y) + (z*z), 3/2) - 2*nu*math.pow((x*x) + (y*y) + (z*z), 5/2) + 3*(x*x)*z**3 + 6*(x*x)*(z*z)*math.sqrt((x*x) + (y*y) + (z*z)) + 2*(x*x)*z*((x*x) + (y*y) + (z*z)) - 2*(x*x)*math.pow((x*x) + (y*y) + (z*z), 3/2) - z**3*((x*x) + (y*y) + (z*z)) - 2*(z*z)*math.pow((x*x) + (y*y) + (z*z), 3/2) + math.pow((x*x) + (y*y) + (z*z), 5/2))/(math.pi*((z + math.sqrt((x*x) + (y*y) + (z*z)))*(z + math.sqrt((x*x) + (y*y) + (z*z))))*math.pow((x*x) + (y*y) + (z*z), 5/2))
+
+
+def _math_boussinesq_sigma_xy(F, nu, x, y, z):
+    """``boussinesq_sigma_xy`` for Python floats (the math module); raises where it does."""
+    return -1/2*F*x*y*(2*nu*z*((x*x) + (y*y) + (z*z)) + 4*nu*math.pow((x*x) + (y*y) + (z*z), 3/2) + 3*z**3 + 6*(z*z)*math.sqrt((x*x) + (y*y) + (z*z)) + 2*z*((x*x) + (y*y) + (z*z)) - 2*math.pow((x*x) + (y*y) + (z*z), 3/2))/(math.pi*((z + math.sqrt((x*x) + (y*y) + (z*z)))*(z + math.sqrt((x*x) + (y*y) + (z*z))))*math.pow((x*x) + (y*y) + (z*z), 5/2))
+
+
+def _math_boussinesq_sigma_xz(F, nu, x, y, z):
+    """``boussinesq_sigma_xz`` for Python floats (the math module); raises where it does."""
+    return -3/2*F*x*(z*z)/(math.pi*math.pow((x*x) + (y*y) + (z*z), 5/2))
+
+
+def _math_boussinesq_sigma_yy(F, nu, x, y, z):
+    """``boussinesq_sigma_yy`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*(2*nu*(x*x)*z*((x*x) + (y*y) + (z*z)) + 4*nu*(x*x)*math.pow((x*x) + (y*y) + (z*z), 3/2) - 2*nu*z*(((x*x) + (y*y) + (z*z))*((x*x) + (y*y) + (z*z))) - 2*nu*math.pow((x*x) + (y*y) + (z*z), 5/2) + 3*(x*x)*z**3 + 6*(x*x)*(z*z)*math.sqrt((x*x) + (y*y) + (z*z)) + 2*(x*x)*z*((x*x) + (y*y) + (z*z)) - 2*(x*x)*math.pow((x*x) + (y*y) + (z*z), 3/2) + 3*z**5 + 6*z**4*math.sqrt((x*x) + (y*y) + (z*z)) - 6*(z*z)*math.pow((x*x) + (y*y) + (z*z), 3/2) - 2*z*(((x*x) + (y*y) + (z*z))*((x*x) + (y*y) + (z*z))) + math.pow((x*x) + (y*y) + (z*z), 5/2))/(math.pi*((z + math.sqrt((x*x) + (y*y) + (z*z)))*(z + math.sqrt((x*x) + (y*y) + (z*z))))*math.pow((x*x) + (y*y) + (z*z), 5/2))
+
+
+def _math_boussinesq_sigma_yz(F, nu, x, y, z):
+    """``boussinesq_sigma_yz`` for Python floats (the math module); raises where it does."""
+    return -3/2*F*y*(z*z)/(math.pi*math.pow((x*x) + (y*y) + (z*z), 5/2))
+
+
+def _math_boussinesq_sigma_zz(F, nu, x, y, z):
+    """``boussinesq_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -3/2*F*z**3/(math.pi*math.pow((x*x) + (y*y) + (z*z), 5/2))
+
+
+def _math_boussinesq_surface_ux(E, F, nu, x, y):
+    """``boussinesq_surface_ux`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*x*(nu + 1)*(2*nu - 1)/(math.pi*E*((x*x) + (y*y)))
+
+
+def _math_boussinesq_surface_uy(E, F, nu, x, y):
+    """``boussinesq_surface_uy`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*y*(nu + 1)*(2*nu - 1)/(math.pi*E*((x*x) + (y*y)))
+
+
+def _math_boussinesq_surface_uz(E, F, nu, x, y):
+    """``boussinesq_surface_uz`` for Python floats (the math module); raises where it does."""
+    return -F*(nu - 1)*(nu + 1)/(math.pi*E*math.sqrt((x*x) + (y*y)))
+
+
+def _math_boussinesq_ux(E, F, nu, x, y, z):
+    """``boussinesq_ux`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*(nu + 1)*(x*z/math.pow((x*x) + (y*y) + (z*z), 3/2) - x*(1 - 2*nu)/((z + math.sqrt((x*x) + (y*y) + (z*z)))*math.sqrt((x*x) + (y*y) + (z*z))))/(math.pi*E)
+
+
+def _math_boussinesq_uy(E, F, nu, x, y, z):
+    """``boussinesq_uy`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*(nu + 1)*(y*z/math.pow((x*x) + (y*y) + (z*z), 3/2) - y*(1 - 2*nu)/((z + math.sqrt((x*x) + (y*y) + (z*z)))*math.sqrt((x*x) + (y*y) + (z*z))))/(math.pi*E)
+
+
+def _math_boussinesq_uz(E, F, nu, x, y, z):
+    """``boussinesq_uz`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*(nu + 1)*((z*z)/math.pow((x*x) + (y*y) + (z*z), 3/2) + (2 - 2*nu)/math.sqrt((x*x) + (y*y) + (z*z)))/(math.pi*E)
+
+
+def _math_cattaneo_displacement(a, F, G_star, mu_f, F_x):
+    """``cattaneo_displacement`` for Python floats (the math module); raises where it does."""
+    return -3/4*F*mu_f*math.expm1((2/3)*math.log1p(-F_x/(F*mu_f)))/(G_star*a)
+
+
+def _math_textbook_cattaneo_displacement(a, F, G_star, mu_f, F_x):
+    """``textbook_cattaneo_displacement`` for Python floats (the math module); raises where it does."""
+    return (3/4)*(-math.pow(F, 1/3)*math.pow(mu_f, 1/3)*math.pow(F*mu_f - F_x, 2/3) + F*mu_f)/(G_star*a)
+
+
+def _math_cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
+    """``cattaneo_force`` for Python floats (the math module); raises where it does."""
+    return (4/3)*G_star*u_x*((a*a) + (E_star*(a*a)*mu_f - G_star*R*u_x)/(E_star*mu_f) + a*math.sqrt(E_star*(a*a)*mu_f - G_star*R*u_x)/(math.sqrt(E_star)*math.sqrt(mu_f)))/(a + math.sqrt(E_star*(a*a)*mu_f - G_star*R*u_x)/(math.sqrt(E_star)*math.sqrt(mu_f)))
+
+
+def _math_textbook_cattaneo_force(a, R, E_star, G_star, mu_f, u_x):
+    """``textbook_cattaneo_force`` for Python floats (the math module); raises where it does."""
+    return (4/3)*(math.pow(E_star, 3/2)*a**3*math.pow(mu_f, 3/2) - E_star*(a*a)*mu_f*math.sqrt(E_star*(a*a)*mu_f - G_star*R*u_x) + G_star*R*u_x*math.sqrt(E_star*(a*a)*mu_f - G_star*R*u_x))/(math.sqrt(E_star)*R*math.sqrt(mu_f))
+
+
+def _math_cattaneo_stick_radius(a, R, E_star, G_star, mu_f, u_x):
+    """``cattaneo_stick_radius`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(E_star*(a*a)*mu_f - G_star*R*u_x)/(math.sqrt(E_star)*math.sqrt(mu_f))
+
+
+def _math_cattaneo_stick_radius_from_force(a, F, mu_f, F_x):
+    """``cattaneo_stick_radius_from_force`` for Python floats (the math module); raises where it does."""
+    return a*math.pow(F*mu_f - F_x, 1/3)/(math.pow(F, 1/3)*math.pow(mu_f, 1/3))
+
+
+def _math_cattaneo_traction_slip(r, a, R, E_star, mu_f):
+    """``cattaneo_traction_slip`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*mu_f*math.sqrt((a*a) - (r*r))/(math.pi*R)
+
+
+def _math_cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
+    """``cattaneo_traction_stick`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*mu_f*(a - c)*(a + c)/(math.pi*R*(math.sqrt(a - r)*math.sqrt(a + r) + math.sqrt(c - r)*math.sqrt(c + r)))
+
+
+def _math_textbook_cattaneo_traction_stick(r, a, c, R, E_star, mu_f):
+    """``textbook_cattaneo_traction_stick`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*mu_f*(math.sqrt((a*a) - (r*r)) - math.sqrt((c*c) - (r*r)))/(math.pi*R)
+
+
+def _math_cerruti_surface_ux(G, Q, nu, x, y):
+    """``cerruti_surface_ux`` for Python floats (the math module); raises where it does."""
+    return (1/2)*Q*(-nu*(y*y) + (x*x) + (y*y))/(math.pi*G*math.pow((x*x) + (y*y), 3/2))
+
+
+def _math_cerruti_surface_uy(G, Q, nu, x, y):
+    """``cerruti_surface_uy`` for Python floats (the math module); raises where it does."""
+    return (1/2)*Q*nu*x*y/(math.pi*G*math.pow((x*x) + (y*y), 3/2))
+
+
+def _math_cerruti_surface_uz(G, Q, nu, x, y):
+    """``cerruti_surface_uz`` for Python floats (the math module); raises where it does."""
+    return -1/4*Q*x*(2*nu - 1)/(math.pi*G*((x*x) + (y*y)))
+
+
+def _math_cerruti_ux(G, Q, nu, x, y, z):
+    """``cerruti_ux`` for Python floats (the math module); raises where it does."""
+    return (1/4)*Q*((x*x)/math.pow((x*x) + (y*y) + (z*z), 3/2) + (1 - 2*nu)*(-(x*x)/(((z + math.sqrt((x*x) + (y*y) + (z*z)))*(z + math.sqrt((x*x) + (y*y) + (z*z))))*math.sqrt((x*x) + (y*y) + (z*z))) + 1/(z + math.sqrt((x*x) + (y*y) + (z*z)))) + 1/math.sqrt((x*x) + (y*y) + (z*z)))/(math.pi*G)
+
+
+def _math_cerruti_uy(G, Q, nu, x, y, z):
+    """``cerruti_uy`` for Python floats (the math module); raises where it does."""
+    return (1/4)*Q*(-x*y*(1 - 2*nu)/(((z + math.sqrt((x*x) + (y*y) + (z*z)))*(z + math.sqrt((x*x) + (y*y) + (z*z))))*math.sqrt((x*x) + (y*y) + (z*z))) + x*y/math.pow((x*x) + (y*y) + (z*z), 3/2))/(math.pi*G)
+
+
+def _math_cerruti_uz(G, Q, nu, x, y, z):
+    """``cerruti_uz`` for Python floats (the math module); raises where it does."""
+    return (1/4)*Q*(x*z/math.pow((x*x) + (y*y) + (z*z), 3/2) + x*(1 - 2*nu)/((z + math.sqrt((x*x) + (y*y) + (z*z)))*math.sqrt((x*x) + (y*y) + (z*z))))/(math.pi*G)
+
+
+def _math_cone_contact_radius(d, theta):
+    """``cone_contact_radius`` for Python floats (the math module); raises where it does."""
+    return 2*d/(math.pi*math.tan(theta))
+
+
+def _math_cone_contact_radius_from_force(E_star, F, theta):
+    """``cone_contact_radius_from_force`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(2)*math.sqrt(F)/(math.sqrt(math.pi)*math.sqrt(E_star)*math.sqrt(math.tan(theta)))
+
+
+def _math_cone_depth(a, theta):
+    """``cone_depth`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pi*a*math.tan(theta)
+
+
+def _math_cone_depth_from_force(E_star, F, theta):
+    """``cone_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(F)*math.sqrt(math.tan(theta))/math.sqrt(E_star)
+
+
+def _math_cone_force(E_star, d, theta):
+    """``cone_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*(d*d)/(math.pi*math.tan(theta))
+
+
+def _math_cone_mean_pressure(E_star, theta):
+    """``cone_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*math.tan(theta)
+
+
+def _math_cone_pressure(E_star, d, theta, r):
+    """``cone_pressure`` for Python floats (the math module); raises where it does."""
+    return E_star*math.tan(theta)*math.asinh((1/2)*math.sqrt(2)*math.sqrt(2*d/(math.pi*math.tan(theta)) - r)/math.sqrt(r))
+
+
+def _math_textbook_cone_pressure(E_star, d, theta, r):
+    """``textbook_cone_pressure`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*math.tan(theta)*math.acosh(2*d/(math.pi*r*math.tan(theta)))
+
+
+def _math_cone_stiffness(E_star, d, theta):
+    """``cone_stiffness`` for Python floats (the math module); raises where it does."""
+    return 4*E_star*d/(math.pi*math.tan(theta))
+
+
+def _math_contact_mean_pressure(A, F):
+    """``contact_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return F/A
+
+
+def _math_disc_mean_pressure(F, a):
+    """``disc_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return F/(math.pi*(a*a))
+
+
+def _math_disc_pressure(a, n_p, p0, r):
+    """``disc_pressure`` for Python floats (the math module); raises where it does."""
+    return p0*math.pow((a - r)*(a + r)/(a*a), n_p)
+
+
+def _math_textbook_disc_pressure(a, n_p, p0, r):
+    """``textbook_disc_pressure`` for Python floats (the math module); raises where it does."""
+    return p0*math.pow(1 - (r*r)/(a*a), n_p)
+
+
+def _math_ellipse_stress_axis_sigma_zz(a, b_e, p0, z):
+    """``ellipse_stress_axis_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -a*b_e*p0/(math.sqrt((a*a) + (z*z))*math.sqrt((b_e*b_e) + (z*z)))
+
+
+def _math_ellipse_stress_cubic_lam(a, b_e, z, w1_e, d_e, lam_e):
+    """``ellipse_stress_cubic_lam`` for Python floats (the math module); raises where it does."""
+    return lam_e*(lam_e - w1_e)*(d_e + lam_e - w1_e) - (z*z)*((a*a) + lam_e)*((b_e*b_e) + lam_e)
+
+
+def _math_ellipse_stress_cubic_lam_slope(a, b_e, z, w1_e, d_e, lam_e):
+    """``ellipse_stress_cubic_lam_slope`` for Python floats (the math module); raises where it does."""
+    return lam_e*(lam_e - w1_e) + lam_e*(d_e + lam_e - w1_e) - (z*z)*((a*a) + lam_e) - (z*z)*((b_e*b_e) + lam_e) + (lam_e - w1_e)*(d_e + lam_e - w1_e)
+
+
+def _math_ellipse_stress_cubic_q(z, w1_e, w1_a, w1_b, d_e, q_e):
+    """``ellipse_stress_cubic_q`` for Python floats (the math module); raises where it does."""
+    return q_e*(d_e + q_e)*(q_e + w1_e) - (z*z)*(q_e + w1_a)*(q_e + w1_b)
+
+
+def _math_ellipse_stress_cubic_q_slope(z, w1_e, w1_a, w1_b, d_e, q_e):
+    """``ellipse_stress_cubic_q_slope`` for Python floats (the math module); raises where it does."""
+    return q_e*(d_e + q_e) + q_e*(q_e + w1_e) - (z*z)*(q_e + w1_a) - (z*z)*(q_e + w1_b) + (d_e + q_e)*(q_e + w1_e)
+
+
+def _math_ellipse_stress_d(a, b_e, x, y):
+    """``ellipse_stress_d`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y))))
+
+
+def _math_ellipse_stress_e_sq(a, b_e, lam_e, q_e, d_e):
+    """``ellipse_stress_e_sq`` for Python floats (the math module); raises where it does."""
+    return q_e*(d_e + q_e)/(((a*a) + lam_e)*((b_e*b_e) + lam_e))
+
+
+def _math_ellipse_stress_jxx_integrand(x, w1_a, w1_b, d_e, v_q):
+    """``ellipse_stress_jxx_integrand`` for Python floats (the math module); raises where it does."""
+    return -2*(-d_e*(v_q*v_q) - v_q**4 + (v_q*v_q)*(x*x) + w1_b*(x*x))/(math.sqrt(d_e + (v_q*v_q))*(((v_q*v_q) + w1_a)*((v_q*v_q) + w1_a))*((v_q*v_q) + w1_b))
+
+
+def _math_ellipse_stress_jxy_integrand(x, y, w1_a, w1_b, d_e, v_q):
+    """``ellipse_stress_jxy_integrand`` for Python floats (the math module); raises where it does."""
+    return -2*x*y/(math.sqrt(d_e + (v_q*v_q))*((v_q*v_q) + w1_a)*((v_q*v_q) + w1_b))
+
+
+def _math_ellipse_stress_jyy_integrand(y, w1_a, w1_b, d_e, v_q):
+    """``ellipse_stress_jyy_integrand`` for Python floats (the math module); raises where it does."""
+    return -2*(-d_e*(v_q*v_q) - v_q**4 + (v_q*v_q)*(y*y) + w1_a*(y*y))/(math.sqrt(d_e + (v_q*v_q))*((v_q*v_q) + w1_a)*(((v_q*v_q) + w1_b)*((v_q*v_q) + w1_b)))
+
+
+def _math_ellipse_stress_sigma_xx(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_xx):
+    """``ellipse_stress_sigma_xx`` for Python floats (the math module); raises where it does."""
+    return I_x*a*b_e*e_c*math.sqrt(lam_e)*p0 + I_y*a*b_e*e_c*math.sqrt(lam_e)*nu*p0 + (1/2)*J_xx*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*(x*x) + 2*nu*(((a*a) + lam_e)*((a*a) + lam_e))*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))/(math.pow((a*a) + lam_e, 5/2)*math.sqrt((b_e*b_e) + lam_e)*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))
+
+
+def _math_ellipse_stress_sigma_yy(a, b_e, nu, p0, x, y, lam_e, e_c, I_x, I_y, J_yy):
+    """``ellipse_stress_sigma_yy`` for Python floats (the math module); raises where it does."""
+    return I_x*a*b_e*e_c*math.sqrt(lam_e)*nu*p0 + I_y*a*b_e*e_c*math.sqrt(lam_e)*p0 + (1/2)*J_yy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*p0*(lam_e*(y*y) + 2*nu*(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e))*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))/(math.sqrt((a*a) + lam_e)*math.pow((b_e*b_e) + lam_e, 5/2)*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))
+
+
+def _math_ellipse_stress_sigma_zz(a, b_e, p0, x, y, lam_e, e_c):
+    """``ellipse_stress_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -a*b_e*e_c**3*p0/(math.sqrt((a*a) + lam_e)*math.sqrt((b_e*b_e) + lam_e)*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))
+
+
+def _math_ellipse_stress_tau_xy(a, b_e, nu, p0, x, y, lam_e, e_c, J_xy):
+    """``ellipse_stress_tau_xy`` for Python floats (the math module); raises where it does."""
+    return (1/2)*J_xy*a*b_e*p0*(2*nu - 1) - a*b_e*e_c*lam_e*p0*x*y/(math.pow((a*a) + lam_e, 3/2)*math.pow((b_e*b_e) + lam_e, 3/2)*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))
+
+
+def _math_ellipse_stress_tau_xz(a, b_e, p0, x, y, lam_e, e_c):
+    """``ellipse_stress_tau_xz`` for Python floats (the math module); raises where it does."""
+    return -a*b_e*(e_c*e_c)*math.sqrt(lam_e)*p0*x/(math.pow((a*a) + lam_e, 3/2)*math.sqrt((b_e*b_e) + lam_e)*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))
+
+
+def _math_ellipse_stress_tau_yz(a, b_e, p0, x, y, lam_e, e_c):
+    """``ellipse_stress_tau_yz`` for Python floats (the math module); raises where it does."""
+    return -a*b_e*(e_c*e_c)*math.sqrt(lam_e)*p0*y/(math.sqrt((a*a) + lam_e)*math.pow((b_e*b_e) + lam_e, 3/2)*((e_c*e_c) + lam_e*((x*x)/(((a*a) + lam_e)*((a*a) + lam_e)) + (y*y)/(((b_e*b_e) + lam_e)*((b_e*b_e) + lam_e)))))
+
+
+def _math_ellipse_stress_w1(a, b_e, x, y):
+    """``ellipse_stress_w1`` for Python floats (the math module); raises where it does."""
+    return ((-1/2*(a*a) - 1/2*(b_e*b_e) + (1/2)*(x*x) + (1/2)*(y*y) + (1/2)*math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y))))) if ((a*a) + (b_e*b_e) - (x*x) - (y*y) <= 0) else ((-2*(a*a)*(b_e*b_e) + 2*(a*a)*(y*y) + 2*(b_e*b_e)*(x*x))/((a*a) + (b_e*b_e) - (x*x) - (y*y) + math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y)))))))
+
+
+def _math_ellipse_stress_w1_a(a, b_e, x, y):
+    """``ellipse_stress_w1_a`` for Python floats (the math module); raises where it does."""
+    return (1/2)*(x*x) + (1/2)*(y*y) + (1/2)*(a - b_e)*(a + b_e) + (1/2)*math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y))))
+
+
+def _math_ellipse_stress_w1_b(a, b_e, x, y):
+    """``ellipse_stress_w1_b`` for Python floats (the math module); raises where it does."""
+    return ((-1/2*(a*a) + (1/2)*(b_e*b_e) + (1/2)*(x*x) + (1/2)*(y*y) + (1/2)*math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y))))) if (-(a*a) + (b_e*b_e) + (x*x) + (y*y) >= 0) else (2*(y*y)*(a - b_e)*(a + b_e)/((a*a) - (b_e*b_e) - (x*x) - (y*y) + math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y)))))))
+
+
+def _math_fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
+    """``fit_cone_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*(max(0, -z_0 + z_p)*max(0, -z_0 + z_p))/(math.pi*math.tan(theta)) + F_0 + s_0*z_p
+
+
+def _math_fit_cone_force_dE(theta, z_p, z_0):
+    """``fit_cone_force_dE`` for Python floats (the math module); raises where it does."""
+    return 2*(max(0, -z_0 + z_p)*max(0, -z_0 + z_p))/(math.pi*math.tan(theta))
+
+
+def _math_fit_cone_force_dz0(E_star, theta, z_p, z_0):
+    """``fit_cone_force_dz0`` for Python floats (the math module); raises where it does."""
+    return -4*E_star*(((0) if (z_0 - z_p >= 0) else (1)))*max(0, -z_0 + z_p)/(math.pi*math.tan(theta))
+
+
+def _math_fit_hertz_force(E_star, R, z_p, z_0, F_0, s_0):
+    """``fit_hertz_force`` for Python floats (the math module); raises where it does."""
+    return (4/3)*E_star*math.sqrt(R)*math.pow(max(0, -z_0 + z_p), 3/2) + F_0 + s_0*z_p
+
+
+def _math_fit_hertz_force_dE(R, z_p, z_0):
+    """``fit_hertz_force_dE`` for Python floats (the math module); raises where it does."""
+    return (4/3)*math.sqrt(R)*math.pow(max(0, -z_0 + z_p), 3/2)
+
+
+def _math_fit_hertz_force_dz0(E_star, R, z_p, z_0):
+    """``fit_hertz_force_dz0`` for Python floats (the math module); raises where it does."""
+    return -2*E_star*math.sqrt(R)*(((0) if (z_0 - z_p >= 0) else (1)))*math.sqrt(max(0, -z_0 + z_p))
+
+
+def _math_fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):
+    """``fit_powerlaw_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*n*math.pow(max(0, -z_0 + z_p)/(c_n*kappa_n), 1/n)*max(0, -z_0 + z_p)/(n + 1) + F_0 + s_0*z_p
+
+
+def _math_fit_powerlaw_force_dE(c_n, kappa_n, n, z_p, z_0):
+    """``fit_powerlaw_force_dE`` for Python floats (the math module); raises where it does."""
+    return 2*n*math.pow(max(0, -z_0 + z_p)/(c_n*kappa_n), 1/n)*max(0, -z_0 + z_p)/(n + 1)
+
+
+def _math_fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0):
+    """``fit_powerlaw_force_dz0`` for Python floats (the math module); raises where it does."""
+    return -2*E_star*math.pow(max(0, -z_0 + z_p)/(c_n*kappa_n), 1/n)*(((0) if (z_0 - z_p >= 0) else (1)))
+
+
+def _math_fit_punch_force(E_star, a, z_p, z_0, F_0, s_0):
+    """``fit_punch_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a*max(0, -z_0 + z_p) + F_0 + s_0*z_p
+
+
+def _math_fit_punch_force_dE(a, z_p, z_0):
+    """``fit_punch_force_dE`` for Python floats (the math module); raises where it does."""
+    return 2*a*max(0, -z_0 + z_p)
+
+
+def _math_fit_punch_force_dz0(E_star, a, z_p, z_0):
+    """``fit_punch_force_dz0`` for Python floats (the math module); raises where it does."""
+    return -2*E_star*a*(((0) if (z_0 - z_p >= 0) else (1)))
+
+
+def _math_fit_sample_modulus(E_star, nu1, E2, nu2):
+    """``fit_sample_modulus`` for Python floats (the math module); raises where it does."""
+    return E2*E_star*(1 - (nu1*nu1))/(E2 + E_star*(nu2*nu2) - E_star)
+
+
+def _math_fit_sample_modulus_dE(E_star, nu1, E2, nu2):
+    """``fit_sample_modulus_dE`` for Python floats (the math module); raises where it does."""
+    return -(E2*E2)*(nu1*nu1)/((E2 + E_star*(nu2*nu2) - E_star)*(E2 + E_star*(nu2*nu2) - E_star)) + (E2*E2)/((E2 + E_star*(nu2*nu2) - E_star)*(E2 + E_star*(nu2*nu2) - E_star))
+
+
+def _math_fit_sample_modulus_rigid(E_star, nu):
+    """``fit_sample_modulus_rigid`` for Python floats (the math module); raises where it does."""
+    return E_star*(1 - (nu*nu))
+
+
+def _math_fit_sample_modulus_rigid_dE(nu):
+    """``fit_sample_modulus_rigid_dE`` for Python floats (the math module); raises where it does."""
+    return 1 - (nu*nu)
+
+
+def _math_textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+    """``textbook_fit_sphere_force`` for Python floats (the math module); raises where it does."""
+    return E_star*(R*R)*(lam*(math.tanh(lam)*math.tanh(lam)) + lam - math.tanh(lam)) + F_0 + s_0*z_p
+
+
+def _math_textbook_fit_sphere_force_dE(R, lam):
+    """``textbook_fit_sphere_force_dE`` for Python floats (the math module); raises where it does."""
+    return (R*R)*(lam*(math.tanh(lam)*math.tanh(lam)) + lam - math.tanh(lam))
+
+
+def _math_fit_sphere_force_dz0(E_star, R, lam):
+    """``fit_sphere_force_dz0`` for Python floats (the math module); raises where it does."""
+    return -2*E_star*R*math.tanh(lam)
+
+
+def _math_flamant_sigma_xx(F_L, x, z):
+    """``flamant_sigma_xx`` for Python floats (the math module); raises where it does."""
+    return -2*F_L*(x*x)*z/(math.pi*(((x*x) + (z*z))*((x*x) + (z*z))))
+
+
+def _math_flamant_sigma_zz(F_L, x, z):
+    """``flamant_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -2*F_L*z**3/(math.pi*(((x*x) + (z*z))*((x*x) + (z*z))))
+
+
+def _math_flamant_tau_xz(F_L, x, z):
+    """``flamant_tau_xz`` for Python floats (the math module); raises where it does."""
+    return -2*F_L*x*(z*z)/(math.pi*(((x*x) + (z*z))*((x*x) + (z*z))))
+
+
+def _math_flat_punch_tangential_traction(r, a, G_star, u_x):
+    """``flat_punch_tangential_traction`` for Python floats (the math module); raises where it does."""
+    return G_star*u_x/(math.pi*math.sqrt((a*a) - (r*r)))
+
+
+def _math_hertz_contact_radius(R, d):
+    """``hertz_contact_radius`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(R)*math.sqrt(d)
+
+
+def _math_hertz_contact_radius_from_force(E_star, F, R):
+    """``hertz_contact_radius_from_force`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(6, 1/3)*math.pow(F, 1/3)*math.pow(R, 1/3)/math.pow(E_star, 1/3)
+
+
+def _math_hertz_depth_from_force(E_star, F, R):
+    """``hertz_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pow(6, 2/3)*math.pow(F, 2/3)/(math.pow(E_star, 2/3)*math.pow(R, 1/3))
+
+
+def _math_hertz_displacement_inside(R, d, r):
+    """``hertz_displacement_inside`` for Python floats (the math module); raises where it does."""
+    return d - 1/2*(r*r)/R
+
+
+def _math_textbook_hertz_displacement_outside(R, d, r):
+    """``textbook_hertz_displacement_outside`` for Python floats (the math module); raises where it does."""
+    return (math.sqrt(R)*math.sqrt(d)*math.sqrt(-R*d + (r*r)) + 2*R*d*math.asin(math.sqrt(R)*math.sqrt(d)/r) - (r*r)*math.asin(math.sqrt(R)*math.sqrt(d)/r))/(math.pi*R)
+
+
+def _math_hertz_energy(E_star, R, d):
+    """``hertz_energy`` for Python floats (the math module); raises where it does."""
+    return (8/15)*E_star*math.sqrt(R)*math.pow(d, 5/2)
+
+
+def _math_hertz_force(E_star, R, d):
+    """``hertz_force`` for Python floats (the math module); raises where it does."""
+    return (4/3)*E_star*math.sqrt(R)*math.pow(d, 3/2)
+
+
+def _math_hertz_max_pressure(E_star, R, d):
+    """``hertz_max_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.sqrt(d)/(math.pi*math.sqrt(R))
+
+
+def _math_hertz_max_pressure_from_force(E_star, F, R):
+    """``hertz_max_pressure_from_force`` for Python floats (the math module); raises where it does."""
+    return math.pow(6, 1/3)*math.pow(E_star, 2/3)*math.pow(F, 1/3)/(math.pi*math.pow(R, 2/3))
+
+
+def _math_hertz_mean_pressure(E_star, R, d):
+    """``hertz_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return (4/3)*E_star*math.sqrt(d)/(math.pi*math.sqrt(R))
+
+
+def _math_hertz_pressure(E_star, R, d, r):
+    """``hertz_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.sqrt(d)*math.sqrt(max(0, 1 - (r*r)/(R*d)))/(math.pi*math.sqrt(R))
+
+
+def _math_hertz_pressure_displacement(E_star, a, p0, r):
+    """``hertz_pressure_displacement`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pi*p0*(2*(a*a) - (r*r))/(E_star*a)
+
+
+def _math_hertz_pressure_displacement_outside(E_star, a, p0, r):
+    """``hertz_pressure_displacement_outside`` for Python floats (the math module); raises where it does."""
+    return (1/2)*p0*(2*(a*a)*math.asin(a/r) + a*math.sqrt(-(a*a) + (r*r)) - (r*r)*math.asin(a/r))/(E_star*a)
+
+
+def _math_hertz_pressure_force(a, p0):
+    """``hertz_pressure_force`` for Python floats (the math module); raises where it does."""
+    return (2/3)*math.pi*(a*a)*p0
+
+
+def _math_hertz_stiffness(E_star, R, d):
+    """``hertz_stiffness`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.sqrt(R)*math.sqrt(d)
+
+
+def _math_impact_contact_time(E_star, R, m, v0):
+    """``impact_contact_time`` for Python floats (the math module); raises where it does."""
+    return (1/5)*math.pow(30, 2/5)*math.sqrt(math.pi)*math.pow(m, 2/5)*math.gamma(2/5)/(math.pow(E_star, 2/5)*math.pow(R, 1/5)*math.pow(v0, 1/5)*math.gamma(9/10))
+
+
+def _math_impact_contact_time_density(E_star, R, rho, v0):
+    """``impact_contact_time_density`` for Python floats (the math module); raises where it does."""
+    return (2/5)*math.pow(2, 1/5)*math.pow(5, 2/5)*math.pow(math.pi, 9/10)*R*math.pow(rho, 2/5)*math.gamma(2/5)/(math.pow(E_star, 2/5)*math.pow(v0, 1/5)*math.gamma(9/10))
+
+
+def _math_impact_max_contact_radius(E_star, R, m, v0):
+    """``impact_max_contact_radius`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(30, 1/5)*math.pow(R, 2/5)*math.pow(m, 1/5)*math.pow(v0, 2/5)/math.pow(E_star, 1/5)
+
+
+def _math_impact_max_contact_radius_density(E_star, R, rho, v0):
+    """``impact_max_contact_radius_density`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(2, 3/5)*math.pow(5, 1/5)*math.pow(math.pi, 1/5)*R*math.pow(rho, 1/5)*math.pow(v0, 2/5)/math.pow(E_star, 1/5)
+
+
+def _math_impact_max_depth(E_star, R, m, v0):
+    """``impact_max_depth`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pow(30, 2/5)*math.pow(m, 2/5)*math.pow(v0, 4/5)/(math.pow(E_star, 2/5)*math.pow(R, 1/5))
+
+
+def _math_impact_max_depth_density(E_star, R, rho, v0):
+    """``impact_max_depth_density`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(2, 1/5)*math.pow(5, 2/5)*math.pow(math.pi, 2/5)*R*math.pow(rho, 2/5)*math.pow(v0, 4/5)/math.pow(E_star, 2/5)
+
+
+def _math_impact_max_force(E_star, R, m, v0):
+    """``impact_max_force`` for Python floats (the math module); raises where it does."""
+    return (1/6)*math.pow(30, 3/5)*math.pow(E_star, 2/5)*math.pow(R, 1/5)*math.pow(m, 3/5)*math.pow(v0, 6/5)
+
+
+def _math_impact_max_force_density(E_star, R, rho, v0):
+    """``impact_max_force_density`` for Python floats (the math module); raises where it does."""
+    return (1/3)*math.pow(2, 4/5)*math.pow(5, 3/5)*math.pow(math.pi, 3/5)*math.pow(E_star, 2/5)*(R*R)*math.pow(rho, 3/5)*math.pow(v0, 6/5)
+
+
+def _math_impact_max_pressure(E_star, R, m, v0):
+    """``impact_max_pressure`` for Python floats (the math module); raises where it does."""
+    return math.pow(30, 1/5)*math.pow(E_star, 4/5)*math.pow(m, 1/5)*math.pow(v0, 2/5)/(math.pi*math.pow(R, 3/5))
+
+
+def _math_impact_max_pressure_density(E_star, rho, v0):
+    """``impact_max_pressure_density`` for Python floats (the math module); raises where it does."""
+    return math.pow(2, 3/5)*math.pow(5, 1/5)*math.pow(E_star, 4/5)*math.pow(rho, 1/5)*math.pow(v0, 2/5)/math.pow(math.pi, 4/5)
+
+
+def _math_impact_sphere_mass(R, rho):
+    """``impact_sphere_mass`` for Python floats (the math module); raises where it does."""
+    return (4/3)*math.pi*R**3*rho
+
+
+def _math_jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
+    """``jkr_contact_radius_from_force`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(math.sqrt(3)*math.sqrt(R)*math.sqrt(2*F_load + 3*math.pi*R*dgamma) + 3*math.sqrt(math.pi)*R*math.sqrt(dgamma), 2/3)/math.pow(E_star, 1/3)
+
+
+def _math_jkr_depth(E_star, R, a, dgamma):
+    """``jkr_depth`` for Python floats (the math module); raises where it does."""
+    return (a*a)/R - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)
+
+
+def _math_jkr_force_from_radius(E_star, R, a, dgamma):
+    """``jkr_force_from_radius`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma) + (4/3)*E_star*a**3/R
+
+
+def _math_jkr_pressure(E_star, R, a, dgamma, r):
+    """``jkr_pressure`` for Python floats (the math module); raises where it does."""
+    return -math.sqrt(2)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma)/(math.sqrt(math.pi)*math.sqrt(a - r)*math.sqrt(a + r)) + 2*E_star*math.sqrt(a - r)*math.sqrt(a + r)/(math.pi*R)
+
+
+def _math_textbook_jkr_pressure(E_star, R, a, dgamma, r):
+    """``textbook_jkr_pressure`` for Python floats (the math module); raises where it does."""
+    return (-math.sqrt(2)*math.pi*math.sqrt(E_star)*R*math.sqrt(a)*math.sqrt(dgamma) + 2*math.sqrt(math.pi)*E_star*((a*a) - (r*r)))/(math.pow(math.pi, 3/2)*R*math.sqrt((a*a) - (r*r)))
+
+
+def _math_jkr_pull_off_depth_dc(E_star, dgamma, R):
+    """``jkr_pull_off_depth_dc`` for Python floats (the math module); raises where it does."""
+    return -3/4*math.pow(math.pi, 2/3)*math.pow(R, 1/3)*math.pow(dgamma, 2/3)/math.pow(E_star, 2/3)
+
+
+def _math_jkr_pull_off_depth_fc(E_star, dgamma, R):
+    """``jkr_pull_off_depth_fc`` for Python floats (the math module); raises where it does."""
+    return -1/4*math.pow(3, 1/3)*math.pow(math.pi, 2/3)*math.pow(R, 1/3)*math.pow(dgamma, 2/3)/math.pow(E_star, 2/3)
+
+
+def _math_jkr_pull_off_force_dc(E_star, dgamma, R):
+    """``jkr_pull_off_force_dc`` for Python floats (the math module); raises where it does."""
+    return -5/6*math.pi*R*dgamma
+
+
+def _math_jkr_pull_off_force_fc(E_star, dgamma, R):
+    """``jkr_pull_off_force_fc`` for Python floats (the math module); raises where it does."""
+    return -3/2*math.pi*R*dgamma
+
+
+def _math_jkr_pull_off_radius_dc(E_star, dgamma, R):
+    """``jkr_pull_off_radius_dc`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(math.pi, 1/3)*math.pow(R, 2/3)*math.pow(dgamma, 1/3)/math.pow(E_star, 1/3)
+
+
+def _math_jkr_pull_off_radius_fc(E_star, dgamma, R):
+    """``jkr_pull_off_radius_fc`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(3, 2/3)*math.pow(math.pi, 1/3)*math.pow(R, 2/3)*math.pow(dgamma, 1/3)/math.pow(E_star, 1/3)
+
+
+def _math_jkr_zero_load_radius(E_star, dgamma, R):
+    """``jkr_zero_load_radius`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pow(6, 2/3)*math.pow(math.pi, 1/3)*math.pow(R, 2/3)*math.pow(dgamma, 1/3)/math.pow(E_star, 1/3)
+
+
+def _math_line_depth_from_force(E_star, F, L):
+    """``line_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return 4*F/(math.pi*E_star*L)
+
+
+def _math_line_force(E_star, L, d):
+    """``line_force`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pi*E_star*L*d
+
+
+def _math_line_force_per_length_from_half_width(E_star, R, a):
+    """``line_force_per_length_from_half_width`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pi*E_star*(a*a)/R
+
+
+def _math_line_half_width(R, d):
+    """``line_half_width`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(R)*math.sqrt(d)
+
+
+def _math_line_half_width_from_force(E_star, F, L, R):
+    """``line_half_width_from_force`` for Python floats (the math module); raises where it does."""
+    return 2*math.sqrt(F)*math.sqrt(R)/(math.sqrt(math.pi)*math.sqrt(E_star)*math.sqrt(L))
+
+
+def _math_line_max_pressure(E_star, R, d):
+    """``line_max_pressure`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*math.sqrt(d)/math.sqrt(R)
+
+
+def _math_line_max_pressure_depth_width(E_star, a, d):
+    """``line_max_pressure_depth_width`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*d/a
+
+
+def _math_line_max_pressure_from_force(E_star, F, L, R):
+    """``line_max_pressure_from_force`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(E_star)*math.sqrt(F)/(math.sqrt(math.pi)*math.sqrt(L)*math.sqrt(R))
+
+
+def _math_line_max_pressure_from_half_width(E_star, R, a):
+    """``line_max_pressure_from_half_width`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*a/R
+
+
+def _math_line_pressure(E_star, R, d, x):
+    """``line_pressure`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*math.sqrt(d)*math.sqrt(max(0, 1 - (x*x)/(R*d)))/math.sqrt(R)
+
+
+def _math_line_stiffness(E_star, L):
+    """``line_stiffness`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pi*E_star*L
+
+
+def _math_line_stress_axis_max_shear(a, p0, z):
+    """``line_stress_axis_max_shear`` for Python floats (the math module); raises where it does."""
+    return a*p0*z/(math.sqrt((a*a) + (z*z))*(z + math.sqrt((a*a) + (z*z))))
+
+
+def _math_line_stress_axis_max_shear_slope(a, p0, z):
+    """``line_stress_axis_max_shear_slope`` for Python floats (the math module); raises where it does."""
+    return -a*p0*(z*z)/(math.pow((a*a) + (z*z), 3/2)*(z + math.sqrt((a*a) + (z*z)))) + a*p0*z*(-z/math.sqrt((a*a) + (z*z)) - 1)/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + a*p0/(math.sqrt((a*a) + (z*z))*(z + math.sqrt((a*a) + (z*z))))
+
+
+def _math_line_stress_axis_sigma_xx(a, p0, z):
+    """``line_stress_axis_sigma_xx`` for Python floats (the math module); raises where it does."""
+    return -a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z)))))
+
+
+def _math_textbook_line_stress_axis_sigma_xx(a, p0, z):
+    """``textbook_line_stress_axis_sigma_xx`` for Python floats (the math module); raises where it does."""
+    return p0*(2*(a*a)*z - (a*a)*math.sqrt((a*a) + (z*z)) + 2*z**3 - 2*(z*z)*math.sqrt((a*a) + (z*z)))/(a*((a*a) + (z*z)))
+
+
+def _math_line_stress_axis_sigma_zz(a, p0, z):
+    """``line_stress_axis_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -a*p0/math.sqrt((a*a) + (z*z))
+
+
+def _math_line_stress_axis_von_mises(a, nu, p0, z):
+    """``line_stress_axis_von_mises`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(3*(a*a)*(p0*p0)*(z*z)/(((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + ((1 - 2*nu)*(1 - 2*nu))*((-1/2*a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - 1/2*a*p0/math.sqrt((a*a) + (z*z)))*(-1/2*a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - 1/2*a*p0/math.sqrt((a*a) + (z*z)))))
+
+
+def _math_textbook_line_stress_axis_von_mises(a, nu, p0, z):
+    """``textbook_line_stress_axis_von_mises`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(a**6*(p0*p0)/(((a*a) + (z*z))*(z + math.sqrt((a*a) + (z*z)))**4) - a**4*(p0*p0)/(((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + a**3*nu*p0*(-a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - a*p0/math.sqrt((a*a) + (z*z)))/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + (a*a)*(p0*p0)/((a*a) + (z*z)) + a*nu*p0*(-a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - a*p0/math.sqrt((a*a) + (z*z)))/math.sqrt((a*a) + (z*z)) + (nu*nu)*((-a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - a*p0/math.sqrt((a*a) + (z*z)))*(-a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - a*p0/math.sqrt((a*a) + (z*z)))))
+
+
+def _math_line_stress_axis_von_mises_slope(a, nu, p0, z):
+    """``line_stress_axis_von_mises_slope`` for Python floats (the math module); raises where it does."""
+    return (-3*(a*a)*(p0*p0)*z**3/((((a*a) + (z*z))*((a*a) + (z*z)))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + (3/2)*(a*a)*(p0*p0)*(z*z)*(-2*z/math.sqrt((a*a) + (z*z)) - 2)/(((a*a) + (z*z))*(z + math.sqrt((a*a) + (z*z)))**3) + 3*(a*a)*(p0*p0)*z/(((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + (1/2)*((1 - 2*nu)*(1 - 2*nu))*(-1/2*a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - 1/2*a*p0/math.sqrt((a*a) + (z*z)))*(a**3*p0*z/(math.pow((a*a) + (z*z), 3/2)*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - a**3*p0*(-2*z/math.sqrt((a*a) + (z*z)) - 2)/(math.sqrt((a*a) + (z*z))*(z + math.sqrt((a*a) + (z*z)))**3) + a*p0*z/math.pow((a*a) + (z*z), 3/2)))/math.sqrt(3*(a*a)*(p0*p0)*(z*z)/(((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) + ((1 - 2*nu)*(1 - 2*nu))*((-1/2*a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - 1/2*a*p0/math.sqrt((a*a) + (z*z)))*(-1/2*a**3*p0/(math.sqrt((a*a) + (z*z))*((z + math.sqrt((a*a) + (z*z)))*(z + math.sqrt((a*a) + (z*z))))) - 1/2*a*p0/math.sqrt((a*a) + (z*z)))))
+
+
+def _math_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """``line_stress_principal_max`` for Python floats (the math module); raises where it does."""
+    return (1/2)*sigma_xx + (1/2)*sigma_zz + math.sqrt((tau_xz*tau_xz) + (1/4)*((sigma_xx - sigma_zz)*(sigma_xx - sigma_zz)))
+
+
+def _math_textbook_line_stress_principal_max(sigma_xx, sigma_zz, tau_xz):
+    """``textbook_line_stress_principal_max`` for Python floats (the math module); raises where it does."""
+    return (1/2)*sigma_xx + (1/2)*sigma_zz + (1/2)*math.sqrt((sigma_xx*sigma_xx) - 2*sigma_xx*sigma_zz + (sigma_zz*sigma_zz) + 4*(tau_xz*tau_xz))
+
+
+def _math_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """``line_stress_principal_min`` for Python floats (the math module); raises where it does."""
+    return (1/2)*sigma_xx + (1/2)*sigma_zz - math.sqrt((tau_xz*tau_xz) + (1/4)*((sigma_xx - sigma_zz)*(sigma_xx - sigma_zz)))
+
+
+def _math_textbook_line_stress_principal_min(sigma_xx, sigma_zz, tau_xz):
+    """``textbook_line_stress_principal_min`` for Python floats (the math module); raises where it does."""
+    return (1/2)*sigma_xx + (1/2)*sigma_zz - 1/2*math.sqrt((sigma_xx*sigma_xx) - 2*sigma_xx*sigma_zz + (sigma_zz*sigma_zz) + 4*(tau_xz*tau_xz))
+
+
+def _math_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """``line_stress_principal_shear`` for Python floats (the math module); raises where it does."""
+    return math.sqrt((tau_xz*tau_xz) + (1/4)*((sigma_xx - sigma_zz)*(sigma_xx - sigma_zz)))
+
+
+def _math_textbook_line_stress_principal_shear(sigma_xx, sigma_zz, tau_xz):
+    """``textbook_line_stress_principal_shear`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt((sigma_xx*sigma_xx) - 2*sigma_xx*sigma_zz + (sigma_zz*sigma_zz) + 4*(tau_xz*tau_xz))
+
+
+def _math_line_stress_sigma_xx_core(a, p0, x, z):
+    """``line_stress_sigma_xx_core`` for Python floats (the math module); raises where it does."""
+    return -p0*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (a - x)*(a + x))*(2*(x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + ((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (a - x)*(a + x))*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/(z + math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))))/(a*(z + math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_sigma_xx_deep(a, p0, x, z):
+    """``line_stress_sigma_xx_deep`` for Python floats (the math module); raises where it does."""
+    return -2*a*p0*(z*z)*(2*(a*a)*(z*z)*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/((z + math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))) + 2*(x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))/((z + math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_sigma_xx_side(a, p0, x, z):
+    """``line_stress_sigma_xx_side`` for Python floats (the math module); raises where it does."""
+    return -2*a*p0*(z*z)*(2*(a*a)*x*z**3/((x*z/math.sqrt(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + z)*math.sqrt(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))) - (z*z) - (a - x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/((x*z/math.sqrt(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + z)*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) - 1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_sigma_yy(nu, sigma_xx, sigma_zz):
+    """``line_stress_sigma_yy`` for Python floats (the math module); raises where it does."""
+    return nu*(sigma_xx + sigma_zz)
+
+
+def _math_line_stress_sigma_zz_core(a, p0, x, z):
+    """``line_stress_sigma_zz_core`` for Python floats (the math module); raises where it does."""
+    return -p0*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (a - x)*(a + x))*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/(a*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_sigma_zz_deep(a, p0, x, z):
+    """``line_stress_sigma_zz_deep`` for Python floats (the math module); raises where it does."""
+    return -2*a*p0*(z*z)*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/(((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_sigma_zz_side(a, p0, x, z):
+    """``line_stress_sigma_zz_side`` for Python floats (the math module); raises where it does."""
+    return -2*a*p0*x*z**3/(math.sqrt(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) - 1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_1_core(a, p0, x, z):
+    """``line_stress_tau_1_core`` for Python floats (the math module); raises where it does."""
+    return p0*math.sqrt((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (z*z))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (a - x)*(a + x))/(a*(z + math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))*math.sqrt((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_1_deep(a, p0, x, z):
+    """``line_stress_tau_1_deep`` for Python floats (the math module); raises where it does."""
+    return 2*a*p0*(z*z)*math.sqrt((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (z*z))/((z + math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*math.sqrt((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_1_side(a, p0, x, z):
+    """``line_stress_tau_1_side`` for Python floats (the math module); raises where it does."""
+    return 2*a*p0*(z*z)*math.sqrt((1/2)*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/((x*z/math.sqrt(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + z)*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*math.sqrt((x*x)*(z*z)/(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) - 1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_xz_core(a, p0, x, z):
+    """``line_stress_tau_xz_core`` for Python floats (the math module); raises where it does."""
+    return -p0*x*z*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (a - x)*(a + x))/(a*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_xz_deep(a, p0, x, z):
+    """``line_stress_tau_xz_deep`` for Python floats (the math module); raises where it does."""
+    return -2*a*p0*x*z**3/(math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_xz_side(a, p0, x, z):
+    """``line_stress_tau_xz_side`` for Python floats (the math module); raises where it does."""
+    return -2*a*p0*(z*z)*math.sqrt(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/(((z*z) + (-a + x)*(a + x) + math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/(-1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) - 1/2*(z*z) - 1/2*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))
+
+
+def _math_line_stress_tau_xz_slope_x(a, p0, x, z):
+    """``line_stress_tau_xz_slope_x`` for Python floats (the math module); raises where it does."""
+    return -a*p0*z*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*(-3*(x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))**3
+
+
+def _math_line_stress_tau_xz_slope_z(a, p0, x, z):
+    """``line_stress_tau_xz_slope_z`` for Python floats (the math module); raises where it does."""
+    return (math.pi*a*p0*x*(z*z)*(-(x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (3/2)*(z*z) + (3/2)*(a - x)*(a + x) + (3/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))/(math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))**3) - math.pi*p0*(-x*(z*z)/math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + x*math.sqrt((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))))/(a*((x*x)*(z*z)/((1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x))))) + (1/2)*(z*z) + (1/2)*(a - x)*(a + x) + (1/2)*math.sqrt(4*(x*x)*(z*z) + (((z*z) + (a - x)*(a + x))*((z*z) + (a - x)*(a + x)))))))/math.pi
+
+
+def _math_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """``line_stress_von_mises`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(3*(tau_xz*tau_xz) + ((1 - 2*nu)*(1 - 2*nu))*(((1/2)*sigma_xx + (1/2)*sigma_zz)*((1/2)*sigma_xx + (1/2)*sigma_zz)) + (3/4)*((sigma_xx - sigma_zz)*(sigma_xx - sigma_zz)))
+
+
+def _math_textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
+    """``textbook_line_stress_von_mises`` for Python floats (the math module); raises where it does."""
+    return math.sqrt((nu*nu)*((sigma_xx + sigma_zz)*(sigma_xx + sigma_zz)) - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + (sigma_xx*sigma_xx) - sigma_xx*sigma_zz + (sigma_zz*sigma_zz) + 3*(tau_xz*tau_xz))
+
+
+def _math_line_stress_von_mises_c_tau(nu, c_mean, tau_1):
+    """``line_stress_von_mises_c_tau`` for Python floats (the math module); raises where it does."""
+    return math.sqrt((c_mean*c_mean)*((1 - 2*nu)*(1 - 2*nu)) + 3*(tau_1*tau_1))
+
+
+def _math_masing_unloading_force(F_amp, F_half):
+    """``masing_unloading_force`` for Python floats (the math module); raises where it does."""
+    return F_amp - 2*F_half
+
+
+def _math_mdr_force(E_star, a, d, g_integral):
+    """``mdr_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*(a*d - g_integral)
+
+
+def _math_mdr_kink_g(b, slope_jump, x):
+    """``mdr_kink_g`` for Python floats (the math module); raises where it does."""
+    return 2*b*slope_jump*math.asinh((1/2)*math.sqrt(2)*math.sqrt(-b + x)/math.sqrt(b))
+
+
+def _math_textbook_mdr_kink_g(b, slope_jump, x):
+    """``textbook_mdr_kink_g`` for Python floats (the math module); raises where it does."""
+    return 2*b*slope_jump*math.acosh((1/2)*math.sqrt(2)*math.sqrt(b + x)/math.sqrt(b))
+
+
+def _math_mdr_kink_gprime(b, slope_jump, x):
+    """``mdr_kink_gprime`` for Python floats (the math module); raises where it does."""
+    return b*slope_jump/(math.sqrt(-b + x)*math.sqrt(b + x))
+
+
+def _math_mdr_stiffness(E_star, a):
+    """``mdr_stiffness`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a
+
+
+def _math_mindlin_energy(a, F, G_star, mu_f, F_amp):
+    """``mindlin_energy`` for Python floats (the math module); raises where it does."""
+    return -1/5*(3*(F*F)*(mu_f*mu_f)*math.exp((2/3)*math.log1p(-F_amp/(F*mu_f))) + 9*(F*F)*(mu_f*mu_f)*math.exp((1/3)*math.log1p(-F_amp/(F*mu_f))) + 3*(F*F)*(mu_f*mu_f))*math.expm1((1/3)*math.log1p(-F_amp/(F*mu_f)))**3/(G_star*a)
+
+
+def _math_textbook_mindlin_energy(a, F, G_star, mu_f, F_amp):
+    """``textbook_mindlin_energy`` for Python floats (the math module); raises where it does."""
+    return (3/5)*(-6*math.pow(F, 4/3)*math.pow(mu_f, 4/3)*math.pow(F*mu_f - F_amp, 2/3) + math.pow(F, 1/3)*F_amp*math.pow(mu_f, 1/3)*math.pow(F*mu_f - F_amp, 2/3) + 6*(F*F)*(mu_f*mu_f) - 5*F*F_amp*mu_f)/(G_star*a)
+
+
+def _math_mindlin_energy_small(a, F, G_star, mu_f, F_amp):
+    """``mindlin_energy_small`` for Python floats (the math module); raises where it does."""
+    return (1/9)*F_amp**3/(F*G_star*a*mu_f)
+
+
+def _math_powerlaw_contact_radius(c_n, d, kappa_n, n):
+    """``powerlaw_contact_radius`` for Python floats (the math module); raises where it does."""
+    return math.pow(d/(c_n*kappa_n), 1/n)
+
+
+def _math_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """``powerlaw_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return math.pow(c_n*kappa_n, 1/(n + 1))*math.pow((1/2)*F*(n + 1)/(E_star*n), n/(n + 1))
+
+
+def _math_textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
+    """``textbook_powerlaw_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return math.pow((1/2)*F*math.pow(c_n*kappa_n, 1/n)*(n + 1)/(E_star*n), n/(n + 1))
+
+
+def _math_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """``powerlaw_displacement_outside_integrand`` for Python floats (the math module); raises where it does."""
+    return -2*d*math.expm1(n*math.log1p(-2*(math.sin((1/2)*w_out)*math.sin((1/2)*w_out)) - math.sqrt(-a + r)*math.sqrt(a + r)*math.sin(w_out)/a))/math.pi
+
+
+def _math_textbook_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
+    """``textbook_powerlaw_displacement_outside_integrand`` for Python floats (the math module); raises where it does."""
+    return (-2*d*math.pow(-r*math.sin(w_out - math.asin(a/r))/a, n) + 2*d)/math.pi
+
+
+def _math_powerlaw_force(E_star, c_n, d, kappa_n, n):
+    """``powerlaw_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d*n*math.pow(d/(c_n*kappa_n), 1/n)/(n + 1)
+
+
+def _math_powerlaw_force_from_radius(E_star, a, d, n):
+    """``powerlaw_force_from_radius`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a*d*n/(n + 1)
+
+
+def _math_powerlaw_g(c_n, kappa_n, n, x):
+    """``powerlaw_g`` for Python floats (the math module); raises where it does."""
+    return c_n*kappa_n*math.pow(x, n)
+
+
+def _math_powerlaw_kappa(n):
+    """``powerlaw_kappa`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(math.pi)*math.gamma((1/2)*n + 1)/math.gamma((1/2)*n + 1/2)
+
+
+def _math_powerlaw_kappa_asymptotic(n):
+    """``powerlaw_kappa_asymptotic`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(n)*math.exp(2*math.pow(n, -1.0)*(4*math.pow(n, -2.0)*(4*math.pow(n, -2.0)*(4*math.pow(n, -2.0)*((31/4608)*math.pow(n, -2.0) - 17/14336) + 1/640) - 1/192) + 1/8))
+
+
+def _math_powerlaw_mean_pressure(E_star, a, d, n):
+    """``powerlaw_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d*n/(math.pi*a*(n + 1))
+
+
+def _math_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """``powerlaw_mean_pressure_from_depth`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d*n*math.pow(c_n*kappa_n/d, 1/n)/(math.pi*(n + 1))
+
+
+def _math_textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
+    """``textbook_powerlaw_mean_pressure_from_depth`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d*n*math.pow(c_n*kappa_n/d, 1/n)/(math.pi*(n + 1))
+
+
+def _math_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
+    """``powerlaw_pressure_integrand`` for Python floats (the math module); raises where it does."""
+    return E_star*d*n*math.sqrt(a - r)*math.sqrt(a + r)*math.exp(((1/2)*n - 1)*math.log1p(-w_quad*(2 - w_quad)*(a - r)*(a + r)/(a*a)))/(math.pi*(a*a))
+
+
+def _math_textbook_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
+    """``textbook_powerlaw_pressure_integrand`` for Python floats (the math module); raises where it does."""
+    return E_star*math.pow(a, -n)*d*n*math.sqrt((a*a) - (r*r))*math.pow((r*r) + ((1 - w_quad)*(1 - w_quad))*((a*a) - (r*r)), (1/2)*n - 1)/math.pi
+
+
+def _math_powerlaw_pressure_n1(E_star, a, d, r):
+    """``powerlaw_pressure_n1`` for Python floats (the math module); raises where it does."""
+    return E_star*d*math.log((a + math.sqrt((a*a) - (r*r)))/r)/(math.pi*a)
+
+
+def _math_powerlaw_pressure_n2(E_star, a, d, r):
+    """``powerlaw_pressure_n2`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d*math.sqrt((a*a) - (r*r))/(math.pi*(a*a))
+
+
+def _math_powerlaw_pressure_n3(E_star, a, d, r):
+    """``powerlaw_pressure_n3`` for Python floats (the math module); raises where it does."""
+    return (3/2)*E_star*d*(a*math.sqrt((a*a) - (r*r)) - (r*r)*math.log(r) + (r*r)*math.log(a + math.sqrt((a*a) - (r*r))))/(math.pi*a**3)
+
+
+def _math_powerlaw_pressure_n4(E_star, a, d, r):
+    """``powerlaw_pressure_n4`` for Python floats (the math module); raises where it does."""
+    return (4/3)*E_star*d*math.sqrt((a*a) - (r*r))*((a*a) + 2*(r*r))/(math.pi*a**4)
+
+
+def _math_powerlaw_punch_displacement_outside(a, d, r):
+    """``powerlaw_punch_displacement_outside`` for Python floats (the math module); raises where it does."""
+    return 2*d*math.asin(a/r)/math.pi
+
+
+def _math_powerlaw_punch_force(E_star, a, d):
+    """``powerlaw_punch_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a*d
+
+
+def _math_powerlaw_punch_pressure(E_star, a, d, r):
+    """``powerlaw_punch_pressure`` for Python floats (the math module); raises where it does."""
+    return E_star*d/(math.pi*math.sqrt((a*a) - (r*r)))
+
+
+def _math_punch_depth_from_force(E_star, F, a):
+    """``punch_depth_from_force`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F/(E_star*a)
+
+
+def _math_punch_pressure_displacement(E_star, a, p0):
+    """``punch_pressure_displacement`` for Python floats (the math module); raises where it does."""
+    return math.pi*a*p0/E_star
+
+
+def _math_punch_pressure_displacement_outside(E_star, a, p0, r):
+    """``punch_pressure_displacement_outside`` for Python floats (the math module); raises where it does."""
+    return 2*a*p0*math.asin(a/r)/E_star
+
+
+def _math_punch_pressure_force(a, p0):
+    """``punch_pressure_force`` for Python floats (the math module); raises where it does."""
+    return 2*math.pi*(a*a)*p0
+
+
+def _math_punch_stiffness(E_star, a):
+    """``punch_stiffness`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a
+
+
+def _math_shear_modulus(E, nu):
+    """``shear_modulus`` for Python floats (the math module); raises where it does."""
+    return E/(2*nu + 2)
+
+
+def _math_sphere_depth(R, a):
+    """``sphere_depth`` for Python floats (the math module); raises where it does."""
+    return (1/2)*a*math.log1p(2*a/(R - a))
+
+
+def _math_textbook_sphere_depth(R, a):
+    """``textbook_sphere_depth`` for Python floats (the math module); raises where it does."""
+    return a*math.atanh(a/R)
+
+
+def _math_textbook_sphere_force_from_radius(E_star, R, a):
+    """``textbook_sphere_force_from_radius`` for Python floats (the math module); raises where it does."""
+    return E_star*((R*R)*math.atanh(a/R) - R*a + (a*a)*math.atanh(a/R))
+
+
+def _math_sphere_g(R, x):
+    """``sphere_g`` for Python floats (the math module); raises where it does."""
+    return (1/2)*x*math.log1p(2*x/(R - x))
+
+
+def _math_textbook_sphere_g(R, x):
+    """``textbook_sphere_g`` for Python floats (the math module); raises where it does."""
+    return x*math.atanh(x/R)
+
+
+def _math_sphere_lam_contact_radius(R, lam):
+    """``sphere_lam_contact_radius`` for Python floats (the math module); raises where it does."""
+    return R*math.tanh(lam)
+
+
+def _math_sphere_lam_depth(R, lam):
+    """``sphere_lam_depth`` for Python floats (the math module); raises where it does."""
+    return R*lam*math.tanh(lam)
+
+
+def _math_textbook_sphere_lam_force(E_star, R, lam):
+    """``textbook_sphere_lam_force`` for Python floats (the math module); raises where it does."""
+    return E_star*(R*R)*(lam*(math.tanh(lam)*math.tanh(lam)) + lam - math.tanh(lam))
+
+
+def _math_sphere_lam_pressure_pole(E_star, R, lam, r):
+    """``sphere_lam_pressure_pole`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*R*math.log1p(2*math.sqrt(R*math.tanh(lam) - r)*math.sqrt(R*math.tanh(lam) + r)*(math.sqrt(R - r)*math.sqrt(R + r) + math.sqrt(R*math.tanh(lam) - r)*math.sqrt(R*math.tanh(lam) + r))*(math.cosh(lam)*math.cosh(lam))/(R*R))/(math.pi*math.sqrt(R - r)*math.sqrt(R + r))
+
+
+def _math_textbook_sphere_lam_pressure_pole(E_star, R, lam, r):
+    """``textbook_sphere_lam_pressure_pole`` for Python floats (the math module); raises where it does."""
+    return E_star*R*math.atanh(math.sqrt((R*R)*(math.tanh(lam)*math.tanh(lam)) - (r*r))/math.sqrt((R*R) - (r*r)))/(math.pi*math.sqrt((R*R) - (r*r)))
+
+
+def _math_sphere_pressure_atanh_kernel(E_star, R, x):
+    """``sphere_pressure_atanh_kernel`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*math.log1p(2*x/(R - x))/(math.pi*x)
+
+
+def _math_textbook_sphere_pressure_atanh_kernel(E_star, R, x):
+    """``textbook_sphere_pressure_atanh_kernel`` for Python floats (the math module); raises where it does."""
+    return E_star*math.atanh(x/R)/(math.pi*x)
+
+
+def _math_sphere_profile(R, r):
+    """``sphere_profile`` for Python floats (the math module); raises where it does."""
+    return (r*r)/(R + math.sqrt(R - r)*math.sqrt(R + r))
+
+
+def _math_textbook_sphere_profile(R, r):
+    """``textbook_sphere_profile`` for Python floats (the math module); raises where it does."""
+    return R - math.sqrt((R*R) - (r*r))
+
+
+def _math_sphere_stiffness(E_star, a):
+    """``sphere_stiffness`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a
+
+
+def _math_stress_axis_max_shear(a, nu, p0, z):
+    """``stress_axis_max_shear`` for Python floats (the math module); raises where it does."""
+    return (1/4)*p0*(3*a**3 - 2*a*((a*a) + (z*z))*(nu + 1) + 2*z*((a*a) + (z*z))*(nu + 1)*math.atan(a/z))/(a*((a*a) + (z*z)))
+
+
+def _math_stress_axis_max_shear_bracket(a, nu):
+    """``stress_axis_max_shear_bracket`` for Python floats (the math module); raises where it does."""
+    return math.pi*a*(nu + 1)/(8*nu + 20)
+
+
+def _math_stress_axis_max_shear_slope(a, nu, p0, z):
+    """``stress_axis_max_shear_slope`` for Python floats (the math module); raises where it does."""
+    return -1/2*p0*z*(3*a**3 - 2*a*((a*a) + (z*z))*(nu + 1) + 2*z*((a*a) + (z*z))*(nu + 1)*math.atan(a/z))/(a*(((a*a) + (z*z))*((a*a) + (z*z)))) + (1/4)*p0*(-4*a*z*(nu + 1) - 2*a*((a*a) + (z*z))*(nu + 1)/(z*((a*a)/(z*z) + 1)) + 4*(z*z)*(nu + 1)*math.atan(a/z) + 2*((a*a) + (z*z))*(nu + 1)*math.atan(a/z))/(a*((a*a) + (z*z)))
+
+
+def _math_stress_axis_sigma_xx(a, nu, p0, z):
+    """``stress_axis_sigma_xx`` for Python floats (the math module); raises where it does."""
+    return (1/2)*p0*(a**3 - 2*a*((a*a) + (z*z))*(nu + 1) + 2*z*((a*a) + (z*z))*(nu + 1)*math.atan(a/z))/(a*((a*a) + (z*z)))
+
+
+def _math_textbook_stress_axis_sigma_xx_deep(a, nu, p0, z):
+    """``textbook_stress_axis_sigma_xx_deep`` for Python floats (the math module); raises where it does."""
+    return (1/2)*p0*(a**3 - 2*a*((a*a) + (z*z))*(nu + 1) + 2*z*((a*a) + (z*z))*(nu + 1)*math.atan(a/z))/(a*((a*a) + (z*z)))
+
+
+def _math_stress_axis_sigma_zz(a, p0, z):
+    """``stress_axis_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -(a*a)*p0/((a*a) + (z*z))
+
+
+def _math_textbook_stress_axis_sigma_zz(a, p0, z):
+    """``textbook_stress_axis_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -(a*a)*p0/((a*a) + (z*z))
+
+
+def _math_stress_hertz_max_orthogonal_shear(p0):
+    """``stress_hertz_max_orthogonal_shear`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt(2)*p0*math.pow(5 - math.sqrt(17), 3/2)/math.sqrt(-5 + 3*math.sqrt(17))
+
+
+def _math_textbook_stress_hertz_max_orthogonal_shear(p0):
+    """``textbook_stress_hertz_max_orthogonal_shear`` for Python floats (the math module); raises where it does."""
+    return (1/32)*p0*math.sqrt(1 + math.sqrt(17))*(-7*math.sqrt(34) + 31*math.sqrt(2))
+
+
+def _math_stress_hertz_max_orthogonal_shear_r(a):
+    """``stress_hertz_max_orthogonal_shear_r`` for Python floats (the math module); raises where it does."""
+    return a*math.sqrt(7/4 - 1/4*math.sqrt(17))
+
+
+def _math_stress_hertz_max_orthogonal_shear_z(a):
+    """``stress_hertz_max_orthogonal_shear_z`` for Python floats (the math module); raises where it does."""
+    return a/math.sqrt(4 + math.sqrt(17))
+
+
+def _math_textbook_stress_hertz_max_orthogonal_shear_z(a):
+    """``textbook_stress_hertz_max_orthogonal_shear_z`` for Python floats (the math module); raises where it does."""
+    return a*math.sqrt(-4 + math.sqrt(17))
+
+
+def _math_stress_hertz_sigma_rr(nu, p0, xi, eta, chi):
+    """``stress_hertz_sigma_rr`` for Python floats (the math module); raises where it does."""
+    return p0*(-(chi*chi)*eta*(xi*xi)/(((eta*eta) + (xi*xi))*((xi*xi) + 1)) - eta*(nu + 1)*(-xi*(-math.atan(xi) + (1/2)*math.pi) + 1 - (1/3)/((xi*xi) + 1)) + (1 - 2*nu)/((3*eta + 3)*((xi*xi) + 1)))
+
+
+def _math_textbook_stress_hertz_sigma_rr_far(nu, p0, xi, eta, chi):
+    """``textbook_stress_hertz_sigma_rr_far`` for Python floats (the math module); raises where it does."""
+    return p0*(-(chi*chi)*eta*(xi*xi)/(((eta*eta) + (xi*xi))*((xi*xi) + 1)) - eta*(nu + 1)*(-xi*math.atan(1/xi) + 1 - (1/3)/((xi*xi) + 1)) + (1 - 2*nu)/((3*eta + 3)*((xi*xi) + 1)))
+
+
+def _math_stress_hertz_sigma_tt(nu, p0, xi, eta):
+    """``stress_hertz_sigma_tt`` for Python floats (the math module); raises where it does."""
+    return p0*(-eta*(nu + 1)*(-xi*(-math.atan(xi) + (1/2)*math.pi) + 1 - (1/3)/((xi*xi) + 1)) + (1 - 2*nu)*((eta*eta) + eta - 1)/((3*eta + 3)*((xi*xi) + 1)))
+
+
+def _math_textbook_stress_hertz_sigma_tt_far(nu, p0, xi, eta):
+    """``textbook_stress_hertz_sigma_tt_far`` for Python floats (the math module); raises where it does."""
+    return p0*(-eta*(nu + 1)*(-xi*math.atan(1/xi) + 1 - (1/3)/((xi*xi) + 1)) + (1 - 2*nu)*((eta*eta) + eta - 1)/((3*eta + 3)*((xi*xi) + 1)))
+
+
+def _math_stress_hertz_sigma_zz(p0, xi, eta):
+    """``stress_hertz_sigma_zz`` for Python floats (the math module); raises where it does."""
+    return -eta**3*p0/((eta*eta) + (xi*xi))
+
+
+def _math_stress_hertz_tau_rz(p0, xi, eta, chi):
+    """``stress_hertz_tau_rz`` for Python floats (the math module); raises where it does."""
+    return -chi*(eta*eta)*p0*xi/(((eta*eta) + (xi*xi))*math.sqrt((xi*xi) + 1))
+
+
+def _math_stress_spheroidal_cos_beta_inside(a, r, z):
+    """``stress_spheroidal_cos_beta_inside`` for Python floats (the math module); raises where it does."""
+    return math.sqrt(-1/2*(z*z) - 1/2*(-a + r)*(a + r) + (1/2)*math.sqrt(4*(a*a)*(z*z) + (((z*z) + (-a + r)*(a + r))*((z*z) + (-a + r)*(a + r)))))/a
+
+
+def _math_stress_spheroidal_u(a, r, z):
+    """``stress_spheroidal_u`` for Python floats (the math module); raises where it does."""
+    return (1/2)*(z*z) + (1/2)*(-a + r)*(a + r) + (1/2)*math.sqrt(4*(a*a)*(z*z) + (((z*z) + (-a + r)*(a + r))*((z*z) + (-a + r)*(a + r))))
+
+
+def _math_textbook_stress_spheroidal_u(a, r, z):
+    """``textbook_stress_spheroidal_u`` for Python floats (the math module); raises where it does."""
+    return -1/2*(a*a) + (1/2)*(r*r) + (1/2)*(z*z) + (1/2)*math.sqrt(a**4 - 2*(a*a)*(r*r) + 2*(a*a)*(z*z) + r**4 + 2*(r*r)*(z*z) + z**4)
+
+
+def _math_stress_spheroidal_u_inside(a, r, z):
+    """``stress_spheroidal_u_inside`` for Python floats (the math module); raises where it does."""
+    return 2*(a*a)*(z*z)/(-(z*z) - (-a + r)*(a + r) + math.sqrt(4*(a*a)*(z*z) + (((z*z) + (-a + r)*(a + r))*((z*z) + (-a + r)*(a + r)))))
+
+
+def _math_textbook_stress_spheroidal_u_inside(a, r, z):
+    """``textbook_stress_spheroidal_u_inside`` for Python floats (the math module); raises where it does."""
+    return -1/2*(a*a) + (1/2)*(r*r) + (1/2)*(z*z) + (1/2)*math.sqrt(a**4 - 2*(a*a)*(r*r) + 2*(a*a)*(z*z) + r**4 + 2*(r*r)*(z*z) + z**4)
+
+
+def _math_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """``stress_von_mises`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.sqrt(2)*math.sqrt(6*(tau_xy*tau_xy) + 6*(tau_xz*tau_xz) + 6*(tau_yz*tau_yz) + ((sigma_xx - sigma_yy)*(sigma_xx - sigma_yy)) + ((sigma_xx - sigma_zz)*(sigma_xx - sigma_zz)) + ((-sigma_yy + sigma_zz)*(-sigma_yy + sigma_zz)))
+
+
+def _math_textbook_stress_von_mises(sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_yz, tau_xz):
+    """``textbook_stress_von_mises`` for Python floats (the math module); raises where it does."""
+    return math.sqrt((sigma_xx*sigma_xx) - sigma_xx*sigma_yy - sigma_xx*sigma_zz + (sigma_yy*sigma_yy) - sigma_yy*sigma_zz + (sigma_zz*sigma_zz) + 3*(tau_xy*tau_xy) + 3*(tau_xz*tau_xz) + 3*(tau_yz*tau_yz))
+
+
+def _math_strip_mean_pressure(F, L, a):
+    """``strip_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F/(L*a)
+
+
+def _math_tangential_cone_displacement(a, F, G_star, mu_f, F_x):
+    """``tangential_cone_displacement`` for Python floats (the math module); raises where it does."""
+    return F_x/(G_star*a*(math.sqrt(1 - F_x/(F*mu_f)) + 1))
+
+
+def _math_textbook_tangential_cone_displacement(a, F, G_star, mu_f, F_x):
+    """``textbook_tangential_cone_displacement`` for Python floats (the math module); raises where it does."""
+    return (-math.sqrt(F)*math.sqrt(mu_f)*math.sqrt(F*mu_f - F_x) + F*mu_f)/(G_star*a)
+
+
+def _math_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
+    """``tangential_cone_energy`` for Python floats (the math module); raises where it does."""
+    return (4/3)*F_amp**3/(F*G_star*a*mu_f*(math.sqrt(1 - F_amp/(F*mu_f)) + 1)**3)
+
+
+def _math_textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
+    """``textbook_tangential_cone_energy`` for Python floats (the math module); raises where it does."""
+    return (4/3)*math.sqrt(F)*math.sqrt(mu_f)*(math.sqrt(F)*math.sqrt(mu_f) - math.sqrt(F*mu_f - F_amp))**3/(G_star*a)
+
+
+def _math_tangential_cone_force(a, theta, E_star, G_star, mu_f, u_x):
+    """``tangential_cone_force`` for Python floats (the math module); raises where it does."""
+    return 2*G_star*u_x*(math.pi*E_star*a*mu_f - G_star*u_x/math.tan(theta))/(math.pi*E_star*mu_f)
+
+
+def _math_tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
+    """``tangential_cone_stick_radius`` for Python floats (the math module); raises where it does."""
+    return a - 2*G_star*u_x/(math.pi*E_star*mu_f*math.tan(theta))
+
+
+def _math_tangential_modulus(G1, nu1, G2, nu2):
+    """``tangential_modulus`` for Python floats (the math module); raises where it does."""
+    return 1/((1/4)*(2 - nu2)/G2 + (1/4)*(2 - nu1)/G1)
+
+
+def _math_textbook_tangential_modulus(G1, nu1, G2, nu2):
+    """``textbook_tangential_modulus`` for Python floats (the math module); raises where it does."""
+    return -4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))
+
+
+def _math_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
+    """``tangential_powerlaw_displacement`` for Python floats (the math module); raises where it does."""
+    return -1/2*F*mu_f*(n + 1)*math.expm1(n*math.log1p(-F_x/(F*mu_f))/(n + 1))/(G_star*a*n)
+
+
+def _math_textbook_tangential_powerlaw_displacement(a, n, F, G_star, mu_f, F_x):
+    """``textbook_tangential_powerlaw_displacement`` for Python floats (the math module); raises where it does."""
+    return (1/2)*F*mu_f*(1 - math.pow(1 - F_x/(F*mu_f), n/(n + 1)))*(n + 1)/(G_star*a*n)
+
+
+def _math_tangential_powerlaw_energy(a, n, F, G_star, mu_f, c_a):
+    """``tangential_powerlaw_energy`` for Python floats (the math module); raises where it does."""
+    return 2*(F*F)*(mu_f*mu_f)*(-2*math.pow(c_a, n)*(n*n) - 3*math.pow(c_a, n)*n - math.pow(c_a, n) + 2*math.pow(c_a, n + 1)*(n*n) + 3*math.pow(c_a, n + 1)*n + math.pow(c_a, n + 1) - math.pow(c_a, 2*n + 1)*n - math.pow(c_a, 2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))
+
+
+def _math_tangential_powerlaw_energy_density(n, d_c, s_x):
+    """``tangential_powerlaw_energy_density`` for Python floats (the math module); raises where it does."""
+    return -math.pow(1 - d_c, n)*math.expm1(n*math.log1p(-d_c*(1 - s_x)))*math.expm1(n*math.log1p(d_c*s_x/(1 - d_c)))
+
+
+def _math_tangential_powerlaw_energy_scale(a, n, F, G_star, mu_f):
+    """``tangential_powerlaw_energy_scale`` for Python floats (the math module); raises where it does."""
+    return 2*(F*F)*(mu_f*mu_f)*((n + 1)*(n + 1))/(G_star*a*(n*n))
+
+
+def _math_tangential_powerlaw_energy_small(a, n, F, G_star, mu_f, F_amp):
+    """``tangential_powerlaw_energy_small`` for Python floats (the math module); raises where it does."""
+    return (1/3)*F_amp**3/(F*G_star*a*mu_f*(n + 1))
+
+
+def _math_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """``tangential_powerlaw_force`` for Python floats (the math module); raises where it does."""
+    return -2*E_star*math.pow(a, n + 1)*c_n*kappa_n*mu_f*n*math.expm1((n + 1)*math.log1p(-G_star*math.pow(a, -n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)/(n + 1)
+
+
+def _math_textbook_tangential_powerlaw_force(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """``textbook_tangential_powerlaw_force`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.pow(a, n + 1)*c_n*kappa_n*mu_f*n*(1 - math.pow(1 - G_star*math.pow(a, -n)*u_x/(E_star*c_n*kappa_n*mu_f), (n + 1)/n))/(n + 1)
+
+
+def _math_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
+    """``tangential_powerlaw_stick_deficit`` for Python floats (the math module); raises where it does."""
+    return -math.expm1(math.log1p(-F_amp/(F*mu_f))/(n + 1))
+
+
+def _math_textbook_tangential_powerlaw_stick_deficit(n, F, mu_f, F_amp):
+    """``textbook_tangential_powerlaw_stick_deficit`` for Python floats (the math module); raises where it does."""
+    return 1 - math.pow(1 - F_amp/(F*mu_f), 1/(n + 1))
+
+
+def _math_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """``tangential_powerlaw_stick_radius`` for Python floats (the math module); raises where it does."""
+    return a*math.exp(math.log1p(-G_star*math.pow(a, -n)*u_x/(E_star*c_n*kappa_n*mu_f))/n)
+
+
+def _math_textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, G_star, mu_f, u_x):
+    """``textbook_tangential_powerlaw_stick_radius`` for Python floats (the math module); raises where it does."""
+    return a*math.pow(1 - G_star*math.pow(a, -n)*u_x/(E_star*c_n*kappa_n*mu_f), 1/n)
+
+
+def _math_tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
+    """``tangential_powerlaw_stick_radius_from_force`` for Python floats (the math module); raises where it does."""
+    return a*math.pow(1 - F_x/(F*mu_f), 1/(n + 1))
+
+
+def _math_tangential_stiffness(G_star, a):
+    """``tangential_stiffness`` for Python floats (the math module); raises where it does."""
+    return 2*G_star*a
+
+
+def _math_tangential_stiffness_ratio(nu):
+    """``tangential_stiffness_ratio`` for Python floats (the math module); raises where it does."""
+    return 2*(nu - 1)/(nu - 2)
+
+
+def _math_uniform_pressure_displacement_centre(E_star, a, p0):
+    """``uniform_pressure_displacement_centre`` for Python floats (the math module); raises where it does."""
+    return 2*a*p0/E_star
+
+
+def _math_uniform_pressure_displacement_edge(E_star, a, p0):
+    """``uniform_pressure_displacement_edge`` for Python floats (the math module); raises where it does."""
+    return 4*a*p0/(math.pi*E_star)
+
+
+def _math_uniform_pressure_force(a, p0):
+    """``uniform_pressure_force`` for Python floats (the math module); raises where it does."""
+    return math.pi*(a*a)*p0
+
+
+def _math_worn_contact_radius(R, b, d):
+    """``worn_contact_radius`` for Python floats (the math module); raises where it does."""
+    return math.sqrt((1/2)*(b*b) + (1/2)*math.sqrt(4*(R*R)*(d*d) + b**4))
+
+
+def _math_worn_depth(R, a, b):
+    """``worn_depth`` for Python floats (the math module); raises where it does."""
+    return a*math.sqrt((a*a) - (b*b))/R
+
+
+def _math_worn_displacement_inside(R, b, d, r):
+    """``worn_displacement_inside`` for Python floats (the math module); raises where it does."""
+    return d - 1/2*max(0, (-b + r)*(b + r))/R
+
+
+def _math_textbook_worn_displacement_outside(R, a, b, r):
+    """``textbook_worn_displacement_outside`` for Python floats (the math module); raises where it does."""
+    return (2*a*math.sqrt((a*a) - (b*b))*math.asin(a/r) - (b - r)*(b + r)*(math.sqrt((-(a*a) + (b*b))/((b*b) - (r*r)))*math.sqrt((-(a*a) + (r*r))/(-(b*b) + (r*r))) - math.asin(math.sqrt((-(a*a) + (b*b))/((b*b) - (r*r))))))/(math.pi*R)
+
+
+def _math_worn_force(E_star, R, b, d):
+    """``worn_force`` for Python floats (the math module); raises where it does."""
+    return (2/3)*math.sqrt(2)*E_star*b*d*(math.sqrt(4*(R*R)*(d*d)/b**4 + 1) + 2)/math.sqrt(math.sqrt(4*(R*R)*(d*d)/b**4 + 1) + 1)
+
+
+def _math_textbook_worn_force(E_star, R, b, d):
+    """``textbook_worn_force`` for Python floats (the math module); raises where it does."""
+    return (1/3)*E_star*math.sqrt(-2*(b*b) + 2*math.sqrt(4*(R*R)*(d*d) + b**4))*(2*(b*b) + math.sqrt(4*(R*R)*(d*d) + b**4))/R
+
+
+def _math_worn_force_from_radius(E_star, R, a, b):
+    """``worn_force_from_radius`` for Python floats (the math module); raises where it does."""
+    return (2/3)*E_star*math.sqrt(a - b)*math.sqrt(a + b)*(2*(a*a) + (b*b))/R
+
+
+def _math_worn_g(R, b, x):
+    """``worn_g`` for Python floats (the math module); raises where it does."""
+    return x*math.sqrt(max(0, (-b + x)*(b + x)))/R
+
+
+def _math_worn_profile(R, b, r):
+    """``worn_profile`` for Python floats (the math module); raises where it does."""
+    return (1/2)*max(0, (-b + r)*(b + r))/R

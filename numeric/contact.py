@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import nonnegative, positive, result
+from hertzmdr.numeric._validate import nonnegative, positive, result, scalar_path
 
 __all__ = ["mean_pressure", "mean_pressure_disc", "mean_pressure_strip", "stiffness",
            "punch_force", "punch_depth_from_force"]
@@ -80,6 +80,7 @@ def mean_pressure_strip(F, a, L):
     return result(np.where(empty, 0.0, gen.strip_mean_pressure(F, L, a)))
 
 
+@scalar_path
 def stiffness(a, E_star):
     """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a,
     (5.12), Problem 5 (dF/dd of (5.57) with d = g(a)).
@@ -94,6 +95,7 @@ def stiffness(a, E_star):
     return result(gen.mdr_stiffness(positive("E_star", E_star), nonnegative("a", a)))
 
 
+@scalar_path
 def punch_force(d, a, E_star):
     """Normal force F = 2 E* a d [N] of a flat rigid punch of radius a at depth d, (5.11).
 
@@ -110,6 +112,7 @@ def punch_force(d, a, E_star):
                                            nonnegative("d", d)))
 
 
+@scalar_path
 def punch_depth_from_force(F, a, E_star):
     """Indentation depth d = F/(2 E* a) [m] of a flat rigid punch under the force F, (5.11).
 

@@ -208,19 +208,50 @@ def surface_displacement(r, d, R):
     R : float or array_like
         Effective radius [m], R > 0.
     """
-    r, d, R = np.broadcast_arrays(nonnegative("r", r), positive("d", d), positive("R", R))
+    r, d, R = nonnegative("r", r), positive("d", d), positive("R", R)
+    shape = np.broadcast_shapes(r.shape, d.shape, R.shape)
+    r = np.broadcast_to(r, shape).ravel()
+    d, R = (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in (d, R))
     # in or out on the same rounded a = sqrt(R) sqrt(d) as the outside form's asin(a/r), so
     # that a/r <= 1 there (r*r <= R*d disagreed with it at r = nextafter(a, 0): NaN)
     # u is homogeneous of degree 1 in (r, d, R): lengths in units of s ~ r, an even power of
     # 2 (exact, square roots too), so that the outside form's R d/r^2 never squares a huge r;
-    # outside only where both its asin(sqrt(R d)/r) and its 2F1(..., R d/r^2) see < 1
-    inside = np.array(r <= gen.hertz_contact_radius(R, d))  # (5.21)
-    o = np.flatnonzero(~inside)
-    s = pow2_scale(r.flat[o])  # s > a/4 there: (R/s)(d/s) <= 16
-    rs, ds, Rs = r.flat[o] / s, d.flat[o] / s, R.flat[o] / s
+    # outside only where both its asin(sqrt(R d)/r) and its 2F1(..., R d/r^2) see < 1.
+    # Speed (issue 18): where r, d and R all lie in [2^-250, 2^250] nothing can over- or
+    # underflow and s = 1 gives the same bits: only the other points are scaled; d and R stay
+    # scalars when they are
+    a = gen.hertz_contact_radius(R, d)  # (5.21)
+    o = np.flatnonzero(r > a)
+    ro, do, Ro = r[o], _take(d, o), _take(R, o)
+    lo, hi = 2.0**-250, 2.0**250
+    plain = (ro > lo) & (ro < hi)
+    if np.ndim(do) or not lo < do < hi:
+        plain &= (do > lo) & (do < hi)
+    if np.ndim(Ro) or not lo < Ro < hi:
+        plain &= (Ro > lo) & (Ro < hi)
+    s = np.ones(ro.shape)
+    k = np.flatnonzero(~plain)
+    s[k] = pow2_scale(ro[k])  # s > a/4 there: (R/s)(d/s) <= 16
+    if k.size:
+        rs, ds, Rs = ro / s, do / s, Ro / s
+    else:
+        rs, ds, Rs = ro, do, Ro
     far = Rs * ds < rs * rs
-    inside.flat[o[~far]] = True
     out = np.empty(r.shape)
-    out[inside] = gen.hertz_displacement_inside(R[inside], d[inside], r[inside])
-    out.flat[o[far]] = s[far] * gen.hertz_displacement_outside(Rs[far], ds[far], rs[far])
-    return result(out)
+    inside = np.ones(r.shape, dtype=bool)
+    inside[o[far]] = False
+    i = np.flatnonzero(inside)
+    out[i] = gen.hertz_displacement_inside(_take(R, i), _take(d, i), r[i])  # (5.18)
+    f = np.flatnonzero(far)
+    out[o[f]] = _times(s, f, gen.hertz_displacement_outside(_take(Rs, f), _take(ds, f), rs[f]))
+    return result(out.reshape(shape))
+
+
+def _take(v, idx):
+    """v at the flat indices idx, or v itself when it is a scalar."""
+    return v if np.ndim(v) == 0 else v[idx]
+
+
+def _times(s, f, u):
+    """s[f] * u, skipping the product where every s is 1 (it is exact either way)."""
+    return u if s.size == 0 or (s[f] == 1.0).all() else s[f] * u

@@ -13,7 +13,7 @@ The differential stiffness of Problem 5 is :func:`hertzmdr.numeric.hertz.stiffne
 from __future__ import annotations
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import positive, result
+from hertzmdr.numeric._validate import positive, result, scalar_path
 
 __all__ = ["max_depth", "contact_time", "max_pressure", "max_force", "max_contact_radius",
            "sphere_mass"]
@@ -89,6 +89,7 @@ def max_contact_radius(v0, R, E_star, *, m=None, rho=None):
                      E_star, m, rho)
 
 
+@scalar_path
 def sphere_mass(R, rho):
     """Mass m = (4/3) pi R^3 rho [kg] of a solid sphere (Problem 4).
 

@@ -13,7 +13,14 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import as_float, nonnegative, positive, representable, result
+from hertzmdr.numeric._validate import (
+    as_float,
+    nonnegative,
+    positive,
+    representable,
+    result,
+    scalar_path,
+)
 
 __all__ = ["half_width", "force", "depth_from_force", "half_width_from_force",
            "max_pressure", "max_pressure_from_force", "pressure", "stiffness"]
@@ -166,6 +173,7 @@ def pressure(x, d, R, E_star):
                            0.0))  # (5.36)
 
 
+@scalar_path
 def stiffness(L, E_star):
     """Differential stiffness dF/dd = (pi/4) E* L [N/m] of a line contact, (5.34) differentiated
     (d in the sense of (5.35)); it does not depend on the load.

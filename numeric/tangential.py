@@ -35,7 +35,7 @@ import numpy as np
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import cone as _cone
 from hertzmdr.numeric import powerlaw as _powerlaw
-from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result
+from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result, scalar_path
 
 __all__ = ["effective_modulus", "shear_modulus", "stiffness_ratio", "stiffness",
            "Paraboloid", "Cone", "PowerLaw", "FlatPunch", "PROFILES", "Contact",
@@ -50,6 +50,7 @@ GAUSS_NODES = 24
 ENERGY_QUADRATURE_BELOW = 0.25
 
 
+@scalar_path
 def shear_modulus(E, nu):
     """Shear modulus G = E/(2 (1 + nu)) [Pa] (Lame's mu).
 
@@ -85,12 +86,14 @@ def effective_modulus(G1, nu1, G2, nu2):
     return result(gen.tangential_modulus(G1, poisson("nu1", nu1), G2, poisson("nu2", nu2)))
 
 
+@scalar_path
 def stiffness_ratio(nu):
     """G*/E* = 2 (1 - nu)/(2 - nu) [1]: tangential over normal stiffness of one elastic body
     (Poisson's ratio nu) on a rigid one."""
     return result(gen.tangential_stiffness_ratio(poisson("nu", nu)))
 
 
+@scalar_path
 def stiffness(a, G_star):
     """Tangential contact stiffness k_x = 2 G* a [N/m] before any slip.
 
