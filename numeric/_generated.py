@@ -150,6 +150,7 @@ __all__ = [
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
     'fit_sample_modulus_rigid_dE',
+    'fit_sphere_depth_dlam',
     'fit_sphere_force',
     'fit_sphere_force_dE',
     'fit_sphere_force_dz0',
@@ -471,6 +472,7 @@ RELATIONS = (
     ('fit_sample_modulus_dE', '(5.26), inverted', 'fit', '-E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2', ''),
     ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
     ('fit_sample_modulus_rigid_dE', '(5.8), inverted', 'fit', '1 - nu**2', ''),
+    ('fit_sphere_depth_dlam', '(5.55)', 'fit', 'R*(lam/cosh(lam)**2 + tanh(lam))', ''),
     ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*R**2*(lam*tanh(lam)**2 + lam - tanh(lam)) + F_0 + s_0*z_p', ''),
     ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'R**2*(lam*tanh(lam)**2 + lam - tanh(lam))', ''),
     ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*R*tanh(lam)', ''),
@@ -4048,6 +4050,24 @@ def fit_sample_modulus_rigid_dE(nu):
         Poisson's ratio [1]
     """
     return 1 - nu**2
+
+
+def fit_sphere_depth_dlam(R, lam):
+    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the slope of Newton's iteration for lam at a given depth.
+
+    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*(lam/numpy.cosh(lam)**2 + numpy.tanh(lam))
 
 
 def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):

@@ -150,6 +150,7 @@ __all__ = [
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
     'fit_sample_modulus_rigid_dE',
+    'fit_sphere_depth_dlam',
     'fit_sphere_force',
     'fit_sphere_force_dE',
     'fit_sphere_force_dz0',
@@ -3660,6 +3661,24 @@ def fit_sample_modulus_rigid_dE(nu):
         Poisson's ratio [1]
     """
     return 1 - nu**2
+
+
+def fit_sphere_depth_dlam(R, lam):
+    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the slope of Newton's iteration for lam at a given depth.
+
+    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*(lam/mpmath.cosh(lam)**2 + mpmath.tanh(lam))
 
 
 def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):

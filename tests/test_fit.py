@@ -29,8 +29,9 @@ from hertzmdr.numeric.fit import (
     Paraboloid,
     PowerLaw,
     fit_curve,
+    lam_from_depth,
 )
-from tests.oracle import FULL, n_points
+from tests.oracle import n_points
 
 DPS = 30
 E_TRUE = 2.0e6  # Pa: a soft sample, as in AFM on cells and gels
@@ -119,9 +120,26 @@ def test_jacobian_by_mpmath_derivative(name):
             ref_E = mp.diff(lambda e, zm=zm: _mp_model(name, e, z0, zm), E)
             ref_z = mp.diff(lambda c, zm=zm: _mp_model(name, E, c, zm), z0)
             # 1e-12: the force laws' relative error (1e-13, test above) amplified by the
-            # cancellation d = z - z0 and, for the sphere, by its 53-step bisection for lam
+            # cancellation d = z - z0 and, for the sphere, by the ulp of its Newton root lam
             assert abs(mp.mpf(a) - ref_E) <= 1e-12 * abs(ref_E), (name, zi, a, ref_E)
             assert abs(mp.mpf(b) - ref_z) <= 1e-12 * abs(ref_z), (name, zi, b, ref_z)
+
+
+def test_sphere_lam_by_newton():
+    """lam of R lam tanh(lam) = d by Newton's method against mpmath.findroot at 30 digits,
+    over eleven decades of d/R (log-uniform; a/R = 0.99995 at d/R = 100), with d = 0 and
+    negative depths giving 0."""
+    R = 5e-6
+    delta = np.r_[0.0, -1.0, np.logspace(-9, 2, 45)]
+    lam = lam_from_depth(delta * R, R)
+    assert lam[0] == 0 and lam[1] == 0
+    with mp.workdps(DPS):
+        for dl, got in zip(delta[2:], lam[2:], strict=True):
+            ref = mp.findroot(lambda v, dl=dl: v * mp.tanh(v) - mp.mpf(dl),
+                              mp.sqrt(mp.mpf(dl)) if dl < 1 else mp.mpf(dl))
+            # 4 ulp: lam is the root to one ulp of a function evaluated to a few ulp (the
+            # root's condition number, d/(lam dd/dlam), is between 1/2 and 1)
+            assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, got, ref)
 
 
 def test_punch_jacobian_jumps_at_contact():
@@ -202,8 +220,6 @@ def test_coverage_of_standard_errors(name):
     Noise 2 % of the largest force: the linearised covariance is then accurate (the curvature
     of the model over one standard error is small).
     """
-    if name == "exact_sphere" and not FULL:
-        pytest.skip("17 s per 100 curves (the sphere's bisection for lam): HERTZMDR_SWEEP=full")
     m = n_points(1000, 100)
     noise = 2e-2 * float(TIPS[name][1](TIPS[name][2]))
     frac = _coverage(name, m, noise)
