@@ -103,6 +103,9 @@ class _Tip(ABC):
         """The tip in words, with its geometry in SI units."""
 
 
+_EPS = float(np.finfo(float).eps)
+
+
 def lam_from_depth(d, R):
     """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
     (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
@@ -127,7 +130,7 @@ def lam_from_depth(d, R):
         with np.errstate(over="ignore"):  # cosh(lam)^2 overflows beyond lam = 355: dd/dlam
             new = lam - f / gen.fit_sphere_depth_dlam(R, lam)  # is then R tanh(lam) exactly
         new = np.where((new >= lo) & (new <= hi), new, 0.5 * (lo + hi))
-        done = np.abs(new - lam) <= 2 * np.finfo(float).eps * new
+        done = np.abs(new - lam) <= 2 * _EPS * new
         lam = new
         if done.all():
             break
@@ -176,12 +179,20 @@ class ExactSphere(_Tip):
     def force(self, E_star, z, z0, F0, s0):
         return gen.fit_sphere_force(E_star, self.R, self._lam(z, z0), z, F0, s0)
 
+    def _dE(self, lam):
+        """dF/dE* at lam, evaluated at the points in contact only (0 elsewhere): its 2F1 form
+        is the costly part of the sphere's model."""
+        out = np.zeros(lam.shape)
+        touch = lam > 0
+        out[touch] = gen.fit_sphere_force_dE(self.R, lam[touch])
+        return out
+
     def derivatives(self, E_star, z, z0):
         lam = self._lam(z, z0)
-        return (gen.fit_sphere_force_dE(self.R, lam), gen.fit_sphere_force_dz0(E_star, self.R, lam))
+        return self._dE(lam), gen.fit_sphere_force_dz0(E_star, self.R, lam)
 
     def basis(self, z, z0):
-        return gen.fit_sphere_force_dE(self.R, self._lam(z, z0))
+        return self._dE(self._lam(z, z0))
 
     def ratios(self, d_max):
         lam = lam_from_depth(np.float64(d_max), self.R)
