@@ -107,6 +107,32 @@ def sphere_model() -> dict[str, sp.Expr]:
     return {"F": model, "F_stable": stable, "dE": dE, "dz0": dz0, "d_dlam": d_dlam}
 
 
+alpha_p = symbol("alpha_p", positive=True)
+n_sides = symbol("n_sides", positive=True)
+
+
+@cache
+def pyramid_cone() -> sp.Expr:
+    """theta [rad] of the cone with the cross-section area of a regular pyramid at every depth.
+
+    A regular pyramid of n faces and half-angle alpha_p (axis to a face's mid-line) cut at the
+    depth d below its apex is a regular n-gon of apothem d tan(alpha_p), area
+    n (d tan(alpha_p))^2 tan(pi/n); the cone f = r tan(theta) (5.38) has the disc of radius
+    d/tan(theta), area pi (d/tan(theta))^2. Equal areas at every depth give cot(theta). The
+    pyramid is not axisymmetric: the cone's force (5.40) at this theta is an approximation of the
+    pyramid's, not the chapter's result (docs/fitting.md).
+    """
+    cot = sp.Symbol("cot_theta", positive=True)
+    depth = symbol("d")
+    area_ngon = n_sides * (depth * sp.tan(alpha_p)) ** 2 * sp.tan(sp.pi / n_sides)
+    roots = sp.solve(sp.Eq(sp.pi * (depth * cot) ** 2, area_ngon), cot)
+    # two roots +-: SymPy cannot tell tan(alpha_p) > 0 (alpha_p < pi/2); keep the positive one
+    root = max(roots, key=lambda e: e.subs({alpha_p: sp.Rational(1, 2), n_sides: 4}))
+    if len(roots) != 2 or sp.simplify(roots[0] + roots[1]) != 0:
+        raise AssertionError(f"the pyramid's equal-area cone: unexpected roots {roots}")
+    return sp.atan(1 / root)
+
+
 @cache
 def sample_modulus() -> dict[str, sp.Expr]:
     """The sample's Young's modulus E1 from the fitted E* (5.26), under a rigid or elastic tip."""
@@ -142,6 +168,12 @@ def relations() -> list[Relation]:
                  "derivative dE1/dE* [1] of the sample's modulus under an elastic tip",
                  "(5.26) solved for E1, differentiated in E*", f"{TEST}::test_sample_modulus"),
     ]
+    rels.append(Relation(
+        "fit_pyramid_cone_angle", "(5.38), equal area", pyramid_cone(), (alpha_p, n_sides),
+        "angle theta [rad] between the surface and the plane of the cone with the cross-section "
+        "area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the "
+        "pyramid's equivalent cone", "pi (d cot(theta))^2 = n (d tan(alpha_p))^2 tan(pi/n)",
+        f"{TEST}::test_pyramid_cone_by_polygon_area"))
     base = (z_p, z_0, F_0, s_0)
     for name, (_, geom, eq) in tip_forces().items():
         m = models()[name]

@@ -146,6 +146,7 @@ __all__ = [
     'fit_punch_force',
     'fit_punch_force_dE',
     'fit_punch_force_dz0',
+    'fit_pyramid_cone_angle',
     'fit_sample_modulus',
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
@@ -468,6 +469,7 @@ RELATIONS = (
     ('fit_punch_force', 'Problem 7(a), fit model', 'fit', '2*E_star*a*Max(0, -z_0 + z_p) + F_0 + s_0*z_p', ''),
     ('fit_punch_force_dE', 'Problem 7(a), fit model', 'fit', '2*a*Max(0, -z_0 + z_p)', ''),
     ('fit_punch_force_dz0', 'Problem 7(a), fit model', 'fit', '-2*E_star*a*Heaviside(-z_0 + z_p, 0)', ''),
+    ('fit_pyramid_cone_angle', '(5.38), equal area', 'fit', 'atan(sqrt(pi)/(sqrt(n_sides)*tan(alpha_p)*sqrt(tan(pi/n_sides))))', ''),
     ('fit_sample_modulus', '(5.26), inverted', 'fit', 'E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)', ''),
     ('fit_sample_modulus_dE', '(5.26), inverted', 'fit', '-E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2', ''),
     ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
@@ -3972,6 +3974,25 @@ def fit_punch_force_dz0(E_star, a, z_p, z_0):
         contact point: the position z_p where the tip first touches the sample [m]
     """
     return -2*E_star*a*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
+
+
+def fit_pyramid_cone_angle(alpha_p, n_sides):
+    """Angle theta [rad] between the surface and the plane of the cone with the cross-section area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the pyramid's equivalent cone.
+
+    Chapter: (5.38), equal area. Derived from: pi (d cot(theta))^2 = n (d tan(alpha_p))^2
+    tan(pi/n).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_pyramid_cone_by_polygon_area``.
+
+    Parameters
+    ----------
+    alpha_p : float or ndarray
+        half-angle of a regular pyramid: between its axis and the mid-line of a face [rad]
+    n_sides : float or ndarray
+        number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
+    """
+    return numpy.arctan(numpy.sqrt(numpy.pi)/(numpy.sqrt(n_sides)*numpy.tan(alpha_p)*numpy.sqrt(numpy.tan(numpy.pi/n_sides))))
 
 
 def fit_sample_modulus(E_star, nu1, E2, nu2):

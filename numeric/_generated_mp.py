@@ -146,6 +146,7 @@ __all__ = [
     'fit_punch_force',
     'fit_punch_force_dE',
     'fit_punch_force_dz0',
+    'fit_pyramid_cone_angle',
     'fit_sample_modulus',
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
@@ -3583,6 +3584,25 @@ def fit_punch_force_dz0(E_star, a, z_p, z_0):
         contact point: the position z_p where the tip first touches the sample [m]
     """
     return -2*E_star*a*(((0) if (z_0 - z_p >= 0) else (1)))
+
+
+def fit_pyramid_cone_angle(alpha_p, n_sides):
+    """Angle theta [rad] between the surface and the plane of the cone with the cross-section area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the pyramid's equivalent cone.
+
+    Chapter: (5.38), equal area. Derived from: pi (d cot(theta))^2 = n (d tan(alpha_p))^2
+    tan(pi/n).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_pyramid_cone_by_polygon_area``.
+
+    Parameters
+    ----------
+    alpha_p : mpmath.mpf
+        half-angle of a regular pyramid: between its axis and the mid-line of a face [rad]
+    n_sides : mpmath.mpf
+        number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
+    """
+    return mpmath.atan(mpmath.sqrt(mpmath.pi)/(mpmath.sqrt(n_sides)*mpmath.tan(alpha_p)*mpmath.sqrt(mpmath.tan(mpmath.pi/n_sides))))
 
 
 def fit_sample_modulus(E_star, nu1, E2, nu2):

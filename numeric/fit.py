@@ -19,9 +19,9 @@ of (J^T J)^-1 s^2 at the solution, s^2 = sum(r^2)/(N - 4) the residual variance 
 residuals when ``sigma`` is given): the linearised covariance, which is what the coverage test
 of tests/test_fit.py checks against the nominal 68 % per standard error.
 
-Not yet (issue 17): sampled tips through the numerical MDR, the pyramid as its equivalent
-cone, adhesion, batches and force maps, a comparison with nanite, speed figures
-(docs/fitting.md).
+A regular pyramid is fitted as its equal-area cone (:class:`Pyramid`). Batches and force maps:
+:mod:`hertzmdr.numeric.fit_batch`. Not yet (issue 17): sampled tips through the numerical MDR,
+adhesion (docs/fitting.md).
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from hertzmdr.numeric._validate import as_float, between, poisson, positive
 from hertzmdr.numeric.powerlaw import kappa
 from hertzmdr.numeric.scene.assumptions import check as check_assumptions
 
-__all__ = ["Paraboloid", "ExactSphere", "Cone", "FlatPunch", "PowerLaw", "FitResult",
+__all__ = ["Paraboloid", "ExactSphere", "Cone", "Pyramid", "FlatPunch", "PowerLaw", "FitResult",
            "NoContactError", "fit_curve", "PARAMETERS"]
 
 #: names of the fitted parameters, in the order of :attr:`FitResult.values`
@@ -226,6 +226,46 @@ class Cone(_Tip):
 
     def describe(self):
         return f"cone, theta = {self.theta:.6g} rad"
+
+
+@dataclass(frozen=True)
+class Pyramid(_Tip):
+    """Regular pyramid of ``sides`` faces and half-angle alpha [rad] (between its axis and the
+    mid-line of a face), fitted as its **equivalent cone**: the cone of the same cross-section
+    area at every depth, theta = ``fit_pyramid_cone_angle(alpha, sides)``, with the cone's
+    force (5.40). A pyramid is not axisymmetric: this is an approximation of its force, not the
+    chapter's result (docs/fitting.md says what it neglects). sides >= 3 (an integer),
+    0 < alpha < pi/2.
+    """
+
+    alpha: float
+    sides: int = 4
+    cone: Cone = field(init=False, repr=False)
+
+    def __post_init__(self):
+        alpha = float(between("alpha", self.alpha, 0.0, np.pi / 2))
+        if not (isinstance(self.sides, int | np.integer) and self.sides >= 3):
+            raise ValueError(f"sides = {self.sides!r} is out of range; valid: an integer >= 3")
+        object.__setattr__(self, "alpha", alpha)
+        object.__setattr__(self, "sides", int(self.sides))
+        theta = float(gen.fit_pyramid_cone_angle(alpha, float(self.sides)))  # equal area
+        object.__setattr__(self, "cone", Cone(theta=theta))
+
+    def force(self, E_star, z, z0, F0, s0):
+        return self.cone.force(E_star, z, z0, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        return self.cone.derivatives(E_star, z, z0)
+
+    def basis(self, z, z0):
+        return self.cone.basis(z, z0)
+
+    def ratios(self, d_max):
+        return self.cone.ratios(d_max)
+
+    def describe(self):
+        return (f"{self.sides}-sided pyramid, alpha = {self.alpha:.6g} rad, as its equal-area "
+                f"cone theta = {self.cone.theta:.6g} rad")
 
 
 @dataclass(frozen=True)
@@ -491,7 +531,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
         the cantilever's deflection subtracted.
     F : array_like
         Force on the tip [N], positive in compression, one per position.
-    tip : Paraboloid, ExactSphere, Cone, FlatPunch or PowerLaw
+    tip : Paraboloid, ExactSphere, Cone, Pyramid, FlatPunch or PowerLaw
         The tip's shape.
     nu : float, optional
         Poisson's ratio of the sample, -1 < nu <= 0.5: when given, the sample's Young's modulus
@@ -519,7 +559,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     """
     if not isinstance(tip, _Tip):
         raise ValueError(f"tip = {tip!r} is not a tip; valid: Paraboloid, ExactSphere, Cone, "
-                         "FlatPunch or PowerLaw of hertzmdr.numeric.fit")
+                         "Pyramid, FlatPunch or PowerLaw of hertzmdr.numeric.fit")
     z, F, w = _curve(z, F, sigma)
     if z0 is not None:
         z0 = float(as_float("z0", z0))

@@ -28,6 +28,7 @@ from hertzmdr.numeric.fit import (
     NoContactError,
     Paraboloid,
     PowerLaw,
+    Pyramid,
     fit_curve,
     lam_from_depth,
 )
@@ -140,6 +141,39 @@ def test_sphere_lam_by_newton():
             # 4 ulp: lam is the root to one ulp of a function evaluated to a few ulp (the
             # root's condition number, d/(lam dd/dlam), is between 1/2 and 1)
             assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, got, ref)
+
+
+@pytest.mark.parametrize("sides", [3, 4, 6])
+def test_pyramid_cone_by_polygon_area(sides):
+    """The equivalent cone's cross-section (a disc of radius d/tan(theta)) has the area of the
+    pyramid's, the regular polygon of apothem d tan(alpha) by the shoelace formula over its
+    vertices at 30 digits (not the closed-form polygon area the derivation used)."""
+    alpha = 0.6
+    theta = Pyramid(alpha=alpha, sides=sides).cone.theta
+    with mp.workdps(DPS):
+        d = mp.mpf("1e-6")
+        rho = d * mp.tan(mp.mpf(alpha)) / mp.cos(mp.pi / sides)  # circumradius
+        pts = [(rho * mp.cos(2 * mp.pi * k / sides), rho * mp.sin(2 * mp.pi * k / sides))
+               for k in range(sides)]
+        area = abs(mp.fsum(pts[k][0] * pts[(k + 1) % sides][1] - pts[(k + 1) % sides][0]
+                           * pts[k][1] for k in range(sides))) / 2
+        cone_area = mp.pi * (d / mp.tan(mp.mpf(theta))) ** 2
+        # 1e-14: theta is a float64 (the area goes as cot(theta)^2: a few ulp of theta)
+        assert abs(cone_area / area - 1) <= 1e-14, (sides, cone_area, area)
+
+
+def test_pyramid_fits_as_its_cone():
+    """A curve of the equivalent cone's force is the pyramid's model: E* back to 1e-10."""
+    tip = Pyramid(alpha=np.radians(35.0), sides=4)
+    z = Z0_TRUE + np.linspace(-3e-7, 3e-7, 300)
+    F = cone.force(np.maximum(z - Z0_TRUE, 0), tip.cone.theta, E_TRUE) + F0_TRUE
+    fit = fit_curve(z, F, tip)
+    assert abs(fit.E_star / E_TRUE - 1) <= 1e-10, fit.E_star  # as test_noise_free_recovery
+    assert "4-sided pyramid" in tip.describe()
+    with pytest.raises(ValueError, match="sides = 2 is out of range"):
+        Pyramid(alpha=0.5, sides=2)
+    with pytest.raises(ValueError, match="alpha = 2.0 is out of range"):
+        Pyramid(alpha=2.0)
 
 
 def test_punch_jacobian_jumps_at_contact():
