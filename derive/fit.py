@@ -173,7 +173,9 @@ def relations() -> list[Relation]:
         "angle theta [rad] between the surface and the plane of the cone with the cross-section "
         "area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the "
         "pyramid's equivalent cone", "pi (d cot(theta))^2 = n (d tan(alpha_p))^2 tan(pi/n)",
-        f"{TEST}::test_pyramid_cone_by_polygon_area"))
+        f"{TEST}::test_pyramid_cone_by_polygon_area",
+        # 0 < alpha_p < pi/2 and n_sides >= 3, as t_a, t_n in (0, 1)
+        domain={alpha_p: sp.pi / 2 * unit_interval("t_a"), n_sides: 3 / unit_interval("t_n")}))
     base = (z_p, z_0, F_0, s_0)
     for name, (_, geom, eq) in tip_forces().items():
         m = models()[name]
