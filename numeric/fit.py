@@ -65,6 +65,9 @@ LAM_MAX_STEPS = 80
 #: sigma(z_0) above this fraction of the deepest indentation: the contact point is poorly
 #: determined (the modulus then inherits its uncertainty through their correlation)
 Z0_POOR = 0.1
+#: a step between neighbouring residuals above this many standard deviations of such steps is
+#: a jump (8: a false alarm in Gaussian noise is a 1e-15 event per point)
+JUMP_SIGNIFICANCE = 8.0
 
 
 class NoContactError(ValueError):
@@ -489,6 +492,30 @@ def _no_contact(why: str):
                          "sample and F is the force on the tip (positive in compression)")
 
 
+def _jump(z, r, F):
+    """A sentence when the residuals r [N] step between two neighbouring points, else None.
+
+    A jump (a snap-in, the breakthrough of a membrane, a glitch of the instrument) is a change
+    of the force between two points that the smooth model cannot follow: a difference of
+    neighbouring residuals above JUMP_SIGNIFICANCE times the standard deviation of such
+    differences, estimated robustly (1.4826 times their median absolute deviation, which the
+    jump itself does not move), and above 1e-6 of the force's range (noise-free curves have
+    residuals of rounding size only).
+    """
+    dr = np.diff(r)
+    if dr.size < 3:
+        return None
+    scale = 1.4826 * float(np.median(np.abs(dr - np.median(dr))))
+    k = int(np.argmax(np.abs(dr)))
+    size = float(dr[k])
+    if abs(size) <= max(JUMP_SIGNIFICANCE * scale, 1e-6 * float(np.ptp(F))):
+        return None
+    return (f"a jump of the force by {size:.3g} N between z = {z[k]:.6g} m and {z[k + 1]:.6g} "
+            f"m ({abs(size) / scale:.3g} times the noise of neighbouring differences): a "
+            "snap-in, a breakthrough or a glitch the smooth model cannot follow; the fit is "
+            "biased by it (fit the curve on one side of it)")
+
+
 def _covariance(J):
     """(J^T J)^-1 by the SVD of the column-scaled J, and whether J is of full rank."""
     norms = np.linalg.norm(J, axis=0)
@@ -621,6 +648,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if p[1] < z[0]:
         warn.append(f"the contact point z_0 = {p[1]:.6g} m lies before the first position "
                     f"{z[0]:.6g} m: the baseline before contact is not measured")
+    jump = _jump(z, -res * w, F)  # F - model
+    if jump is not None:
+        warn.append(jump)
     E, E_err = _sample_modulus(float(p[0]), float(err[0]), nu, tip_modulus, tip_nu)
     fitted = tip.force(p[0], z, p[1], p[2], p[3])
     return FitResult(tip=tip, values=p, errors=err, correlation=corr, E=E, E_error=E_err,

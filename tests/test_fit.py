@@ -287,6 +287,19 @@ def test_warnings():
     assert fit.warnings[0].startswith("contact point poorly determined"), fit.warnings
 
 
+def test_jump_is_a_warning():
+    """A step of the force inside the contact (a breakthrough) is named with its position; the
+    same curve without it gives no warning."""
+    z, F = synthetic("paraboloid", noise=1e-11, seed=5)
+    assert fit_curve(z, F, TIPS["paraboloid"][0]).warnings == ()
+    k = 300  # in contact (z > z_0 from point 200 on)
+    F[k:] -= 5e-10  # 50 standard deviations of the noise
+    fit = fit_curve(z, F, TIPS["paraboloid"][0])
+    assert len(fit.warnings) == 1 and fit.warnings[0].startswith("a jump of the force by -5"), \
+        fit.warnings
+    assert f"between z = {z[k - 1]:.6g} m" in fit.warnings[0]
+
+
 def test_sample_modulus_in_fit():
     z, F = synthetic("cone")
     fit = fit_curve(z, F, TIPS["cone"][0], nu=0.5)
