@@ -147,3 +147,18 @@ def test_bad_map_is_one_line_and_exit_2(tmp_path, capsys, text, message):
     assert main(["fit", str(tmp_path / "m.csv"), "--scene", str(MAP_SCENE)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
+
+
+def test_progress_bar():
+    """The bar redraws in place (carriage returns) and ends its line; the end is drawn even
+    right after another redraw (the others are throttled to 10 a second)."""
+    import io
+
+    out = io.StringIO()
+    bar = fit_batch.ProgressBar(out, width=10)
+    bar(1, 4, 0)
+    bar(4, 4, 1)
+    text = out.getvalue()
+    assert text.count("\r") == 2 and text.endswith("\n"), text
+    assert "[##........] 1/4 curves, 0 failed" in text  # round(10 / 4) = 2 (to even)
+    assert "[##########] 4/4 curves, 1 failed" in text
