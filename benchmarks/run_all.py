@@ -68,6 +68,7 @@ STEPS = (
     Step("bench_adhesion.py", ("adhesion_speed.md",)),
 
     Step("bench_tangential.py", ("tangential_speed.md",)),
+    Step("bench_fit.py", ("fit_speed.md",)),
     Step("sphere_bias.py", ("sphere.md", "sphere_bias.png"), out_file=True, quick=False),
     Step("hertzmdr accuracy", ("accuracy.md", "accuracy.png"),
          args=("-m", "hertzmdr.numeric.cli", "accuracy"), out_file=True),

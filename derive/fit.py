@@ -64,6 +64,16 @@ def tip_forces() -> dict[str, tuple[sp.Expr, tuple[sp.Symbol, ...], str]]:
     }
 
 
+def _assert_linear_in_modulus(name, model, dE, dz0):
+    """F = E* dF/dE* + F_0 + s_0 z_p and dF/dz_0 proportional to E*: what lets numeric/fit.py
+    evaluate the tip's shape once per contact point (E* times it is the tip's force) and solve
+    (E*, F_0, s_0) by linear least squares at a fixed z_0."""
+    if sp.simplify(model - E_star * dE - F_0 - s_0 * z_p) != 0:
+        raise AssertionError(f"the {name} model is not E* dF/dE* + F_0 + s_0 z_p")
+    if sp.diff(dE, E_star) != 0 or sp.simplify(sp.diff(dz0, E_star, 2)) != 0:
+        raise AssertionError(f"the {name} model's derivatives are not linear in E*")
+
+
 @cache
 def models() -> dict[str, dict[str, sp.Expr]]:
     """For each closed-form tip: the model F and its derivatives in E* and z_0."""
@@ -72,8 +82,10 @@ def models() -> dict[str, dict[str, sp.Expr]]:
         model = force.subs(d, sp.Max(0, z_p - z_0)) + F_0 + s_0 * z_p
         if sp.diff(model, F_0) != 1 or sp.diff(model, s_0) != z_p:
             raise AssertionError(f"the baseline of the {name} model is not F_0 + s_0 z_p")
-        out[name] = {"F": model, "dE": sp.diff(model, E_star),
-                     "dz0": sp.factor_terms(_heaviside_left(sp.diff(model, z_0)))}
+        dE = sp.diff(model, E_star)
+        dz0 = sp.factor_terms(_heaviside_left(sp.diff(model, z_0)))
+        _assert_linear_in_modulus(name, model, dE, dz0)
+        out[name] = {"F": model, "dE": dE, "dz0": dz0}
     return out
 
 
@@ -88,7 +100,37 @@ def sphere_model() -> dict[str, sp.Expr]:
     if sp.simplify(dz0 + 2 * E_star * s["a_lam"]) != 0:
         raise AssertionError(f"dF/dz_0 of the exact sphere is not -2 E* a: {dz0}")
     stable = sphere.force_lam_stable() + F_0 + s_0 * z_p
-    return {"F": model, "F_stable": stable, "dE": sp.diff(model, E_star), "dz0": dz0}
+    dE = sp.diff(model, E_star)
+    _assert_linear_in_modulus("exact sphere", model, dE, dz0)
+    # Newton's step for lam in d = d(lam): dd/dlam, positive for lam > 0
+    d_dlam = sp.simplify(sp.diff(s["d_lam"], lam))
+    return {"F": model, "F_stable": stable, "dE": dE, "dz0": dz0, "d_dlam": d_dlam}
+
+
+alpha_p = symbol("alpha_p", positive=True)
+n_sides = symbol("n_sides", positive=True)
+
+
+@cache
+def pyramid_cone() -> sp.Expr:
+    """theta [rad] of the cone with the cross-section area of a regular pyramid at every depth.
+
+    A regular pyramid of n faces and half-angle alpha_p (axis to a face's mid-line) cut at the
+    depth d below its apex is a regular n-gon of apothem d tan(alpha_p), area
+    n (d tan(alpha_p))^2 tan(pi/n); the cone f = r tan(theta) (5.38) has the disc of radius
+    d/tan(theta), area pi (d/tan(theta))^2. Equal areas at every depth give cot(theta). The
+    pyramid is not axisymmetric: the cone's force (5.40) at this theta is an approximation of the
+    pyramid's, not the chapter's result (docs/fitting.md).
+    """
+    cot = sp.Symbol("cot_theta", positive=True)
+    depth = symbol("d")
+    area_ngon = n_sides * (depth * sp.tan(alpha_p)) ** 2 * sp.tan(sp.pi / n_sides)
+    roots = sp.solve(sp.Eq(sp.pi * (depth * cot) ** 2, area_ngon), cot)
+    # two roots +-: SymPy cannot tell tan(alpha_p) > 0 (alpha_p < pi/2); keep the positive one
+    root = max(roots, key=lambda e: e.subs({alpha_p: sp.Rational(1, 2), n_sides: 4}))
+    if len(roots) != 2 or sp.simplify(roots[0] + roots[1]) != 0:
+        raise AssertionError(f"the pyramid's equal-area cone: unexpected roots {roots}")
+    return sp.atan(1 / root)
 
 
 @cache
@@ -126,6 +168,14 @@ def relations() -> list[Relation]:
                  "derivative dE1/dE* [1] of the sample's modulus under an elastic tip",
                  "(5.26) solved for E1, differentiated in E*", f"{TEST}::test_sample_modulus"),
     ]
+    rels.append(Relation(
+        "fit_pyramid_cone_angle", "(5.38), equal area", pyramid_cone(), (alpha_p, n_sides),
+        "angle theta [rad] between the surface and the plane of the cone with the cross-section "
+        "area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the "
+        "pyramid's equivalent cone", "pi (d cot(theta))^2 = n (d tan(alpha_p))^2 tan(pi/n)",
+        f"{TEST}::test_pyramid_cone_by_polygon_area",
+        # 0 < alpha_p < pi/2 and n_sides >= 3, as t_a, t_n in (0, 1)
+        domain={alpha_p: sp.pi / 2 * unit_interval("t_a"), n_sides: 3 / unit_interval("t_n")}))
     base = (z_p, z_0, F_0, s_0)
     for name, (_, geom, eq) in tip_forces().items():
         m = models()[name]
@@ -168,5 +218,10 @@ def relations() -> list[Relation]:
                  (E_star, R, lam),
                  "derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0)",
                  "-(dF/dlam)/(dd/dlam) of (5.57) and (5.55)", JAC_TEST),
+        Relation("fit_sphere_depth_dlam", "(5.55)", sm["d_dlam"], (R, lam),
+                 "derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the "
+                 "slope of Newton's iteration for lam at a given depth",
+                 "(5.55) at a = R tanh(lam), differentiated in lam",
+                 f"{TEST}::test_sphere_lam_by_newton"),
     ]
     return rels

@@ -120,6 +120,10 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "c_a": ("1", "stick ratio c/a (stick radius over contact radius)"),
     "d_c": ("1", "stick deficit 1 - c/a (c the stick radius, a the contact radius)"),
     "s_x": ("1", "position (x - c)/(a - c) in the slip zone c < x < a, in (0, 1)"),
+    # fit (issue 17): a regular pyramid as its equivalent cone
+    "alpha_p": ("rad", "half-angle of a regular pyramid: between its axis and the mid-line of "
+                "a face"),
+    "n_sides": ("1", "number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich)"),
 }
 
 

@@ -16,8 +16,8 @@ the domain where it is guaranteed finite and accurate):
   error bound), ``abel`` ((5.59) and (5.61) from samples), ``bem`` (non-axisymmetric contacts
   on a grid).
 - Inverse problem: ``fit`` (a force curve F(z) fitted for E*, the contact point and the
-  baseline, with the derived Jacobians of ``hertzmdr.derive.fit``; ``fit_io`` its files,
-  ``hertzmdr fit``).
+  baseline, with the derived Jacobians of ``hertzmdr.derive.fit``; ``fit_batch`` many curves
+  over worker processes, a force map; ``fit_io`` their files and figures, ``hertzmdr fit``).
 - ``c``: the contact laws as a C99 header for DEM codes (``c.header_path()``), printed from
   the same relations as ``_generated.py`` (docs/c_laws.md).
 - ``scene``: a TOML scene in, exactly the asked effects out (``hertzmdr run``); ``cli`` the

@@ -149,10 +149,12 @@ __all__ = [
     'fit_punch_force',
     'fit_punch_force_dE',
     'fit_punch_force_dz0',
+    'fit_pyramid_cone_angle',
     'fit_sample_modulus',
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
     'fit_sample_modulus_rigid_dE',
+    'fit_sphere_depth_dlam',
     'fit_sphere_force',
     'fit_sphere_force_dE',
     'fit_sphere_force_dz0',
@@ -470,10 +472,12 @@ RELATIONS = (
     ('fit_punch_force', 'Problem 7(a), fit model', 'fit', '2*E_star*a*Max(0, -z_0 + z_p) + F_0 + s_0*z_p', ''),
     ('fit_punch_force_dE', 'Problem 7(a), fit model', 'fit', '2*a*Max(0, -z_0 + z_p)', ''),
     ('fit_punch_force_dz0', 'Problem 7(a), fit model', 'fit', '-2*E_star*a*Heaviside(-z_0 + z_p, 0)', ''),
+    ('fit_pyramid_cone_angle', '(5.38), equal area', 'fit', 'atan(sqrt(pi)/(sqrt(n_sides)*tan(alpha_p)*sqrt(tan(pi/n_sides))))', ''),
     ('fit_sample_modulus', '(5.26), inverted', 'fit', 'E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)', ''),
     ('fit_sample_modulus_dE', '(5.26), inverted', 'fit', '-E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2', ''),
     ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
     ('fit_sample_modulus_rigid_dE', '(5.8), inverted', 'fit', '1 - nu**2', ''),
+    ('fit_sphere_depth_dlam', '(5.55)', 'fit', 'R*(lam/cosh(lam)**2 + tanh(lam))', ''),
     ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*R**2*(lam*tanh(lam)**2 + lam - tanh(lam)) + F_0 + s_0*z_p', ''),
     ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'R**2*(lam*tanh(lam)**2 + lam - tanh(lam))', ''),
     ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*R*tanh(lam)', ''),
@@ -4628,6 +4632,30 @@ def fit_punch_force_dz0(E_star, a, z_p, z_0):
     return -2*E_star*a*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
 
 
+def fit_pyramid_cone_angle(alpha_p, n_sides):
+    """Angle theta [rad] between the surface and the plane of the cone with the cross-section area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the pyramid's equivalent cone.
+
+    Chapter: (5.38), equal area. Derived from: pi (d cot(theta))^2 = n (d tan(alpha_p))^2
+    tan(pi/n).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_pyramid_cone_by_polygon_area``.
+
+    Parameters
+    ----------
+    alpha_p : float or ndarray
+        half-angle of a regular pyramid: between its axis and the mid-line of a face [rad]
+    n_sides : float or ndarray
+        number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
+    """
+    if type(alpha_p) is float and type(n_sides) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_pyramid_cone_angle(alpha_p, n_sides)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return numpy.arctan(numpy.sqrt(numpy.pi)/(numpy.sqrt(n_sides)*numpy.tan(alpha_p)*numpy.sqrt(numpy.tan(numpy.pi/n_sides))))
+
+
 def fit_sample_modulus(E_star, nu1, E2, nu2):
     """Young's modulus E1 [Pa] of the sample (body 1) under an elastic tip (body 2, E2, nu2), from the fitted E*.
 
@@ -4726,6 +4754,29 @@ def fit_sample_modulus_rigid_dE(nu):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 1 - nu**2
+
+
+def fit_sphere_depth_dlam(R, lam):
+    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the slope of Newton's iteration for lam at a given depth.
+
+    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    if type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sphere_depth_dlam(R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return R*(lam/numpy.cosh(lam)**2 + numpy.tanh(lam))
 
 
 def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
@@ -12075,6 +12126,11 @@ def _math_fit_punch_force_dz0(E_star, a, z_p, z_0):
     return -2*E_star*a*(((0) if (z_0 - z_p >= 0) else (1)))
 
 
+def _math_fit_pyramid_cone_angle(alpha_p, n_sides):
+    """``fit_pyramid_cone_angle`` for Python floats (the math module); raises where it does."""
+    return math.atan(math.sqrt(math.pi)/(math.sqrt(n_sides)*math.tan(alpha_p)*math.sqrt(math.tan(math.pi/n_sides))))
+
+
 def _math_fit_sample_modulus(E_star, nu1, E2, nu2):
     """``fit_sample_modulus`` for Python floats (the math module); raises where it does."""
     return E2*E_star*(1 - (nu1*nu1))/(E2 + E_star*(nu2*nu2) - E_star)
@@ -12093,6 +12149,11 @@ def _math_fit_sample_modulus_rigid(E_star, nu):
 def _math_fit_sample_modulus_rigid_dE(nu):
     """``fit_sample_modulus_rigid_dE`` for Python floats (the math module); raises where it does."""
     return 1 - (nu*nu)
+
+
+def _math_fit_sphere_depth_dlam(R, lam):
+    """``fit_sphere_depth_dlam`` for Python floats (the math module); raises where it does."""
+    return R*(lam/(math.cosh(lam)*math.cosh(lam)) + math.tanh(lam))
 
 
 def _math_textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):

@@ -146,10 +146,12 @@ __all__ = [
     'fit_punch_force',
     'fit_punch_force_dE',
     'fit_punch_force_dz0',
+    'fit_pyramid_cone_angle',
     'fit_sample_modulus',
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
     'fit_sample_modulus_rigid_dE',
+    'fit_sphere_depth_dlam',
     'fit_sphere_force',
     'fit_sphere_force_dE',
     'fit_sphere_force_dz0',
@@ -3584,6 +3586,25 @@ def fit_punch_force_dz0(E_star, a, z_p, z_0):
     return -2*E_star*a*(((0) if (z_0 - z_p >= 0) else (1)))
 
 
+def fit_pyramid_cone_angle(alpha_p, n_sides):
+    """Angle theta [rad] between the surface and the plane of the cone with the cross-section area of a regular pyramid (n_sides faces, half-angle alpha_p) at every depth: the pyramid's equivalent cone.
+
+    Chapter: (5.38), equal area. Derived from: pi (d cot(theta))^2 = n (d tan(alpha_p))^2
+    tan(pi/n).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_pyramid_cone_by_polygon_area``.
+
+    Parameters
+    ----------
+    alpha_p : mpmath.mpf
+        half-angle of a regular pyramid: between its axis and the mid-line of a face [rad]
+    n_sides : mpmath.mpf
+        number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
+    """
+    return mpmath.atan(mpmath.sqrt(mpmath.pi)/(mpmath.sqrt(n_sides)*mpmath.tan(alpha_p)*mpmath.sqrt(mpmath.tan(mpmath.pi/n_sides))))
+
+
 def fit_sample_modulus(E_star, nu1, E2, nu2):
     """Young's modulus E1 [Pa] of the sample (body 1) under an elastic tip (body 2, E2, nu2), from the fitted E*.
 
@@ -3660,6 +3681,24 @@ def fit_sample_modulus_rigid_dE(nu):
         Poisson's ratio [1]
     """
     return 1 - nu**2
+
+
+def fit_sphere_depth_dlam(R, lam):
+    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the slope of Newton's iteration for lam at a given depth.
+
+    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    """
+    return R*(lam/mpmath.cosh(lam)**2 + mpmath.tanh(lam))
 
 
 def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):

@@ -3,6 +3,7 @@
     hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
+    hertzmdr fit MAP --scene TIP.toml [--out DIR [--force]] [--workers N] [--z0 ..] [--sigma ..]
 
 ``hertzmdr run`` with no SCENE runs the built-in tour (the chapter's Problems 1-8 and figures).
 A malformed scene prints one message naming the file, the key and the problem, and exits 2.
@@ -49,14 +50,21 @@ p_run.add_argument("--out", type=Path, help="write result.json, results.csv, a P
                    "effect and, for a study, a PNG per scalar effect here")
 p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
-p_fit = sub.add_parser("fit", help="fit a force curve for the sample's modulus, the contact "
-                       "point and the baseline (docs/fitting.md)")
-p_fit.add_argument("curve", type=Path, help="CSV: a header `z [um], F [nN]` (any length and "
-                   "force units), then one position and force per line")
+p_fit = sub.add_parser("fit", help="fit a force curve, or a force map, for the sample's "
+                       "modulus, the contact point and the baseline (docs/fitting.md)")
+p_fit.add_argument("curve", type=Path, metavar="CURVE_OR_MAP",
+                   help="a curve (CSV: a header `z [um], F [nN]` with any length and force "
+                   "units, then one position and force per line); or a force map (CSV with the "
+                   "header `x [um], y [um], z [nm], F [nN]` or `curve, z [nm], F [nN]`), or a "
+                   "folder of curve files")
 p_fit.add_argument("--scene", type=Path, required=True,
                    help="scene (TOML) with the tip and the flat sample (its nu converts E* to E)")
-p_fit.add_argument("--out", type=Path, help="write the figure of data, fit and residuals (PNG)")
-p_fit.add_argument("--force", action="store_true", help="allow --out to replace an existing file")
+p_fit.add_argument("--out", type=Path, help="a curve: write the figure of data, fit and "
+                   "residuals (PNG); a map: write the table, the map and a fit's figure into "
+                   "this folder")
+p_fit.add_argument("--force", action="store_true",
+                   help="allow --out to replace an existing file (write into a non-empty folder)")
+p_fit.add_argument("--workers", type=int, help="a map: worker processes (default: the cores)")
 p_fit.add_argument("--z0", help="a guess of the contact point, with a unit (e.g. \"1.2 um\")")
 p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a unit "
                    "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
@@ -241,6 +249,11 @@ def cmd_fit(args) -> int:
     from hertzmdr.numeric.scene.schema import SceneError
     from hertzmdr.numeric.scene.units import UnitError, to_si
 
+    if fit_io.is_batch(args.curve):
+        return cmd_fit_batch(args)
+    if args.workers is not None:
+        raise UsageError(f"--workers: {args.curve} is one curve; --workers is for a force map "
+                         "or a folder of curves")
     try:
         tip, nu, scene_E, tip_E, tip_nu = fit_io.tip_from_scene(args.scene)
         z, F = fit_io.read_curve(args.curve)
@@ -268,6 +281,61 @@ def cmd_fit(args) -> int:
     if args.out is not None:
         print(f"wrote {args.out}")
     return 0
+
+
+def cmd_fit_batch(args) -> int:
+    """Fit a force map or a folder of curves: a summary on stdout, one line per failed curve on
+    stderr, the table (fits.csv), the map (modulus_map.png) and the fit of the curve of median
+    modulus (fit_median.png) in --out. Exit 0 when a curve was fitted, 1 when none was."""
+    import numpy as np
+
+    from hertzmdr.numeric import fit, fit_batch, fit_io
+    from hertzmdr.numeric.scene.schema import SceneError
+    from hertzmdr.numeric.scene.units import UnitError, to_si
+
+    if args.workers is not None and args.workers < 1:
+        raise UsageError(f"--workers {args.workers}: give a number of processes >= 1")
+    try:
+        tip, nu, scene_E, tip_E, tip_nu = fit_io.tip_from_scene(args.scene)
+        z0 = None if args.z0 is None else to_si(args.z0, "length")
+        sigma = None if args.sigma is None else to_si(args.sigma, "force")
+        if args.out is not None:
+            check_out(args.out, args.force)
+        curves, unread = fit_io.read_batch(args.curve)
+    except SceneError as exc:
+        raise UsageError(str(exc)) from None
+    except UnitError as exc:
+        raise UsageError(f"--z0/--sigma: {exc}") from None
+    except ValueError as exc:  # CurveError and the validators' messages
+        raise UsageError(str(exc)) from None
+    if args.out is not None:
+        try:
+            import matplotlib  # noqa: F401
+        except ImportError:
+            raise UsageError("--out draws the map, which needs matplotlib: pip install "
+                             "'hertzmdr[plot]'") from None
+    bar = fit_batch.ProgressBar(sys.stderr) if sys.stderr.isatty() else None
+    results = fit_batch.fit_curves(curves, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
+                                   sigma=sigma, workers=args.workers, progress=bar)
+    results += [fit_batch._failed(fit_batch.Curve(name, None, None, np.zeros(0), np.zeros(0)),
+                                  msg) for name, msg in unread]
+    for r in results:
+        if not r.ok:
+            print(f"hertzmdr: {args.curve}: curve {r.name}: {r.error}", file=sys.stderr)
+    print(f"tip: {tip.describe()}")
+    print(fit_io.batch_summary(results, scene_E))
+    if args.out is not None:
+        args.out.mkdir(parents=True, exist_ok=True)
+        fit_batch.write_table(results, args.out / "fits.csv")
+        fit_io.map_figure(results, args.out / "modulus_map.png", args.curve.name)
+        ok = [(r, c) for r, c in zip(results, curves, strict=False) if r.ok]
+        if ok:
+            r, c = sorted(ok, key=lambda rc: rc[0].values[0])[len(ok) // 2]
+            median = fit.fit_curve(c.z, c.F, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu,
+                                   z0=z0, sigma=sigma)
+            fit_io.figure(median, args.out / "fit_median.png", f"curve {c.name} (median E*)")
+        print(f"wrote {args.out}: fits.csv, modulus_map.png" + (", fit_median.png" if ok else ""))
+    return 0 if any(r.ok for r in results) else 1
 
 
 def check_figure_out(path: Path, force: bool) -> None:

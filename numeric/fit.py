@@ -19,9 +19,9 @@ of (J^T J)^-1 s^2 at the solution, s^2 = sum(r^2)/(N - 4) the residual variance 
 residuals when ``sigma`` is given): the linearised covariance, which is what the coverage test
 of tests/test_fit.py checks against the nominal 68 % per standard error.
 
-Not yet (issue 17): sampled tips through the numerical MDR, the pyramid as its equivalent
-cone, adhesion, batches and force maps, a comparison with nanite, speed figures
-(docs/fitting.md).
+A regular pyramid is fitted as its equal-area cone (:class:`Pyramid`). Batches and force maps:
+:mod:`hertzmdr.numeric.fit_batch`. Not yet (issue 17): sampled tips through the numerical MDR,
+adhesion (docs/fitting.md).
 """
 
 from __future__ import annotations
@@ -36,9 +36,8 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, between, poisson, positive
 from hertzmdr.numeric.powerlaw import kappa
 from hertzmdr.numeric.scene.assumptions import check as check_assumptions
-from hertzmdr.numeric.sphere import _lam_from_depth
 
-__all__ = ["Paraboloid", "ExactSphere", "Cone", "FlatPunch", "PowerLaw", "FitResult",
+__all__ = ["Paraboloid", "ExactSphere", "Cone", "Pyramid", "FlatPunch", "PowerLaw", "FitResult",
            "NoContactError", "fit_curve", "PARAMETERS"]
 
 #: names of the fitted parameters, in the order of :attr:`FitResult.values`
@@ -51,12 +50,24 @@ MIN_POINTS = 6
 MIN_CONTACT_POINTS = 3
 #: trial contact points of the start scan, spread evenly over the curve
 N_SCAN = 64
+#: points of the curve the start scans use at most (evenly spread, the deepest ones kept)
+SCAN_POINTS = 256
+#: trial contact points of the second scan, between the best first one's neighbours
+N_REFINE = 16
 #: a contact is detected when the tip's force at the deepest point exceeds this many standard
 #: deviations of the residuals (5 sigma: a false contact in pure noise is then a 3e-7 event)
 CONTACT_SIGNIFICANCE = 5.0
+#: ... and when E* exceeds this many of its standard errors: a modulus within 3 of them of 0 is
+#: not measured (a straight line without noise fits any E* ~ 0 to its rounding)
+MODULUS_SIGNIFICANCE = 3.0
+#: most Newton steps for the exact sphere's lam (a bisection step each at worst; 5-7 suffice)
+LAM_MAX_STEPS = 80
 #: sigma(z_0) above this fraction of the deepest indentation: the contact point is poorly
 #: determined (the modulus then inherits its uncertainty through their correlation)
 Z0_POOR = 0.1
+#: a step between neighbouring residuals above this many standard deviations of such steps is
+#: a jump (8: a false alarm in Gaussian noise is a 1e-15 event per point)
+JUMP_SIGNIFICANCE = 8.0
 
 
 class NoContactError(ValueError):
@@ -76,12 +87,58 @@ class _Tip(ABC):
         """(dF/dE* [m^2], dF/dz_0 [N/m]) at the positions z [m]."""
 
     @abstractmethod
+    def basis(self, z, z0):
+        """dF/dE* [m^2] at the positions z [m] for the contact points z0 [m] (broadcast): the
+        tip's force per unit E*, since F = E* dF/dE* + F_0 + s_0 z_p (asserted in
+        derive/fit.py)."""
+
+    def _unit(self, z, z0):
+        """(dF/dE*, dF/dz_0 at E* = 1) at one contact point; dF/dz_0 is proportional to E*
+        (asserted in derive/fit.py), so the fit evaluates the tip once per contact point."""
+        return self.derivatives(1.0, z, z0)
+
+    @abstractmethod
     def ratios(self, d_max: float) -> dict[str, float]:
         """The chapter's limit ratios at the deepest indentation d_max [m] (assumptions.py)."""
 
     @abstractmethod
     def describe(self) -> str:
         """The tip in words, with its geometry in SI units."""
+
+
+_EPS = float(np.finfo(float).eps)
+
+
+def lam_from_depth(d, R):
+    """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
+    (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
+
+    Newton's method with the derived slope dd/dlam (``fit_sphere_depth_dlam``), from the lower
+    bound max(sqrt(d/R), d/R) of numeric/sphere.py's bisection and inside its bracket: a step
+    that leaves the bracket is replaced by a bisection step, so the iteration cannot diverge,
+    and it converges quadratically (5-7 steps to one ulp, against ~53 bisection steps).
+    """
+    d = np.asarray(d, float)
+    touch = d > 0
+    out = np.zeros(d.shape)
+    dd = d[touch]  # only the points in contact
+    delta = dd / R
+    lo = np.maximum(np.sqrt(delta), delta)
+    hi = np.maximum((delta + np.sqrt(delta * (delta + 4))) / 2, lo)
+    lam = lo
+    for _ in range(LAM_MAX_STEPS):
+        f = gen.sphere_lam_depth(R, lam) - dd
+        lo = np.where(f < 0, lam, lo)
+        hi = np.where(f > 0, lam, hi)
+        with np.errstate(over="ignore"):  # cosh(lam)^2 overflows beyond lam = 355: dd/dlam
+            new = lam - f / gen.fit_sphere_depth_dlam(R, lam)  # is then R tanh(lam) exactly
+        new = np.where((new >= lo) & (new <= hi), new, 0.5 * (lo + hi))
+        done = np.abs(new - lam) <= 2 * _EPS * new
+        lam = new
+        if done.all():
+            break
+    out[touch] = lam
+    return out
 
 
 @dataclass(frozen=True)
@@ -100,6 +157,9 @@ class Paraboloid(_Tip):
         return (gen.fit_hertz_force_dE(self.R, z, z0),
                 gen.fit_hertz_force_dz0(E_star, self.R, z, z0))
 
+    def basis(self, z, z0):
+        return gen.fit_hertz_force_dE(self.R, z, z0)
+
     def ratios(self, d_max):
         return {"a/R": float(gen.hertz_contact_radius(self.R, d_max)) / self.R}
 
@@ -117,17 +177,28 @@ class ExactSphere(_Tip):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
     def _lam(self, z, z0):
-        return _lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R)
+        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R)
 
     def force(self, E_star, z, z0, F0, s0):
         return gen.fit_sphere_force(E_star, self.R, self._lam(z, z0), z, F0, s0)
 
+    def _dE(self, lam):
+        """dF/dE* at lam, evaluated at the points in contact only (0 elsewhere): its 2F1 form
+        is the costly part of the sphere's model."""
+        out = np.zeros(lam.shape)
+        touch = lam > 0
+        out[touch] = gen.fit_sphere_force_dE(self.R, lam[touch])
+        return out
+
     def derivatives(self, E_star, z, z0):
         lam = self._lam(z, z0)
-        return (gen.fit_sphere_force_dE(self.R, lam), gen.fit_sphere_force_dz0(E_star, self.R, lam))
+        return self._dE(lam), gen.fit_sphere_force_dz0(E_star, self.R, lam)
+
+    def basis(self, z, z0):
+        return self._dE(self._lam(z, z0))
 
     def ratios(self, d_max):
-        lam = _lam_from_depth(np.float64(d_max), self.R)
+        lam = lam_from_depth(np.float64(d_max), self.R)
         return {"a/R": float(gen.sphere_lam_contact_radius(self.R, lam)) / self.R}
 
     def describe(self):
@@ -150,11 +221,54 @@ class Cone(_Tip):
         return (gen.fit_cone_force_dE(self.theta, z, z0),
                 gen.fit_cone_force_dz0(E_star, self.theta, z, z0))
 
+    def basis(self, z, z0):
+        return gen.fit_cone_force_dE(self.theta, z, z0)
+
     def ratios(self, d_max):
         return {"tan(theta)": float(np.tan(self.theta))}
 
     def describe(self):
         return f"cone, theta = {self.theta:.6g} rad"
+
+
+@dataclass(frozen=True)
+class Pyramid(_Tip):
+    """Regular pyramid of ``sides`` faces and half-angle alpha [rad] (between its axis and the
+    mid-line of a face), fitted as its **equivalent cone**: the cone of the same cross-section
+    area at every depth, theta = ``fit_pyramid_cone_angle(alpha, sides)``, with the cone's
+    force (5.40). A pyramid is not axisymmetric: this is an approximation of its force, not the
+    chapter's result (docs/fitting.md says what it neglects). sides >= 3 (an integer),
+    0 < alpha < pi/2.
+    """
+
+    alpha: float
+    sides: int = 4
+    cone: Cone = field(init=False, repr=False)
+
+    def __post_init__(self):
+        alpha = float(between("alpha", self.alpha, 0.0, np.pi / 2))
+        if not (isinstance(self.sides, int | np.integer) and self.sides >= 3):
+            raise ValueError(f"sides = {self.sides!r} is out of range; valid: an integer >= 3")
+        object.__setattr__(self, "alpha", alpha)
+        object.__setattr__(self, "sides", int(self.sides))
+        theta = float(gen.fit_pyramid_cone_angle(alpha, float(self.sides)))  # equal area
+        object.__setattr__(self, "cone", Cone(theta=theta))
+
+    def force(self, E_star, z, z0, F0, s0):
+        return self.cone.force(E_star, z, z0, F0, s0)
+
+    def derivatives(self, E_star, z, z0):
+        return self.cone.derivatives(E_star, z, z0)
+
+    def basis(self, z, z0):
+        return self.cone.basis(z, z0)
+
+    def ratios(self, d_max):
+        return self.cone.ratios(d_max)
+
+    def describe(self):
+        return (f"{self.sides}-sided pyramid, alpha = {self.alpha:.6g} rad, as its equal-area "
+                f"cone theta = {self.cone.theta:.6g} rad")
 
 
 @dataclass(frozen=True)
@@ -172,6 +286,9 @@ class FlatPunch(_Tip):
     def derivatives(self, E_star, z, z0):
         return (gen.fit_punch_force_dE(self.a, z, z0),
                 gen.fit_punch_force_dz0(E_star, self.a, z, z0))
+
+    def basis(self, z, z0):
+        return gen.fit_punch_force_dE(self.a, z, z0)
 
     def ratios(self, d_max):
         return {"d/a": d_max / self.a}
@@ -199,6 +316,9 @@ class PowerLaw(_Tip):
     def derivatives(self, E_star, z, z0):
         return (gen.fit_powerlaw_force_dE(self.c_n, self.kappa_n, self.n, z, z0),
                 gen.fit_powerlaw_force_dz0(E_star, self.c_n, self.kappa_n, self.n, z, z0))
+
+    def basis(self, z, z0):
+        return gen.fit_powerlaw_force_dE(self.c_n, self.kappa_n, self.n, z, z0)
 
     def ratios(self, d_max):
         a = float(gen.powerlaw_contact_radius(self.c_n, d_max / self.kappa_n, 1.0, self.n))
@@ -303,38 +423,97 @@ def _curve(z, F, sigma):
     return z, F, w
 
 
-def _linear_at(tip, z, F, w, z0):
-    """(E*, F_0, s_0) by linear least squares at the fixed contact point z0, and sum(r^2)."""
-    dE, _ = tip.derivatives(1.0, z, z0)  # dF/dE* does not depend on E*
-    A = np.column_stack([dE, np.ones_like(z), z]) / w[:, None]
-    norms = np.linalg.norm(A, axis=0)
-    if not (norms > 0).all():  # no point in contact at this z0
-        return None
-    coef, *_ = np.linalg.lstsq(A / norms, F / w, rcond=None)
-    coef = coef / norms
-    res = A @ coef - F / w
-    return coef, float(res @ res)
+def _linear_scan(tip, z, F, w, trials):
+    """(E*, F_0, s_0) by linear least squares at each trial contact point, and sum(r^2).
+
+    All trials at once: the tip's shape g = dF/dE* as a (trials x points) array and the 3 x 3
+    normal equations of the columns (g, 1, u), u = (z - mean z)/ptp(z), each column scaled to
+    unit norm (which keeps them well conditioned), solved together; the residuals are then
+    computed directly (not from the normal equations, which would lose the small sums of
+    squares of a good fit to cancellation). Trials with no point in contact give NaN.
+    """
+    zc, span = float(z.mean()), float(np.ptp(z))
+    Fw = F / w
+    c1, c2 = 1 / w, (z - zc) / span / w
+    n1, n2 = np.linalg.norm(c1), np.linalg.norm(c2)
+    c1, c2 = c1 / n1, c2 / n2
+    G = tip.basis(z[None, :], trials[:, None]) / w
+    gn = np.linalg.norm(G, axis=1)
+    ok = gn > 0
+    G /= np.where(ok, gn, 1.0)[:, None]
+    g1, g2, c12 = G @ c1, G @ c2, float(c1 @ c2)
+    M = np.empty((trials.size, 3, 3))
+    M[:, 0] = np.column_stack([np.ones_like(g1), g1, g2])
+    M[:, 1] = np.column_stack([g1, np.ones_like(g1), np.full_like(g1, c12)])
+    M[:, 2] = np.column_stack([g2, np.full_like(g1, c12), np.ones_like(g1)])
+    b = np.column_stack([G @ Fw, np.full_like(g1, c1 @ Fw), np.full_like(g1, c2 @ Fw)])
+    M[~ok] = np.eye(3)  # no contact: a dummy system, discarded below
+    coef = np.linalg.solve(M, b[..., None])[..., 0]
+    res = Fw - coef[:, :1] * G - np.outer(coef[:, 1], c1) - np.outer(coef[:, 2], c2)
+    rss = np.einsum("kn,kn->k", res, res)
+    E = np.where(ok, coef[:, 0] / np.where(ok, gn, 1.0), np.nan)
+    s0 = coef[:, 2] / n2 / span
+    F0 = coef[:, 1] / n1 - s0 * zc
+    return np.column_stack([E, trials, F0, s0]), np.where(ok, rss, np.nan)
 
 
 def _start(tip, z, F, w, z0_guess):
-    """The best start over trial contact points (and the user's guess): E* > 0, least sum(r^2)."""
+    """The best start over trial contact points (and the user's guess): E* > 0, least sum(r^2).
+
+    A scan of N_SCAN points over the curve, then N_REFINE more between the best one's
+    neighbours: the start is within 1/(N_SCAN N_REFINE) of the curve's span from the best
+    contact point of the linearised problem, and Levenberg-Marquardt finishes in a few steps.
+    """
     # trial points leave at least MIN_CONTACT_POINTS points in contact
-    trials = list(np.linspace(z[0] - 0.1 * np.ptp(z), z[-MIN_CONTACT_POINTS - 1], N_SCAN))
+    lo, hi = z[0] - 0.1 * np.ptp(z), z[-MIN_CONTACT_POINTS - 1]
+    trials = np.linspace(lo, hi, N_SCAN)
     if z0_guess is not None:
-        trials.append(z0_guess)
+        trials = np.append(trials, z0_guess)
+    if z.size > SCAN_POINTS:  # the start needs the curve's shape, not all of its points
+        keep = np.unique(np.r_[np.linspace(0, z.size - 1, SCAN_POINTS).round().astype(int),
+                               np.arange(z.size - MIN_CONTACT_POINTS - 1, z.size)])
+        z, F, w = z[keep], F[keep], w[keep]
     best = None
-    for z0 in trials:
-        out = _linear_at(tip, z, F, w, z0)
-        if out is None or not out[0][0] > 0:
-            continue
-        if best is None or out[1] < best[1]:
-            best = (np.array([out[0][0], z0, out[0][1], out[0][2]]), out[1])
-    return None if best is None else best[0]
+    for _ in range(2):
+        params, rss = _linear_scan(tip, z, F, w, trials)
+        rss = np.where(params[:, 0] > 0, rss, np.inf)
+        k = int(np.argmin(rss))
+        if np.isfinite(rss[k]) and (best is None or rss[k] < best[1]):
+            best = (params[k], rss[k])
+        if best is None:
+            return None
+        step = (hi - lo) / (N_SCAN - 1)
+        trials = np.linspace(best[0][1] - step, min(best[0][1] + step, hi), N_REFINE)
+    return best[0]
 
 
 def _no_contact(why: str):
     raise NoContactError(f"no contact in the curve: {why}; check that z increases into the "
                          "sample and F is the force on the tip (positive in compression)")
+
+
+def _jump(z, r, F):
+    """A sentence when the residuals r [N] step between two neighbouring points, else None.
+
+    A jump (a snap-in, the breakthrough of a membrane, a glitch of the instrument) is a change
+    of the force between two points that the smooth model cannot follow: a difference of
+    neighbouring residuals above JUMP_SIGNIFICANCE times the standard deviation of such
+    differences, estimated robustly (1.4826 times their median absolute deviation, which the
+    jump itself does not move), and above 1e-6 of the force's range (noise-free curves have
+    residuals of rounding size only).
+    """
+    dr = np.diff(r)
+    if dr.size < 3:
+        return None
+    scale = 1.4826 * float(np.median(np.abs(dr - np.median(dr))))
+    k = int(np.argmax(np.abs(dr)))
+    size = float(dr[k])
+    if abs(size) <= max(JUMP_SIGNIFICANCE * scale, 1e-6 * float(np.ptp(F))):
+        return None
+    return (f"a jump of the force by {size:.3g} N between z = {z[k]:.6g} m and {z[k + 1]:.6g} "
+            f"m ({abs(size) / scale:.3g} times the noise of neighbouring differences): a "
+            "snap-in, a breakthrough or a glitch the smooth model cannot follow; the fit is "
+            "biased by it (fit the curve on one side of it)")
 
 
 def _covariance(J):
@@ -379,7 +558,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
         the cantilever's deflection subtracted.
     F : array_like
         Force on the tip [N], positive in compression, one per position.
-    tip : Paraboloid, ExactSphere, Cone, FlatPunch or PowerLaw
+    tip : Paraboloid, ExactSphere, Cone, Pyramid, FlatPunch or PowerLaw
         The tip's shape.
     nu : float, optional
         Poisson's ratio of the sample, -1 < nu <= 0.5: when given, the sample's Young's modulus
@@ -407,7 +586,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     """
     if not isinstance(tip, _Tip):
         raise ValueError(f"tip = {tip!r} is not a tip; valid: Paraboloid, ExactSphere, Cone, "
-                         "FlatPunch or PowerLaw of hertzmdr.numeric.fit")
+                         "Pyramid, FlatPunch or PowerLaw of hertzmdr.numeric.fit")
     z, F, w = _curve(z, F, sigma)
     if z0 is not None:
         z0 = float(as_float("z0", z0))
@@ -415,12 +594,21 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if p0 is None:
         _no_contact("no contact point makes the force rise with a positive modulus")
 
+    cache = {}
+
+    def unit(z0):  # the tip's shape and its z_0 slope, once per contact point
+        if z0 not in cache:
+            cache.clear()
+            cache[z0] = tip._unit(z, z0)
+        return cache[z0]
+
     def residuals(p):
-        return (tip.force(p[0], z, p[1], p[2], p[3]) - F) / w
+        g, _ = unit(p[1])
+        return (p[0] * g + p[2] + p[3] * z - F) / w  # F = E* dF/dE* + F_0 + s_0 z_p
 
     def jacobian(p):
-        dE, dz0 = tip.derivatives(p[0], z, p[1])
-        return np.column_stack([dE, dz0, np.ones_like(z), z]) / w[:, None]
+        g, h = unit(p[1])
+        return np.column_stack([g, p[0] * h, np.ones_like(z), z]) / w[:, None]
 
     scale = np.array([abs(p0[0]), np.ptp(z), max(np.ptp(F), np.abs(F).max()),
                       max(np.ptp(F), np.abs(F).max()) / np.ptp(z)])
@@ -445,6 +633,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     cov, full = _covariance(jacobian(p))
     cov = cov * chi2
     err = np.sqrt(np.diag(cov))
+    if not p[0] >= MODULUS_SIGNIFICANCE * err[0]:
+        _no_contact(f"the fitted E* = {p[0]:.3g} Pa is below {MODULUS_SIGNIFICANCE:g} of its "
+                    f"standard errors ({err[0]:.3g} Pa)")
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = cov / np.outer(err, err)
     warn = [w_["message"] for w_ in check_assumptions(tip.ratios(d_max))]
@@ -457,6 +648,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if p[1] < z[0]:
         warn.append(f"the contact point z_0 = {p[1]:.6g} m lies before the first position "
                     f"{z[0]:.6g} m: the baseline before contact is not measured")
+    jump = _jump(z, -res * w, F)  # F - model
+    if jump is not None:
+        warn.append(jump)
     E, E_err = _sample_modulus(float(p[0]), float(err[0]), nu, tip_modulus, tip_nu)
     fitted = tip.force(p[0], z, p[1], p[2], p[3])
     return FitResult(tip=tip, values=p, errors=err, correlation=corr, E=E, E_error=E_err,

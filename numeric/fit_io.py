@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from hertzmdr.numeric import fit
+from hertzmdr.numeric import fit, fit_batch
 from hertzmdr.numeric.scene.units import UnitError, engineering, prefixed, to_si
 
 _HEADER = re.compile(r"^\s*([A-Za-z_][\w]*)\s*\[\s*([^\]]+?)\s*\]\s*$")
@@ -38,9 +38,8 @@ class CurveError(ValueError):
     """A curve or tip file that cannot be used; the message names the file and the line."""
 
 
-def read_curve(path) -> tuple[np.ndarray, np.ndarray]:
-    """Positions z [m] and forces F [N] of a curve file (format in the module docstring)."""
-    path = Path(path)
+def _read_rows(path: Path) -> tuple[int, list[str], list[tuple[int, list[str]]]]:
+    """(header's line number, header cells, [(line number, cells)]) of a CSV file."""
     try:
         lines = path.read_text(encoding="utf-8-sig").splitlines()
     except FileNotFoundError:
@@ -51,34 +50,127 @@ def read_curve(path) -> tuple[np.ndarray, np.ndarray]:
             if r and not r[0].lstrip().startswith("#")]
     if not rows:
         raise CurveError(f"{path}: no header line (e.g. `z [um], F [nN]`)")
-    hline, header = rows[0]
+    return rows[0][0], rows[0][1], rows[1:]
+
+
+def _unit_column(path, hline, col, dim, example):
+    """The SI scale of a header cell `name [unit]` of the dimension dim."""
+    m = _HEADER.match(col)
+    if not m:
+        raise CurveError(f"{path}:{hline}: column {col.strip()!r} must be a name and a unit "
+                         f"in brackets, e.g. {example}")
+    try:
+        return to_si(f"1 {m.group(2)}", dim)
+    except UnitError as exc:
+        raise CurveError(f"{path}:{hline}: column {col.strip()!r}: {exc}") from None
+
+
+def _numbers(path, rows, first, scales) -> np.ndarray:
+    """The columns first, first + 1, ... of the rows as floats times their SI scales."""
+    width = first + len(scales)
+    data = []
+    for lineno, row in rows:
+        if len(row) != width:
+            raise CurveError(f"{path}:{lineno}: {len(row)} values; each line has {width}")
+        try:
+            data.append([float(v) for v in row[first:]])
+        except ValueError:
+            raise CurveError(f"{path}:{lineno}: {','.join(row)!r} is not "
+                             f"{'two' if width == 2 else len(scales)} numbers"
+                             f"{' after the curve name' if first else ''}") from None
+    arr = np.array(data, dtype=float).reshape(-1, len(scales))
+    if not np.isfinite(arr).all():
+        bad = int(np.argwhere(~np.isfinite(arr))[0][0])
+        raise CurveError(f"{path}:{rows[bad][0]}: a value is not finite")
+    return arr * np.asarray(scales)
+
+
+def read_curve(path) -> tuple[np.ndarray, np.ndarray]:
+    """Positions z [m] and forces F [N] of a curve file (format in the module docstring)."""
+    path = Path(path)
+    hline, header, rows = _read_rows(path)
     if len(header) != 2:
         raise CurveError(f"{path}:{hline}: the header must name two columns, position and "
                          f"force, with units, e.g. `z [um], F [nN]`; got {len(header)}")
-    scales = []
-    for col, dim in zip(header, ("length", "force"), strict=True):
-        m = _HEADER.match(col)
-        if not m:
-            raise CurveError(f"{path}:{hline}: column {col.strip()!r} must be a name and a unit "
-                             f"in brackets, e.g. `z [um]` or `F [nN]`")
-        try:
-            scales.append(to_si(f"1 {m.group(2)}", dim))
-        except UnitError as exc:
-            raise CurveError(f"{path}:{hline}: column {col.strip()!r}: {exc}") from None
-    data = []
-    for lineno, row in rows[1:]:
-        if len(row) != 2:
-            raise CurveError(f"{path}:{lineno}: {len(row)} values; each line has two (position, "
-                             "force)")
-        try:
-            data.append([float(v) for v in row])
-        except ValueError:
-            raise CurveError(f"{path}:{lineno}: {','.join(row)!r} is not two numbers") from None
-    arr = np.array(data, dtype=float).reshape(-1, 2)
-    if not np.isfinite(arr).all():
-        bad = int(np.argwhere(~np.isfinite(arr))[0][0])
-        raise CurveError(f"{path}:{rows[1 + bad][0]}: a value is not finite")
-    return arr[:, 0] * scales[0], arr[:, 1] * scales[1]
+    scales = [_unit_column(path, hline, col, dim, ex) for col, dim, ex in
+              zip(header, ("length", "force"), ("`z [um]`", "`F [nN]`"), strict=True)]
+    arr = _numbers(path, rows, 0, scales)
+    return arr[:, 0], arr[:, 1]
+
+
+def is_batch(path) -> bool:
+    """Whether ``hertzmdr fit`` reads path as many curves: a folder, or a CSV whose header has
+    three columns (curve, z, F) or four (x, y, z, F). Unreadable files are not batches (the
+    single-curve reader then names their problem)."""
+    path = Path(path)
+    if path.is_dir():
+        return True
+    try:
+        return len(_read_rows(path)[1]) in (3, 4)
+    except CurveError:
+        return False
+
+
+def read_batch(path) -> tuple[list[fit_batch.Curve], list[tuple[str, str]]]:
+    """The curves of a force map or a folder of curves, and the files that could not be read.
+
+    A folder: every ``*.csv`` in it (sorted by name) is one curve file, named by its stem; a
+    file that cannot be read is returned as (name, message), not raised. A map file (CSV):
+    comment lines start with ``#``; the header names either three columns ``curve, z [nm],
+    F [nN]`` (a curve's name, without a unit) or four ``x [um], y [um], z [nm], F [nN]`` (the
+    curve's position on the sample); every further line is one point; the points of a curve
+    are the lines with the same name or position, in any order of curves.
+    """
+    path = Path(path)
+    if path.is_dir():
+        curves, failed = [], []
+        files = sorted(path.glob("*.csv"))
+        if not files:
+            raise CurveError(f"{path}: a folder of curves, but no *.csv file in it")
+        for f in files:
+            try:
+                z, F = read_curve(f)
+            except CurveError as exc:
+                failed.append((f.stem, str(exc)))
+                continue
+            curves.append(fit_batch.Curve(f.stem, None, None, z, F))
+        return curves, failed
+    hline, header, rows = _read_rows(path)
+    if len(header) == 3:
+        if _HEADER.match(header[0]):
+            raise CurveError(f"{path}:{hline}: the first of three columns is the curve's name, "
+                             f"without a unit (e.g. `curve, z [nm], F [nN]`); got "
+                             f"{header[0].strip()!r}")
+        scales = [_unit_column(path, hline, col, dim, ex) for col, dim, ex in
+                  zip(header[1:], ("length", "force"), ("`z [um]`", "`F [nN]`"), strict=True)]
+        arr = _numbers(path, rows, 1, scales)
+        keys = [row[0].strip() for _, row in rows]
+        pos = None
+    elif len(header) == 4:
+        scales = [_unit_column(path, hline, col, "length" if k < 3 else "force", ex)
+                  for k, (col, ex) in enumerate(zip(header, ("`x [um]`", "`y [um]`", "`z [nm]`",
+                                                             "`F [nN]`"), strict=True))]
+        full = _numbers(path, rows, 0, scales)
+        pos, arr = full[:, :2], full[:, 2:]
+        keys = [tuple(p) for p in pos]
+    else:
+        raise CurveError(f"{path}:{hline}: a force map names three columns (`curve, z [nm], "
+                         f"F [nN]`) or four (`x [um], y [um], z [nm], F [nN]`); got "
+                         f"{len(header)}")
+    if not rows:
+        raise CurveError(f"{path}: no points after the header")
+    groups: dict = {}
+    for k, key in enumerate(keys):
+        groups.setdefault(key, []).append(k)
+    curves = []
+    for key, idx in groups.items():
+        if pos is None:
+            name, x, y = key, None, None
+        else:
+            x, y = key
+            name = f"x = {engineering(x, 'm')}, y = {engineering(y, 'm')}"
+        curves.append(fit_batch.Curve(name, x, y, arr[idx, 0], arr[idx, 1]))
+    return curves, []
 
 
 def tip_from_scene(path):
@@ -116,7 +208,7 @@ def report(result: fit.FitResult, scene_E: float | None = None) -> str:
     return "\n".join(lines)
 
 
-def figure(result: fit.FitResult, path) -> Path:
+def figure(result: fit.FitResult, path, title: str | None = None) -> Path:
     """Data, fit and residuals against the position, with the contact point marked (PNG)."""
     import matplotlib
 
@@ -134,7 +226,8 @@ def figure(result: fit.FitResult, path) -> Path:
     for a in (ax, axr):
         a.axvline(result.z_0 / zs, color="C0", ls="--", lw=0.8)
     ax.set_ylabel(f"force [{fp}N]")
-    ax.set_title(result.tip.describe())
+    ax.set_title(result.tip.describe() if title is None else
+                 f"{title}; {result.tip.describe()}", fontsize=10 if title else None)
     ax.legend(loc="upper left")
     axr.plot(result.z / zs, result.residuals / rs, ".", ms=3, color="0.3")
     axr.axhline(0, color="C3", lw=0.8)
@@ -145,3 +238,88 @@ def figure(result: fit.FitResult, path) -> Path:
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+def map_figure(results, path, title: str) -> Path:
+    """The modulus of every curve (PNG): with positions, maps of E (E* without a Poisson's
+    ratio), its standard error and the contact point z_0 (the sample's topography), failed
+    curves in grey; without positions, E with its error bar against the curve's index."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ok = [r for r in results if r.ok]
+    use_E = bool(ok) and ok[0].E is not None
+    label = "E" if use_E else "E*"
+
+    def modulus(r):
+        return (r.E, r.E_error) if use_E else (r.values[0], r.errors[0])
+
+    ms = prefixed(max((abs(modulus(r)[0]) for r in ok), default=1.0))
+    if results and results[0].x is not None:
+        xs = np.unique([r.x for r in results])
+        ys = np.unique([r.y for r in results])
+        grids = np.full((3, ys.size, xs.size), np.nan)
+        for r in ok:
+            i, j = np.searchsorted(ys, r.y), np.searchsorted(xs, r.x)
+            grids[:, i, j] = (*modulus(r), r.values[1])
+        ls = prefixed(float(max(np.abs(xs).max(), np.abs(ys).max())) or 1.0)
+        zs = prefixed(float(np.nanmax(np.abs(grids[2]))) if ok else 1.0)
+        fig, axes = plt.subplots(1, 3, figsize=(13.5, 4.2))
+        es = prefixed(float(np.nanmax(grids[1])) if ok else 1.0)
+        panels = [(grids[0] / ms[0], f"{label} [{ms[1]}Pa]", "viridis"),
+                  (grids[1] / es[0], f"std. error of {label} [{es[1]}Pa]", "magma"),
+                  (grids[2] / zs[0], f"contact point z_0 [{zs[1]}m]", "cividis")]
+        ext = [xs[0] / ls[0], xs[-1] / ls[0], ys[0] / ls[0], ys[-1] / ls[0]]
+        half = [np.diff(xs).min() / 2 if xs.size > 1 else 0.5 * ls[0],
+                np.diff(ys).min() / 2 if ys.size > 1 else 0.5 * ls[0]]
+        ext = [ext[0] - half[0] / ls[0], ext[1] + half[0] / ls[0],
+               ext[2] - half[1] / ls[0], ext[3] + half[1] / ls[0]]
+        for ax, (grid, name, cmap) in zip(axes, panels, strict=True):
+            cm = plt.get_cmap(cmap).with_extremes(bad="0.75")
+            im = ax.imshow(np.ma.masked_invalid(grid), origin="lower", extent=ext, cmap=cm,
+                           interpolation="nearest")
+            fig.colorbar(im, ax=ax, shrink=0.85, label=name)
+            ax.set_xlabel(f"x [{ls[1]}m]")
+            ax.set_ylabel(f"y [{ls[1]}m]")
+            ax.set_title(name.split(" [")[0])
+        failed = len(results) - len(ok)
+        fig.suptitle(f"{title}: {len(ok)} of {len(results)} curves fitted"
+                     + (f" ({failed} failed: grey)" if failed else ""))
+    else:
+        fig, ax = plt.subplots(figsize=(7.5, 4.2))
+        idx = [k for k, r in enumerate(results) if r.ok]
+        vals = np.array([modulus(r) for r in ok]).reshape(-1, 2) / ms[0]
+        ax.errorbar(idx, vals[:, 0], yerr=vals[:, 1], fmt="o", ms=3, capsize=2)
+        for k, r in enumerate(results):
+            if not r.ok:
+                ax.axvline(k, color="0.75", lw=3, zorder=0)
+        ax.set_xlabel("curve (in the order of the table; grey: failed)")
+        ax.set_ylabel(f"{label} [{ms[1]}Pa]")
+        ax.set_title(f"{title}: {len(ok)} of {len(results)} curves fitted")
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def batch_summary(results, scene_E: float | None = None) -> str:
+    """A few lines: curves fitted, failed and with warnings; the modulus over the fitted ones."""
+    ok = [r for r in results if r.ok]
+    warned = sum(bool(r.warnings) for r in ok)
+    lines = [f"{len(results)} curves: {len(ok)} fitted ({warned} with warnings), "
+             f"{len(results) - len(ok)} failed"]
+    if ok:
+        use_E = ok[0].E is not None
+        name = "E" if use_E else "E*"
+        vals = np.array([r.E if use_E else r.values[0] for r in ok])
+        errs = np.array([r.E_error if use_E else r.errors[0] for r in ok])
+        lines.append(f"{name}: median {engineering(float(np.median(vals)), 'Pa')}, from "
+                     f"{engineering(float(vals.min()), 'Pa')} to "
+                     f"{engineering(float(vals.max()), 'Pa')}; median standard error "
+                     f"{engineering(float(np.median(errs)), 'Pa', 2)}")
+    if scene_E is not None:
+        lines.append(f"the scene's sample E = {engineering(scene_E, 'Pa')} (not used)")
+    return "\n".join(lines)

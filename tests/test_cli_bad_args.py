@@ -18,10 +18,13 @@ SCENE = str(next(p for p in tour_scenes() if p.stem == "problem1_rail_wheel"))
 EXAMPLES = Path(__file__).parents[1] / "examples"
 FIT_SCENE = str(EXAMPLES / "fit_colloidal_probe.toml")
 FIT_CURVE = str(EXAMPLES / "fit_colloidal_probe_curve.csv")
+FIT_MAP = str(EXAMPLES / "fit_force_map.csv")
+FIT_MAP_SCENE = str(EXAMPLES / "fit_force_map.toml")
 
 #: (argv, a word the message must contain); {scene}: a valid scene, {file}: an existing file,
 #: {dir}: an existing non-empty folder, {toml}: a file of broken TOML, {binary}: bytes that
-#: are not UTF-8, {curve}/{fitscene}: the fit example's curve and tip, {png}: an existing figure
+#: are not UTF-8, {curve}/{fitscene}: the fit example's curve and tip, {png}: an existing figure,
+#: {map}/{mapscene}: the example force map and its tip
 CASES = [
     ([], "required"),
     (["frob"], "invalid choice"),
@@ -60,13 +63,21 @@ CASES = [
     (["fit", "{curve}", "--scene", "missing.toml"], "no such file"),
     (["fit", "{curve}", "--scene", "{toml}"], "TOML"),
     (["fit", "{curve}", "--scene", "{scene}"], "flat"),  # two cylinders: no flat sample
-    (["fit", "{dir}", "--scene", "{fitscene}"], "cannot read"),
+    (["fit", "{dir}", "--scene", "{fitscene}"], "no *.csv file"),  # a folder is a batch
     (["fit", "{binary}", "--scene", "{fitscene}"], "cannot read"),
     (["fit", "{file}", "--scene", "{fitscene}"], "two columns"),
     (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{file}"], "png"),
     (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{png}"], "--force"),
     (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{dir}"], "is a folder"),
     (["fit", "{curve}", "--scene", "{fitscene}", "--out", "{file}/fit.png"], "is a file"),
+    (["fit", "{curve}", "--scene", "{fitscene}", "--workers", "2"], "--workers"),
+    (["fit", "{map}", "--scene", "{mapscene}", "--workers", "0"], "--workers"),
+    (["fit", "{map}", "--scene", "{mapscene}", "--workers", "two"], "--workers"),
+    (["fit", "{map}", "--scene", "{mapscene}", "--out", "{file}"], "is a file"),
+    (["fit", "{map}", "--scene", "{mapscene}", "--out", "{dir}"], "not empty"),
+    (["fit", "{map}", "--scene", "missing.toml"], "no such file"),
+    (["fit", "{map}", "--scene", "{scene}"], "flat"),
+    (["fit", "{map}", "--scene", "{mapscene}", "--sigma", "1 m"], "--sigma"),
 ]
 
 
@@ -88,7 +99,8 @@ def test_bad_arguments(argv, word, tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(work)
     subs = {"{scene}": SCENE, "{file}": "taken.txt", "{dir}": "folder",
             "{toml}": "broken.toml", "{binary}": "binary.toml", "{png}": "fit.png",
-            "{curve}": FIT_CURVE, "{fitscene}": FIT_SCENE}
+            "{curve}": FIT_CURVE, "{fitscene}": FIT_SCENE, "{map}": FIT_MAP,
+            "{mapscene}": FIT_MAP_SCENE}
     args = []
     for a in argv:
         for k, v in subs.items():

@@ -107,6 +107,8 @@ ROUTES = {
     "fig5_2_surface_displacement": (lambda: Hertz(e_star(GLASS), 5e-3), 0.22),
     # the colloidal probe's scene (the fit's tip) run at the curve's deepest point
     "fit_colloidal_probe": (lambda: Hertz(e_star((1e6, 0.5)), 10e-6), 0.5),
+    # the example force map's probe on its background (E = 1 MPa), run at 100 nm
+    "fit_force_map": (lambda: Hertz(e_star((1e6, 0.5)), 25e-6), 0.5),
     "fig5_8_fig5_9_stresses": (lambda: Hertz(e_star((70e9, 0.33)), 10e-3), 0.33),
     "height_map_tip": (lambda: Hertz(e_star((2e9, 0.4)), 1e-3), 0.4),
     "line_contact_roller": (lambda: Line(e_star(STEEL, STEEL), mp.mpf(5e-3) * mp.mpf(25e-3)

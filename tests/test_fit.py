@@ -28,9 +28,11 @@ from hertzmdr.numeric.fit import (
     NoContactError,
     Paraboloid,
     PowerLaw,
+    Pyramid,
     fit_curve,
+    lam_from_depth,
 )
-from tests.oracle import FULL, n_points
+from tests.oracle import n_points
 
 DPS = 30
 E_TRUE = 2.0e6  # Pa: a soft sample, as in AFM on cells and gels
@@ -119,9 +121,59 @@ def test_jacobian_by_mpmath_derivative(name):
             ref_E = mp.diff(lambda e, zm=zm: _mp_model(name, e, z0, zm), E)
             ref_z = mp.diff(lambda c, zm=zm: _mp_model(name, E, c, zm), z0)
             # 1e-12: the force laws' relative error (1e-13, test above) amplified by the
-            # cancellation d = z - z0 and, for the sphere, by its 53-step bisection for lam
+            # cancellation d = z - z0 and, for the sphere, by the ulp of its Newton root lam
             assert abs(mp.mpf(a) - ref_E) <= 1e-12 * abs(ref_E), (name, zi, a, ref_E)
             assert abs(mp.mpf(b) - ref_z) <= 1e-12 * abs(ref_z), (name, zi, b, ref_z)
+
+
+def test_sphere_lam_by_newton():
+    """lam of R lam tanh(lam) = d by Newton's method against mpmath.findroot at 30 digits,
+    over eleven decades of d/R (log-uniform; a/R = 0.99995 at d/R = 100), with d = 0 and
+    negative depths giving 0."""
+    R = 5e-6
+    delta = np.r_[0.0, -1.0, np.logspace(-9, 2, 45)]
+    lam = lam_from_depth(delta * R, R)
+    assert lam[0] == 0 and lam[1] == 0
+    with mp.workdps(DPS):
+        for dl, got in zip(delta[2:], lam[2:], strict=True):
+            ref = mp.findroot(lambda v, dl=dl: v * mp.tanh(v) - mp.mpf(dl),
+                              mp.sqrt(mp.mpf(dl)) if dl < 1 else mp.mpf(dl))
+            # 4 ulp: lam is the root to one ulp of a function evaluated to a few ulp (the
+            # root's condition number, d/(lam dd/dlam), is between 1/2 and 1)
+            assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, got, ref)
+
+
+@pytest.mark.parametrize("sides", [3, 4, 6])
+def test_pyramid_cone_by_polygon_area(sides):
+    """The equivalent cone's cross-section (a disc of radius d/tan(theta)) has the area of the
+    pyramid's, the regular polygon of apothem d tan(alpha) by the shoelace formula over its
+    vertices at 30 digits (not the closed-form polygon area the derivation used)."""
+    alpha = 0.6
+    theta = Pyramid(alpha=alpha, sides=sides).cone.theta
+    with mp.workdps(DPS):
+        d = mp.mpf("1e-6")
+        rho = d * mp.tan(mp.mpf(alpha)) / mp.cos(mp.pi / sides)  # circumradius
+        pts = [(rho * mp.cos(2 * mp.pi * k / sides), rho * mp.sin(2 * mp.pi * k / sides))
+               for k in range(sides)]
+        area = abs(mp.fsum(pts[k][0] * pts[(k + 1) % sides][1] - pts[(k + 1) % sides][0]
+                           * pts[k][1] for k in range(sides))) / 2
+        cone_area = mp.pi * (d / mp.tan(mp.mpf(theta))) ** 2
+        # 1e-14: theta is a float64 (the area goes as cot(theta)^2: a few ulp of theta)
+        assert abs(cone_area / area - 1) <= 1e-14, (sides, cone_area, area)
+
+
+def test_pyramid_fits_as_its_cone():
+    """A curve of the equivalent cone's force is the pyramid's model: E* back to 1e-10."""
+    tip = Pyramid(alpha=np.radians(35.0), sides=4)
+    z = Z0_TRUE + np.linspace(-3e-7, 3e-7, 300)
+    F = cone.force(np.maximum(z - Z0_TRUE, 0), tip.cone.theta, E_TRUE) + F0_TRUE
+    fit = fit_curve(z, F, tip)
+    assert abs(fit.E_star / E_TRUE - 1) <= 1e-10, fit.E_star  # as test_noise_free_recovery
+    assert "4-sided pyramid" in tip.describe()
+    with pytest.raises(ValueError, match="sides = 2 is out of range"):
+        Pyramid(alpha=0.5, sides=2)
+    with pytest.raises(ValueError, match="alpha = 2.0 is out of range"):
+        Pyramid(alpha=2.0)
 
 
 def test_punch_jacobian_jumps_at_contact():
@@ -202,8 +254,6 @@ def test_coverage_of_standard_errors(name):
     Noise 2 % of the largest force: the linearised covariance is then accurate (the curvature
     of the model over one standard error is small).
     """
-    if name == "exact_sphere" and not FULL:
-        pytest.skip("17 s per 100 curves (the sphere's bisection for lam): HERTZMDR_SWEEP=full")
     m = n_points(1000, 100)
     noise = 2e-2 * float(TIPS[name][1](TIPS[name][2]))
     frac = _coverage(name, m, noise)
@@ -235,6 +285,19 @@ def test_warnings():
     fit = fit_curve(z, F, Paraboloid(R=50e-6))
     assert len(fit.warnings) == 1, fit.warnings
     assert fit.warnings[0].startswith("contact point poorly determined"), fit.warnings
+
+
+def test_jump_is_a_warning():
+    """A step of the force inside the contact (a breakthrough) is named with its position; the
+    same curve without it gives no warning."""
+    z, F = synthetic("paraboloid", noise=1e-11, seed=5)
+    assert fit_curve(z, F, TIPS["paraboloid"][0]).warnings == ()
+    k = 300  # in contact (z > z_0 from point 200 on)
+    F[k:] -= 5e-10  # 50 standard deviations of the noise
+    fit = fit_curve(z, F, TIPS["paraboloid"][0])
+    assert len(fit.warnings) == 1 and fit.warnings[0].startswith("a jump of the force by -5"), \
+        fit.warnings
+    assert f"between z = {z[k - 1]:.6g} m" in fit.warnings[0]
 
 
 def test_sample_modulus_in_fit():
