@@ -79,11 +79,22 @@ class SceneSpec:
     interface: Interface
     source: str
     base_dir: Path | None
+    #: the document as given (TOML tables as dicts) and how the reader took each value
+    #: (key as in errors -> (how, dimension or unit)): what result.json echoes (echo.py)
+    raw: dict = field(default_factory=dict)
+    read_as: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 def read(path_or_dict, *, known_effects) -> SceneSpec:
-    """Parse and validate a scene file path or dict; raise SceneError on any problem."""
+    """Parse and validate a scene file path or dict; raise SceneError on any problem. A
+    result.json (a ``.json`` path) or the document of a run (a dict with
+    ``hertzmdr_version``) is read as the scene it echoes (:mod:`.echo`)."""
     if isinstance(path_or_dict, dict):
+        if "hertzmdr_version" in path_or_dict:
+            from hertzmdr.numeric.scene.echo import scene_of
+
+            return _Reader("<result>", None, known_effects).scene(
+                scene_of(path_or_dict, "<result>"))
         return _Reader("<scene>", None, known_effects).scene(path_or_dict)
     path = Path(path_or_dict)
     where = str(path)
@@ -93,6 +104,10 @@ def read(path_or_dict, *, known_effects) -> SceneSpec:
         raise SceneError(where, "", "no such file") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise SceneError(where, "", f"cannot read the file ({exc})") from None
+    if path.suffix.lower() == ".json":
+        from hertzmdr.numeric.scene.echo import read_result
+
+        return _Reader(where, path.parent, known_effects).scene(read_result(text, where))
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -108,6 +123,7 @@ def suggest(name: str, choices) -> str:
 class _Reader:
     def __init__(self, where: str, base_dir: Path | None, known_effects):
         self.where, self.base_dir, self.known_effects = where, base_dir, known_effects
+        self.read_as: dict[str, tuple[str, str]] = {}  # see SceneSpec.read_as
 
     def fail(self, key: str, message: str):
         raise SceneError(self.where, key, message)
@@ -125,6 +141,7 @@ class _Reader:
                           f"unknown key{suggest(k, allowed)} (allowed: {names})")
 
     def quantity(self, value, dimension: str, key: str) -> float:
+        self.read_as[key] = ("quantity", dimension)
         try:
             out = to_si(value, dimension)
         except UnitError as exc:
@@ -217,7 +234,7 @@ class _Reader:
             if elliptic not in ("exact", "gaussian"):
                 self.fail("model.elliptic", f"must be \"exact\" or \"gaussian\", got {elliptic!r}")
         return SceneSpec(title, list(effects), parsed, load, rtol, elliptic, interface,
-                         self.where, self.base_dir)
+                         self.where, self.base_dir, raw=data, read_as=dict(self.read_as))
 
     def body(self, b: dict, i: int) -> Body:
         key = f"body[{i}]"
@@ -239,6 +256,8 @@ class _Reader:
                     self.fail(f"{key}.{k.name}", f"missing: a {shape} needs {k.name}")
                 continue
             params[k.name] = self.shape_value(b[k.name], k.kind, f"{key}.{k.name}")
+            if k.kind in ("path", "length_unit", "number"):  # a file, a unit, a plain number
+                self.read_as[f"{key}.{k.name}"] = (k.kind, k.unit)
 
         def fail(sub: str, message: str):
             self.fail(f"{key}.{sub}" if sub else key, message)
