@@ -41,7 +41,8 @@ parser = _Parser(
 parser.add_argument("--version", action="version", version=f"hertzmdr {__version__}")
 sub = parser.add_subparsers(dest="command", required=True)
 p_run = sub.add_parser("run", help="run a scene file, or the built-in tour without one")
-p_run.add_argument("scene", nargs="?", help="scene file (TOML); omit for the built-in tour")
+p_run.add_argument("scene", nargs="?", help="scene file (TOML), or a result.json to run its "
+                   "echoed scene again; omit for the built-in tour")
 p_run.add_argument("--json", action="store_true", help="print one JSON document to stdout")
 p_run.add_argument("--out", type=Path, help="write result.json and a PNG per field effect here")
 p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
@@ -88,19 +89,20 @@ def check_out(folder: Path, force: bool) -> None:
         raise UsageError(f"--out {folder}: {parent} is not writable")
 
 
-def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: bool) -> None:
-    """Write atomically: everything goes to a temporary folder first, then is moved in."""
+def _write_out(folder: Path, docs: list[tuple], force: bool) -> None:
+    """Write atomically: everything goes to a temporary folder first, then is moved in.
+    ``docs``: (subfolder, document, results, title, figures.Context) of each run."""
     from hertzmdr.numeric.scene.figures import write_all
 
     check_out(folder, force)
     folder.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
     try:
-        for sub_name, doc, results, title in docs:
+        for sub_name, doc, results, title, ctx in docs:
             target = tmp / sub_name if sub_name else tmp
             target.mkdir(parents=True, exist_ok=True)
             (target / "result.json").write_text(json.dumps(doc, indent=2) + "\n")
-            write_all(results, title, target)
+            write_all(results, title, target, ctx)
         folder.mkdir(exist_ok=True)
         for item in sorted(tmp.rglob("*")):
             dest = folder / item.relative_to(tmp)
@@ -137,8 +139,8 @@ def cmd_run(args) -> int:
     runs = []
     for path in paths:
         sc = scene.load(path)
-        _, results, doc = sc.run_full()
-        runs.append((path, sc, results, doc))
+        record, results, doc = sc.run_full()
+        runs.append((path, record, results, doc))
     if args.out:
         _check_figures(runs)
     if args.json:
@@ -149,8 +151,11 @@ def cmd_run(args) -> int:
             print(table(doc["title"], doc["model"], results, doc["warnings"]))
             print()
     if args.out:
-        _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"])
-                              for p, _, res, doc in runs], args.force)
+        from hertzmdr.numeric.scene.figures import context_of
+
+        _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"],
+                               context_of(record)) for p, record, res, doc in runs],
+                   args.force)
         if not args.json:
             print(f"wrote {args.out}")
     return 0
