@@ -129,3 +129,13 @@ def test_near_zero_position_prints_as_zero():
     pull = format_value({"force_control": 1e-12, "depth_control": 1e-5},
                         "{force_control: m, depth_control: m}")
     assert "1 pm" in pull
+
+
+def test_force_law_in_the_table():
+    """The table prints K with the unit of its n (N/m^1.5) and the exponents as numbers."""
+    from hertzmdr.numeric.scene.effects import EFFECTS
+
+    text = format_value({"K": 9.8692e8, "n": 1.5, "stiffness_K": 1.4804e9, "stiffness_n": 0.5},
+                        EFFECTS["force_law"].unit)
+    assert text == ("K = 9.8692e+08 N/m^1.5, n = 1.5, stiffness_K = 1.4804e+09 N/m^1.5, "
+                    "stiffness_n = 0.5")
