@@ -505,7 +505,8 @@ def test_document_entry_of_each_effect():
         assert entry["unit"] == scene.EFFECTS[name].unit
         assert entry["met_rtol"] is (entry["rel_error"] <= 1e-10)
         assert isinstance(entry["seconds"], float) and 0 <= entry["seconds"] < 60
-    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects", "warnings"}
+    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects", "warnings",
+                                                    "scene", "files", "hertzmdr_version"}
     assert doc["warnings"] == []  # a small Hertz contact stretches no assumption
 
 
