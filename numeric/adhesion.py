@@ -682,7 +682,10 @@ class AdhesiveContact:
                 break
             lo, hi = hi, 2 * hi
         else:
-            raise ValueError(f"{control} = {target!r} is not reached by {self!r}")
+            unit = "m" if control == "depth" else "N"
+            where = (f"the largest contact radius the profile describes, a = {lim:.6g} m"
+                     if np.isfinite(lim) else f"a contact radius of {hi:.6g} m")
+            raise ValueError(f"{control} = {target:.6g} {unit} is not reached below {where}")
         if self._value(control, lo) >= target:
             return lo
         return brentq(lambda a: float(self._value(control, a)) - target, lo, hi,

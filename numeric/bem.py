@@ -422,6 +422,10 @@ def polygon_punch(vertices, n: int, *, margin: float = 0.0):
     return np.where(inside, 0.0, np.inf), dx
 
 
+def _one_line(exc: Exception) -> str:
+    return " ".join(str(exc).split()).rstrip(".")
+
+
 def read_height_map(path):
     """Heights [m] on a regular grid from a file: ``.npy`` (a 2-D array), or text (``.csv``
     comma-separated, anything else whitespace-separated; one row of the grid per line, axis 0
@@ -441,13 +445,18 @@ def read_height_map(path):
     from pathlib import Path
 
     path = Path(path)
-    if path.suffix == ".npy":
-        h = np.load(path, allow_pickle=False)
-    else:
-        with warnings.catch_warnings():  # an empty file: the shape check below says so
-            warnings.filterwarnings("ignore", message="loadtxt: input contained no data")
-            h = np.loadtxt(path, delimiter="," if path.suffix == ".csv" else None, ndmin=2)
-    h = np.asarray(h, dtype=float)
+    try:
+        if path.suffix == ".npy":
+            h = np.load(path, allow_pickle=False)
+        else:
+            with warnings.catch_warnings():  # an empty file: the shape check below says so
+                warnings.filterwarnings("ignore", message="loadtxt: input contained no data")
+                h = np.loadtxt(path, delimiter="," if path.suffix == ".csv" else None, ndmin=2)
+        h = np.asarray(h, dtype=float)
+    except (ValueError, UnicodeDecodeError, OSError) as exc:
+        # NumPy's words ("could not convert string 'x' to float64 at row 1, column 2") with
+        # the file they are about
+        raise ValueError(f"{path}: cannot read the heights: {_one_line(exc)}") from None
     if h.ndim != 2 or min(h.shape) < 2:
         raise ValueError(f"{path}: heights of shape {h.shape}; valid: a 2-D grid, at least 2 x 2")
     return np.where(np.isnan(h), np.inf, h)

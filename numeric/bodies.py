@@ -114,13 +114,19 @@ def _radii_from_curvatures(curvature_1, curvature_2, args, names):
 
     k2 is printed as 2 det/(trace + root) = det/k1: it is evaluated only where k1 > 0 (a gap
     with k1 <= 0 is refused below, before 0/0 can give a warning)."""
-    args = np.broadcast_arrays(*args)
-    k1 = np.asarray(curvature_1(*args), dtype=float).reshape(args[0].shape)
-    k2 = np.zeros(k1.shape)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in args))
+    # the generated forms broadcast by themselves: a flat's inf radii stay scalars
+    k1 = np.broadcast_to(np.asarray(curvature_1(*args), dtype=float), shape).copy()
     ok = k1 > 0
-    k2[ok] = curvature_2(*(v[ok] for v in args))
+    if ok.all():
+        k2 = np.broadcast_to(np.asarray(curvature_2(*args), dtype=float), shape).copy()
+    else:
+        args = np.broadcast_arrays(*args)
+        k2 = np.zeros(shape)
+        k2[ok] = curvature_2(*(v[ok] for v in args))
     bad = ~(k2 >= 0) | ~(k1 > 0)
     if bad.any():
+        args = np.broadcast_arrays(*args)
         i = tuple(int(j) for j in np.argwhere(bad)[0]) if bad.ndim else ()
         given = ", ".join(f"{n} = {float(v[i])!r}" for n, v in zip(names[1], args, strict=True))
         raise ValueError(f"{names[0]}: {given}: the gap is not convex (principal curvatures "

@@ -1,6 +1,6 @@
 """The ``hertzmdr`` command: run scenes, list effects.
 
-    hertzmdr run [SCENE] [--json] [--out DIR [--force]]
+    hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
 
@@ -44,7 +44,10 @@ p_run = sub.add_parser("run", help="run a scene file, or the built-in tour witho
 p_run.add_argument("scene", nargs="?", help="scene file (TOML), or a result.json to run its "
                    "echoed scene again; omit for the built-in tour")
 p_run.add_argument("--json", action="store_true", help="print one JSON document to stdout")
-p_run.add_argument("--out", type=Path, help="write result.json and a PNG per field effect here")
+p_run.add_argument("--csv", action="store_true", help="print the table of the scalar results "
+                   "as CSV to stdout: a row per point of a study, `name [unit]` headers")
+p_run.add_argument("--out", type=Path, help="write result.json, results.csv, a PNG per field "
+                   "effect and, for a study, a PNG per scalar effect here")
 p_run.add_argument("--force", action="store_true", help="allow --out into a non-empty folder")
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
 p_fit = sub.add_parser("fit", help="fit a force curve for the sample's modulus, the contact "
@@ -85,24 +88,37 @@ def check_out(folder: Path, force: bool) -> None:
     parent = next((p for p in (folder, *folder.parents) if p.exists()), Path("."))
     if not parent.is_dir():
         raise UsageError(f"--out {folder}: {parent} is a file, not a folder")
+    _probe(parent, f"--out {folder}")
+
+
+def _probe(parent: Path, what: str) -> None:
+    """Create and remove a folder in ``parent``: os.access says yes to root even where the
+    file system refuses (/proc, /sys, a read-only mount)."""
     if not os.access(parent, os.W_OK | os.X_OK):
-        raise UsageError(f"--out {folder}: {parent} is not writable")
+        raise UsageError(f"{what}: {parent} is not writable")
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=".hertzmdr-probe-", dir=parent))
+    except OSError as exc:
+        raise UsageError(f"{what}: cannot write in {parent} ({exc.strerror})") from None
 
 
 def _write_out(folder: Path, docs: list[tuple], force: bool) -> None:
     """Write atomically: everything goes to a temporary folder first, then is moved in.
     ``docs``: (subfolder, document, results, title, figures.Context) of each run."""
-    from hertzmdr.numeric.scene.figures import write_all
+    from hertzmdr.numeric.scene.table import write
 
     check_out(folder, force)
-    folder.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
+    try:
+        folder.parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=".hertzmdr-", dir=folder.parent))
+    except OSError as exc:
+        raise UsageError(f"--out {folder}: cannot write ({exc.strerror})") from None
     try:
         for sub_name, doc, results, title, ctx in docs:
             target = tmp / sub_name if sub_name else tmp
             target.mkdir(parents=True, exist_ok=True)
             (target / "result.json").write_text(json.dumps(doc, indent=2) + "\n")
-            write_all(results, title, target, ctx)
+            write(doc, results, title, target, ctx)
         folder.mkdir(exist_ok=True)
         for item in sorted(tmp.rglob("*")):
             dest = folder / item.relative_to(tmp)
@@ -110,6 +126,8 @@ def _write_out(folder: Path, docs: list[tuple], force: bool) -> None:
                 dest.mkdir(exist_ok=True)
             else:
                 os.replace(item, dest)
+    except OSError as exc:  # a full disk, a file system that refuses midway
+        raise UsageError(f"--out {folder}: cannot write ({exc.strerror})") from None
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
@@ -118,8 +136,10 @@ def _check_figures(runs) -> None:
     """--out draws a PNG per field effect: without matplotlib (the ``plot`` extra) say so in
     one line before anything is printed or written."""
     from hertzmdr.numeric.scene.figures import FIGURES
+    from hertzmdr.numeric.scene.table import needs_matplotlib
 
     fields = sorted({name for *_, results, _ in runs for name in results if name in FIGURES})
+    fields += ["the study's plots"] if any(needs_matplotlib(doc) for *_, doc in runs) else []
     if not fields:
         return
     try:
@@ -132,23 +152,36 @@ def _check_figures(runs) -> None:
 def cmd_run(args) -> int:
     from hertzmdr.numeric import scene
     from hertzmdr.numeric.scene.report import table
+    from hertzmdr.numeric.scene.table import axes_lines, csv_text, rows_table, study_table
 
+    if args.json and args.csv:
+        raise UsageError("run: give --json or --csv, not both (see: hertzmdr run -h)")
+    if args.csv and not args.scene:
+        raise UsageError("run: --csv prints the table of one scene: give a SCENE "
+                         "(see: hertzmdr run -h)")
     paths = [Path(args.scene)] if args.scene else tour_scenes()
     if args.out:
         check_out(args.out, args.force)
     runs = []
     for path in paths:
         sc = scene.load(path)
-        record, results, doc = sc.run_full()
+        record, results, doc = sc.run_full(progress=_progress())
         runs.append((path, record, results, doc))
     if args.out:
         _check_figures(runs)
     if args.json:
         docs = [doc for *_, doc in runs]
         print(json.dumps(docs[0] if args.scene else docs, indent=2))
+    elif args.csv:
+        sys.stdout.write(csv_text(runs[0][-1]))
     else:
         for *_, results, doc in runs:
-            print(table(doc["title"], doc["model"], results, doc["warnings"]))
+            if "route" in doc.get("study", {}):
+                print(study_table(doc, doc["warnings"]))
+            else:
+                print(table(doc["title"], doc["model"], results, doc["warnings"]))
+                if "study" in doc:  # a load sweep: its points, one row each
+                    print("\n".join(axes_lines(doc["study"]) + rows_table(doc)))
             print()
     if args.out:
         from hertzmdr.numeric.scene.figures import context_of
@@ -159,6 +192,24 @@ def cmd_run(args) -> int:
         if not args.json:
             print(f"wrote {args.out}")
     return 0
+
+
+def _progress():
+    """A study run point by point reports its progress on stderr, when stderr is a terminal
+    (a pipe or a log file gets nothing), once a study has taken a second."""
+    if not sys.stderr.isatty():
+        return None
+    import time
+
+    start, shown = time.perf_counter(), []
+
+    def report(done: int, total: int) -> None:
+        if time.perf_counter() - start > 1.0 or (shown and done == total):
+            shown.append(done)
+            end = "\n" if done == total else ""
+            print(f"\rstudy: {done}/{total} points", end=end, file=sys.stderr, flush=True)
+
+    return report
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -236,8 +287,7 @@ def check_figure_out(path: Path, force: bool) -> None:
         raise UsageError(f"--out {path}: {parent} is a file, not a folder")
     if path.exists() and not force:
         raise UsageError(f"--out {path}: exists; pass --force to replace it")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise UsageError(f"--out {path}: {parent} is not writable")
+    _probe(parent, f"--out {path}")
 
 
 def cmd_accuracy(args) -> int:

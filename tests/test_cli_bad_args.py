@@ -116,3 +116,24 @@ def test_help_and_version_still_exit_0(argv, capsys):
         main(argv)
     assert exc.value.code == 0
     assert capsys.readouterr().out.strip()
+
+
+#: a place no one can write in, not even root (os.access says yes to root on most file
+#: systems; /proc refuses the mkdir itself)
+UNWRITABLE = Path("/proc/hertzmdr-cannot-write-here")
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
+@pytest.mark.parametrize("argv", [
+    ["run", "{scene}", "--out", "{bad}/out"],
+    ["accuracy", "--quick", "--out", "{bad}/report.md"],
+    ["fit", "{curve}", "--scene", "{fitscene}", "--out", "{bad}/fit.png"],
+], ids=["run", "accuracy", "fit"])
+def test_out_where_the_file_system_refuses(argv, capsys):
+    subs = {"{scene}": SCENE, "{bad}": str(UNWRITABLE), "{curve}": FIT_CURVE,
+            "{fitscene}": FIT_SCENE}
+    args = [next((a.replace(k, v) for k, v in subs.items() if k in a), a) for a in argv]
+    assert main(args) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1, (out, err)
+    assert err.startswith("hertzmdr: --out ") and "cannot write in /proc" in err, err

@@ -132,7 +132,14 @@ ROUTES = {
     "problem7c_cone": (lambda: PowerLaw(e_star((3e9, 0.35)), mp.tan(_rad(30)), 1), 0.35),
     "problem7d_power_law": (lambda: PowerLaw(e_star((70e9, 0.33)), 1e6, 3), 0.33),
     "problem8_worn_parabola": (lambda: _worn(e_star((130e9, 0.28)), 50e-6, 2e-6), 0.28),
+    # the load sweeps among the studies (docs/scenes.md, "Studies"): every load point
+    "study_afm_force_gel": (lambda: Hertz(e_star((70e9, 0.17), (10e3, 0.5)), 10e-6), 0.17),
+    "study_dem_depth_glass_beads": (lambda: Hertz(e_star(BEAD, BEAD), mp.mpf("0.5e-3")),
+                                    0.22),
 }
+#: the examples that sweep a key other than the load: each point is a scene that the studies'
+#: tests compare with its own single run (tests/test_studies.py), whose routes are these
+STUDIES = ("study_bearing_load_radius", "study_crossing_angle", "study_poisson_ratio")
 
 
 def _case_of(stem: str) -> tuple[Case, dict]:
@@ -146,8 +153,8 @@ def _case_of(stem: str) -> tuple[Case, dict]:
     ld = sc.spec.load
     if ld.kind in ("depth", "force"):
         v = ld.values
-        load = {ld.kind: ({"from": v[0], "to": v[-1], "points": len(v)} if ld.sweep
-                          else v[0])}
+        load = {ld.kind: ({"from": v[0], "to": v[-1], "points": len(v),
+                           "spacing": ld.spacing} if ld.sweep else v[0])}
     else:
         load = data["load"]
     make, nu = ROUTES[stem]
@@ -270,7 +277,7 @@ def test_example_bounds(stem):
 
 
 def test_every_example_has_a_route():
-    assert sorted(p.stem for p in EXAMPLES.glob("*.toml")) == sorted(ROUTES)
+    assert sorted(p.stem for p in EXAMPLES.glob("*.toml")) == sorted([*ROUTES, *STUDIES])
 
 
 # -- sampled profiles -----------------------------------------------------------------------------

@@ -77,7 +77,8 @@ UNITS = {"length": [("m", 1.0), ("mm", 1e-3), ("um", 1e-6), ("µm", 1e-6), ("nm"
          "angle": [("rad", 1.0), ("deg", math.pi / 180)],
          "velocity": [("m/s", 1.0), ("km/h", 1 / 3.6)],
          "mass": [("kg", 1.0), ("g", 1e-3)],
-         "density": [("kg/m^3", 1.0), ("g/cm^3", 1e3)]}
+         "density": [("kg/m^3", 1.0), ("g/cm^3", 1e3)],
+         "energy_per_area": [("J/m^2", 1.0), ("mJ/m^2", 1e-3), ("N/m", 1.0)]}
 
 
 @st.composite
@@ -120,6 +121,13 @@ OFFERS = {
                  "surface_displacement", "effective_modulus"],
 }
 HERTZ_STRESS = ["axis_stresses", "max_shear", "max_von_mises", "von_mises_field"]
+#: the effects of an adhesive interface (issue 15) and of a tangential load (issue 16); a scene
+#: without them must refuse them with a SceneError
+ADHESIVE = ["pull_off_force", "pull_off_depth", "zero_load_contact_radius",
+            "adhesive_force_depth_curve"]
+TANGENTIAL = ["sliding_force", "tangential_stiffness", "tangential_force",
+              "tangential_displacement", "stick_radius", "traction_profile", "hysteresis_loop",
+              "dissipated_energy"]
 
 
 SHAPES = ("sphere", "cylinder", "ellipsoid", "cone", "flat_punch", "power_law",
@@ -212,12 +220,17 @@ def valid_scene(draw):
                            "points": draw(st.integers(2, 5))}}
         else:
             load = {kind: draw(quantity(dim, lo, hi))}
+    extra, doc_interface = [], {}
+    if kind in ("depth", "force") and draw(st.integers(0, 3)) == 0:
+        interface, load, extra = draw(interface_and_load(kind, load))
+        if interface:
+            doc_interface = interface
     shapes = {b["shape"] for b in bodies}
     offers = ("pressure" if kind == "pressure" else "impact" if kind == "impact" else
               "hertz" if shapes <= {"sphere", "flat"} else
               "cylinder" if shapes & set(QUADRATIC) else
               "bem" if shapes & {"polygon_punch", "height_map"} else "mdr")
-    pool = OFFERS[offers] + (HERTZ_STRESS if offers == "hertz" else [])
+    pool = OFFERS[offers] + (HERTZ_STRESS if offers == "hertz" else []) + extra
     if draw(st.integers(0, 9)) == 0:
         pool = sorted({e for v in OFFERS.values() for e in v})
     effects = draw(st.lists(st.sampled_from(pool), min_size=1, max_size=4, unique=True))
@@ -225,7 +238,105 @@ def valid_scene(draw):
            "effects": effects, "body": bodies, "load": load}
     if draw(st.integers(0, 4)) == 0:
         doc["accuracy"] = {"rtol": draw(st.sampled_from([1e-6, 1e-10, 1e-3]))}
+    if extra and doc_interface:
+        doc["interface"] = doc_interface
+    if draw(st.integers(0, 3)) == 0:  # a study: one swept key, now and then two
+        for _ in range(draw(st.integers(1, 2))):
+            study_sweep(draw, bodies)
     return doc, files
+
+
+@st.composite
+def interface_and_load(draw, kind, load):
+    """An ``[interface]`` (adhesion, friction or both) and the load forms that go with it: an
+    approach-retract ``cycle`` (issue 15), or a ``tangential``/``oscillating`` part at the
+    normal load (issue 16). Returns (interface table, load table, effects it offers)."""
+    interface, extra = {}, []
+    if draw(st.booleans()):
+        interface["work_of_adhesion"] = draw(quantity("energy_per_area", 1e-4, 1.0))
+        if draw(st.booleans()):
+            interface["range"] = draw(quantity("length", 1e-10, 1e-8))
+        extra += ADHESIVE
+        if draw(st.booleans()):
+            dim, lo, hi = (("length", 1e-9, 1e-6) if draw(st.booleans()) else
+                           ("force", 1e-9, 1e-3))
+            cycle = {"to": draw(quantity(dim, lo, hi))}
+            if dim == "force" or draw(st.booleans()):
+                cycle["control"] = "force" if dim == "force" else "depth"
+            if draw(st.booleans()):
+                cycle["points"] = draw(st.integers(20, 400))
+            return interface, {"cycle": cycle}, extra
+    if not interface or draw(st.booleans()):
+        interface["friction"] = draw(st.sampled_from([0.0, 0.1, 0.3, 0.6, 1.5]))
+        extra += TANGENTIAL
+        load = dict(load)
+        if not any(isinstance(v, dict) for v in load.values()):  # one normal value, no sweep
+            form = draw(st.sampled_from(["force", "displacement", "oscillating", "none"]))
+            if form == "force":
+                load["tangential"] = {"force": draw(quantity("force", 1e-6, 1e2))}
+            elif form == "displacement":
+                load["tangential"] = {"displacement": draw(quantity("length", 1e-10, 1e-5))}
+            elif form == "oscillating":
+                osc = {"amplitude": draw(quantity("force", 1e-6, 1e2))}
+                if draw(st.booleans()):
+                    osc["cycles"] = draw(st.integers(1, 3))
+                load["oscillating"] = osc
+    return interface, load, extra
+
+
+AXISYMMETRIC = ("sphere", "cone", "flat_punch", "power_law", "flattened_parabola",
+                "exact_sphere", "profile")
+
+
+@st.composite
+def interface_scene(draw):
+    """(document, files): an axisymmetric tip on a flat with an ``[interface]`` and its load
+    forms, asking mostly for the effects that the interface brings (the generic scenes draw
+    those rarely enough that few of them run)."""
+    body, files = draw(shaped_body(AXISYMMETRIC))
+    body.update(material(draw))
+    other = {"shape": "flat", "E": draw(quantity("pressure", 1e6, 1e12)),
+             "nu": draw(st.sampled_from([0.0, 0.3, 0.5]))}
+    kind = draw(st.sampled_from(["depth", "force"]))
+    dim, lo, hi = (("length", 1e-9, 1e-5) if kind == "depth" else ("force", 1e-6, 1e2))
+    interface, load, extra = draw(interface_and_load(kind, {kind: draw(quantity(dim, lo, hi))}))
+    effects = draw(st.lists(st.sampled_from(extra + ["force", "contact_radius", "depth",
+                                                     "pressure_profile"]),
+                            min_size=1, max_size=3, unique=True))
+    return {"effects": effects, "body": [body, other], "load": load,
+            "interface": interface}, files
+
+
+def study_sweep(draw, bodies) -> None:
+    """Sweep one numeric key of a body (docs/scenes.md, "Studies"): E, nu, a radius or an
+    axis, over 2 or 3 points, linear or log, with or without units."""
+    i = draw(st.integers(0, 1))
+    b = bodies[i]
+    keys = [k for k in ("E", "nu", "radius", "axis") if k in b and not isinstance(b[k], dict)]
+    if not keys:
+        return
+    key = draw(st.sampled_from(keys))
+    n, spacing = draw(st.integers(2, 3)), draw(st.sampled_from(["linear", "log"]))
+    if key == "nu":
+        lo, hi = draw(st.sampled_from([(0.0, 0.5), (0.1, 0.45), (-0.5, 0.3)]))
+        spacing = "linear" if lo <= 0 else spacing
+        b[key] = {"from": lo, "to": hi, "points": n, "spacing": spacing}
+    elif key == "axis":
+        b[key] = {"from": "10 deg", "to": draw(st.sampled_from(["80 deg", "1.5 rad"])),
+                  "points": n, "spacing": spacing}
+    else:
+        lo = draw(quantity("pressure", 1e6, 1e12) if key == "E" else
+                  quantity("length", 1e-5, 1.0))
+        b[key] = {"from": lo, "to": _scaled_up(lo, draw(st.floats(1.5, 10.0))), "points": n,
+                  "spacing": spacing}
+
+
+def _scaled_up(v, factor):
+    """``v`` (an SI number or a string with a unit) times ``factor``, in the same form."""
+    if isinstance(v, str):
+        number, unit = v.split(" ", 1)
+        return f"{float(number) * factor:.6g} {unit}"
+    return v * factor
 
 
 # -- broken scenes ---------------------------------------------------------------------------------
@@ -266,8 +377,8 @@ def broken_scene(draw):
     doc, files = draw(valid_scene())
     doc = json.loads(json.dumps(doc))  # a deep copy (NaN survives: only valid numbers here)
     for _ in range(draw(st.integers(1, 3))):
-        how = draw(st.sampled_from(["value", "delete", "extra", "sweep", "csv", "unicode_key",
-                                    "text"]))
+        how = draw(st.sampled_from(["value", "delete", "extra", "sweep", "history", "csv",
+                                    "unicode_key", "text", "study"]))
         paths = _paths(doc)
         if how == "value" and paths:
             path, _ = draw(st.sampled_from(paths))
@@ -294,6 +405,25 @@ def broken_scene(draw):
                               "points": st.sampled_from([1, 2, 3, 2.5, 0, -3, True, "3",
                                                          100_001, 10**20]),
                               "step": st.just(1)}))}
+        elif how == "history":
+            ld = doc.get("load") if isinstance(doc.get("load"), dict) else {}
+            form = draw(st.sampled_from(["cycle", "tangential", "oscillating"]))
+            ld[form] = draw(st.fixed_dictionaries(
+                {}, optional={"to": st.sampled_from(["10 nm", "1 N", 0, -1, "x", math.nan]),
+                              "control": st.sampled_from(["depth", "force", "both", 1]),
+                              "points": st.sampled_from([19, 20, 100_001, 2.5, True]),
+                              "force": st.sampled_from(["30 N", "1 m", -1, 1e308]),
+                              "displacement": st.sampled_from(["1 um", "1 N", 0, math.inf]),
+                              "amplitude": st.sampled_from(["30 N", 0, "-1 N", "1 mm"]),
+                              "cycles": st.sampled_from([0, 1, 2.5, -1, 10**9])}))
+            doc["load"] = ld
+            if draw(st.booleans()):
+                doc["interface"] = draw(st.fixed_dictionaries(
+                    {}, optional={"work_of_adhesion": st.sampled_from(
+                        ["0.05 J/m^2", "0 J/m^2", "-1 J/m^2", "1 N", 0.05, math.nan]),
+                        "range": st.sampled_from(["0.3 nm", "0 m", "1 N", -1.0]),
+                        "friction": st.sampled_from([0.6, -0.1, "0.6", math.inf, True]),
+                        "stickiness": st.just(1.0)}))
         elif how == "csv":
             name = draw(st.sampled_from(["tip.csv", "map.csv"]))
             files[name] = draw(st.sampled_from([
@@ -307,6 +437,17 @@ def broken_scene(draw):
                     b["file"] = name
                     if b["shape"] == "profile":
                         b["unit"] = draw(st.sampled_from(["nm", "m", "N", "", "furlong", 3]))
+        elif how == "study" and isinstance(doc.get("body"), list) and doc["body"]:
+            b = doc["body"][draw(st.integers(0, len(doc["body"]) - 1))]
+            if isinstance(b, dict):
+                b[draw(st.sampled_from(["radius", "E", "nu", "axis", "shape"]))] = draw(
+                    st.fixed_dictionaries({}, optional={
+                        "from": st.sampled_from([0, "1 mm", "-1 mm", "2 GPa", 0.6, "x", True,
+                                                 math.nan, 1e308]),
+                        "to": st.sampled_from(["3 mm", "1 N", 0.2, -1.0, math.inf, "5 GPa"]),
+                        "points": st.sampled_from([1, 2, 3, 2.5, True, 10**7, "3"]),
+                        "spacing": st.sampled_from(["log", "linear", "cubic", 2]),
+                        "step": st.just(1)}))
         elif how == "unicode_key":
             doc[draw(st.text(min_size=1, max_size=6))] = draw(st.sampled_from(BAD_VALUES))
         elif how == "text":
@@ -319,6 +460,8 @@ def broken_scene(draw):
 
 # -- running ---------------------------------------------------------------------------------
 def _finite_values(v, method):
+    if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):  # a study's fields
+        return all(_finite_values(x, method) for x in v)
     if isinstance(v, dict):
         return all(_finite_values(x, method) for x in v.values())
     arr = np.asarray(v, dtype=float)
@@ -379,6 +522,23 @@ def test_valid_scenes(tmp_path_factory, case):
     check_scene(tmp_path_factory.mktemp("fuzz"), *case)
 
 
+# a cone sliding (q = mu p, log-infinite on the axis): the traction profile began at r = 0
+@example(case=({"effects": ["traction_profile"],
+                "body": [{"shape": "cone", "angle": 1.0, "rigid": True},
+                         {"shape": "flat", "E": 1.2e6, "nu": 0.0}],
+                "load": {"depth": 6.1e-6, "tangential": {"displacement": "6.1e-6 m"}},
+                "interface": {"friction": 0.1}}, {}))
+# the same cone adhesive: its pressure profile began at r = 0 too
+@example(case=({"effects": ["pressure_profile"],
+                "body": [{"shape": "cone", "angle": 1.0, "rigid": True},
+                         {"shape": "flat", "E": 1.2e6, "nu": 0.0}],
+                "load": {"depth": "6.1 um"}, "interface": {"work_of_adhesion": 1.0}}, {}))
+@CI
+@given(case=interface_scene())
+def test_interface_scenes(tmp_path_factory, case):
+    check_scene(tmp_path_factory.mktemp("fuzz"), *case)
+
+
 _HERTZ = [{"shape": "sphere", "radius": "1 m", "rigid": True},
           {"shape": "flat", "E": 1.2e6, "nu": 0.3}]
 _MAP = [{"shape": "height_map", "file": "map.csv", "spacing": 6e-6, "rigid": True},
@@ -403,6 +563,14 @@ _MAP = [{"shape": "height_map", "file": "map.csv", "spacing": 6e-6, "rigid": Tru
 # heights near float64's limit: the BEM's residual overflowed (a RuntimeWarning, then NaN)
 @example(case=({"effects": ["depth"], "body": _MAP, "load": {"depth": 6e-6}},
                {"map.csv": "0, 0\n10, 1e-300\n20, 4e300\n"}))
+# an adhesive sampled profile whose samples end before the contact of the requested depth: the
+# message printed the solver's repr, with a memory address (different in each run, not prose)
+@example(case=({"effects": ["contact_radius"],
+                "body": [{"shape": "profile", "r": [i * 1e-7 for i in range(12)],
+                          "f": [(i * 1e-7) ** 2 / 2e-4 for i in range(12)], "rigid": True},
+                         {"shape": "flat", "E": 3.6e9, "nu": 0.3}],
+                "load": {"depth": {"from": 0, "to": "6 um", "points": 2}},
+                "interface": {"work_of_adhesion": 1.0}}, {}))
 @CI
 @given(case=broken_scene())
 def test_broken_scenes(tmp_path_factory, case):
@@ -411,7 +579,7 @@ def test_broken_scenes(tmp_path_factory, case):
 
 @pytest.mark.sweep
 @SWEEP
-@given(case=st.one_of(valid_scene(), broken_scene()))
+@given(case=st.one_of(valid_scene(), interface_scene(), broken_scene()))
 def test_scenes_sweep(tmp_path_factory, case):
     if not FULL:
         pytest.skip("HERTZMDR_SWEEP=full runs the long fuzz")

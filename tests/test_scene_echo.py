@@ -143,3 +143,15 @@ def test_a_json_without_a_scene_is_refused(tmp_path):
     (tmp_path / "bad.json").write_text("{")
     with pytest.raises(SceneError, match="JSON syntax"):
         load(tmp_path / "bad.json")
+
+
+def test_a_study_echoes_its_sweep():
+    """A study's swept key is echoed as its sweep (not the corner its scene was read at), its
+    ends in SI with the key's unit and its points a count; read back, the same study."""
+    path = Path(__file__).parents[1] / "examples" / "study_bearing_load_radius.toml"
+    doc = load(path).run()
+    radius = doc["scene"]["body"][0]["radius"]
+    assert radius["from"] == {"value": 0.004, "unit": "m"}
+    assert radius["points"] == {"value": 5, "unit": "1"}
+    again = load(json.loads(json.dumps(doc)))
+    assert again.spec.study.shape == load(path).spec.study.shape

@@ -1,5 +1,6 @@
 """Every malformed scene gets one clear message naming the file and the key, and exit code 2."""
 
+import re
 import subprocess
 import sys
 
@@ -244,8 +245,12 @@ def test_sampled_profile_that_decreases_names_the_sample():
 def test_sampled_profile_too_short_says_where_the_samples_end():
     from hertzmdr.numeric import scene
 
-    with pytest.raises(scene.SceneError, match=r"they end at r_max = 1e-06 m.*further out"):
+    with pytest.raises(scene.SceneError, match=r"they end at r_max = 1e-06 m.*further out") \
+            as info:
         scene.load(_profile_scene(lambda r: [x * x / 2e-6 for x in r], 1e-6)).run()
+    # prose: the reached depth printed with 6 digits, not a float's 17 (g(r_max) = 0.25 um
+    # carries the quadrature's last-digit noise)
+    assert re.search(r"g\(r_max\) = \d(\.\d{1,5})?e-0\d m", str(info.value)), str(info.value)
 
 
 def test_sample_file_unit(tmp_path):
@@ -277,3 +282,40 @@ def test_sample_file_unit(tmp_path):
         force({"r": [0.0, 1e-7, 2e-7], "f": [0.0, 1e-8, 4e-8], "unit": "nm"})
     with pytest.raises(scene.SceneError, match="unit"):
         force({"file": "nm.csv", "unit": "N"})
+
+
+HEIGHT_MAP_SCENE = """\
+effects = ["force"]
+[[body]]
+shape = "height_map"
+file = "heights.csv"
+spacing = "1 um"
+rigid = true
+[[body]]
+shape = "flat"
+E = "1 GPa"
+nu = 0.3
+[load]
+depth = "1 nm"
+"""
+
+
+@pytest.mark.parametrize("content", [b"0,1,2\n1,x,3\n2,3,4\n", b"\x00\xff\xfe"],
+                         ids=["not a number", "not text"])
+def test_unreadable_height_map_names_its_file(tmp_path, capsys, content):
+    (tmp_path / "heights.csv").write_bytes(content)
+    (tmp_path / "s.toml").write_text(HEIGHT_MAP_SCENE)
+    assert main(["run", str(tmp_path / "s.toml")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "heights.csv: cannot read the heights" in err, err
+
+
+def test_grid_size_is_reported_as_integers(tmp_path):
+    from hertzmdr.numeric import scene
+
+    (tmp_path / "heights.csv").write_text(
+        "\n".join(",".join(f"{(i - 3) ** 2 + (j - 3) ** 2:g}e-9" for j in range(8))
+                  for i in range(8)) + "\n")
+    (tmp_path / "s.toml").write_text(HEIGHT_MAP_SCENE)
+    grid = scene.load(tmp_path / "s.toml").run()["model"]["grid"]
+    assert grid == [8, 8] and all(type(n) is int for n in grid), grid

@@ -24,8 +24,9 @@ def radius(rep: Rep, r_max: float, d: float, guess: float | None = None) -> floa
     lo, hi = 0.0, r_max
     g_hi = quadrature.g(rep, np.array([hi]))[0]
     if g_hi < d:
-        raise ValueError(f"depth {float(d)} m exceeds g(r_max) = {float(g_hi)} m, the largest "
-                         f"depth the samples reach (they end at r_max = {float(r_max)} m): the "
+        raise ValueError(f"depth {float(d):.6g} m exceeds g(r_max) = {float(g_hi):.6g} m, the "
+                         f"largest depth the samples reach (they end at r_max = "
+                         f"{float(r_max):.6g} m): the "
                          "profile is too short for this depth; sample it further out")
     if guess is None:
         xs = np.linspace(0, hi, 17)[1:]

@@ -26,12 +26,24 @@ class Scene:
         """Compute the requested effects; returns the JSON document as a dict (SI units)."""
         return self.run_full()[2]
 
-    def run_full(self):
-        """(run record, results, document): the record lists the nodes evaluated."""
+    def run_full(self, progress=None):
+        """(run record, results, document): the record lists the nodes evaluated; for a study
+        (docs/scenes.md, "Studies") it is the :class:`~.study.StudyRun`, each result one entry
+        per point, and ``progress(done, total)`` is called after each point of a study run
+        point by point."""
         from hertzmdr.numeric.scene.runner import document, run
 
+        study = self.spec.study
+        if study is not None and not study.load_only:
+            from hertzmdr.numeric.scene import study as st
+
+            record = st.run(self.spec, progress)
+            return record, record.results, st.document(self.spec, record)
         record, results = run(self.spec)
-        return record, results, document(record, results)
+        doc = document(record, results)
+        if study is not None:  # a load sweep: the swept load in the result too
+            doc["study"] = study.block()
+        return record, results, doc
 
 
 def load(path_or_dict) -> Scene:

@@ -46,9 +46,12 @@ def _key(path: tuple, data: dict) -> str:
 
 
 def _how(path: tuple, spec) -> tuple[str, str] | None:
-    """How the reader took the value at ``path``: the record of its longest prefix (the two
-    coordinates of a polygon's corner share one)."""
+    """How the reader took the value at ``path``: its own record, or that of the list it is
+    an element of (the two coordinates of a polygon's corner share one); a key of a table
+    (a sweep's ``points``) has its own record or none."""
     for k in range(len(path), 0, -1):
+        if not all(isinstance(part, int) for part in path[k:]):
+            break
         got = spec.read_as.get(_key(path[:k], spec.raw))
         if got is not None:
             return got

@@ -47,7 +47,9 @@ EXTENT_LABELS = {"line": "a (half-width)", "elliptic": "a (semi-axis along x)",
 def context_of(run) -> Context:
     """The :class:`Context` of a run (runner.Run): its kind and its extent at the largest load
     (from the kind's ``extent(d)``, when the run evaluated the contact state)."""
-    contact = run.contact
+    contact = getattr(run, "contact", None)
+    if contact is None:  # a study (study.StudyRun): one contact per point, nothing to mark
+        return Context()
     kind = contact.kind
     st = run._nodes.get("state")
     extent = None

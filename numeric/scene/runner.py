@@ -107,16 +107,18 @@ def run(spec: SceneSpec) -> tuple[Run, dict[str, Result]]:
 
 
 def to_json_value(value):
-    """Arrays to lists, NumPy scalars to floats, recursively."""
+    """Arrays to lists, NumPy scalars to Python numbers (a count stays an integer: a grid of
+    32 x 32 pixels, not 32.0), recursively."""
     if isinstance(value, dict):
         return {k: to_json_value(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
         return [to_json_value(v) for v in value]
     arr = np.asarray(value)
     if arr.ndim == 0:
-        return float(arr) if arr.dtype.kind in "fiu" else value
-    if arr.size == 1 and arr.ndim == 1:
-        return float(arr[0])
+        return (int(arr) if arr.dtype.kind in "iu" else float(arr) if arr.dtype.kind == "f"
+                else value)
+    if arr.size == 1 and arr.ndim == 1 and arr.dtype.kind in "fiu":
+        return int(arr[0]) if arr.dtype.kind in "iu" else float(arr[0])
     return arr.tolist()
 
 

@@ -57,6 +57,7 @@ class Load:
     kind: str  # "depth", "force", "impact" or "pressure"
     values: list[float] = field(default_factory=list)  # one value, or the points of a sweep
     sweep: bool = False
+    spacing: str = "linear"  # a sweep's: "linear" or "log"
     velocity: float | None = None
     mass: float | None = None
     density: float | None = None
@@ -79,6 +80,8 @@ class SceneSpec:
     interface: Interface
     source: str
     base_dir: Path | None
+    #: the swept keys (numeric/scene/study.py): None, a load sweep alone, or a study
+    study: object = None
     #: the document as given (TOML tables as dicts) and how the reader took each value
     #: (key as in errors -> (how, dimension or unit)): what result.json echoes (echo.py)
     raw: dict = field(default_factory=dict)
@@ -93,9 +96,9 @@ def read(path_or_dict, *, known_effects) -> SceneSpec:
         if "hertzmdr_version" in path_or_dict:
             from hertzmdr.numeric.scene.echo import scene_of
 
-            return _Reader("<result>", None, known_effects).scene(
-                scene_of(path_or_dict, "<result>"))
-        return _Reader("<scene>", None, known_effects).scene(path_or_dict)
+            return _read(_Reader("<result>", None, known_effects),
+                         scene_of(path_or_dict, "<result>"), "scene")
+        return _read(_Reader("<scene>", None, known_effects), path_or_dict, "scene")
     path = Path(path_or_dict)
     where = str(path)
     try:
@@ -107,12 +110,22 @@ def read(path_or_dict, *, known_effects) -> SceneSpec:
     if path.suffix.lower() == ".json":
         from hertzmdr.numeric.scene.echo import read_result
 
-        return _Reader(where, path.parent, known_effects).scene(read_result(text, where))
+        return _read(_Reader(where, path.parent, known_effects), read_result(text, where),
+                     path.stem)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(where, "", f"TOML syntax error: {exc}") from None
-    return _Reader(where, path.parent, known_effects).scene(data, default_title=path.stem)
+    return _read(_Reader(where, path.parent, known_effects), data, path.stem)
+
+
+def _read(reader: _Reader, data: dict, default_title: str) -> SceneSpec:
+    """The scene with its sweeps, if any (numeric/scene/study.py)."""
+    from hertzmdr.numeric.scene.study import read_scene
+
+    spec = read_scene(reader, data, default_title)
+    spec.raw = data  # a study reads its scene at a corner: the echo is of the document itself
+    return spec
 
 
 def suggest(name: str, choices) -> str:
@@ -394,7 +407,7 @@ class _Reader:
         dim = "length" if kind == "depth" else "force"
         value = ld[kind]
         if isinstance(value, dict):
-            self.extra_keys(value, {"from", "to", "points"}, f"load.{kind}")
+            self.extra_keys(value, {"from", "to", "points", "spacing"}, f"load.{kind}")
             for k in ("from", "to", "points"):
                 if k not in value:
                     self.fail(f"load.{kind}.{k}", "missing: a sweep is {from, to, points}")
@@ -405,6 +418,13 @@ class _Reader:
                 self.fail(f"load.{kind}.points", f"must be an integer in [2, 100000], got {n!r}")
             if not 0 <= lo < hi:
                 self.fail(f"load.{kind}", f"a sweep needs 0 <= from < to, got {lo} and {hi}")
-            return Load(kind, [lo + (hi - lo) * i / (n - 1) for i in range(n)], sweep=True)
+            spacing = value.get("spacing", "linear")
+            if spacing not in ("linear", "log"):
+                self.fail(f"load.{kind}.spacing", f"must be \"linear\" or \"log\", got "
+                          f"{spacing!r}")
+            from hertzmdr.numeric.scene.study import spaced
+
+            return Load(kind, spaced(lo, hi, n, spacing, self, f"load.{kind}").tolist(),
+                        sweep=True, spacing=spacing)
         v = self.positive(value, dim, f"load.{kind}")
         return Load(kind, [v])

@@ -214,6 +214,8 @@ class AdhesiveKind(StressEffects, Contact):
 
     def pressure_radii(self, a):
         r = super().pressure_radii(a)
+        if getattr(self.inner, "off_axis", False):  # a cone's p is log-infinite on the axis:
+            r[0] = a * 1e-3  # off it, as the inner kind's own profile
         return r[np.abs(r - a) > 1e-12 * a]  # p is -inf at the edge itself
 
     def effect_surface_displacement(self, st):

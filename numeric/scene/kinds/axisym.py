@@ -26,7 +26,10 @@ MAX_SEARCH_RTOL = 1e-12
 
 class Axisymmetric(TangentialEffects, StressEffects, Contact):
     """Base: the effects of an axisymmetric contact, from the primitives ``radius(d)``,
-    ``force_of(d)``, ``depth_of(F)``, ``p(r, d)``, ``u(r, d)`` and ``g(x)`` of a subclass."""
+    ``force_of(d)``, ``depth_of(F)``, ``p(r, d)``, ``u(r, d)`` and ``g(x)`` of a subclass
+    (a subclass that writes a state or an effect itself leaves out the primitives only that
+    effect would call: the numerical MDR solves each load and writes its fields from its
+    solution; the Hertz contact inverts (5.23) in its state)."""
 
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
     #: the method of the contact state (and of the force-depth curve)
@@ -399,18 +402,8 @@ class NumericalMDR(Axisymmetric):
         d = np.atleast_1d(np.asarray(d, float))
         return np.array([self._solve(depth=float(v)).force for v in d])
 
-    def depth_of(self, F):
-        F = np.atleast_1d(np.asarray(F, float))
-        return np.array([self._solve(force=float(v)).depth for v in F])
-
     def p(self, r, d):
         return self._solve(depth=float(d)).pressure(r)
-
-    def u(self, r, d):
-        return self._solve(depth=float(d)).displacement(r)
-
-    def g(self, x):
-        return self.profile.g(x)
 
     # -- every effect with the solver's own bound (numeric/mdr.py) ----------------------------
     # Field effects report max |error| / max |value| over their points; the pressure's bound is

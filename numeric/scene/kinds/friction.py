@@ -105,6 +105,8 @@ class TangentialEffects:
         self._need_load(ts, "traction_profile")
         a = ts.contact.a
         r = np.linspace(0.0, a, FIELD_POINTS)[:-1]  # the edge value of a punch is infinite
+        if getattr(self, "off_axis", False):  # as the pressure profile: a cone's p (and so q
+            r[0] = a * 1e-3  # under full slip) is log-infinite on the axis
         return Value({"r": r, "q": np.asarray(ts.contact.traction(r, ts.u_x), float)},
                      METHOD + ", (5.59)", TANGENTIAL_RTOL)
 

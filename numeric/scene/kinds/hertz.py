@@ -68,9 +68,6 @@ class HertzContact(Axisymmetric):
     def force_of(self, d):
         return hertz.force(d, self.R, self.E_star)
 
-    def depth_of(self, F):
-        return hertz.depth_from_force(F, self.R, self.E_star)
-
     def p(self, r, d):
         return hertz.pressure(r, d, self.R, self.E_star)
 
