@@ -159,8 +159,9 @@ def render_function(rel: Relation, flavor: str = "numpy") -> str:
         notes.append(f"Differs from the print (see docs/errata.md): {rel.erratum}")
     notes_text = "\n\n".join(textwrap.fill(n, 88) for n in notes)
     summary = rel.summary[0].upper() + rel.summary[1:]
-    doc = (f"{summary}.\n\n{notes_text}\n\n"
-           f"Parameters\n----------\n{_arg_lines(rel, flavor)}\n")
+    params = (f"Parameters\n----------\n{_arg_lines(rel, flavor)}\n" if rel.args
+              else "A constant: no parameters.\n")
+    doc = f"{summary}.\n\n{notes_text}\n\n{params}"
     doc = textwrap.indent(doc, "    ").rstrip() + "\n    "
     doc = doc.replace("\\", "\\\\")
     argstr = ", ".join(s.name for s in rel.args)

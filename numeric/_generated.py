@@ -162,6 +162,30 @@ __all__ = [
     'flamant_sigma_zz',
     'flamant_tau_xz',
     'flat_punch_tangential_traction',
+    'force_law_cone_exponent',
+    'force_law_cone_prefactor',
+    'force_law_cone_stiffness_exponent',
+    'force_law_cone_stiffness_prefactor',
+    'force_law_ellipse_exponent',
+    'force_law_ellipse_prefactor',
+    'force_law_ellipse_stiffness_exponent',
+    'force_law_ellipse_stiffness_prefactor',
+    'force_law_hertz_exponent',
+    'force_law_hertz_prefactor',
+    'force_law_hertz_stiffness_exponent',
+    'force_law_hertz_stiffness_prefactor',
+    'force_law_line_exponent',
+    'force_law_line_prefactor',
+    'force_law_line_stiffness_exponent',
+    'force_law_line_stiffness_prefactor',
+    'force_law_powerlaw_exponent',
+    'force_law_powerlaw_prefactor',
+    'force_law_powerlaw_stiffness_exponent',
+    'force_law_powerlaw_stiffness_prefactor',
+    'force_law_punch_exponent',
+    'force_law_punch_prefactor',
+    'force_law_punch_stiffness_exponent',
+    'force_law_punch_stiffness_prefactor',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -485,6 +509,30 @@ RELATIONS = (
     ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_tau_xz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x*z**2/(pi*(x**2 + z**2)**2)', ''),
     ('flat_punch_tangential_traction', 'MDR tangential, flat punch (not in the chapter)', 'tangential', 'G_star*u_x/(pi*sqrt(a**2 - r**2))', ''),
+    ('force_law_cone_exponent', '(5.40), F = K d^n', 'force_law', '2', ''),
+    ('force_law_cone_prefactor', '(5.40), F = K d^n', 'force_law', '2*E_star/(pi*tan(theta))', ''),
+    ('force_law_cone_stiffness_exponent', '(5.40), differentiated', 'force_law', '1', ''),
+    ('force_law_cone_stiffness_prefactor', '(5.40), differentiated', 'force_law', '4*E_star/(pi*tan(theta))', ''),
+    ('force_law_ellipse_exponent', '(5.23), exact ellipse, F = K d^n', 'force_law', '3/2', ''),
+    ('force_law_ellipse_prefactor', '(5.23), exact ellipse, F = K d^n', 'force_law', '2*sqrt(2)*pi*E_star*sqrt(R1)*sqrt((elliptic_e(1 - t_ba**2) - elliptic_k(1 - t_ba**2))/(t_ba**2 - 1))/(3*elliptic_k(1 - t_ba**2)**(3/2))', ''),
+    ('force_law_ellipse_stiffness_exponent', '(5.23), exact ellipse, differentiated', 'force_law', '1/2', ''),
+    ('force_law_ellipse_stiffness_prefactor', '(5.23), exact ellipse, differentiated', 'force_law', 'sqrt(2)*pi*E_star*sqrt(R1)*sqrt((elliptic_e(1 - t_ba**2) - elliptic_k(1 - t_ba**2))/(t_ba**2 - 1))/elliptic_k(1 - t_ba**2)**(3/2)', ''),
+    ('force_law_hertz_exponent', '(5.23), F = K d^n', 'force_law', '3/2', ''),
+    ('force_law_hertz_prefactor', '(5.23), F = K d^n', 'force_law', '4*E_star*sqrt(R)/3', ''),
+    ('force_law_hertz_stiffness_exponent', '(5.23), differentiated', 'force_law', '1/2', ''),
+    ('force_law_hertz_stiffness_prefactor', '(5.23), differentiated', 'force_law', '2*E_star*sqrt(R)', ''),
+    ('force_law_line_exponent', '(5.34), F = K d^n', 'force_law', '1', ''),
+    ('force_law_line_prefactor', '(5.34), F = K d^n', 'force_law', 'pi*E_star/4', ''),
+    ('force_law_line_stiffness_exponent', '(5.34), differentiated', 'force_law', '0', ''),
+    ('force_law_line_stiffness_prefactor', '(5.34), differentiated', 'force_law', 'pi*E_star/4', ''),
+    ('force_law_powerlaw_exponent', 'Problem 7(d), F = K d^n', 'force_law', '(n + 1)/n', ''),
+    ('force_law_powerlaw_prefactor', 'Problem 7(d), F = K d^n', 'force_law', '2*E_star*n*(1/(c_n*kappa_n))**(1/n)/(n + 1)', ''),
+    ('force_law_powerlaw_stiffness_exponent', 'Problem 7(d), differentiated', 'force_law', '1/n', ''),
+    ('force_law_powerlaw_stiffness_prefactor', 'Problem 7(d), differentiated', 'force_law', '2*E_star*(1/(c_n*kappa_n))**(1/n)', ''),
+    ('force_law_punch_exponent', 'Problem 7(a), F = K d^n', 'force_law', '1', ''),
+    ('force_law_punch_prefactor', 'Problem 7(a), F = K d^n', 'force_law', '2*E_star*a', ''),
+    ('force_law_punch_stiffness_exponent', 'Problem 7(a), differentiated', 'force_law', '0', ''),
+    ('force_law_punch_stiffness_prefactor', 'Problem 7(a), differentiated', 'force_law', '2*E_star*a', ''),
     ('hertz_contact_radius', '(5.21)', 'hertz', 'sqrt(R)*sqrt(d)', ''),
     ('hertz_contact_radius_from_force', '(5.24)', 'hertz', '6**(1/3)*F**(1/3)*R**(1/3)/(2*E_star**(1/3))', ''),
     ('hertz_depth_from_force', '(5.23), inverted', 'hertz', '6**(2/3)*F**(2/3)/(4*E_star**(2/3)*R**(1/3))', ''),
@@ -4963,6 +5011,418 @@ def flat_punch_tangential_traction(r, a, G_star, u_x):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return G_star*u_x/(numpy.pi*numpy.sqrt(a**2 - r**2))
+
+
+def force_law_cone_exponent():
+    """Exponent n [1] of the force law F = K d^n of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), F = K d^n. Derived from: the logarithmic slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_cone_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 2
+
+
+def force_law_cone_prefactor(E_star, theta):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), F = K d^n. Derived from: F/d^n with n the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_cone_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*E_star/(numpy.pi*numpy.tan(theta))
+
+
+def force_law_cone_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 1
+
+
+def force_law_cone_stiffness_prefactor(E_star, theta):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the logarithmic
+    slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    return 4*E_star/(numpy.pi*numpy.tan(theta))
+
+
+def force_law_ellipse_exponent():
+    """Exponent n [1] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, F = K d^n. Derived from: the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_ellipse_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 3/2
+
+
+def force_law_ellipse_prefactor(E_star, R1, t_ba):
+    """Prefactor K [N/m^n] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, F = K d^n. Derived from: F/d^n with n the logarithmic
+    slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_ellipse_law_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force:
+    the K, E form cancels as t -> 1 (the circle).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (2/3)*numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/scipy.special.ellipk(1 - t_ba**2)**(3/2)
+
+
+def force_law_ellipse_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, differentiated. Derived from: the logarithmic slope of
+    dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 1/2
+
+
+def force_law_ellipse_stiffness_prefactor(E_star, R1, t_ba):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, differentiated. Derived from: (dF/dd)/d^(n_k) with n_k
+    the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Printed in a stable form: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force:
+    the K, E form cancels as t -> 1 (the circle).
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/scipy.special.ellipk(1 - t_ba**2)**(3/2)
+
+
+def force_law_hertz_exponent():
+    """Exponent n [1] of the force law F = K d^n of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), F = K d^n. Derived from: the logarithmic slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_hertz_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 3/2
+
+
+def force_law_hertz_prefactor(E_star, R):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), F = K d^n. Derived from: F/d^n with n the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_hertz_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (4/3)*E_star*numpy.sqrt(R)
+
+
+def force_law_hertz_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 1/2
+
+
+def force_law_hertz_stiffness_prefactor(E_star, R):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the logarithmic
+    slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return 2*E_star*numpy.sqrt(R)
+
+
+def force_law_line_exponent():
+    """Exponent n [1] of the force law F per unit length = K d^n of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), F = K d^n. Derived from: the logarithmic slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_line_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 1
+
+
+def force_law_line_prefactor(E_star):
+    """Prefactor K [N/m per m] of the force law F per unit length = K d^n of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), F = K d^n. Derived from: F/d^n with n the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_line_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    return (1/4)*numpy.pi*E_star
+
+
+def force_law_line_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 0
+
+
+def force_law_line_stiffness_prefactor(E_star):
+    """Prefactor K_k [N/m per m] of the stiffness law dF/L/dd = K_k d^(n - 1) of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the logarithmic
+    slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    return (1/4)*numpy.pi*E_star
+
+
+def force_law_powerlaw_exponent(n):
+    """Exponent n [1] of the force law F = K d^n of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), F = K d^n. Derived from: the logarithmic slope d F'/F of the
+    force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_powerlaw_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return (n + 1)/n
+
+
+def force_law_powerlaw_prefactor(E_star, c_n, kappa_n, n):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), F = K d^n. Derived from: F/d^n with n the logarithmic slope d
+    F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_powerlaw_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*n*(1/(c_n*kappa_n))**(n**(-1.0))/(n + 1)
+
+
+def force_law_powerlaw_stiffness_exponent(n):
+    """Exponent n - 1 [1] of the stiffness law of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return n**(-1.0)
+
+
+def force_law_powerlaw_stiffness_prefactor(E_star, c_n, kappa_n, n):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the
+    logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*(1/(c_n*kappa_n))**(n**(-1.0))
+
+
+def force_law_punch_exponent():
+    """Exponent n [1] of the force law F = K d^n of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), F = K d^n. Derived from: the logarithmic slope d F'/F of the
+    force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_punch_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 1
+
+
+def force_law_punch_prefactor(E_star, a):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), F = K d^n. Derived from: F/d^n with n the logarithmic slope d
+    F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_punch_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
+def force_law_punch_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 0
+
+
+def force_law_punch_stiffness_prefactor(E_star, a):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the
+    logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    """
+    return 2*E_star*a
 
 
 def hertz_contact_radius(R, d):
@@ -10321,6 +10781,52 @@ def textbook_fit_sphere_force_dE(R, lam):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
+
+
+def textbook_force_law_ellipse_prefactor(E_star, R1, t_ba):
+    """Prefactor K [N/m^n] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio), in the derived (textbook) form; use force_law_ellipse_prefactor: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force: the K, E form cancels as t -> 1 (the circle).
+
+    Chapter: (5.23), exact ellipse, F = K d^n. Derived from: F/d^n with n the logarithmic
+    slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_ellipse_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return (2/3)*numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt((scipy.special.ellipe(1 - t_ba**2) - scipy.special.ellipk(1 - t_ba**2))/(t_ba**2 - 1))/scipy.special.ellipk(1 - t_ba**2)**(3/2)
+
+
+def textbook_force_law_ellipse_stiffness_prefactor(E_star, R1, t_ba):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio), in the derived (textbook) form; use force_law_ellipse_stiffness_prefactor: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force: the K, E form cancels as t -> 1 (the circle).
+
+    Chapter: (5.23), exact ellipse, differentiated. Derived from: (dF/dd)/d^(n_k) with n_k
+    the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : float or ndarray
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : float or ndarray
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    import scipy.special
+
+    return numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt((scipy.special.ellipe(1 - t_ba**2) - scipy.special.ellipk(1 - t_ba**2))/(t_ba**2 - 1))/scipy.special.ellipk(1 - t_ba**2)**(3/2)
 
 
 def textbook_hertz_displacement_outside(R, d, r):

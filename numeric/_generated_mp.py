@@ -159,6 +159,30 @@ __all__ = [
     'flamant_sigma_zz',
     'flamant_tau_xz',
     'flat_punch_tangential_traction',
+    'force_law_cone_exponent',
+    'force_law_cone_prefactor',
+    'force_law_cone_stiffness_exponent',
+    'force_law_cone_stiffness_prefactor',
+    'force_law_ellipse_exponent',
+    'force_law_ellipse_prefactor',
+    'force_law_ellipse_stiffness_exponent',
+    'force_law_ellipse_stiffness_prefactor',
+    'force_law_hertz_exponent',
+    'force_law_hertz_prefactor',
+    'force_law_hertz_stiffness_exponent',
+    'force_law_hertz_stiffness_prefactor',
+    'force_law_line_exponent',
+    'force_law_line_prefactor',
+    'force_law_line_stiffness_exponent',
+    'force_law_line_stiffness_prefactor',
+    'force_law_powerlaw_exponent',
+    'force_law_powerlaw_prefactor',
+    'force_law_powerlaw_stiffness_exponent',
+    'force_law_powerlaw_stiffness_prefactor',
+    'force_law_punch_exponent',
+    'force_law_punch_prefactor',
+    'force_law_punch_stiffness_exponent',
+    'force_law_punch_stiffness_prefactor',
     'hertz_contact_radius',
     'hertz_contact_radius_from_force',
     'hertz_depth_from_force',
@@ -3855,6 +3879,414 @@ def flat_punch_tangential_traction(r, a, G_star, u_x):
         rigid tangential displacement of the indenter relative to the half-space [m]
     """
     return G_star*u_x/(mpmath.pi*mpmath.sqrt(a**2 - r**2))
+
+
+def force_law_cone_exponent():
+    """Exponent n [1] of the force law F = K d^n of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), F = K d^n. Derived from: the logarithmic slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_cone_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 2
+
+
+def force_law_cone_prefactor(E_star, theta):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), F = K d^n. Derived from: F/d^n with n the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_cone_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 2*E_star/(mpmath.pi*mpmath.tan(theta))
+
+
+def force_law_cone_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 1
+
+
+def force_law_cone_stiffness_prefactor(E_star, theta):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a rigid cone of angle theta with the plane.
+
+    Chapter: (5.40), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the logarithmic
+    slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return 4*E_star/(mpmath.pi*mpmath.tan(theta))
+
+
+def force_law_ellipse_exponent():
+    """Exponent n [1] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, F = K d^n. Derived from: the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_ellipse_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return mpmath.mpf(3)/mpmath.mpf(2)
+
+
+def force_law_ellipse_prefactor(E_star, R1, t_ba):
+    """Prefactor K [N/m^n] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, F = K d^n. Derived from: F/d^n with n the logarithmic
+    slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_ellipse_law_by_pressure_quadrature``.
+
+    Printed in a stable form: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force:
+    the K, E form cancels as t -> 1 (the circle).
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : mpmath.mpf
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(3))*mpmath.sqrt(2)*mpmath.pi*E_star*mpmath.sqrt(R1)*mpmath.sqrt((-mpmath.ellipe(1 - t_ba**2) + mpmath.ellipk(1 - t_ba**2))/(1 - t_ba**2))/mpmath.ellipk(1 - t_ba**2)**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def force_law_ellipse_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, differentiated. Derived from: the logarithmic slope of
+    dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return mpmath.mpf(1)/mpmath.mpf(2)
+
+
+def force_law_ellipse_stiffness_prefactor(E_star, R1, t_ba):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio).
+
+    Chapter: (5.23), exact ellipse, differentiated. Derived from: (dF/dd)/d^(n_k) with n_k
+    the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Printed in a stable form: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force:
+    the K, E form cancels as t -> 1 (the circle).
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : mpmath.mpf
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    return mpmath.sqrt(2)*mpmath.pi*E_star*mpmath.sqrt(R1)*mpmath.sqrt((-mpmath.ellipe(1 - t_ba**2) + mpmath.ellipk(1 - t_ba**2))/(1 - t_ba**2))/mpmath.ellipk(1 - t_ba**2)**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def force_law_hertz_exponent():
+    """Exponent n [1] of the force law F = K d^n of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), F = K d^n. Derived from: the logarithmic slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_hertz_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return mpmath.mpf(3)/mpmath.mpf(2)
+
+
+def force_law_hertz_prefactor(E_star, R):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), F = K d^n. Derived from: F/d^n with n the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_hertz_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*E_star*mpmath.sqrt(R)
+
+
+def force_law_hertz_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return mpmath.mpf(1)/mpmath.mpf(2)
+
+
+def force_law_hertz_stiffness_prefactor(E_star, R):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a Hertz contact (effective sphere of radius R).
+
+    Chapter: (5.23), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the logarithmic
+    slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    """
+    return 2*E_star*mpmath.sqrt(R)
+
+
+def force_law_line_exponent():
+    """Exponent n [1] of the force law F per unit length = K d^n of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), F = K d^n. Derived from: the logarithmic slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_line_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 1
+
+
+def force_law_line_prefactor(E_star):
+    """Prefactor K [N/m per m] of the force law F per unit length = K d^n of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), F = K d^n. Derived from: F/d^n with n the logarithmic slope d F'/F of
+    the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_line_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star
+
+
+def force_law_line_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 0
+
+
+def force_law_line_stiffness_prefactor(E_star):
+    """Prefactor K_k [N/m per m] of the stiffness law dF/L/dd = K_k d^(n - 1) of a line contact, per unit length (F/L), with d the conventional depth of (5.35), a = sqrt(R d).
+
+    Chapter: (5.34), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the logarithmic
+    slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(4))*mpmath.pi*E_star
+
+
+def force_law_powerlaw_exponent(n):
+    """Exponent n [1] of the force law F = K d^n of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), F = K d^n. Derived from: the logarithmic slope d F'/F of the
+    force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_powerlaw_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return (n + 1)/n
+
+
+def force_law_powerlaw_prefactor(E_star, c_n, kappa_n, n):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), F = K d^n. Derived from: F/d^n with n the logarithmic slope d
+    F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_powerlaw_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*n*(1/(c_n*kappa_n))**(1/n)/(n + 1)
+
+
+def force_law_powerlaw_stiffness_exponent(n):
+    """Exponent n - 1 [1] of the stiffness law of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 1/n
+
+
+def force_law_powerlaw_stiffness_prefactor(E_star, c_n, kappa_n, n):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a power-law profile f = c_n r^n (kappa_n from powerlaw_kappa).
+
+    Chapter: Problem 7(d), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the
+    logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    """
+    return 2*E_star*(1/(c_n*kappa_n))**(1/n)
+
+
+def force_law_punch_exponent():
+    """Exponent n [1] of the force law F = K d^n of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), F = K d^n. Derived from: the logarithmic slope d F'/F of the
+    force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_punch_law_by_pressure_quadrature``.
+
+    A constant: no parameters.
+    """
+    return 1
+
+
+def force_law_punch_prefactor(E_star, a):
+    """Prefactor K [N/m^n] of the force law F = K d^n of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), F = K d^n. Derived from: F/d^n with n the logarithmic slope d
+    F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_punch_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*E_star*a
+
+
+def force_law_punch_stiffness_exponent():
+    """Exponent n - 1 [1] of the stiffness law of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), differentiated. Derived from: the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    A constant: no parameters.
+    """
+    return 0
+
+
+def force_law_punch_stiffness_prefactor(E_star, a):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of a flat rigid punch of radius a.
+
+    Chapter: Problem 7(a), differentiated. Derived from: (dF/dd)/d^(n_k) with n_k the
+    logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return 2*E_star*a
 
 
 def hertz_contact_radius(R, d):
@@ -8235,6 +8667,48 @@ def textbook_fit_sphere_force_dE(R, lam):
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
     return R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam))
+
+
+def textbook_force_law_ellipse_prefactor(E_star, R1, t_ba):
+    """Prefactor K [N/m^n] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio), in the derived (textbook) form; use force_law_ellipse_prefactor: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force: the K, E form cancels as t -> 1 (the circle).
+
+    Chapter: (5.23), exact ellipse, F = K d^n. Derived from: F/d^n with n the logarithmic
+    slope d F'/F of the force.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_ellipse_law_by_pressure_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : mpmath.mpf
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    return (mpmath.mpf(2)/mpmath.mpf(3))*mpmath.sqrt(2)*mpmath.pi*E_star*mpmath.sqrt(R1)*mpmath.sqrt((mpmath.ellipe(1 - t_ba**2) - mpmath.ellipk(1 - t_ba**2))/(t_ba**2 - 1))/mpmath.ellipk(1 - t_ba**2)**(mpmath.mpf(3)/mpmath.mpf(2))
+
+
+def textbook_force_law_ellipse_stiffness_prefactor(E_star, R1, t_ba):
+    """Prefactor K_k [N/m^n] of the stiffness law dF/dd = K_k d^(n - 1) of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio), in the derived (textbook) form; use force_law_ellipse_stiffness_prefactor: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force: the K, E form cancels as t -> 1 (the circle).
+
+    Chapter: (5.23), exact ellipse, differentiated. Derived from: (dF/dd)/d^(n_k) with n_k
+    the logarithmic slope of dF/dd.
+
+    Derivation: ``hertzmdr.derive.force_law``. Verified by
+    ``tests/test_force_law.py::test_stiffness_law_is_the_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R1 : mpmath.mpf
+        radius of curvature of body 1, or first principal radius [m]
+    t_ba : mpmath.mpf
+        axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
+    """
+    return mpmath.sqrt(2)*mpmath.pi*E_star*mpmath.sqrt(R1)*mpmath.sqrt((mpmath.ellipe(1 - t_ba**2) - mpmath.ellipk(1 - t_ba**2))/(t_ba**2 - 1))/mpmath.ellipk(1 - t_ba**2)**(mpmath.mpf(3)/mpmath.mpf(2))
 
 
 def textbook_hertz_displacement_outside(R, d, r):

@@ -42,7 +42,8 @@ parser = _Parser(
 parser.add_argument("--version", action="version", version=f"hertzmdr {__version__}")
 sub = parser.add_subparsers(dest="command", required=True)
 p_run = sub.add_parser("run", help="run a scene file, or the built-in tour without one")
-p_run.add_argument("scene", nargs="?", help="scene file (TOML); omit for the built-in tour")
+p_run.add_argument("scene", nargs="?", help="scene file (TOML), or a result.json to run its "
+                   "echoed scene again; omit for the built-in tour")
 p_run.add_argument("--json", action="store_true", help="print one JSON document to stdout")
 p_run.add_argument("--csv", action="store_true", help="print the table of the scalar results "
                    "as CSV to stdout: a row per point of a study, `name [unit]` headers")
@@ -109,8 +110,9 @@ def _probe(parent: Path, what: str) -> None:
         raise UsageError(f"{what}: cannot write in {parent} ({exc.strerror})") from None
 
 
-def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: bool) -> None:
-    """Write atomically: everything goes to a temporary folder first, then is moved in."""
+def _write_out(folder: Path, docs: list[tuple], force: bool) -> None:
+    """Write atomically: everything goes to a temporary folder first, then is moved in.
+    ``docs``: (subfolder, document, results, title, figures.Context) of each run."""
     from hertzmdr.numeric.scene.table import write
 
     check_out(folder, force)
@@ -120,11 +122,11 @@ def _write_out(folder: Path, docs: list[tuple[str, dict, dict, str]], force: boo
     except OSError as exc:
         raise UsageError(f"--out {folder}: cannot write ({exc.strerror})") from None
     try:
-        for sub_name, doc, results, title in docs:
+        for sub_name, doc, results, title, ctx in docs:
             target = tmp / sub_name if sub_name else tmp
             target.mkdir(parents=True, exist_ok=True)
             (target / "result.json").write_text(json.dumps(doc, indent=2) + "\n")
-            write(doc, results, title, target)
+            write(doc, results, title, target, ctx)
         folder.mkdir(exist_ok=True)
         for item in sorted(tmp.rglob("*")):
             dest = folder / item.relative_to(tmp)
@@ -171,8 +173,8 @@ def cmd_run(args) -> int:
     runs = []
     for path in paths:
         sc = scene.load(path)
-        _, results, doc = sc.run_full(progress=_progress())
-        runs.append((path, sc, results, doc))
+        record, results, doc = sc.run_full(progress=_progress())
+        runs.append((path, record, results, doc))
     if args.out:
         _check_figures(runs)
     if args.json:
@@ -190,8 +192,11 @@ def cmd_run(args) -> int:
                     print("\n".join(axes_lines(doc["study"]) + rows_table(doc)))
             print()
     if args.out:
-        _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"])
-                              for p, _, res, doc in runs], args.force)
+        from hertzmdr.numeric.scene.figures import context_of
+
+        _write_out(args.out, [("" if args.scene else p.stem, doc, res, doc["title"],
+                               context_of(record)) for p, record, res, doc in runs],
+                   args.force)
         if not args.json:
             print(f"wrote {args.out}")
     return 0

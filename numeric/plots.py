@@ -148,7 +148,11 @@ def draw_von_mises(path, X, Z, vm, *, xlabel, ylabel, clabel, title, mark=None) 
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=9)
-    fig.colorbar(cs, ax=ax, label=clabel)
+    # ticks at round values, 1, 2, 2.5 or 5 times a power of ten apart (the contour levels,
+    # top/40 apart, are not)
+    from matplotlib.ticker import MaxNLocator
+
+    fig.colorbar(cs, ax=ax, label=clabel, ticks=MaxNLocator(nbins=6, steps=[1, 2, 2.5, 5, 10]))
     fig.tight_layout()
     out = Path(path)
     fig.savefig(out)

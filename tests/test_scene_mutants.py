@@ -416,7 +416,7 @@ def test_bem_state_error_is_the_change_from_half_resolution(load, key):
     (math.nan, "Pa", "nan Pa"),
     (0.5, "rad", "0.5 rad"),                  # radians, numbers: no prefix
     (1234.5, "", "1234.5"),
-    (1234.5, "1", "1234.5 1"),
+    (1234.5, "1", "1234.5"),                # a pure number: no unit "1" (n = 1.5)
     (2.0e5, "N/m", "2e+05 N/m"),              # compound units: no prefix
     (3e-6, "m^2", "3e-06 m^2"),
 ])
@@ -505,7 +505,8 @@ def test_document_entry_of_each_effect():
         assert entry["unit"] == scene.EFFECTS[name].unit
         assert entry["met_rtol"] is (entry["rel_error"] <= 1e-10)
         assert isinstance(entry["seconds"], float) and 0 <= entry["seconds"] < 60
-    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects", "warnings"}
+    assert doc["title"] == "scene" and set(doc) == {"title", "model", "effects", "warnings",
+                                                    "scene", "files", "hertzmdr_version"}
     assert doc["warnings"] == []  # a small Hertz contact stretches no assumption
 
 

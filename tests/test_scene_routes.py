@@ -20,6 +20,8 @@ no formula of derive/ enters a reference):
   (tests/kernels.py ``uz_axisymmetric``); the impact: the energy integral of the equation of
   motion by quadrature; the BEM: Boussinesq's punch and the kernel's Hertz solution;
 - stiffness: ``mp.diff`` of the reference F(d) (the BEM: a central difference of two scene runs);
+- force law: K and n of F = K d^n through the reference F at two depths (and K_k, n_k through
+  its ``mp.diff``);
   mean pressure: reference force over reference area; elastic energy: the integral of F dd.
 
 Every comparison allows the scene's reported ``rel_error`` plus the route's own error (30-digit
@@ -361,7 +363,7 @@ HERTZ = ("depth", "force", "contact_radius", "max_pressure", "mean_pressure", "s
          "elastic_energy", "effective_modulus", "effective_radius", "principal_radii",
          "pressure_profile", "surface_displacement", "force_depth_curve", "mdr_profile",
          "axis_stresses", "max_shear", "von_mises_field", "max_von_mises",
-         "max_orthogonal_shear")
+         "max_orthogonal_shear", "force_law")
 
 CASES: dict[str, Case] = {
     # a rigid sphere on glass, force-controlled
@@ -381,14 +383,16 @@ CASES: dict[str, Case] = {
         {"force": {"from": 10.0, "to": 1000.0, "points": 4}}, None,
         lambda: Hertz(e_star(STEEL, STEEL), 0.02), HERTZ),
     "cone": Case([body("cone", angle=0.35), body("flat", GLASS)], {"force": 0.05}, None,
-                 lambda: PowerLaw(e_star(GLASS), mp.tan(mp.mpf(0.35)), 1), AXI, nu=0.22),
+                 lambda: PowerLaw(e_star(GLASS), mp.tan(mp.mpf(0.35)), 1), AXI + ("force_law",),
+                 nu=0.22),
     "flat_punch": Case([body("flat_punch", radius=1e-3), body("flat", GLASS)], {"force": 50.0},
                        None, lambda: MDR(e_star(GLASS), lambda r: mp.mpf(0), lambda r: 0,
-                                         lambda r: 0, punch=1e-3), AXI, nu=0.22),
+                                         lambda r: 0, punch=1e-3), AXI + ("force_law",),
+                       nu=0.22),
     "power_law": Case([body("power_law", coefficient=1e6, exponent=3), body("flat", STEEL)],
                       {"depth": {"from": 1e-7, "to": 1e-6, "points": 3}}, None,
                       lambda: PowerLaw(e_star(STEEL), 1e6, 3),
-                      AXI + ("max_pressure", "max_orthogonal_shear")),
+                      AXI + ("max_pressure", "max_orthogonal_shear", "force_law")),
     "worn": Case([body("flattened_parabola", radius=50e-6, flat_radius=2e-6),
                   body("flat", STEEL)], {"depth": 5e-8}, None,
                  lambda: MDR(e_star(STEEL),
@@ -602,7 +606,7 @@ CASES.update({
                  ("depth", "force", "half_width", "max_pressure", "mean_pressure", "stiffness",
                   "effective_modulus", "effective_radius", "pressure_profile",
                   "force_depth_curve", "axis_stresses", "max_shear", "von_mises_field",
-                  "max_von_mises", "max_orthogonal_shear")),
+                  "max_von_mises", "max_orthogonal_shear", "force_law")),
     # Problem 2's geometry (cylinders crossed at 45 deg), exact and the Gaussian estimate
     "elliptic_exact": Case([body("cylinder", STEEL, radius=0.02, axis=0.0),
                             body("cylinder", STEEL, radius=0.02, axis=math.pi / 4)],
@@ -612,7 +616,7 @@ CASES.update({
                            ("depth", "force", "semi_axes", "max_pressure", "mean_pressure",
                             "stiffness", "effective_modulus", "effective_radius",
                             "principal_radii", "pressure_profile", "force_depth_curve",
-                            *ELLIPSE_STRESS)),
+                            "force_law", *ELLIPSE_STRESS)),
     "elliptic_gaussian": Case([body("cylinder", STEEL, radius=0.02, axis=0.0),
                                body("cylinder", STEEL, radius=0.02, axis=math.pi / 4)],
                               {"force": 300.0}, None,
@@ -621,7 +625,7 @@ CASES.update({
                               ("depth", "force", "semi_axes", "max_pressure", "mean_pressure",
                                "stiffness", "effective_modulus", "effective_radius",
                                "principal_radii", "pressure_profile", "force_depth_curve",
-                               *ELLIPSE_STRESS),
+                               "force_law", *ELLIPSE_STRESS),
                               extra={"model": {"elliptic": "gaussian"}}),
     "impact": Case([body("sphere", STEEL, radius=0.01), body("flat", STEEL)],
                    {"impact": {"velocity": 1.0, "density": 7800.0}}, None,
@@ -731,6 +735,26 @@ def check_mean_pressure(case, route, eff, name, ds):
 def check_stiffness(case, route, eff, name, ds):
     # mp.diff of a 30-digit quadrature at raised precision: error below 1e-20
     each(eff["value"], [mp.diff(route.force, d) for d in ds], tol_of(eff), name)
+
+
+def check_force_law(case, route, eff, name, ds):
+    """F = K d^n: n and K through the reference F at d/3 and d (the largest load's d), the
+    stiffness law through mp.diff of it; a line contact's K is for its length L, and
+    K_per_length = K/L."""
+    d2 = max(ds)
+    d1 = d2 / 3
+    F1, F2 = route.force(d1), route.force(d2)
+    n = mp.log(F2 / F1) / mp.log(d2 / d1)
+    K = F1 / d1**n
+    k1, k2 = mp.diff(route.force, d1), mp.diff(route.force, d2)
+    nk = mp.log(k2 / k1) / mp.log(d2 / d1) if k1 != k2 else mp.mpf(0)
+    v, tol = eff["value"], tol_of(eff) + 1e-14  # + the fit's: log of two 30-digit forces
+    close(v["K"], K, tol, "K")
+    assert abs(v["n"] - n) <= tol, ("n", v["n"], n)
+    close(v["stiffness_K"], k1 / d1**nk, tol, "stiffness_K")
+    assert abs(v["stiffness_n"] - nk) <= tol, ("stiffness_n", v["stiffness_n"], nk)
+    if isinstance(route, Line):
+        close(v["K_per_length"], K / route.L, tol, "K_per_length")
 
 
 def check_energy(case, route, eff, name, ds):
@@ -1094,6 +1118,7 @@ CHECKS = {
     "effective_modulus": check_constant, "effective_radius": check_constant,
     "principal_radii": check_constant, "semi_axes": check_semi_axes,
     "half_width": check_half_width, "max_orthogonal_shear": check_max_orthogonal_shear,
+    "force_law": check_force_law,
 }
 
 

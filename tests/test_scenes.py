@@ -21,7 +21,8 @@ RAIL = EXAMPLES / "problem1_rail_wheel.toml"
 def test_json_document_has_exactly_the_requested_effects(capsys):
     assert main(["run", str(RAIL), "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
-    assert set(doc) == {"title", "model", "effects", "warnings"}
+    assert set(doc) == {"title", "model", "effects", "warnings", "scene", "files",
+                        "hertzmdr_version"}  # the last three: echo.inputs
     assert list(doc["effects"]) == ["max_pressure", "contact_radius", "effective_modulus",
                                     "depth"]
     for name, eff in doc["effects"].items():

@@ -35,6 +35,12 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
     Effect("effective_radius", "m", "effective radius R (5.27), or the Gaussian radius (5.30)",
            needs=()),
     Effect("principal_radii", "m", "principal radii [R1, R2] of the gap (Problem 2)", needs=()),
+    Effect("force_law", "{K: N/m^n, n: 1, stiffness_K: N/m^n, stiffness_n: 1, "
+           "K_per_length: N/m^(n+1), stiffness_K_per_length: N/m^(n+1)}",
+           "the force law F = K d^n and stiffness law dF/dd = stiffness_K d^(n-1) where the "
+           "force-depth relation is a power law (Hertz, elliptical, cone, flat punch, power "
+           "law; a line contact also per unit length): the coefficients a DEM code takes",
+           needs=()),
     Effect("pressure_profile", "{r: m, p: Pa}", "pressure p(r) across the contact",
            field=True),
     Effect("surface_displacement", "{r: m, u: m}",

@@ -1,12 +1,62 @@
 """PNG figures of the field effects (matplotlib, the optional ``plot`` extra).
 
-One function per field effect, all with the signature ``draw(value, title, path)``; the table
-:data:`FIGURES` maps effect names to them. matplotlib is imported only when a figure is drawn.
+One function per field effect, all with the signature ``draw(value, title, path, ctx)``
+(``ctx`` a :class:`Context`: what the figure needs to know of the contact beyond the value);
+the table :data:`FIGURES` maps effect names to them. matplotlib is imported only when a figure
+is drawn.
+
+Every profile plot (pressure, surface displacement, MDR profile, traction) marks the contact's
+extent along its axis: the contact radius a, a line contact's half-width, an elliptical
+contact's semi-axis along x, a prescribed pressure's loaded radius.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
+
+
+@dataclass(frozen=True)
+class Context:
+    """What a figure needs beyond its value.
+
+    Attributes
+    ----------
+    kind : str
+        The model's kind (``"hertz"``, ``"line"``, ``"elliptic"``, ``"pressure"``, ...).
+    extent : float or None
+        The contact's extent [m] along the plotted line at the drawn (largest) load, or None
+        when the run has no contact state (or the kind no extent: the BEM).
+    extent_label : str
+        Its name on the plot.
+    fig52 : bool
+        Whether the surface displacement is the one of Fig. 5.2 (the Hertzian pressure (5.15)).
+    """
+
+    kind: str = ""
+    extent: float | None = None
+    extent_label: str = "a"
+    fig52: bool = False
+
+
+#: the name of the contact's extent on a profile plot, by kind (default: the contact radius)
+EXTENT_LABELS = {"line": "a (half-width)", "elliptic": "a (semi-axis along x)",
+                 "pressure": "a (loaded radius)"}
+
+
+def context_of(run) -> Context:
+    """The :class:`Context` of a run (runner.Run): its kind and its extent at the largest load
+    (from the kind's ``extent(d)``, when the run evaluated the contact state)."""
+    contact = getattr(run, "contact", None)
+    if contact is None:  # a study (study.StudyRun): one contact per point, nothing to mark
+        return Context()
+    kind = contact.kind
+    st = run._nodes.get("state")
+    extent = None
+    if st is not None and callable(getattr(contact, "extent", None)):
+        extent = float(contact.extent(contact.last(st)))
+    fig52 = kind == "hertz" or (kind == "pressure" and contact.distribution == "hertzian")
+    return Context(kind, extent, EXTENT_LABELS.get(kind, "a (contact radius)"), fig52)
 
 
 def _plt():
@@ -20,24 +70,46 @@ def _plt():
     return plt
 
 
-def _scaled(values, name: str, unit: str):
-    """Values divided by the SI prefix that suits their largest magnitude, and the axis label."""
+def _scale(values) -> tuple[float, str]:
+    """(scale, prefix) of the SI prefix that suits the largest finite magnitude of values."""
     import numpy as np
 
     from hertzmdr.numeric.scene.units import prefixed
 
     v = np.asarray(values, dtype=float)
     finite = np.abs(v[np.isfinite(v)])
-    scale, prefix = prefixed(float(finite.max()) if finite.size else 1.0)
-    return v / scale, f"{name} [{prefix}{unit}]"
+    return prefixed(float(finite.max()) if finite.size else 1.0)
 
 
-def _line(x, y, xname, xunit, yname, yunit, title, path):
+def _scaled(values, name: str, unit: str):
+    """Values divided by the SI prefix that suits their largest magnitude, and the axis label."""
+    import numpy as np
+
+    scale, prefix = _scale(values)
+    return np.asarray(values, dtype=float) / scale, f"{name} [{prefix}{unit}]"
+
+
+def mark_extent(ax, ctx: Context, scale: float) -> None:
+    """A dashed vertical line at the contact's extent (x axis in units of ``scale`` [m]),
+    labelled; nothing when the extent is unknown. Its gid is ``contact-extent``."""
+    if ctx.extent is None or not ctx.extent > 0:
+        return
+    x = ctx.extent / scale
+    ax.axvline(x, ls="--", lw=1.0, color="0.35", gid="contact-extent")
+    ax.annotate(ctx.extent_label, (x, 1.0), xycoords=("data", "axes fraction"),
+                xytext=(3, -12), textcoords="offset points", fontsize=8, color="0.25")
+
+
+def _line(x, y, xname, xunit, yname, yunit, title, path, ctx: Context | None = None):
+    """y against x; with ``ctx`` the contact's extent marked on the x axis."""
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6.0, 4.0), dpi=120)
+    xscale, xprefix = _scale(x)
     xs, xlabel = _scaled(x, xname, xunit)
     ys, ylabel = _scaled(y, yname, yunit)
     ax.plot(xs, ys, lw=1.8)
+    if ctx is not None:
+        mark_extent(ax, ctx, xscale)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
@@ -47,29 +119,34 @@ def _line(x, y, xname, xunit, yname, yunit, title, path):
     plt.close(fig)
 
 
-def pressure_profile(value, title, path):
-    """Pressure against radius (Figs. 5.7 b and 5.17)."""
-    _line(value["r"], value["p"], "r", "m", "p", "Pa", f"{title}\npressure distribution", path)
+def pressure_profile(value, title, path, ctx: Context = Context()):
+    """Pressure against radius (Figs. 5.7 b and 5.17); a line contact's against x, the
+    distance across the strip; an elliptical contact's along x (the semi-axis a)."""
+    xname = {"line": "x (across the strip)", "elliptic": "x (along a)"}.get(ctx.kind, "r")
+    _line(value["r"], value["p"], xname, "m", "p", "Pa", f"{title}\npressure distribution",
+          path, ctx)
 
 
-def surface_displacement(value, title, path):
-    """Surface displacement inside and outside the contact (Fig. 5.2)."""
+def surface_displacement(value, title, path, ctx: Context = Context()):
+    """Surface displacement inside and outside the contact; captioned Fig. 5.2 only where it
+    is that figure's (the Hertzian pressure (5.15))."""
     import numpy as np
 
+    caption = "surface displacement" + (" (Fig. 5.2)" if ctx.fig52 else "")
     _line(value["r"], -np.asarray(value["u"]), "r", "m", "surface position -u_z", "m",
-          f"{title}\nsurface displacement (Fig. 5.2)", path)
+          f"{title}\n{caption}", path, ctx)
 
 
-def force_depth_curve(value, title, path):
+def force_depth_curve(value, title, path, ctx: Context = Context()):
     """Force against indentation depth."""
     _line(value["depth"], value["force"], "depth", "m", "force", "N",
           f"{title}\nforce-depth curve", path)
 
 
-def mdr_profile(value, title, path):
+def mdr_profile(value, title, path, ctx: Context = Context()):
     """The MDR's equivalent profile g(x) (Figs. 5.11, 5.19)."""
     _line(value["x"], value["g"], "x", "m", "g(x)", "m", f"{title}\nMDR profile g(x) (5.52)",
-          path)
+          path, ctx)
 
 
 def _axis_stresses_ellipse(value, title, path):
@@ -98,7 +175,7 @@ def _axis_stresses_ellipse(value, title, path):
     plt.close(fig)
 
 
-def axis_stresses(value, title, path):
+def axis_stresses(value, title, path, ctx: Context = Context()):
     """Stresses on the axis (the layout of Fig. 5.8), in the scene's units."""
     import numpy as np
 
@@ -119,7 +196,7 @@ def axis_stresses(value, title, path):
                              syy=np.asarray(value["sigma_yy"]) * f if line else None)
 
 
-def von_mises_field(value, title, path):
+def von_mises_field(value, title, path, ctx: Context = Context()):
     """The von Mises stress in the x-z plane (the layout of Fig. 5.9), in the scene's units."""
     import numpy as np
 
@@ -134,7 +211,7 @@ def von_mises_field(value, title, path):
                          clabel=clabel, title=f"{title}\nvon Mises stress (5.50), Fig. 5.9")
 
 
-def adhesive_force_depth_curve(value, title, path):
+def adhesive_force_depth_curve(value, title, path, ctx: Context = Context()):
     """Approach (solid) and retract (dashed) of an adhesive contact, the jumps as dotted
     segments with markers."""
     import numpy as np
@@ -161,13 +238,20 @@ def adhesive_force_depth_curve(value, title, path):
     ax.set_xlabel(dlabel)
     ax.set_ylabel(Flabel)
     ax.set_title(f"{title}\nadhesive approach-retract", fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
 
-def traction_profile(value, title, path):
+
+def traction_profile(value, title, path, ctx: Context = Context()):
     """Tangential traction against radius: mu (p(a) - p(c)) in the stick zone."""
-    _line(value["r"], value["q"], "r", "m", "q", "Pa", f"{title}\ntangential traction", path)
+    _line(value["r"], value["q"], "r", "m", "q", "Pa", f"{title}\ntangential traction", path,
+          ctx)
 
 
-def hysteresis_loop(value, title, path):
+def hysteresis_loop(value, title, path, ctx: Context = Context()):
     """Tangential force against displacement: the first loading (dashed) and the loop of
     Masing's branches."""
     plt = _plt()
@@ -207,10 +291,10 @@ def plain(title: str) -> str:
     return "".join(c for c in title if c.isprintable() or c == "\n").replace("$", r"\$")
 
 
-def write_all(results: dict, title: str, folder: Path) -> list[Path]:
-    """Draw every field effect of ``results`` that has a figure into ``folder``. A title's
-    characters that the font lacks are drawn as boxes, silently; every figure opened here is
-    closed, also when drawing fails."""
+def write_all(results: dict, title: str, folder: Path, ctx: Context = Context()) -> list[Path]:
+    """Draw every field effect of ``results`` that has a figure into ``folder`` (``ctx``: the
+    run's :func:`context_of`). A title's characters that the font lacks are drawn as boxes,
+    silently; every figure opened here is closed, also when drawing fails."""
     import warnings
 
     if not any(name in FIGURES for name in results):
@@ -224,7 +308,7 @@ def write_all(results: dict, title: str, folder: Path) -> list[Path]:
             for name, res in results.items():
                 if name in FIGURES:
                     path = folder / f"{name}.png"
-                    FIGURES[name](res.value, plain(title), path)
+                    FIGURES[name](res.value, plain(title), path, ctx)
                     written.append(path)
     finally:
         for num in set(plt.get_fignums()) - before:

@@ -31,10 +31,14 @@ def build(spec: SceneSpec) -> Contact:
     for row in KINDS:
         if load in row.loads and row.takes(shapes):
             contact = row.build(setup)
+            why = why_chosen(spec, row, contact)
             if spec.interface.adhesive or spec.load.kind == "cycle":
                 from hertzmdr.numeric.scene.kinds.adhesive import adhesive
 
                 contact = adhesive(setup, contact)
+                why += (f"; work of adhesion {spec.interface.work_of_adhesion:g} J/m^2 > 0 "
+                        f"-> made adhesive by the MDR: {contact.label}")
+            contact.why = why
             check_rtol(spec, contact)
             return contact
     only = [row for row in KINDS if row.loads == (load,)]
@@ -46,6 +50,15 @@ def build(spec: SceneSpec) -> Contact:
     raise SceneError(spec.source, "body", f"this combination of shapes ({names}) is not "
                      "supported: two bodies make a contact when both take part in the same "
                      f"kind, or one is flat (kinds: {makes})")
+
+
+def why_chosen(spec: SceneSpec, row, contact: Contact) -> str:
+    """The model's choice in words, for the JSON's ``model.why``: the two shapes and the
+    load, the KINDS row that took them, and what its builder decided (``contact.choice``,
+    e.g. the principal radii that made a quadratic gap circular, elliptical or a line)."""
+    shapes = " and ".join(f"{b.shape} ({b.name})" for b in spec.bodies)
+    out = f"{shapes} under a {spec.load.kind} load -> row '{row.name}' of KINDS ({row.needs})"
+    return f"{out}: {contact.choice}" if contact.choice else f"{out} -> {contact.label}"
 
 
 def check_rtol(spec: SceneSpec, contact: Contact) -> None:

@@ -7,13 +7,43 @@ import numpy as np
 
 from hertzmdr.numeric.scene.units import engineering
 
+#: a coordinate of a located maximum below this fraction of the contact's size prints as 0
+#: (the maxima are located to about sqrt(rtol) = 1e-5 of it: a smaller offset from the axis
+#: or the surface is the search's noise, e.g. x = 3.2 pm beside z = 131 um)
+NEAR_ZERO = 1e-6
+
+
+def positions_scale(value: dict, unit: str) -> float:
+    """The contact's size as a record that locates a maximum (``{value, x, z, ...}``) sees
+    it: the largest of its coordinates (keys in m); 0 for any other record."""
+    if "value" not in value:
+        return 0.0
+    coords = [abs(float(v)) for k, v in value.items()
+              if k != "value" and unit_of(unit, k) == "m" and np.size(v) == 1
+              and np.isfinite(float(v))]
+    return max(coords, default=0.0)
+
 
 def format_value(value, unit: str) -> str:
+    """One effect's value as the table prints it: engineering notation; a coordinate of a
+    located maximum within :data:`NEAR_ZERO` of the record's largest coordinate as 0."""
     if isinstance(value, dict):
         sizes = {k: np.size(v) for k, v in value.items()}
         n = max(sizes.values()) if sizes else 0
-        scalars = [f"{k} = {engineering(float(v), unit_of(unit, k))}"
-                   for k, v in value.items() if np.size(v) == 1]
+        scale = positions_scale(value, unit)
+
+        n = float(np.reshape(value["n"], -1)[0]) if np.size(value.get("n", [])) == 1 else None
+
+        def show(k, v):
+            u = unit_of(unit, k)
+            if n is not None:  # a force law's K: N/m^n with its n
+                u = u.replace("^(n+1)", f"^{n + 1:g}").replace("^n", f"^{n:g}")
+            x = float(np.reshape(v, -1)[0])
+            if k != "value" and u == "m" and abs(x) < NEAR_ZERO * scale:
+                x = 0.0
+            return f"{k} = {engineering(x, u)}"
+
+        scalars = [show(k, v) for k, v in value.items() if np.size(v) == 1]
         if scalars:
             return ", ".join(scalars)
         return f"field of {n} points ({', '.join(value)}); PNG with --out"

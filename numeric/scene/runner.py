@@ -125,7 +125,10 @@ def to_json_value(value):
 
 
 def document(run_: Run, results: dict[str, Result]) -> dict:
-    """The JSON document of a run (see docs/scenes.md)."""
+    """The JSON document of a run (see docs/scenes.md); its scene as understood, version and
+    files from :func:`.echo.inputs`."""
+    from hertzmdr.numeric.scene.echo import inputs
+
     model = {k: to_json_value(v) for k, v in run_.contact.info().items()}
     return {
         "title": run_.spec.title,
@@ -135,4 +138,5 @@ def document(run_: Run, results: dict[str, Result]) -> dict:
                            "met_rtol": res.met_rtol, "seconds": res.seconds}
                     for name, res in results.items()},
         "warnings": run_.warnings,
+        **inputs(run_.spec),
     }

@@ -107,11 +107,22 @@ class SceneSpec:
     base_dir: Path | None
     #: the swept keys (numeric/scene/study.py): None, a load sweep alone, or a study
     study: object = None
+    #: the document as given (TOML tables as dicts) and how the reader took each value
+    #: (key as in errors -> (how, dimension or unit)): what result.json echoes (echo.py)
+    raw: dict = field(default_factory=dict)
+    read_as: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 def read(path_or_dict, *, known_effects) -> SceneSpec:
-    """Parse and validate a scene file path or dict; raise SceneError on any problem."""
+    """Parse and validate a scene file path or dict; raise SceneError on any problem. A
+    result.json (a ``.json`` path) or the document of a run (a dict with
+    ``hertzmdr_version``) is read as the scene it echoes (:mod:`.echo`)."""
     if isinstance(path_or_dict, dict):
+        if "hertzmdr_version" in path_or_dict:
+            from hertzmdr.numeric.scene.echo import scene_of
+
+            return _read(_Reader("<result>", None, known_effects),
+                         scene_of(path_or_dict, "<result>"), "scene")
         return _read(_Reader("<scene>", None, known_effects), path_or_dict, "scene")
     path = Path(path_or_dict)
     where = str(path)
@@ -121,6 +132,11 @@ def read(path_or_dict, *, known_effects) -> SceneSpec:
         raise SceneError(where, "", "no such file") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise SceneError(where, "", f"cannot read the file ({exc})") from None
+    if path.suffix.lower() == ".json":
+        from hertzmdr.numeric.scene.echo import read_result
+
+        return _read(_Reader(where, path.parent, known_effects), read_result(text, where),
+                     path.stem)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -132,7 +148,9 @@ def _read(reader: _Reader, data: dict, default_title: str) -> SceneSpec:
     """The scene with its sweeps, if any (numeric/scene/study.py)."""
     from hertzmdr.numeric.scene.study import read_scene
 
-    return read_scene(reader, data, default_title)
+    spec = read_scene(reader, data, default_title)
+    spec.raw = data  # a study reads its scene at a corner: the echo is of the document itself
+    return spec
 
 
 #: the most states a history file may hold
@@ -182,6 +200,7 @@ def suggest(name: str, choices) -> str:
 class _Reader:
     def __init__(self, where: str, base_dir: Path | None, known_effects):
         self.where, self.base_dir, self.known_effects = where, base_dir, known_effects
+        self.read_as: dict[str, tuple[str, str]] = {}  # see SceneSpec.read_as
 
     def fail(self, key: str, message: str):
         raise SceneError(self.where, key, message)
@@ -200,6 +219,7 @@ class _Reader:
                           f"unknown key{suggest(k, allowed)} (allowed: {names})")
 
     def quantity(self, value, dimension: str, key: str) -> float:
+        self.read_as[key] = ("quantity", dimension)
         try:
             out = to_si(value, dimension)
         except UnitError as exc:
@@ -292,7 +312,7 @@ class _Reader:
             if elliptic not in ("exact", "gaussian"):
                 self.fail("model.elliptic", f"must be \"exact\" or \"gaussian\", got {elliptic!r}")
         return SceneSpec(title, list(effects), parsed, load, rtol, elliptic, interface,
-                         self.where, self.base_dir)
+                         self.where, self.base_dir, raw=data, read_as=dict(self.read_as))
 
     def body(self, b: dict, i: int) -> Body:
         key = f"body[{i}]"
@@ -314,6 +334,8 @@ class _Reader:
                     self.fail(f"{key}.{k.name}", f"missing: a {shape} needs {k.name}")
                 continue
             params[k.name] = self.shape_value(b[k.name], k.kind, f"{key}.{k.name}")
+            if k.kind in ("path", "length_unit", "number"):  # a file, a unit, a plain number
+                self.read_as[f"{key}.{k.name}"] = (k.kind, k.unit)
 
         def fail(sub: str, message: str):
             self.fail(f"{key}.{sub}" if sub else key, message)

@@ -571,6 +571,8 @@ def document(spec: SceneSpec, out: StudyRun) -> dict:
     """The JSON document of a study: the load sweep's layout, each effect's value one entry
     per point (numbers: a list; tables of numbers: a table of lists; fields: a list of
     fields), and ``study`` with the axes, the shape and the swept values at every point."""
+    from hertzmdr.numeric.scene.echo import inputs
+
     models = [{k: to_json_value(v) for k, v in c.info().items()} for c in out.models]
     model = {}
     for k in models[0]:
@@ -585,4 +587,5 @@ def document(spec: SceneSpec, out: StudyRun) -> dict:
                            "met_rtol": res.met_rtol, "seconds": res.seconds}
                     for name, res in out.results.items()},
         "warnings": out.warnings,
+        **inputs(spec),  # the scene as understood, the files it read, the version (echo.py)
     }

@@ -215,12 +215,13 @@ def figures(doc: dict, folder: Path) -> list[Path]:
 DRAWN_FIELD_POINTS = 10
 
 
-def write(doc: dict, results: dict, title: str, folder: Path) -> list[Path]:
+def write(doc: dict, results: dict, title: str, folder: Path, ctx=None) -> list[Path]:
     """What ``--out`` writes besides result.json: results.csv (when the scene has a number
     to tabulate), a PNG per field effect (a study's: ``<effect>_<row>.png``, the row of
     results.csv, at each point up to :data:`DRAWN_FIELD_POINTS` points, else at the first and
-    the last), and a study's PNG per effect column."""
-    from hertzmdr.numeric.scene.figures import FIGURES, plain, write_all
+    the last), and a study's PNG per effect column. ``ctx``: the run's
+    :class:`~.figures.Context` (the contact's extent marked on its profile plots)."""
+    from hertzmdr.numeric.scene.figures import FIGURES, Context, plain, write_all
 
     written = []
     if len(columns(doc)) > 0:
@@ -229,7 +230,7 @@ def write(doc: dict, results: dict, title: str, folder: Path) -> list[Path]:
         written.append(path)
     study = doc.get("study")
     if study is None or "route" not in study:  # one scene, or a load sweep: its own fields
-        written += write_all(results, title, folder)
+        written += write_all(results, title, folder, ctx or Context())
     else:
         n = math.prod(study["shape"])
         rows = range(n) if n <= DRAWN_FIELD_POINTS else (0, n - 1)

@@ -103,7 +103,9 @@ def engineering(x: float, unit: str, digits: int = 5) -> str:
     """``x`` with an SI prefix: engineering(1.0134e9, "Pa") == "1.0134 GPa"."""
     if not math.isfinite(x):
         return f"{x} {unit}"
-    if x == 0 or unit in ("", "1", "rad"):
+    if unit == "1":  # a pure number
+        return f"{x:.{digits}g}"
+    if x == 0 or unit in ("", "rad"):
         return f"{x:.{digits}g} {unit}".strip()
     if "/" in unit or "^" in unit:  # compound units keep plain scientific notation
         return f"{x:.{digits}g} {unit}"

@@ -94,6 +94,8 @@ class AdhesiveKind(StressEffects, Contact):
 
     why_not = WHY_NOT
     instead = {"half_width": "contact_radius", "semi_axes": "contact_radius"}
+    not_power_law = ("with adhesion the force-depth relation has a pull-off and is not a "
+                     "power law F = K d^n")
     rel = CLOSED_FORM_RTOL
     curve_from_zero = True
 

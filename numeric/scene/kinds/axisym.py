@@ -159,6 +159,10 @@ class ClosedForm:
         Method texts that differ from :attr:`Axisymmetric.methods`.
     contact : type
         The kind class (:class:`ClosedFormContact` or a subclass).
+    force_law : callable or None
+        E* -> :class:`hertzmdr.numeric.force_law.Law` where F(d) is a power law F = K d^n
+        (numeric/force_law.py), with ``force_law_method`` its equation; None where it is
+        not, and ``not_power_law`` says why (the ``force_law`` effect's error).
     """
 
     kind: str
@@ -179,6 +183,9 @@ class ClosedForm:
     off_axis: bool = True
     methods: dict[str, str] = field(default_factory=dict)
     contact: type | None = None
+    force_law: Callable | None = None
+    force_law_method: str = ""
+    not_power_law: str = ""
 
 
 class ClosedFormContact(Axisymmetric):
@@ -208,6 +215,9 @@ class ClosedFormContact(Axisymmetric):
         return {"a/R": self.a_at(d) / self.form.radius, "d/R": d / self.form.radius}
 
     def has(self, effect):
+        if effect == "force_law" and self.form.force_law is None:
+            self.not_power_law = self.form.not_power_law or self.not_power_law
+            return self.refuse_force_law()
         if effect == "max_pressure" and self.form.no_max_pressure:
             return False
         if effect in ("max_shear", "max_von_mises") and self._unbounded_at_half():
@@ -278,6 +288,11 @@ class ClosedFormContact(Axisymmetric):
     def g(self, x):
         return self.form.g_profile(x)
 
+    def effect_force_law(self):
+        """F = K d^n of the profile (numeric/force_law.py)."""
+        return self.law_value(self.form.force_law(self.E_star), self.form.force_law_method,
+                              self.rel)
+
     def effect_max_pressure(self, st):
         """The largest pressure over the contact, wherever it lies
         (numeric/pressures.py's ``max_pressure_of``: a grid, then a bounded search)."""
@@ -342,6 +357,8 @@ class NumericalMDR(Axisymmetric):
 
     kind = "profile"
     off_axis = False
+    not_power_law = ("a sampled profile's force-depth relation is computed point by point, "
+                     "not a power law F = K d^n")
     state_method = "the numerical MDR"
 
     def __init__(self, materials, interface, rtol, profile, label):

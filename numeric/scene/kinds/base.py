@@ -93,6 +93,13 @@ class Contact:
     pressure_method = "?"
     #: whether the force-depth curve starts at d = 0 (else at its first step)
     curve_from_zero = True
+    #: what the kind's builder decided, in words (quadratic: which principal radii made it)
+    choice: str = ""
+    #: why the model chose this kind (model.build), reported as the JSON's ``model.why``
+    why: str = ""
+    #: why the force-depth relation is no power law F = K d^n: the ``force_law`` effect's
+    #: error on a kind without ``effect_force_law`` (it names ``force_depth_curve``)
+    not_power_law = "its force-depth relation is not a power law F = K d^n"
 
     def __init__(self, materials: Materials, interface: Interface, rtol: float):
         self.materials = materials
@@ -105,8 +112,11 @@ class Contact:
         return self.materials.E_star
 
     def info(self) -> dict:
-        return {"kind": self.kind, "description": self.label, "effective_modulus": self.E_star,
-                "rtol": self.rtol}
+        out = {"kind": self.kind, "description": self.label, "effective_modulus": self.E_star,
+               "rtol": self.rtol}
+        if self.why:  # set by model.build: why this kind was chosen
+            out["why"] = self.why
+        return out
 
     def ratios(self, nodes: dict) -> dict[str, float]:
         """The ratios that measure how far the scene stretches the chapter's assumptions (keys
@@ -116,9 +126,40 @@ class Contact:
         return {}
 
     def has(self, effect: str) -> bool:
+        if effect == "force_law" and not callable(getattr(self, "effect_force_law", None)):
+            return self.refuse_force_law()
         if not all(callable(getattr(self, prim, None)) for prim in self.PRIMITIVES.get(effect, ())):
             return False
         return callable(getattr(self, "effect_" + effect, None))
+
+    def refuse_force_law(self) -> bool:
+        """``force_law`` does not apply: say why (:attr:`not_power_law`) and offer the
+        tabulated ``force_depth_curve`` where the kind has it; returns False."""
+        self.why_not = {**self.why_not, "force_law": f"{self.label}: {self.not_power_law}"}
+        if self.has("force_depth_curve"):
+            self.instead = {**self.instead, "force_law": "force_depth_curve"}
+        return False
+
+    @staticmethod
+    def law_value(law, equation: str, rel_error: float, per_length: float | None = None
+                  ) -> Value:
+        """The ``force_law`` effect of a :class:`hertzmdr.numeric.force_law.Law`: F = K d^n
+        and dF/dd = stiffness_K d^stiffness_n; a line contact (``per_length`` its length L
+        [m]) reports the law per unit length too, K = L K_per_length."""
+        n = float(law.n)
+        value = {"K": law.K, "n": law.n, "stiffness_K": law.stiffness_K,
+                 "stiffness_n": law.stiffness_n}
+        method = (f"F = K d^n, dF/dd = stiffness_K d^(n - 1), from {equation}: K and "
+                  f"stiffness_K in N/m^{n:g}")
+        if per_length is not None:
+            value = {"K": law.K * per_length, "n": law.n,
+                     "stiffness_K": law.stiffness_K * per_length,
+                     "stiffness_n": law.stiffness_n, "K_per_length": law.K,
+                     "stiffness_K_per_length": law.stiffness_K}
+            method += (f"; per unit length F/L = K_per_length d^n (N/m^{n + 1:g}), d the "
+                       "conventional depth of (5.35), a = sqrt(R d), not the approach of "
+                       "the axes (which adds a logarithmic term)")
+        return Value(value, method, rel_error)
 
     def rtol_ranges(self, effects) -> list[tuple[str, tuple[float, float]]]:
         """(method, the rtol range it can deliver) of each method the effects use."""

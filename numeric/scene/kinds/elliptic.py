@@ -188,6 +188,22 @@ class EllipticContact(StressEffects, Contact):
     def effect_force(self, st):
         return self._value(st, "force", st.method)
 
+    def effect_force_law(self):
+        """F = K d^(3/2) with K of the exact solution (numeric/force_law.py); under the
+        Gaussian model the Hertz law of the Gaussian radius (5.30), whose rel_error is its
+        deviation from the exact K."""
+        from hertzmdr.numeric import force_law
+
+        exact = force_law.ellipse(self.R1, self.R2, self.E_star)
+        if self.model == "exact":
+            return self.law_value(exact, "the exact elliptical contact (elliptic "
+                                  "integrals)", EXACT_RTOL)
+        law = force_law.hertz(float(bodies.gaussian_radius(self.R1, self.R2)), self.E_star)
+        v = self.law_value(law, "(5.23) with the Gaussian radius (5.30)",
+                           _deviation(law.K, exact.K))
+        return Value(v.value, v.method + "; rel_error = deviation of K from exact",
+                     v.rel_error)
+
     def effect_principal_radii(self):
         return Value([self.R1, self.R2], "eigenvalues of the gap's Hessian (Problem 2)",
                      CLOSED_FORM_RTOL)

@@ -56,6 +56,8 @@ class GridContact(Contact):
                "pressure_profile": "the BEM's pressure is a map of pixels, not a profile "
                                    "along a line"}
 
+    not_power_law = ("the BEM solves each depth on a grid and gives no coefficients of a "
+                     "force law (ask for 'force' under a depth sweep)")
     state_method = "the BEM's conjugate gradients (numeric/bem.py)"
     state_range = BEM_RANGE
 

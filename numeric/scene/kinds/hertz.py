@@ -77,6 +77,12 @@ class HertzContact(Axisymmetric):
     def u(self, r, d):
         return hertz.surface_displacement(r, d, self.R)
 
+    def effect_force_law(self):
+        """F = (4/3) E* R^(1/2) d^(3/2) (5.23) as K and n (numeric/force_law.py)."""
+        from hertzmdr.numeric import force_law
+
+        return self.law_value(force_law.hertz(self.R, self.E_star), "(5.23)", self.rel)
+
     def g(self, x):
         from hertzmdr.numeric import powerlaw
 

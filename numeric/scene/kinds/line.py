@@ -83,6 +83,13 @@ class LineContact(StressEffects, Contact):
         return Value(contact.mean_pressure_strip(st.force, a, self.L), "F/(2 a L)",
                      CLOSED_FORM_RTOL)
 
+    def effect_force_law(self):
+        """F/L = (pi/4) E* d (5.34) per unit length, and F = K d for the length L."""
+        from hertzmdr.numeric import force_law
+
+        return self.law_value(force_law.line(self.E_star), "(5.34)", CLOSED_FORM_RTOL,
+                              per_length=self.L)
+
     def effect_stiffness(self, st):
         return Value(np.full(np.shape(st.force), float(line.stiffness(self.L, self.E_star))),
                      "dF/dd of (5.34), under the convention (5.35)", CLOSED_FORM_RTOL)

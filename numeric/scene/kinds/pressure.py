@@ -14,6 +14,7 @@ from hertzmdr.numeric.scene.kinds.base import FIELD_POINTS, Contact, Setup, Stat
 class PressureLoad(Contact):
     kind = "pressure"
     instead = {"contact_radius": "surface_displacement", "max_pressure": "pressure_profile"}
+    not_power_law = "the load is a prescribed pressure: there is no force-depth relation"
     why_not = {"contact_radius": "the loaded disc is given, not found: there is no contact "
                "problem to solve",
                "force_depth_curve": "the load is a prescribed pressure: its force and depth "

@@ -39,10 +39,21 @@ def build(setup: Setup) -> Contact:
 
         # equal radii (a sphere, crossed equal cylinders): R itself; else the Gaussian radius
         R = R1 if R1 == R2 else float(bodies.gaussian_radius(R1, R2))  # (5.30)
-        return HertzContact(m, i, r, R=R, principal_radii=[R1, R2])
+        out = HertzContact(m, i, r, R=R, principal_radii=[R1, R2])
+        out.choice = (f"principal radii R1 = {R1:.6g} m, R2 = {R2:.6g} m equal (to a relative "
+                      f"{CIRCULAR_RTOL:g}) -> circular Hertz with R = {R:.6g} m")
+        if any(b.shape == "sphere" for b in setup.spec.bodies):
+            out.choice += ("; a 'sphere' is Hertz's paraboloid (5.19), the exact spherical "
+                           "cap (shape 'exact_sphere') was not requested")
+        return out
     from hertzmdr.numeric.scene.kinds.elliptic import EllipticContact
 
-    return EllipticContact(m, i, r, R1, R2, model=setup.spec.elliptic)
+    out = EllipticContact(m, i, r, R1, R2, model=setup.spec.elliptic)
+    out.choice = (f"principal radii R1 = {R1:.6g} m, R2 = {R2:.6g} m differ (R1/R2 = "
+                  f"{R1 / R2:.6g}) -> elliptical contact, "
+                  + ("exact (elliptic integrals)" if setup.spec.elliptic == "exact"
+                     else "the chapter's Gaussian radius ([model] elliptic = 'gaussian')"))
+    return out
 
 
 def _line(setup: Setup, R: float) -> Contact:
@@ -57,4 +68,8 @@ def _line(setup: Setup, R: float) -> Contact:
     L = min(lengths)
     if not L > 0:
         setup.fail("body", f"the cylinder length must be > 0, got {L}")
-    return LineContact(setup.materials, setup.interface, setup.rtol, R, L)
+    out = LineContact(setup.materials, setup.interface, setup.rtol, R, L)
+    out.choice = (f"one principal curvature is zero (parallel axes, or a cylinder on a flat) "
+                  f"-> line contact with R = {R:.6g} m over the length L = {L:.6g} m (the "
+                  "shorter cylinder's)")
+    return out

@@ -46,6 +46,8 @@ class Key:
         negative, concave), ``"nonzero_each"`` (each of a list), or None.
     hint : str
         Added to the range error, e.g. what to use instead.
+    unit : str
+        The SI unit of a ``number`` key (result.json's echo): "m^(1-n)", "1".
     """
 
     name: str
@@ -54,6 +56,7 @@ class Key:
     doc: str = ""
     rule: str | None = None
     hint: str = ""
+    unit: str = "1"
 
 
 class Shape:

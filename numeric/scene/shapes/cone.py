@@ -19,7 +19,7 @@ class Cone(Shape):
                  f"(0, 90 deg), got {math.degrees(p['angle']):.6g} deg")
 
     def mdr(self, p):
-        from hertzmdr.numeric import cone, powerlaw
+        from hertzmdr.numeric import cone, force_law, powerlaw
         from hertzmdr.numeric.scene.kinds.axisym import ClosedForm
 
         th = p["angle"]
@@ -34,4 +34,5 @@ class Cone(Shape):
             surface_displacement=lambda r, d: powerlaw.surface_displacement(r, d, c, 1.0),
             g_profile=lambda x: powerlaw.g_profile(x, c, 1.0),
             no_max_pressure="the cone's pressure is log-singular at the tip (5.39)",
-            singular_at=lambda a: 0.0, slope=c)
+            singular_at=lambda a: 0.0, slope=c,
+            force_law=lambda E: force_law.cone(th, E), force_law_method="(5.40)")

@@ -27,4 +27,6 @@ class ExactSphere(Shape):
             depth_from_force=lambda F, E: sphere.depth_from_force(F, R, E),
             pressure=lambda r, d, E: sphere.pressure(r, d, R, E),
             surface_displacement=lambda r, d: sphere.surface_displacement(r, d, R),
-            g_profile=lambda x: sphere.g_profile(x, R))
+            g_profile=lambda x: sphere.g_profile(x, R),
+            not_power_law="Sneddon's spherical cap has F = K d^(3/2) (Hertz) only as a/R -> "
+            "0; a 'sphere' body gives that law")

@@ -16,13 +16,14 @@ class FlatPunch(Shape):
     kinds = ("mdr",)
 
     def mdr(self, p):
-        from hertzmdr.numeric import contact, powerlaw
+        from hertzmdr.numeric import contact, force_law, powerlaw
         from hertzmdr.numeric.scene.kinds.axisym import ClosedForm, PunchContact
 
         a = p["radius"]
         return ClosedForm(
             kind="flat_punch", label="flat cylindrical punch (5.9)-(5.12), Problem 7(a)",
             method="(5.11), (5.12)", params={"radius": a}, contact=PunchContact,
+            force_law=lambda E: force_law.flat_punch(a, E), force_law_method="Problem 7(a)",
             contact_radius=lambda d: np.full(np.shape(d), a),
             force=lambda d, E: contact.punch_force(d, a, E),
             depth_from_force=lambda F, E: contact.punch_depth_from_force(F, a, E),

@@ -32,4 +32,6 @@ class FlattenedParabola(Shape):
             "flat r = b (where the slope of the profile jumps): it has no finite maximum; ask "
             "for 'pressure_profile' or the stresses",
             singular_at=lambda a: b, kink=b, off_axis=False, radius=R,
+            not_power_law="the flat tip carries a punch's F = 2 E* b d until the parabola "
+            "touches, then the force grows towards the Hertz d^(3/2): no one K and n",
             methods={"pressure_profile": "(5.59) in incomplete elliptic integrals (Problem 8)"})

@@ -8,18 +8,20 @@ from hertzmdr.numeric.scene.shapes.base import Key, Shape
 class PowerLaw(Shape):
     name = "power_law"
     doc = "z = c·rⁿ"
-    keys = (Key("coefficient", "number", doc="c (SI: m^(1-n))", rule="positive"),
+    keys = (Key("coefficient", "number", doc="c (SI: m^(1-n))", rule="positive",
+                unit="m^(1-n)"),
             Key("exponent", "number", doc="n > 0", rule="positive"))
     kinds = ("mdr",)
 
     def mdr(self, p):
-        from hertzmdr.numeric import powerlaw
+        from hertzmdr.numeric import force_law, powerlaw
         from hertzmdr.numeric.scene.kinds.axisym import ClosedForm
 
         c, n = p["coefficient"], p["exponent"]
         return ClosedForm(
             kind="power_law", label=f"power-law profile f = c r^{n:g} (Problem 7 d)",
             method="Problem 7(d)",
+            force_law=lambda E: force_law.power_law(c, n, E), force_law_method="Problem 7(d)",
             params={"coefficient": c, "exponent": n, "kappa_n": float(powerlaw.kappa(n))},
             contact_radius=lambda d: powerlaw.contact_radius(d, c, n),
             force=lambda d, E: powerlaw.force(d, c, n, E),
