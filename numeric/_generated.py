@@ -5042,6 +5042,11 @@ def force_law_cone_prefactor(E_star, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_cone_prefactor(E_star, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star/(numpy.pi*numpy.tan(theta))
 
 
@@ -5074,6 +5079,11 @@ def force_law_cone_stiffness_prefactor(E_star, theta):
     theta : float or ndarray
         angle between the cone's surface and the plane [rad]
     """
+    if type(E_star) is float and type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_cone_stiffness_prefactor(E_star, theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 4*E_star/(numpy.pi*numpy.tan(theta))
 
 
@@ -5186,6 +5196,11 @@ def force_law_hertz_prefactor(E_star, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_hertz_prefactor(E_star, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (4/3)*E_star*numpy.sqrt(R)
 
 
@@ -5218,6 +5233,11 @@ def force_law_hertz_stiffness_prefactor(E_star, R):
     R : float or ndarray
         radius of curvature (effective radius (5.27) for two bodies) [m]
     """
+    if type(E_star) is float and type(R) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_hertz_stiffness_prefactor(E_star, R)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*numpy.sqrt(R)
 
 
@@ -5248,6 +5268,11 @@ def force_law_line_prefactor(E_star):
     E_star : float or ndarray
         effective modulus E* (5.8), (5.26) [Pa]
     """
+    if type(E_star) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_line_prefactor(E_star)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*numpy.pi*E_star
 
 
@@ -5278,6 +5303,11 @@ def force_law_line_stiffness_prefactor(E_star):
     E_star : float or ndarray
         effective modulus E* (5.8), (5.26) [Pa]
     """
+    if type(E_star) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_line_stiffness_prefactor(E_star)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (1/4)*numpy.pi*E_star
 
 
@@ -5295,6 +5325,11 @@ def force_law_powerlaw_exponent(n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if type(n) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_powerlaw_exponent(n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return (n + 1)/n
 
 
@@ -5318,6 +5353,12 @@ def force_law_powerlaw_prefactor(E_star, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_powerlaw_prefactor(E_star, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*n*(1/(c_n*kappa_n))**(n**(-1.0))/(n + 1)
 
 
@@ -5334,6 +5375,11 @@ def force_law_powerlaw_stiffness_exponent(n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if type(n) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_powerlaw_stiffness_exponent(n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return n**(-1.0)
 
 
@@ -5357,6 +5403,12 @@ def force_law_powerlaw_stiffness_prefactor(E_star, c_n, kappa_n, n):
     n : float or ndarray
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_powerlaw_stiffness_prefactor(E_star, c_n, kappa_n, n)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*(1/(c_n*kappa_n))**(n**(-1.0))
 
 
@@ -5390,6 +5442,11 @@ def force_law_punch_prefactor(E_star, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_punch_prefactor(E_star, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a
 
 
@@ -5422,6 +5479,11 @@ def force_law_punch_stiffness_prefactor(E_star, a):
     a : float or ndarray
         contact radius [m]
     """
+    if type(E_star) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_force_law_punch_stiffness_prefactor(E_star, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
     return 2*E_star*a
 
 
@@ -12695,6 +12757,116 @@ def _math_flamant_tau_xz(F_L, x, z):
 def _math_flat_punch_tangential_traction(r, a, G_star, u_x):
     """``flat_punch_tangential_traction`` for Python floats (the math module); raises where it does."""
     return G_star*u_x/(math.pi*math.sqrt((a*a) - (r*r)))
+
+
+def _math_force_law_cone_exponent():
+    """``force_law_cone_exponent`` for Python floats (the math module); raises where it does."""
+    return 2
+
+
+def _math_force_law_cone_prefactor(E_star, theta):
+    """``force_law_cone_prefactor`` for Python floats (the math module); raises where it does."""
+    return 2*E_star/(math.pi*math.tan(theta))
+
+
+def _math_force_law_cone_stiffness_exponent():
+    """``force_law_cone_stiffness_exponent`` for Python floats (the math module); raises where it does."""
+    return 1
+
+
+def _math_force_law_cone_stiffness_prefactor(E_star, theta):
+    """``force_law_cone_stiffness_prefactor`` for Python floats (the math module); raises where it does."""
+    return 4*E_star/(math.pi*math.tan(theta))
+
+
+def _math_force_law_ellipse_exponent():
+    """``force_law_ellipse_exponent`` for Python floats (the math module); raises where it does."""
+    return 3/2
+
+
+def _math_force_law_ellipse_stiffness_exponent():
+    """``force_law_ellipse_stiffness_exponent`` for Python floats (the math module); raises where it does."""
+    return 1/2
+
+
+def _math_force_law_hertz_exponent():
+    """``force_law_hertz_exponent`` for Python floats (the math module); raises where it does."""
+    return 3/2
+
+
+def _math_force_law_hertz_prefactor(E_star, R):
+    """``force_law_hertz_prefactor`` for Python floats (the math module); raises where it does."""
+    return (4/3)*E_star*math.sqrt(R)
+
+
+def _math_force_law_hertz_stiffness_exponent():
+    """``force_law_hertz_stiffness_exponent`` for Python floats (the math module); raises where it does."""
+    return 1/2
+
+
+def _math_force_law_hertz_stiffness_prefactor(E_star, R):
+    """``force_law_hertz_stiffness_prefactor`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.sqrt(R)
+
+
+def _math_force_law_line_exponent():
+    """``force_law_line_exponent`` for Python floats (the math module); raises where it does."""
+    return 1
+
+
+def _math_force_law_line_prefactor(E_star):
+    """``force_law_line_prefactor`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pi*E_star
+
+
+def _math_force_law_line_stiffness_exponent():
+    """``force_law_line_stiffness_exponent`` for Python floats (the math module); raises where it does."""
+    return 0
+
+
+def _math_force_law_line_stiffness_prefactor(E_star):
+    """``force_law_line_stiffness_prefactor`` for Python floats (the math module); raises where it does."""
+    return (1/4)*math.pi*E_star
+
+
+def _math_force_law_powerlaw_exponent(n):
+    """``force_law_powerlaw_exponent`` for Python floats (the math module); raises where it does."""
+    return (n + 1)/n
+
+
+def _math_force_law_powerlaw_prefactor(E_star, c_n, kappa_n, n):
+    """``force_law_powerlaw_prefactor`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*n*math.pow(1/(c_n*kappa_n), 1/n)/(n + 1)
+
+
+def _math_force_law_powerlaw_stiffness_exponent(n):
+    """``force_law_powerlaw_stiffness_exponent`` for Python floats (the math module); raises where it does."""
+    return 1/n
+
+
+def _math_force_law_powerlaw_stiffness_prefactor(E_star, c_n, kappa_n, n):
+    """``force_law_powerlaw_stiffness_prefactor`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*math.pow(1/(c_n*kappa_n), 1/n)
+
+
+def _math_force_law_punch_exponent():
+    """``force_law_punch_exponent`` for Python floats (the math module); raises where it does."""
+    return 1
+
+
+def _math_force_law_punch_prefactor(E_star, a):
+    """``force_law_punch_prefactor`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a
+
+
+def _math_force_law_punch_stiffness_exponent():
+    """``force_law_punch_stiffness_exponent`` for Python floats (the math module); raises where it does."""
+    return 0
+
+
+def _math_force_law_punch_stiffness_prefactor(E_star, a):
+    """``force_law_punch_stiffness_prefactor`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*a
 
 
 def _math_hertz_contact_radius(R, d):
