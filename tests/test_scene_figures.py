@@ -139,3 +139,10 @@ def test_force_law_in_the_table():
                         EFFECTS["force_law"].unit)
     assert text == ("K = 9.8692e+08 N/m^1.5, n = 1.5, stiffness_K = 1.4804e+09 N/m^1.5, "
                     "stiffness_n = 0.5")
+
+
+def test_a_field_is_printed_with_its_number_of_points():
+    """The table's line of a field counts its points (a force law's exponent n, read from the
+    same kind of record, once took the count's name and printed 'field of None points')."""
+    text = format_value({"r": [0.0, 1e-6, 2e-6], "p": [3e6, 2e6, 0.0]}, "{r: m, p: Pa}")
+    assert text == "field of 3 points (r, p); PNG with --out", text

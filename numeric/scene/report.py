@@ -32,12 +32,13 @@ def format_value(value, unit: str) -> str:
         n = max(sizes.values()) if sizes else 0
         scale = positions_scale(value, unit)
 
-        n = float(np.reshape(value["n"], -1)[0]) if np.size(value.get("n", [])) == 1 else None
+        exponent = (float(np.reshape(value["n"], -1)[0]) if np.size(value.get("n", [])) == 1
+                    else None)
 
         def show(k, v):
             u = unit_of(unit, k)
-            if n is not None:  # a force law's K: N/m^n with its n
-                u = u.replace("^(n+1)", f"^{n + 1:g}").replace("^n", f"^{n:g}")
+            if exponent is not None:  # a force law's K: N/m^n with its n
+                u = u.replace("^(n+1)", f"^{exponent + 1:g}").replace("^n", f"^{exponent:g}")
             x = float(np.reshape(v, -1)[0])
             if k != "value" and u == "m" and abs(x) < NEAR_ZERO * scale:
                 x = 0.0

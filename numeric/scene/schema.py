@@ -440,11 +440,14 @@ class _Reader:
                           f"{units!r}")
             scale = [self.positive(f"1 {u.strip()}", dim, f"{key}.units[{j}]")
                      for j, (u, dim) in enumerate(zip(units, dims, strict=True))]
+            for j in range(2):  # a unit, not a quantity: result.json echoes it as given
+                self.read_as.pop(f"{key}.units[{j}]", None)
         name = h["file"]
         if not isinstance(name, str) or not name.strip():
             self.fail(f"{key}.file", f"must be a file name (a string), got {name!r}")
         path = (self.base_dir or Path.cwd()) / name
         rows = read_history(path, lambda msg: self.fail(f"{key}.file", msg))
+        self.read_as[f"{key}.file"] = ("path", "")  # echoed resolved, with its SHA-256
         nv, tv, lines = [], [], []
         for line, (a, b) in rows:
             a, b = a * scale[0], b * scale[1]
