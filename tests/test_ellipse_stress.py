@@ -219,7 +219,23 @@ def test_field_by_superposition_sweep(t):
         inside = [p for p in pts if p[0] ** 2 + (p[1] / t) ** 2 < 1]
         _polar_check(t, 0.3, inside)
         pts = [p for p in pts if p not in inside]
+        # beside the contact the polar route does not reach; (0.2, 1.5 b, 0.8 b) runs in
+        # test_slender_point_beside_the_contact
+        pts.remove((0.2, 1.5 * t, 0.8 * t))
     _field_check(t, 0.3, pts, 1e-13)
+
+
+@pytest.mark.sweep
+@SLOW
+@pytest.mark.xfail(strict=True, reason=(
+    "unresolved at b/a = 0.01, (0.2 a, 1.5 b, 0.8 b), beside the contact: sigma_xx is "
+    "-0.0981661569201 p0 here, -0.0981661683022 by the 20-digit reference in the ellipse's "
+    "angles (1.1e-8 apart; the run took 36 min under load). The same reference was off "
+    "below the contact at b/a = 0.01 (an unresolved kernel peak); the polar route, which "
+    "settled that point, takes only points below the contact so far"))
+def test_slender_point_beside_the_contact():
+    t = 0.01
+    _field_check(t, 0.3, [(0.2, 1.5 * t, 0.8 * t)], 1e-13, comps=("xx",))
 
 
 @pytest.mark.sweep
