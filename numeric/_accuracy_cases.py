@@ -419,6 +419,35 @@ def line_stress_near_edge() -> Quantity:
                     "points.", truth, ways)
 
 
+def ellipse_field_slender() -> Quantity:
+    from hertzmdr.numeric import ellipse_stress as el
+
+    t = 0.01
+    x, y, z = 0.3, 0.4 * t, 0.3 * t  # a = p0 = 1, b = 0.01: under an almost-line contact
+
+    def truth():
+        import mpmath as mp
+
+        # sigma_xx/p0 by the superposition of the derived point-force field over the
+        # pressure in polar coordinates about the field point, at 22 digits (the 14- and
+        # 20-point rules agree to 20 digits): data with its recipe,
+        # tests/ellipse_reference.py's superposed_polar_mp (minutes), recomputed by
+        # tests/test_ellipse_stress.py::test_slender_point_at_20_digits under the sweep
+        return mp.mpf("-0.37873169247983486760")
+
+    def ways():
+        return [Way("Love's form, double-exponential rule for the field integrals",
+                    f"rtol={r:g}", lambda r=r: el.stresses(x, y, z, 1.0, t, 1.0, 0.3,
+                                                           rtol=r).sigma_xx)
+                for r in (1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14)]
+
+    return Quantity("elliptical-contact sigma_xx off the axis, b/a = 0.01",
+                    "The field of an almost-line elliptical contact at (0.3 a, 0.4 b, 0.3 b) "
+                    "(numeric/ellipse_stress.py): the accuracy-time trade-off of its "
+                    "quadrature of the field integrals, against the 22-digit superposition "
+                    "of the point-force field.", truth, ways)
+
+
 def mindlin_energy_small_amplitude() -> Quantity:
     from hertzmdr.numeric import hertz, tangential
 
@@ -475,4 +504,4 @@ def all_quantities() -> list[Quantity]:
     return [hertz_force(), hertz_far_displacement(), kappa_large_n(), worn_small_depth(),
             powerlaw_pressure_large_n(), numerical_mdr_force(), impact_time(),
             stress_superposition(), adhesive_pull_off(), line_stress_near_edge(),
-            mindlin_energy_small_amplitude()]
+            ellipse_field_slender(), mindlin_energy_small_amplitude()]

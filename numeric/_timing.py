@@ -143,6 +143,18 @@ def timed(fn: Callable[[], object]) -> tuple[object, float]:
     return out, time.perf_counter() - t0
 
 
+def cpu_best(fn: Callable[[], object], rounds: int = 3) -> float:
+    """The least CPU time [s] of this process over ``rounds`` calls (``time.process_time``;
+    single-threaded numpy): what a quiet machine's wall time would be, which a shared
+    machine's wall time (:func:`measure`) overstates by the load."""
+    best = math.inf
+    for _ in range(rounds):
+        t0 = time.process_time()
+        fn()
+        best = min(best, time.process_time() - t0)
+    return best
+
+
 def compare(fns: Mapping[str, Callable[[], object]], budget: Budget = FULL) -> dict[str, Timing]:
     """Time several callables with their rounds interleaved (round 1 of each, round 2 of each,
     ...), so that a change of the machine's load affects all of them alike."""

@@ -204,7 +204,8 @@ def domain_search_section(record: Path = DOMAIN_SEARCH_RECORD) -> str:
         return ""
     c = json.loads(record.read_text())
     return ("\n## Documented domains searched\n\n"
-            "Every public function of hertz, powerlaw, cone, line, bodies, ellipse and stress, "
+            "Every public function of hertz, powerlaw, cone, line, bodies, ellipse, stress and "
+            "line_stress, "
             "each parameter over the range its docstring guarantees (n from 1e-3 to 1e8, nu "
             "from nextafter(-1, 0) to 0.5, ratios to 1e8, positions to 1e300 m, forces down "
             "to 1e-300 N), the neighbours of every edge it branches on, round trips, and "

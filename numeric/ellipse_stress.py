@@ -34,6 +34,11 @@ DEFAULT_RTOL = 1e-10
 _T_LO, _T_HI = -4.2, 3.6
 _H0 = 0.5  # the coarsest step; each level halves it
 _MAX_LEVEL = 6  # h = 1/128: far below the rounding level for every point tested
+#: the roundings of the components (lam, e, the R_D's, the sums), relative to p0: the
+#: worst measured against the polar-coordinate superposition of tests/ellipse_reference.py
+#: is 7e-16 p0 (b/a = 1 ... 0.001, near the surface, the edge and far below); 16 eps
+#: bounds it with a margin
+_ROUNDING = 16 * np.finfo(float).eps
 
 
 class EllipseStresses(NamedTuple):
@@ -207,7 +212,8 @@ def stresses(x, y, z, a, b, p0, nu, rtol=DEFAULT_RTOL):
     -------
     EllipseStresses
         sigma_xx, sigma_yy, sigma_zz, tau_xy, tau_xz, tau_yz [Pa] (tension positive) and
-        ``error`` [Pa], the estimated bound of the quadrature error of the components.
+        ``error`` [Pa], the estimated bound of the error of the components: the quadrature's
+        estimate plus 16 eps p0 for the roundings.
     """
     rtol = float(between("rtol", rtol, 1e-14, 1e-2, lo_open=False, hi_open=False))
     x, y, z, a, b, p0, nu = _inputs(x, y, z, a, b, p0, nu)
@@ -222,8 +228,9 @@ def stresses(x, y, z, a, b, p0, nu, rtol=DEFAULT_RTOL):
     out = [gen.ellipse_stress_sigma_xx(*args, Ix, Iy, Jxx),
            gen.ellipse_stress_sigma_yy(*args, Ix, Iy, Jyy),
            szz, gen.ellipse_stress_tau_xy(*args, Jxy), txz, tyz]
-    # the J's enter with the factor a b p0 (1 - 2 nu)/2 (dimensionless: Bt |1 - 2 nu|/2)
-    err = jerr * Bt * np.abs(1 - 2 * nu) / 2 * p0
+    # the J's enter with the factor a b p0 (1 - 2 nu)/2 (dimensionless: Bt |1 - 2 nu|/2);
+    # the roundings of the rest are below _ROUNDING p0
+    err = (jerr * Bt * np.abs(1 - 2 * nu) / 2 + _ROUNDING) * p0
     return EllipseStresses(*(result(v * p0) for v in out), result(err))
 
 

@@ -78,6 +78,10 @@ def stresses(x, z, b, p0, nu):
     surface, at the contact edge and far away (tested to z/b = 1e6); beyond
     :data:`MAX_DISTANCE` half-widths from the strip a ValueError.
 
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+60], z in {0} U [1e-300,
+    1e+60], b in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5], max(|x|, z) <= 1e50
+    b (a ValueError beyond) (SI units; searched by tests/domain_search.py).
+
     Parameters
     ----------
     x : float or array_like
@@ -105,6 +109,10 @@ def stresses(x, z, b, p0, nu):
 def principal_shear(x, z, b, p0, nu):
     """Principal shear stresses [Pa] at (x, z) under the line-contact pressure.
 
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+60], z in {0} U [1e-300,
+    1e+60], b in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5], max(|x|, z) <= 1e50
+    b (a ValueError beyond) (SI units; searched by tests/domain_search.py).
+
     Parameters
     ----------
     x, z, b, p0, nu
@@ -131,6 +139,10 @@ def principal_shear(x, z, b, p0, nu):
 def von_mises(x, z, b, p0, nu):
     """von Mises stress (5.50) [Pa] at (x, z) under the line-contact pressure (plane strain).
 
+    Guaranteed finite and accurate for x in {0} U [1e-300, 1e+60], z in {0} U [1e-300,
+    1e+60], b in [1e-12, 1e+06], p0 in [0.001, 1e+15], nu in (-1, 0.5], max(|x|, z) <= 1e50
+    b (a ValueError beyond) (SI units; searched by tests/domain_search.py).
+
     Parameters
     ----------
     x, z, b, p0, nu
@@ -150,6 +162,10 @@ def axis_stresses(z, b, p0, nu):
     s = (b^2 + z^2)^(1/2) (the cancellation-free form of
     -p0 [(b^2 + 2 z^2)/(b s) - 2 z/b]), sigma_yy = nu (sigma_xx + sigma_zz); for
     z <= :data:`MAX_DISTANCE` b (a ValueError beyond).
+
+    Guaranteed finite and accurate for z in {0} U [1e-300, 1e+60], b in [1e-12, 1e+06], p0
+    in [0.001, 1e+15], nu in (-1, 0.5], z <= 1e50 b (a ValueError beyond) (SI units;
+    searched by tests/domain_search.py).
 
     Parameters
     ----------
@@ -200,6 +216,9 @@ def max_shear_3d(nu):
     nu = 0). ``tests/test_line_stress.py``
     checks on a grid that no point off the axis is higher.
 
+    Guaranteed finite and accurate for nu in (-1, 0.5] (SI units; searched by
+    tests/domain_search.py).
+
     Parameters
     ----------
     nu : float
@@ -246,6 +265,9 @@ def max_von_mises(nu):
     negative nu) or at the interior root of the generated d(sigma_vM)/dz (Brent's method,
     bracketed on a grid of depths). ``tests/test_line_stress.py`` checks on a grid and by
     local search that no point off the axis is higher.
+
+    Guaranteed finite and accurate for nu in (-1, 0.5] (SI units; searched by
+    tests/domain_search.py).
 
     Parameters
     ----------

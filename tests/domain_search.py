@@ -38,7 +38,7 @@ import mpmath as mp
 import numpy as np
 
 from hertzmdr.numeric import _generated_mp as gm
-from hertzmdr.numeric import bodies, cone, ellipse, hertz, line, powerlaw, stress
+from hertzmdr.numeric import bodies, cone, ellipse, hertz, line, line_stress, powerlaw, stress
 
 EPS = np.finfo(float).eps
 BIG = float(np.finfo(float).max)
@@ -652,11 +652,79 @@ def _stress_rows() -> list[Row]:
     ]
 
 
+def _line_stress_rows() -> list[Row]:
+    """Issue 14's line-contact stresses (plane strain) against McEwen's forms (Johnson,
+    Contact Mechanics (4.49), in m and n; tests/test_line_stress.py proves them equal to the
+    superposed Flamant field) at enough digits for their cancellation far away."""
+    XZ = P(1e-300, 1e60, zero=True)  # up to and past the documented max(|x|, z) <= 1e50 b
+    note = ", max(|x|, z) <= 1e50 b (a ValueError beyond)"
+
+    def far(p):
+        return max(abs(p.get("x", 0.0)), p["z"]) > line_stress.MAX_DISTANCE * p["b"]
+
+    def mcewen(x, z, b, p0):
+        """sigma_xx, sigma_zz, tau_xz: -(p0/b) [m (1 + (z^2 + n^2)/(m^2 + n^2)) - 2 z],
+        -(p0/b) m (1 - (z^2 + n^2)/(m^2 + n^2)), -(p0/b) n (m^2 - z^2)/(m^2 + n^2) (the
+        package's sign: the load pushes +z into the body); m, n >= 0 for x, z >= 0. The far
+        field cancels ~2 log10(r/b) digits: raised precision."""
+        r = max(abs(x), z) / b
+        with mp.workdps(DPS + 10 + int(2 * max(0, mp.log10(r) if r > 0 else 0))):
+            x, z, b = mp.mpf(x), mp.mpf(z), mp.mpf(b)
+            c = (b - x) * (b + x) + z * z
+            root = mp.sqrt(c * c + 4 * x * x * z * z)
+            m2 = (root + c) / 2
+            n2 = (root - c) / 2 if c <= 0 else 2 * x * x * z * z / (root + c)
+            m, n = mp.sqrt(m2), mp.sqrt(n2)
+            k = (z * z + n2) / (m2 + n2) if m2 + n2 > 0 else mp.mpf(1)
+            sxx = -(p0 / b) * (m * (1 + k) - 2 * z)
+            szz = -(p0 / b) * m * (1 - k)
+            txz = -(p0 / b) * n * (m2 - z * z) / (m2 + n2) if m2 + n2 > 0 else mp.mpf(0)
+            return +sxx, +szz, +txz
+
+    def vm(x, z, b, p0, nu):
+        sxx, szz, txz = mcewen(x, z, b, p0)
+        with mp.workdps(DPS + 10):
+            syy = nu * (sxx + szz)
+            return mp.sqrt(((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) / 2
+                           + 3 * txz**2)
+
+    def tau1(x, z, b, p0, nu):
+        sxx, szz, txz = mcewen(x, z, b, p0)
+        with mp.workdps(DPS + 10):
+            return mp.sqrt(((sxx - szz) / 2) ** 2 + txz**2)
+
+    field = {"x": XZ, "z": XZ, "b": LEN, "p0": MOD, "nu": NU}
+    edge = _edge("x", lambda p: p["b"])
+    # an absolute allowance of 1e-7 p0 ~ p0 sqrt(eps), as for the pressures: at the strip's
+    # edge x = b (1 +- k eps) the field is ~p0 (k eps)^(1/2), and the rounding of x/b moves
+    # it by as much
+    tiny = lambda x, z, b, p0, nu: p0 * mp.mpf(1e-7)  # noqa: E731
+    rows = [Row(f"line_stress.stresses ({name})", line_stress.stresses, field,
+                lambda x, z, b, p0, nu, i=i: mcewen(x, z, b, p0)[i], pick=i, refused=far,
+                note=note, near=edge, scale=tiny)
+            for i, name in enumerate(("sigma_xx", "sigma_zz", "tau_xz"))]
+    rows += [
+        Row("line_stress.von_mises", line_stress.von_mises, field, vm, refused=far, note=note,
+            near=edge, scale=tiny),
+        Row("line_stress.principal_shear (tau_1)", line_stress.principal_shear, field, tau1,
+            pick=0, refused=far, note=note, near=edge, scale=tiny),
+        Row("line_stress.axis_stresses (sigma_zz)", line_stress.axis_stresses,
+            {"z": XZ, "b": LEN, "p0": MOD, "nu": NU},
+            lambda z, b, p0, nu: -p0 * b / mp.sqrt(b * b + z * z), pick=1, mono=("z", 1),
+            refused=far, note=", z <= 1e50 b (a ValueError beyond)"),
+        Row("line_stress.max_von_mises", line_stress.max_von_mises, {"nu": NU}, pick=0,
+            near=lambda p: [{"nu": v} for v in (0.0, 0.1, 0.12, 0.25, -1 + 1e-10)], cost=20),
+        Row("line_stress.max_shear_3d", line_stress.max_shear_3d, {"nu": NU}, pick=0,
+            near=lambda p: [{"nu": v} for v in (0.0, 0.1, 0.2, 0.24, 0.25)], cost=20),
+    ]
+    return rows
+
+
 def rows() -> list[Row]:
     out = (_hertz_rows() + _powerlaw_rows() + _cone_rows() + _line_rows() + _bodies_rows()
-           + _ellipse_rows() + _stress_rows())
+           + _ellipse_rows() + _stress_rows() + _line_stress_rows())
     modules = {"hertz": hertz, "powerlaw": powerlaw, "cone": cone, "line": line,
-               "bodies": bodies, "stress": stress}
+               "bodies": bodies, "stress": stress, "line_stress": line_stress}
     for row in out:
         if row.target is None:  # "module.function" or "module.function (component)"
             mod, fn = row.name.split(" ")[0].split(".")

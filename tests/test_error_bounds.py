@@ -252,10 +252,7 @@ HEAVY_FIELDS = {"exact_sphere_deep", "problem8_worn_parabola", "worn tip"}
 #: effects whose golden-section search over the Flamant superposition costs 1.5 s each: the
 #: line contact's maxima over p0 depend on nu alone, and test_scene_routes checks them at the
 #: same nu = 0.3 in CI; HERTZMDR_SWEEP=full checks the roller's own
-HEAVY_EFFECTS = {"roller_pair_stresses": {"max_shear", "max_von_mises"},
-                 # the bearing's stresses against the 20-digit superposition over the ellipse
-                 # (test_scene_routes' check_ellipse_stress): minutes each
-                 "bearing_ball_groove": set(routes.ELLIPSE_STRESS)}
+HEAVY_EFFECTS = {"roller_pair_stresses": {"max_shear", "max_von_mises"}}
 
 
 def _checked(key, effects):

@@ -511,3 +511,100 @@ CASES += [
          "far field and incompressible: every stress ~ b/r, sigma_v a difference of them",
          *_line("von_mises", 1e3, 1e3, 0.5), WELL),
 ]
+
+
+# -- issue 14: the elliptical-contact field ----------------------------------------------------
+
+COMPS = ("xx", "yy", "zz", "xy", "xz", "yz")
+
+
+def _ellipse_mp(t, x, y, z, nu):
+    """The six stresses (a = p0 = 1, b = t) by the derived relations at DPS digits: their
+    mpmath print, lam polished by mp.findroot on the cubic from the float64 lam, the J
+    integrals by mp.quad (tanh-sinh, split at the integrand's scale)."""
+    from hertzmdr.numeric import _generated_mp as gm
+    from hertzmdr.numeric import ellipse_stress as el
+
+    one, B, X, Y, Z, nu_ = (mp.mpf(v) for v in (1, t, x, y, z, nu))
+    w1, w1a, w1b, d = (getattr(gm, f"ellipse_stress_{n}")(one, B, X, Y)
+                       for n in ("w1", "w1_a", "w1_b", "d"))
+    g = el._geometry(np.array([x]), np.array([y]), np.array([z]), np.array([t]))
+    if w1 < 0:
+        lam = mp.findroot(lambda v: gm.ellipse_stress_cubic_lam(one, B, Z, w1, d, v),
+                          mp.mpf(float(g["lam"][0])))
+        q = lam - w1
+    else:
+        q = mp.findroot(lambda v: gm.ellipse_stress_cubic_q(Z, w1, w1a, w1b, d, v),
+                        mp.mpf(float(g["q"][0])))
+        lam = w1 + q
+    e = mp.sqrt(gm.ellipse_stress_e_sq(one, B, lam, q, d))
+    Ix, Iy = gm.ellipse_stress_I_x(one, B, lam), gm.ellipse_stress_I_y(one, B, lam)
+    v0 = mp.sqrt(q)
+    pts = [v0, v0 + mp.sqrt(B * B + lam), v0 + 1, mp.inf]
+    J = {k: mp.quad(f, pts) for k, f in (
+        ("xx", lambda v: gm.ellipse_stress_jxx_integrand(X, w1a, w1b, d, v)),
+        ("yy", lambda v: gm.ellipse_stress_jyy_integrand(Y, w1a, w1b, d, v)),
+        ("xy", lambda v: gm.ellipse_stress_jxy_integrand(X, Y, w1a, w1b, d, v)))}
+    args = (one, B, nu_, one, X, Y, lam, e)
+    alg = (one, B, one, X, Y, lam, e)
+    return {"xx": gm.ellipse_stress_sigma_xx(*args, Ix, Iy, J["xx"]),
+            "yy": gm.ellipse_stress_sigma_yy(*args, Ix, Iy, J["yy"]),
+            "zz": gm.ellipse_stress_sigma_zz(*alg), "xy": gm.ellipse_stress_tau_xy(*args, J["xy"]),
+            "xz": gm.ellipse_stress_tau_xz(*alg), "yz": gm.ellipse_stress_tau_yz(*alg)}
+
+
+def _ellipse(comp, t, x, y, z, nu=0.3):
+    """One stress component of the elliptical Hertz pressure (a = p0 = 1, b = t) by the public
+    float64 API (the double-exponential rule asked 1e-13), against the same derived relations
+    at 35 digits (_ellipse_mp). These cases test float64 stability: the relations themselves
+    are verified against the superposition of the point-force field at the same points
+    (tests/test_ellipse_stress.py::test_hard_points_by_polar_superposition)."""
+    from hertzmdr.numeric import ellipse_stress as el
+
+    def compute():
+        s = el.stresses(x, y, z, 1.0, t, 1.0, nu, rtol=1e-13)
+        return dict(zip(COMPS, s[:6], strict=True))[comp]
+
+    return compute, lambda: _ellipse_mp(t, x, y, z, nu)[comp]
+
+
+def _ellipse_axis(comp, t, z, nu=0.3):
+    """An axis stress by the R_D closed forms (ellipse_stress.axis_stresses) against the
+    off-axis route of the derived relations at 35 digits on the axis (_ellipse_mp: lam, e and
+    the J integrals, a different set of relations)."""
+    from hertzmdr.numeric import ellipse_stress as el
+
+    def compute():
+        return el.axis_stresses(z, 1.0, t, 1.0, nu)[("xx", "yy", "zz").index(comp)]
+
+    return compute, lambda: _ellipse_mp(t, 0.0, 0.0, z, nu)[comp]
+
+
+ELLIPSE_CASES = [
+    Case("ellipse b/a = 1e-3, sigma_xx at (0.3 a, 0.4 b, 0.3 b)",
+         "almost a line: the J integrals grow like a/b and sigma_xx is what is left of them "
+         "(b/a = 0.01 at this point was issue 14's open disagreement)",
+         *_ellipse("xx", 1e-3, 0.3, 0.4e-3, 0.3e-3), WELL),
+    Case("ellipse b/a = 0.1, sigma_xx just below the surface by the edge (0.99 a, 0, 1e-6 b)",
+         "lam ~ z^2 is a small root of the cubic next to the surface ellipse's confocal family",
+         *_ellipse("xx", 0.1, 0.99, 0.0, 1e-7), WELL),
+    Case("ellipse b/a = 0.5, tau_xz just below the surface outside the edge (1.01 a, 0, 1e-6 a)",
+         "outside the contact the surface is traction-free: tau_xz ~ z is a small remainder",
+         *_ellipse("xz", 0.5, 1.01, 0.0, 1e-6), WELL),
+    Case("ellipse b/a = 0.3, sigma_yy far away (3 a, 0.5 a, 50 a)",
+         "far field: every stress ~ p0 (a/r)^2, a difference of terms of size p0",
+         *_ellipse("yy", 0.3, 3.0, 0.5, 50.0), WELL),
+    Case("ellipse b/a = 0.5, nu = 1/2, sigma_zz near the centre (1e-3 a, 1e-3 b, 1e-6 b)",
+         "incompressible, at the loaded surface: lam ~ z^2 and e -> 1",
+         *_ellipse("zz", 0.5, 1e-3, 0.5e-3, 0.5e-6, 0.5), WELL),
+    Case("ellipse b/a = 1e-8 on the axis, sigma_xx at z = 0.786 b (R_D forms)",
+         "almost a line: R_D with arguments b^2 + z^2, z^2 and a^2 + z^2 16 decades apart",
+         *_ellipse_axis("xx", 1e-8, 0.786e-8), WELL),
+    Case("ellipse b/a = 1 - 1e-9 on the axis, sigma_yy at z = 0.5 a (R_D forms)",
+         "nearly circular: the x and y forms are the circle's up to O(1 - b/a)",
+         *_ellipse_axis("yy", 1 - 1e-9, 0.5), WELL),
+    Case("ellipse b/a = 0.3 on the axis far below, sigma_xx at z = 1e3 a (R_D forms)",
+         "far field: sigma_xx ~ p0 (a/z)^2 is a difference of terms of size p0",
+         *_ellipse_axis("xx", 0.3, 1e3), WELL),
+]
+CASES += ELLIPSE_CASES

@@ -19,7 +19,7 @@ from hertzmdr.derive import line_stress as dl
 from hertzmdr.numeric import _generated_mp as gen_mp
 from hertzmdr.numeric import line_stress as ls
 
-from oracle import WORST
+from oracle import FULL, WORST
 
 X, Z, P = dl.x, sp.Symbol("z_s", positive=True), dl.F_L
 
@@ -266,11 +266,52 @@ def _orthogonal_root():
         return xr, zr, -superposed("xz", xr, zr)
 
 
+@cache
+def _vm_root(nu_s, start):
+    """(z/b, sigma_vM/p0) at the root of d(sigma_vM^2)/dz on the axis, sigma_yy =
+    nu (sigma_xx + sigma_zz): mp.findroot on the 30-digit superposition, the kernel
+    differentiated under the integral (computed once, shared with the roller scene's test)."""
+    with mp.workdps(30):
+        nu = mp.mpf(nu_s)
+
+        def vm2_slope(t):
+            sx, sz = superposed("xx", 0, t), superposed("zz", 0, t)
+            dx, dz = superposed("xx", 0, t, "z"), superposed("zz", 0, t, "z")
+            sy, dy = nu * (sx + sz), nu * (dx + dz)
+            return (sx - sy) * (dx - dy) + (sy - sz) * (dy - dz) + (sz - sx) * (dz - dx)
+
+        depth = mp.findroot(vm2_slope, mp.mpf(start))
+        sx, sz = superposed("xx", 0, depth), superposed("zz", 0, depth)
+        sy = nu * (sx + sz)
+        return depth, mp.sqrt(((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2)
+
+
+def _check_vm_maximum(nu_s, start):
+    """max_von_mises(nu) and the root of the generated mpmath slope against _vm_root."""
+    depth, value = _vm_root(nu_s, start)
+    with mp.workdps(30):
+        nu, one = mp.mpf(nu_s), mp.mpf(1)
+        # the generated mpmath slope's root (the docs' 30-digit table) is the same root
+        d_gen = mp.findroot(
+            lambda t: gen_mp.line_stress_axis_von_mises_slope(one, nu, one, t), mp.mpf(start))
+        assert abs(d_gen - depth) < mp.mpf(10) ** -25 * depth
+        assert abs(gen_mp.line_stress_axis_von_mises(one, nu, one, d_gen) - value) \
+            < mp.mpf(10) ** -25 * value
+    v, xm, d = ls.max_von_mises(float(nu_s))
+    assert xm == 0.0
+    # float64: the value at a maximum is flat (error ~ eps), the depth a simple root of a
+    # slope computed to ~eps
+    assert abs(v - value) < 1e-14 * value, (nu_s, v, value)
+    assert abs(d - depth) < 1e-13 * depth, (nu_s, d, depth)
+
+
 def test_axis_maxima_by_superposition():
     """tau_1 and von Mises maxima on the axis: mp.findroot of the derivative of the 30-digit
     superposition (kernel differentiated under the integral), against the exact golden-ratio
     values and max_shear()/max_von_mises(). float64: the value at a maximum is flat (error
-    ~ eps), the depth is a simple root of a slope computed to ~eps: 1e-14 both."""
+    ~ eps), the depth is a simple root of a slope computed to ~eps: 1e-14 both. CI takes
+    nu = 0.3 (the roots are shared with the roller scene's test); nu = 0.25 and 0.5 run in
+    the sweep below."""
     with mp.workdps(30):
         depth, value = _tau1_root()
         gold = (1 + mp.sqrt(5)) / 2
@@ -278,30 +319,16 @@ def test_axis_maxima_by_superposition():
         assert abs(value - gold ** mp.mpf(-2.5)) < mp.mpf(10) ** -28
         v, d = ls.max_shear()
         assert abs(v - value) < 1e-14 * value and abs(d - depth) < 1e-14 * depth
-    for nu_s, start in (("0.25", 0.65), ("0.3", 0.7), ("0.5", 0.79)):
-        with mp.workdps(30):
-            nu = mp.mpf(nu_s)
+    _check_vm_maximum("0.3", "0.7")
 
-            def vm2(zz, nu=nu):
-                sx, sz = superposed("xx", 0, zz), superposed("zz", 0, zz)
-                sy = nu * (sx + sz)
-                return ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2
 
-            depth = mp.findroot(lambda zz, f=vm2: mp.diff(f, zz), mp.mpf(start))
-            value = mp.sqrt(vm2(depth))
-            # the generated mpmath slope's root (the docs' 30-digit table) is the same root
-            one = mp.mpf(1)
-            d_gen = mp.findroot(
-                lambda t, nu=nu, c=one: gen_mp.line_stress_axis_von_mises_slope(c, nu, c, t),
-                mp.mpf(start))
-            assert abs(d_gen - depth) < mp.mpf(10) ** -25 * depth
-            assert abs(gen_mp.line_stress_axis_von_mises(one, nu, one, d_gen) - value) \
-                < mp.mpf(10) ** -25 * value
-            v, xm, d = ls.max_von_mises(float(nu_s))
-            assert xm == 0.0
-            assert abs(v - value) < 1e-14 * value, (nu_s, v, value)
-            assert abs(d - depth) < 1e-13 * depth, (nu_s, d, depth)  # see above; mp.diff
-            # of the quadrature is good to ~1e-25, far below this
+@pytest.mark.sweep
+@pytest.mark.skipif(not FULL, reason="a root of the 30-digit superposition a nu, ~10 s "
+                    "each: HERTZMDR_SWEEP=full runs it")
+@pytest.mark.parametrize(("nu_s", "start"), [("0.25", "0.65"), ("0.5", "0.79")])
+def test_axis_maxima_by_superposition_sweep(nu_s, start):
+    """As test_axis_maxima_by_superposition, for two more Poisson's ratios."""
+    _check_vm_maximum(nu_s, start)
 
 
 def test_max_shear_3d_by_superposition():
@@ -460,16 +487,7 @@ def test_roller_scene_by_superposition():
         assert sz < nu * (sx + sz) < sx
 
         # von Mises on the axis: the root of d(sigma_v^2)/dz, sigma_yy = nu (sx + sz)
-        def vm2_slope(t):
-            sx, sz = superposed("xx", 0, t), superposed("zz", 0, t)
-            dx, dz = superposed("xx", 0, t, "z"), superposed("zz", 0, t, "z")
-            sy, dy = nu * (sx + sz), nu * (dx + dz)
-            return (sx - sy) * (dx - dy) + (sy - sz) * (dy - dz) + (sz - sx) * (dz - dx)
-
-        zv = mp.findroot(vm2_slope, mp.mpf("0.7"))
-        sx, sz = superposed("xx", 0, zv), superposed("zz", 0, zv)
-        sy = nu * (sx + sz)
-        vm = mp.sqrt(((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2)
+        zv, vm = _vm_root("0.3", "0.7")
         assert vm > abs(1 - 2 * nu)  # above the surface centre's value
 
         # |tau_xz|: the root of its gradient
