@@ -81,7 +81,11 @@ _POWERLAW_TESTS = [f"tests/test_powerlaw.py::test_{t}" for t in """
     each_input_named_in_its_error pressure_large_n_at_si_scale_in_one_call
     normalized_pressure_of_the_punch special_cases_are_hertz_cone_and_punch
     mean_pressure_needs_a_positive_depth g_profile_of_a_steep_power_law_at_a_small_x
-    punch_pressure_is_zero_outside_its_radius g_profile_refuses_a_non_number_naming_x""".split()]
+    punch_pressure_is_zero_outside_its_radius g_profile_refuses_a_non_number_naming_x
+    g_profile_refuses_an_infinite_x_naming_x
+    pressure_near_the_centre_at_the_closed_form_exponents
+    pressure_is_finite_near_the_centre_for_n_from_1_5
+    surface_displacement_outside_at_several_radii_in_one_call""".split()]
 
 # test_sphere.py but its sweeps (the 3-D elasticity check, decades), the symbolic check and
 # the report's regeneration
