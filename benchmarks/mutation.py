@@ -93,7 +93,9 @@ _SPHERE_TESTS = [f"tests/test_sphere.py::test_{t}" for t in """
     profile_and_g depth_and_force_by_quadrature contact_radius_and_force_at_depth stiffness
     pressure_by_quadrature_of_59 force_is_integral_of_pressure hard_cases_and_vectors
     bad_input force_increases_and_inverts hertz_limit
-    surface_displacement_outside_by_the_mdr_integral each_input_named_in_its_error""".split()]
+    surface_displacement_outside_by_the_mdr_integral each_input_named_in_its_error
+    an_input_out_of_range_in_a_2d_array_is_named_by_its_full_index
+    the_deep_limit_itself_is_accepted_and_beyond_it_is_named""".split()]
 
 # the tests of test_mdr.py that call numeric/mdr.py (the others check derive/mdr.py, and one
 # of them, a SymPy solve given 10 s, fails when the machine is loaded)
