@@ -81,7 +81,11 @@ _POWERLAW_TESTS = [f"tests/test_powerlaw.py::test_{t}" for t in """
     each_input_named_in_its_error pressure_large_n_at_si_scale_in_one_call
     normalized_pressure_of_the_punch special_cases_are_hertz_cone_and_punch
     mean_pressure_needs_a_positive_depth g_profile_of_a_steep_power_law_at_a_small_x
-    punch_pressure_is_zero_outside_its_radius g_profile_refuses_a_non_number_naming_x""".split()]
+    punch_pressure_is_zero_outside_its_radius g_profile_refuses_a_non_number_naming_x
+    g_profile_refuses_an_infinite_x_naming_x
+    pressure_near_the_centre_at_the_closed_form_exponents
+    pressure_is_finite_near_the_centre_for_n_from_1_5
+    surface_displacement_outside_at_several_radii_in_one_call""".split()]
 
 # test_sphere.py but its sweeps (the 3-D elasticity check, decades), the symbolic check and
 # the report's regeneration
@@ -89,7 +93,9 @@ _SPHERE_TESTS = [f"tests/test_sphere.py::test_{t}" for t in """
     profile_and_g depth_and_force_by_quadrature contact_radius_and_force_at_depth stiffness
     pressure_by_quadrature_of_59 force_is_integral_of_pressure hard_cases_and_vectors
     bad_input force_increases_and_inverts hertz_limit
-    surface_displacement_outside_by_the_mdr_integral each_input_named_in_its_error""".split()]
+    surface_displacement_outside_by_the_mdr_integral each_input_named_in_its_error
+    an_input_out_of_range_in_a_2d_array_is_named_by_its_full_index
+    the_deep_limit_itself_is_accepted_and_beyond_it_is_named""".split()]
 
 # the tests of test_mdr.py that call numeric/mdr.py (the others check derive/mdr.py, and one
 # of them, a SymPy solve given 10 s, fails when the machine is loaded)

@@ -430,3 +430,65 @@ def test_g_profile_refuses_a_non_number_naming_x():
     with pytest.raises(ValueError, match=r"^x = 'abc' is not a number"):
         powerlaw.g_profile("abc", 3.0, 2.0)
     assert powerlaw.g_profile(-0.5, 3.0, 2.0) == powerlaw.g_profile(0.5, 3.0, 2.0)
+
+
+def test_g_profile_refuses_an_infinite_x_naming_x():
+    """x = +-inf passes the NaN check of the conversion and is refused by the range check,
+    naming x and its valid range."""
+    for x in (np.inf, -np.inf):
+        with pytest.raises(ValueError, match=r"^x = inf is out of range; valid: 0 <= x < inf"):
+            powerlaw.g_profile(x, 3.0, 2.0)
+
+
+def test_pressure_near_the_centre_at_the_closed_form_exponents():
+    """n = 1 ... 4 take the elementary forms (the cone's arccosh, Hertz's root, ...), whose
+    accuracy near the centre the 2F1 forms lack (n = 1: inf at r = 1e-8 a; n = 3: the
+    elementary form is NaN at r = 0, the 2F1 one is used there). Reference: the Abel integral
+    (5.59) of Problem 7(d) by 30-digit quadrature (_abel_reference), in one call per n."""
+    E, d, aa = 1e9, 1e-5, 1e-3
+    rt = np.array([0.0, 1e-12, 1e-8, 1e-4, 0.3, 0.9])
+    for n in (1.0, 2.0, 3.0, 4.0):
+        c = d / (float(powerlaw.kappa(n)) * aa**n)  # the contact radius is aa at depth d
+        got = powerlaw.pressure(rt * aa, d, c, n, E)
+        # the contact radius from c by (5.55) is aa to a few ulps: the pressure moves by as
+        # much times (n - 1); the elementary forms themselves a few ulps: 1e-13 leaves 50x
+        a = float(powerlaw.contact_radius(d, c, n))
+        for gi, ri in zip(got, rt, strict=True):
+            if ri == 0 and n == 1:  # the cone's logarithmic singularity
+                assert gi == np.inf
+                continue
+            assert_close(gi, _abel_reference(E, a, d, n, ri * a), 1e-13, f"n={n}, r/a={ri}")
+
+
+def test_pressure_is_finite_near_the_centre_for_n_from_1_5():
+    """The docstring's range (n >= 1.5, r down to 1e-300 m): the small-n 2F1 form would be
+    inf there near the centre (r^(n-1) times a 2F1 of z = a^2/r^2 overflowing), the general
+    one is finite and tends to the centre value (5.59) at r = 0, E* n d/(pi a (n - 1)) for
+    a = 1 m, d = 1 m, E* = 1 Pa."""
+    n = np.array([1.5, 1.8, 2.2, 2.9])
+    rt = np.array([1e-300, 1e-12, 1e-8])
+    N, RT = np.meshgrid(n, rt)
+    p = powerlaw.pressure(RT, 1.0, 1.0 / powerlaw.kappa(N), N, 1.0)  # a = 1 at d = 1
+    centre = N / (np.pi * (N - 1))
+    # p(r) - p(0) is of order (r/a)^(n-1) p(0) (the integrand (r cosh t/a)^(n-1)): at most
+    # 1e-4 at n = 1.5, r = 1e-8 a, and 1e-3 leaves room
+    assert np.all(np.isfinite(p)) and np.all(np.abs(p / centre - 1) < 1e-3)
+
+
+def test_surface_displacement_outside_at_several_radii_in_one_call():
+    """Several radii in one call on each route of u_z outside: next to the edge and for n > 40
+    by quadrature (one row of panels per radius), and at r = 1e154 m by the 2F1 form in units
+    of a power of 2 of r (unscaled, its r^2 would overflow); against (5.60) by 40-digit
+    quadrature in x (displacement_outside_reference). Beyond r ~ 3e155 m the 2F1 form loses
+    digits as (a/r)^2 underflows (benchmarks/mutation_notes.toml, finding)."""
+    d = 0.3
+    for n, ks in ((2.5, [1e-9, 1e-6, 5e-5, 1e154]), (41.0, [1e-9, 1e-3, 0.5, 10.0])):
+        c = d / float(powerlaw.kappa(n))  # a = 1 m
+        a = float(powerlaw.contact_radius(d, c, n))
+        r = a * (1 + np.array(ks))
+        got = powerlaw.surface_displacement(r, d, c, n)
+        for gi, ri, k in zip(got, r, ks, strict=True):
+            # as in test_displacement_outside_large_n: 2e-11 covers the 2F1 form's
+            # cancellation at r >> a (~1e-12 measured for n = 2.5)
+            assert_close(gi, displacement_outside_reference(ri, d, a, n), 2e-11,
+                         f"u_z(r = a(1 + {k:g})), n = {n:g}")

@@ -476,3 +476,35 @@ def test_each_input_named_in_its_error():
     assert_inputs_named(sphere.stiffness, {"d": d, "R": R, "E_star": E})
     assert_inputs_named(sphere.pressure, {"r": 1e-4, "d": d, "R": R, "E_star": E})
     assert_inputs_named(sphere.surface_displacement, {"r": 1e-4, "d": d, "R": R})
+
+
+def test_an_input_out_of_range_in_a_2d_array_is_named_by_its_full_index():
+    """The first bad element of a 2-D input is named by its (row, column) index, with R at the
+    same index, for the radii bounded by R (r <= R, x < R)."""
+    with pytest.raises(ValueError, match=r"^r\[\(1, 1\)\] = 2\.0 is out of range; valid: "
+                       r"0 <= r <= R \(R\[\(1, 1\)\] = 1\.0\)$"):
+        sphere.profile(np.array([[0.1, 0.2], [0.3, 2.0]]), 1.0)
+    with pytest.raises(ValueError, match=r"^x\[\(0, 1\)\] = 1\.0 is out of range; valid: "
+                       r"0 <= x < R \(R\[\(0, 1\)\] = 1\.0\)$"):
+        sphere.g_profile(np.array([[0.5, 1.0]]), 1.0)
+
+
+def test_the_deep_limit_itself_is_accepted_and_beyond_it_is_named():
+    """d = DEEP_LIMIT R = 16 R is in the documented range 0 <= d <= 16 R: the centre pressure
+    there against (5.59) at r = 0 in closed form, p(0) = (E*/pi) (chi_2(a/R) + lam) with
+    g'(x)/x = atanh(x/R)/x + R/(R^2 - x^2), chi_2 the Legendre chi function and lam = atanh(a/R)
+    the root of R lam tanh(lam) = d (5.55), all at 30 digits. A deeper d in a vector is named
+    with its value and the limit."""
+    R, E = 1.0, 1.0
+    d = sphere.DEEP_LIMIT * R
+    got = float(sphere.pressure(0.0, d, R, E))
+    with mp.workdps(30):
+        lam = mp.findroot(lambda v: R * v * mp.tanh(v) - d, 16)
+        t = mp.tanh(lam)
+        ref = E / mp.pi * ((mp.polylog(2, t) - mp.polylog(2, -t)) / 2 + lam)
+    # lam is found to one ulp by bisection (5.55) and the quadrature of the atanh term is good
+    # to ~1e-15 (test_pressure_by_quadrature_of_59): 1e-13 leaves 100x
+    assert abs(got / float(ref) - 1) < 1e-13, (got, ref)
+    with pytest.raises(ValueError, match=r"^d = 40\.0 is out of range; valid: 0 <= d <= 16 R = "
+                       r"32\.0 \(deeper, "):
+        sphere.pressure(0.0, np.array([1.0, 40.0]), 2.0, E)
