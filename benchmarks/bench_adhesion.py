@@ -93,13 +93,13 @@ def main(argv=None):
                      f"{'yes' if t.median <= target else 'no'} | {err:.1e} |\n")
     lines.append("\nThe sampled profile's pull-off solves twice (fine and coarse samples, for "
                  "the error estimate), each a scan of dF/da by the quadrature of (5.52) and "
-                 "Brent's method on scalar quadratures; on the loaded shared machine it took "
-                 "from 49 to 101 ms in different runs. Its cycle finds the instabilities and "
+                 "Brent's method on scalar quadratures. Its cycle finds the instabilities and "
                  "the jumps the same way (Brent's method on scalar quadratures: most of its "
                  "time), then takes d and F at its points along each branch from Chebyshev "
                  "interpolation of g, g' and G on 32-128 radii (accepted at 1e-12, else the "
-                 "quadrature): 50-110 ms on the loaded machine, at the 50 ms asked for only "
-                 "when it is quiet.\n")
+                 "quadrature). The machine is shared: under the load of other jobs (a load "
+                 "average of 20 on 2 cores) the same two took 49-101 ms and 50-110 ms; the "
+                 "table is the run that regenerated this page.\n")
     out = run.docs / "adhesion_speed.md"
     out.write_text("".join(lines))
     print("".join(lines))
