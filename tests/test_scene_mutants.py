@@ -570,11 +570,12 @@ def test_sample_file_is_read_as_the_same_samples(tmp_path):
 
 
 @pytest.mark.parametrize("content, message", [
-    (b"r f\n0 0\n1e-4 x\n", "tip.csv line 3: expected two numbers r, f"),
-    (b"0 0\n1e-4 5e-7 1\n", "tip.csv line 2: expected two numbers r, f"),
-    (b"r f\n0 0\n1e-4\n", "tip.csv line 3: expected two numbers r, f"),
+    (b"r f\n0 0\n1e-4 x\n", "tip.csv line 3: expected two numbers r, f, got '1e-4 x'"),
+    (b"0 0\n1e-4 5e-7 1\n", "tip.csv line 2: expected two numbers r, f, got '1e-4 5e-7 1'"),
+    (b"r f\n0 0\n1e-4\n", "tip.csv line 3: expected two numbers r, f, got '1e-4'"),
     (b"r f\n0 0\n", "tip.csv has fewer than two samples"),
-    (b"r f\nr f\n0 0\n1e-4 5e-7\n", "tip.csv line 2: expected two numbers r, f"),  # one header
+    # one header line only
+    (b"r f\nr f\n0 0\n1e-4 5e-7\n", "tip.csv line 2: expected two numbers r, f, got 'r f'"),
     (b"0 0\n\xff\xfe 1\n", None),     # not UTF-8: cannot read it
     (None, None),                    # no such file
 ])

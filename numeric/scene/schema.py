@@ -162,31 +162,11 @@ def read_history(path: Path, fail) -> list[tuple[int, tuple[float, float]]]:
     separated by a comma and/or spaces; ``#`` starts a comment; one header line may come before
     the first state.
     ``fail(message)`` is called on the first problem, naming the file and the line."""
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        fail(f"history file {str(path)!r} not found")
-    except (OSError, UnicodeDecodeError) as exc:
-        fail(f"cannot read {str(path)!r} ({exc})")
-    rows, header = [], False
-    for n, line in enumerate(text.splitlines(), 1):
-        line = line.split("#", 1)[0].strip()
-        if not line:
-            continue
-        parts = [s for s in line.replace(",", " ").split() if s]
-        try:
-            if len(parts) != 2:
-                raise ValueError
-            vals = (float(parts[0]), float(parts[1]))
-        except ValueError:
-            if not rows and not header:  # one header line before the first state
-                header = True
-                continue
-            fail(f"{path.name} line {n}: expected two numbers (normal, tangential), got "
-                 f"{line[:60]!r}")
-        rows.append((n, vals))
-        if len(rows) > HISTORY_MAX_ROWS:
-            fail(f"{path.name} has more than {HISTORY_MAX_ROWS} states")
+    from hertzmdr.numeric.scene.columns import read_pairs
+
+    rows = read_pairs(path, fail, "history", "(normal, tangential)")
+    if len(rows) > HISTORY_MAX_ROWS:
+        fail(f"{path.name} has {len(rows)} states; at most {HISTORY_MAX_ROWS}")
     if len(rows) < 2:
         fail(f"{path.name} has {len(rows)} state(s); a history needs at least two")
     return rows

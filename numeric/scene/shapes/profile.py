@@ -53,27 +53,11 @@ class Profile(Shape):
 def read_samples(path: Path, fail):
     """Two columns r, f of a text file (commas or spaces, # comments, one header line), in the
     unit the scene's ``unit`` key names (m by default)."""
-    try:
-        lines = path.read_text(encoding="utf-8").splitlines()
-    except FileNotFoundError:
-        fail("file", f"sample file {str(path)!r} not found")
-    except (OSError, UnicodeDecodeError) as exc:
-        fail("file", f"cannot read {str(path)!r} ({exc})")
-    r, f = [], []
-    for n, line in enumerate(lines, 1):
-        line = line.split("#", 1)[0].strip()
-        if not line:
-            continue
-        parts = [s for s in line.replace(",", " ").split() if s]
-        try:
-            if len(parts) != 2:
-                raise ValueError
-            r.append(float(parts[0]))
-            f.append(float(parts[1]))
-        except ValueError:
-            if not r and n == 1:  # a header line
-                continue
-            fail("file", f"{path.name} line {n}: expected two numbers r, f")
+    from hertzmdr.numeric.scene.columns import read_pairs
+
+    rows = read_pairs(path, lambda msg: fail("file", msg), "sample", "r, f")
+    r = [row[0] for _, row in rows]
+    f = [row[1] for _, row in rows]
     if len(r) < 2:
         fail("file", f"{path.name} has fewer than two samples")
     return r, f
