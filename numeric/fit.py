@@ -359,13 +359,13 @@ class SampledTip(_Tip):
     or a callable), its force law F_tip = E* Phi(d) by the numerical MDR ((5.55), (5.57)).
 
     Phi(d) = F(d)/E* [m^2] and the stiffness dF/dd = 2 E* a(d) ((5.12), the MDR's own
-    derivative, not a finite difference) do not depend on E* or z_0: the tip keeps a table of
-    (d, Phi, a) at depths uniform in sqrt(d) (Phi goes like d^(3/2) for a smooth apex, d^2 for a
-    conical one), interpolated by cubic Hermite polynomials in sqrt(d) with the exact slopes,
-    for the start's scan and for Levenberg-Marquardt. :func:`fit_curve` then finishes with
-    Gauss-Newton steps on the exact MDR at every point (:meth:`_exact`), whose ``rel_error``
-    per point bounds the model's error; :attr:`FitResult.model_error` carries it into the
-    parameters.
+    derivative ``ForceDepthCurve.stiffness``, not a finite difference) do not depend on E* or
+    z_0: the tip keeps a table of (d, Phi, dPhi/dd) at depths uniform in sqrt(d) (Phi goes like
+    d^(3/2) for a smooth apex, d^2 for a conical one), interpolated by cubic Hermite
+    polynomials in sqrt(d) with the exact slopes, for the start's scan and for
+    Levenberg-Marquardt. :func:`fit_curve` then finishes with Gauss-Newton steps on the exact
+    MDR at every point (:meth:`_exact`), whose ``rel_error`` per point bounds the model's
+    error; :attr:`FitResult.model_error` carries it into the parameters.
 
     Parameters
     ----------
@@ -418,13 +418,14 @@ class SampledTip(_Tip):
             "further out, or fit the curve to a shallower depth)")
 
     def _curve(self, d):
-        """(Phi [m^2], a [m], rel_error [1]) at the depths d > 0 [m] by the exact MDR."""
-        c = self.profile.force_depth_curve(d, E_star=1.0, rtol=self.rtol)  # (5.55), (5.57)
-        return c.force, c.contact_radius, c.rel_error
+        """(Phi [m^2], dPhi/dd = 2 a [m], rel_error [1]) at the depths d > 0 [m] by the exact
+        MDR ((5.55), (5.57); the stiffness (5.12), whose relative error is that of a)."""
+        c = self.profile.force_depth_curve(d, E_star=1.0, rtol=self.rtol)
+        return c.force, c.stiffness, c.rel_error
 
     def _table(self, d_max: float):
         """The cubic Hermite interpolant of Phi in s = sqrt(d) up to d_max [m] at least (with
-        TABLE_MARGIN), and the top of the table [m], its Phi [m^2] and a [m]."""
+        TABLE_MARGIN), and the top of the table [m], its Phi [m^2] and dPhi/dd [m]."""
         from scipy.interpolate import CubicHermiteSpline
 
         t = self._memo.get("table")
@@ -432,10 +433,9 @@ class SampledTip(_Tip):
             return t
         top = min(TABLE_MARGIN * d_max, self.d_limit)
         s = np.sqrt(top) * np.linspace(0.0, 1.0, TABLE_INTERVALS + 1)
-        phi, a, _ = self._curve(s[1:] ** 2)
-        phi, a = np.r_[0.0, phi], np.r_[0.0, a]
-        slope = gen.punch_stiffness(1.0, a) * 2 * s  # dPhi/ds = (dPhi/dd)(2 s), (5.12)
-        t = (CubicHermiteSpline(s, phi, slope), top, float(phi[-1]), float(a[-1]))
+        phi, k, _ = self._curve(s[1:] ** 2)
+        phi, k = np.r_[0.0, phi], np.r_[0.0, k]
+        t = (CubicHermiteSpline(s, phi, k * 2 * s), top, float(phi[-1]), float(k[-1]))
         self._memo["table"] = t
         return t
 
@@ -443,10 +443,8 @@ class SampledTip(_Tip):
         """(Phi [m^2], dPhi/dd [m]) at the depths d [m] (any shape) from the table; 0 for
         d <= 0, continued linearly (as the cylinder of the last contact radius) past its top."""
         d = np.asarray(d, float)
-        spl, top, phi_top, a_top = self._table(float(np.max(d, initial=0.0)))
-        dd = np.clip(d, 0.0, top)
-        k_top = float(gen.punch_stiffness(1.0, a_top))
-        ds = np.sqrt(dd)
+        spl, top, phi_top, k_top = self._table(float(np.max(d, initial=0.0)))
+        ds = np.sqrt(np.clip(d, 0.0, top))
         phi = spl(ds)
         with np.errstate(divide="ignore", invalid="ignore"):
             k = np.where(ds > 0, spl(ds, 1) / (2 * ds), 0.0)
@@ -457,8 +455,9 @@ class SampledTip(_Tip):
 
     def _exact(self, z, z0):
         """(dF/dE* [m^2], dF/dz_0 at E* = 1 [m], rel_error [1]) at the positions z [m] by the
-        exact MDR at every point in contact: dF/dE* = Phi(d), dF/dz_0 = -E* 2 a(d) (5.12),
-        and the bound of the relative error of both per point (0 where d <= 0)."""
+        exact MDR at every point in contact: dF/dE* = Phi(d), dF/dz_0 = -E* 2 a(d) (the
+        stiffness (5.12) with a minus: d = z - z_0), and the bound of the relative error of
+        both per point (0 where d <= 0)."""
         d = np.asarray(z, float) - z0
         touch = d > 0
         out = np.zeros((3, d.size))
@@ -466,8 +465,8 @@ class SampledTip(_Tip):
             d_max = float(d[touch].max())
             if d_max > self.d_limit:
                 raise self._too_deep(d_max)
-            phi, a, err = self._curve(d[touch])
-            out[0, touch], out[1, touch] = phi, -gen.punch_stiffness(1.0, a)
+            phi, k, err = self._curve(d[touch])
+            out[0, touch], out[1, touch] = phi, -k
             out[2, touch] = err
         return out[0], out[1], out[2]
 
@@ -489,8 +488,8 @@ class SampledTip(_Tip):
     def ratios(self, d_max):
         if d_max > self.d_limit:
             raise self._too_deep(d_max)
-        _, a, _ = self._curve(np.array([d_max]))
-        return {"d/a": d_max / float(a[0])}
+        c = self.profile.force_depth_curve(np.array([d_max]), E_star=1.0, rtol=self.rtol)
+        return {"d/a": d_max / float(c.contact_radius[0])}
 
     def describe(self):
         return (f"sampled tip ({self.profile.source}, r_max = {self.profile.r_max:.6g} m), "

@@ -20,6 +20,8 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import fit, fit_batch, fit_io, mdr, sphere, worn
 from hertzmdr.numeric.cli import main
 
+from oracle import n_points
+
 EXAMPLES = Path(__file__).parents[1] / "examples"
 R_SPH = 10e-6  # m: the sampled sphere of most tests
 E_TRUE = 2e6  # Pa: E* of the synthetic curves
@@ -137,15 +139,12 @@ def _check_coverage(hits, n):
     assert lo <= hits <= hi, (hits, n, lo, hi)
 
 
-def test_coverage_ci(tip):
-    n = 24
-    _check_coverage(_coverage(tip, range(n)), n)
-
-
 @pytest.mark.sweep
-def test_coverage_sweep(tip):
-    n = 200
-    _check_coverage(_coverage(tip, range(1000, 1000 + n)), n)
+def test_coverage(tip):
+    """The truth of E* within one reported standard error in ~68.3 % of noisy curves (the
+    MDR's error, < 1e-9 here, is far below the noise's 1e-3)."""
+    n = n_points(400, 40)
+    _check_coverage(_coverage(tip, range(n)), n)
 
 
 # --- clear messages ----------------------------------------------------------------------------
