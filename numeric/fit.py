@@ -340,17 +340,20 @@ class PowerLaw(_Tip):
 
 
 #: intervals in sqrt(d) of a sampled tip's table (the start's scan and Levenberg-Marquardt's
-#: model; the fit ends on the exact MDR at every point, so the table sets speed, not accuracy)
-TABLE_INTERVALS = 48
+#: model; the fit ends on the exact MDR at every point, so the table sets speed, not accuracy:
+#: at 128 the table's error moves the parameters by ~1e-11 relative, and one Gauss-Newton
+#: step on the exact MDR, confirmed by a second evaluation, finishes the fit; at 48 it took two)
+TABLE_INTERVALS = 128
 #: the table reaches this factor beyond the deepest indentation asked for (fewer rebuilds)
 TABLE_MARGIN = 1.25
 #: most Gauss-Newton steps on the exact MDR after Levenberg-Marquardt on a sampled tip's table
-#: (one suffices: the table's error moves the parameters by ~1e-7 relative, the step's own
-#: error is of the square of that)
+#: (one suffices in the usual case, see TABLE_INTERVALS)
 POLISH_STEPS = 4
 #: a Gauss-Newton step below this fraction of every parameter's scale (E*, the span of z, of F
 #: and of F/z) ends the polish: the next one would be of its square
 POLISH_TOL = 1e-12
+#: ... or below this fraction of every parameter's standard error (a noisy curve)
+POLISH_SIGMA = 1e-3
 
 
 @dataclass(frozen=True, eq=False)
@@ -699,28 +702,34 @@ def _polish(tip, z, F, w, p):
     (parameters, weighted residuals, bounds of the parameters' shifts by the model's error,
     the model's (dF/dE*, dF/dz_0 at E* = 1) at the returned z_0).
 
-    Each step solves the linearised least squares at the current parameters by the SVD
-    (lstsq). The table's error moves p by ~1e-7 relative: one step leaves an error of its
-    square, and the step the next evaluation proposes (below 1e-9 of each parameter's scale)
-    confirms convergence without being taken, so the returned residuals and model are those
-    of the returned parameters: two evaluations of the MDR at every point in the usual case.
-    The bound of the model error's effect is propagated linearly: |dp_k| <= sum_i |A_ki|
-    |dF_i|/w_i, A = pinv(J), |dF_i| <= rel_error_i E* Phi_i the MDR's bound at point i.
+    Each step is -pinv(J) r at the current parameters. The loop ends when the step the last
+    evaluation proposes is below POLISH_TOL of every parameter's scale or below POLISH_SIGMA
+    of its standard error (the parameters are then that close to the exact model's least
+    squares; the step is not taken, so the returned residuals and model are those of the
+    returned parameters), or when it stopped shrinking (rounding). The table's error moves p
+    by ~1e-11 relative for a smooth tip: two evaluations of the MDR at every point. Gauss-Newton
+    converges linearly on noisy curves (a nonzero residual), by ~1e-2 a step: the POLISH_SIGMA
+    test then ends it after a step or two. The bound of the model error's effect is
+    propagated linearly: |dp_k| <= sum_i |A_ki| |dF_i|/w_i, A = pinv(J), |dF_i| <= rel_error_i
+    E* Phi_i the MDR's bound at point i.
     """
     big, last = np.ptp(F) or 1.0, np.inf
+    scale = np.array([abs(p[0]), np.ptp(z), big, big / np.ptp(z)])
     for it in range(POLISH_STEPS + 1):
         g, h, eps = tip._exact(z, p[1])
         r = (p[0] * g + p[2] + p[3] * z - F) / w
         J = np.column_stack([g, p[0] * h, np.ones_like(z), z]) / w[:, None]
         norms = np.linalg.norm(J, axis=0)
         norms = np.where(norms > 0, norms, 1.0)
-        step = np.linalg.lstsq(J / norms, -r, rcond=None)[0] / norms
-        size = float(np.max(np.abs(step) / np.array([abs(p[0]), np.ptp(z), big,
-                                                      big / np.ptp(z)])))
-        if it == POLISH_STEPS or size <= POLISH_TOL or size > last / 4:
+        A = np.linalg.pinv(J / norms) / norms[:, None]
+        step = -A @ r
+        sigma = np.sqrt(np.einsum("kn,kn->k", A, A) * (r @ r) / max(z.size - 4, 1))
+        size = float(np.max(np.abs(step) / scale))
+        if (it == POLISH_STEPS or size <= POLISH_TOL or size > last / 4
+                or np.all(np.abs(step) <= POLISH_SIGMA * sigma)):
             break  # converged, or at the floor of rounding (the step stopped shrinking)
         p, last = p + step, size
-    bound = np.abs(np.linalg.pinv(J)) @ (eps * np.abs(p[0] * g) / w)
+    bound = np.abs(A) @ (eps * np.abs(p[0] * g) / w)
     return p, r, bound, (g, h)
 
 

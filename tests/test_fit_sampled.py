@@ -64,7 +64,7 @@ def test_sampled_sphere_model_within_its_bound(tip):
 
 def test_table_is_close_and_derivative_consistent(tip):
     """The table (the start's and Levenberg-Marquardt's model) interpolates Phi in sqrt(d) with
-    the exact slopes: cubic Hermite, error O(h^4); 48 intervals give ~1e-6 relative away from
+    the exact slopes: cubic Hermite, error O(h^4); 128 intervals give ~1e-8 relative away from
     the apex (its size sets the polish's work, not the result)."""
     d = np.linspace(0.05e-6, 0.9e-6, 37)
     phi, k = tip._tabled(d)
