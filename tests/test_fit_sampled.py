@@ -262,3 +262,23 @@ def test_batch_with_sampled_tip(tmp_path):
 
     tip2 = pickle.loads(pickle.dumps(tip))
     assert tip2.d_limit == tip.d_limit and "table" in tip2._memo
+
+
+def test_cli_batch_with_sampled_tip(tmp_path, capsys):
+    """`hertzmdr fit FOLDER --scene TIP.toml --out DIR` with a measured tip: the table, the map
+    and the median curve's figure; a flat curve is its row, not a crash."""
+    folder = tmp_path / "curves"
+    folder.mkdir()
+    text = example_curve().splitlines()
+    (folder / "a.csv").write_text(example_curve())
+    (folder / "b.csv").write_text("\n".join(text[:5] + text[5::2]) + "\n")  # every other point
+    (folder / "flat.csv").write_text("z [nm], F [nN]\n" + "".join(
+        f"{z:.3f}, {0.1 * np.cos(z):.6f}\n" for z in np.linspace(350, 550, 50)))
+    out = tmp_path / "out"
+    assert main(["fit", str(folder), "--scene", str(EX_SCENE), "--out", str(out), "--sigma",
+                 "0.5 nN"]) == 0
+    text = capsys.readouterr().out
+    assert "3 curves: 2 fitted" in text and "1 failed" in text, text
+    rows = (out / "fits.csv").read_text().splitlines()
+    assert len(rows) == 4 and sum(",failed," in r for r in rows) == 1
+    assert (out / "modulus_map.png").exists() and (out / "fit_median.png").exists()
