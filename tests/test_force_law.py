@@ -138,6 +138,40 @@ def test_stiffness_law_is_the_derivative():
     assert gen.force_law_powerlaw_stiffness_exponent(2.5) == pytest.approx(0.4, rel=1e-15)
 
 
+def test_law_force_and_stiffness_at_depths_by_pressure_quadrature():
+    """Law.force and Law.stiffness at an array of depths (0, one between the fit's depths, one
+    beyond them) against the 30-digit quadrature of the Hertz pressure (tests/kernels.py), and
+    the punch's constant stiffness (n_k = 0, so 0^0 = 1 at d = 0) against F(d)/d of the
+    quadrature of Boussinesq's punch pressure: K d^n is one power and one product (a few
+    ulps, TOL)."""
+    E, R, a = 2.1e11, 0.012, 2.5e-3
+    ds = np.array([0.0, 5e-7, 2e-5])
+    law = force_law.hertz(R, E)
+    F, k = law.force(ds), law.stiffness(ds)
+    assert F[0] == 0.0 and k[0] == 0.0
+    with mp.workdps(30):
+        for i, d in enumerate(ds[1:], 1):
+            ref = hertz_reference(mp.mpf(E), mp.mpf(R), mp.mpf(d))[2]
+            assert_close(F[i], ref, TOL, f"hertz force at d = {d}")
+            # F ~ d^(3/2): dF/dd = (3/2) F/d (the power law's derivative, not its K_k)
+            assert_close(k[i], ref * 3 / (2 * mp.mpf(d)), TOL, f"hertz stiffness at d = {d}")
+        am, d = mp.mpf(a), mp.mpf("1e-6")
+        punch = force_axisymmetric(lambda r: E * d / (mp.pi * mp.sqrt((am - r) * (am + r))), am)
+        for kk in force_law.flat_punch(a, E).stiffness(np.array([0.0, 1e-6, 3.0])):
+            assert_close(kk, punch / d, TOL, "punch stiffness")
+
+
+def test_law_refuses_a_negative_or_nan_depth_naming_d():
+    """A depth below 0 (no contact: K d^n would be NaN for n = 3/2) or NaN is refused, one line
+    naming d and its range, at its index in an array."""
+    law = force_law.hertz(0.01, 1e9)
+    for call in (law.force, law.stiffness):
+        with pytest.raises(ValueError, match=r"^d = -1e-09 is out of range; valid: 0 <= d"):
+            call(-1e-9)
+        with pytest.raises(ValueError, match=r"^d\[1\] = nan"):
+            call([1e-6, float("nan")])
+
+
 def test_vectorized_and_validated():
     """Arrays broadcast; a bad input names itself and its range."""
     law = force_law.hertz(np.array([1e-3, 1e-2]), 1e9)
