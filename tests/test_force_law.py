@@ -20,6 +20,7 @@ from hertzmdr.numeric import force_law
 from hertzmdr.numeric.scene import SceneError, load
 
 from kernels import force_axisymmetric, hertz_reference
+from named import assert_inputs_named
 from oracle import assert_close
 
 TOL = 1e-13
@@ -50,10 +51,12 @@ def test_hertz_law_by_pressure_quadrature():
     check(force_law.hertz(R, E), K, n, "hertz")
 
 
-def test_cone_law_by_pressure_quadrature():
+@pytest.mark.parametrize("theta", [0.35, 1.3])
+def test_cone_law_by_pressure_quadrature(theta):
     """(5.39) as printed, p = (E* d/(pi a)) arccosh(a/r), a = 2 d/(pi tan theta) (5.38),
-    integrated over the disc (tanh-sinh takes the log singularity at r = 0)."""
-    E, theta = 3e9, 0.35
+    integrated over the disc (tanh-sinh takes the log singularity at r = 0); a shallow cone and
+    a sharp one (theta = 1.3 rad, near the pi/2 limit)."""
+    E = 3e9
     with mp.workdps(30):
         def F(d):
             a = 2 * d / (mp.pi * mp.tan(theta))
@@ -159,6 +162,16 @@ def test_law_force_and_stiffness_at_depths_by_pressure_quadrature():
         punch = force_axisymmetric(lambda r: E * d / (mp.pi * mp.sqrt((am - r) * (am + r))), am)
         for kk in force_law.flat_punch(a, E).stiffness(np.array([0.0, 1e-6, 3.0])):
             assert_close(kk, punch / d, TOL, "punch stiffness")
+
+
+def test_each_input_named_in_its_error():
+    """Every input of every law, set to NaN, is named in the one-line error (tests/named.py)."""
+    assert_inputs_named(force_law.hertz, {"R": 0.01, "E_star": 1e9})
+    assert_inputs_named(force_law.cone, {"theta": 0.3, "E_star": 1e9})
+    assert_inputs_named(force_law.flat_punch, {"a": 1e-3, "E_star": 1e9})
+    assert_inputs_named(force_law.power_law, {"c_n": 2.0, "n": 2.5, "E_star": 1e9})
+    assert_inputs_named(force_law.line, {"E_star": 1e9})
+    assert_inputs_named(force_law.ellipse, {"R1": 0.01, "R2": 0.002, "E_star": 1e9})
 
 
 def test_law_refuses_a_negative_or_nan_depth_naming_d():
