@@ -115,7 +115,8 @@ _ELLIPSE_STRESS_TESTS = [f"tests/test_ellipse_stress.py::test_{t}" for t in """
     field_by_polar_superposition hard_points_by_polar_superposition polar_route_converges
     circle_reproduces_huber axis_limits axis_maxima_at_30_digits maxima_lie_on_the_axis
     orthogonal_shear_limits bad_input_is_named
-    von_mises_and_principal_shear_by_polar_superposition""".split()]
+    von_mises_and_principal_shear_by_polar_superposition
+    axis_stresses_in_si_units_by_polar_superposition""".split()]
 
 # the modules of numeric/ but the generated ones, demo.py, plots.py and scene/ (its own page),
 # most physics first, each with the (fast) test files written for it

@@ -563,3 +563,16 @@ def test_von_mises_and_principal_shear_by_polar_superposition():
             assert abs(tau - tau_ref) <= tau_err + 1e-14 * p0, (X, rtol, tau, tau_ref)
             errs.append(comp)
         assert errs[0] > errs[1], (X, errs)
+
+
+def test_axis_stresses_in_si_units_by_polar_superposition():
+    """axis_stresses at depths in metres under a 2 mm x 0.5 mm contact at p0 = 1.2 GPa against
+    the polar superposition on the axis (scaled by a and p0): 1e-14 p0, a few roundings in the
+    R_D forms and the route's 1e-15 (as test_hard_points_by_polar_superposition)."""
+    a, b, p0, nu_ = 2e-3, 0.5e-3, 1.2e9, 0.3
+    z = np.array([0.1, 0.786, 3.0]) * b
+    got = el.axis_stresses(z, a, b, p0, nu_)
+    for i, zz in enumerate(z):
+        ref = superposed_fast(nu_, 1.0, b / a, 0.0, 0.0, zz / a)
+        for g, comp in zip(got, ("xx", "yy", "zz"), strict=True):
+            assert abs(float(g[i]) - p0 * ref[comp]) < 1e-14 * p0, (zz, comp, g[i], ref[comp])
