@@ -19,9 +19,8 @@ import time
 
 import numpy as np
 
-from hertzmdr.numeric import adhesion, hertz
+from hertzmdr.numeric import adhesion, fit_adhesive, hertz
 from hertzmdr.numeric import fit as hfit
-from hertzmdr.numeric import fit_adhesive
 
 R, E_STAR, DG, Z0, F0, S0 = 1e-6, 2.0e6, 0.05, 1.3e-6, 2.0e-9, 1.0e-4
 N = 2000
