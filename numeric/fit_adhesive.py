@@ -11,7 +11,7 @@ deflection subtracted) and F_0 + s_0 z_p the baseline of the free cantilever. Fi
 E* [Pa], z_0 [m] (the depth d = 0: where the non-adhesive Hertz contact would start),
 Delta gamma >= 0 [J/m^2], F_0 [N], s_0 [N/m]. The generated relations are written in
 rho_g = sqrt(Delta gamma); dF/dDelta gamma is finite at Delta gamma = 0 (-pi R), so the fit
-runs in Delta gamma itself, bounded below by 0 (:func:`scipy.optimize.least_squares`'s 'trf').
+runs in Delta gamma itself, bounded below by 0.
 
 Which branch, and where it jumps off. A displacement-controlled retract (a stiff cantilever:
 the position, hence d, is prescribed) follows the equilibrium branch that is stable under depth
@@ -35,10 +35,11 @@ only in contact) a point is in contact where d >= d_dc and on the baseline elsew
 Method: at a fixed kappa = rho_g/sqrt(E*) the model is E* times a shape of (z - z_0) (asserted
 in derive/fit.py), so a scan over (z_0, kappa) solves (E*, F_0, s_0) by linear least squares
 (:func:`hertzmdr.numeric.fit._linear_scan`) and gives a start without a guess; then
-a trust-region least-squares fit ('trf', for the bound Delta gamma >= 0) of all five
-parameters with the generated Jacobian (implicit differentiation, derived by SymPy). The
-standard errors are those of :mod:`~.fit`: the linearised covariance times the residual
-variance.
+Levenberg-Marquardt (MINPACK; :func:`scipy.optimize.least_squares`'s 'trf' with the bound
+Delta gamma >= 0 when it ends below 0, and the fit at Delta gamma = 0 itself when it ends next
+to it) of all five parameters with the generated Jacobian (implicit differentiation, derived
+by SymPy). The standard errors are those of :mod:`~.fit`: the linearised covariance times the
+residual variance.
 """
 
 from __future__ import annotations
@@ -248,7 +249,7 @@ def _kappas(R, span):
     """Trial kappa [m^(1/2)]: 0 and N_SCAN_KAPPA values whose jump-off depths |d_dc| spread
     log-evenly over KAPPA_SPAN of the curve's span (d_dc from the generated relations)."""
     grid = np.logspace(-12, 4, 400)
-    depth = np.array([-_jump_off_radius(1.0, R, k)[1] for k in grid])
+    depth = -gen.fit_jkr_depth(1.0, R, gen.jkr_pull_off_radius_dc(1.0, grid**2, R), grid)
     lo, hi = KAPPA_SPAN[0] * span, KAPPA_SPAN[1] * span
     target = np.geomspace(lo, hi, N_SCAN_KAPPA)
     return np.r_[0.0, np.interp(np.log(target), np.log(depth), grid)]
@@ -502,10 +503,11 @@ def _jac(model, z, w, keep, p):
 
 
 def _lm(R, z, F, w, layout, p0, *, no_adhesion=False):
-    """Trust-region least squares on the kept points, Delta gamma >= 0, with the generated
-    Jacobian; or, with ``no_adhesion``, Levenberg-Marquardt at Delta gamma = 0 fixed (the Hertz
-    model: 'trf' approaches a bound only geometrically, so a curve without adhesion is refitted
-    on the bound itself)."""
+    """Least squares on the kept points, Delta gamma >= 0, with the generated Jacobian
+    (Levenberg-Marquardt; 'trf' with the bound when it ends below 0); or, with
+    ``no_adhesion``, Levenberg-Marquardt at Delta gamma = 0 fixed (the Hertz model: 'trf'
+    approaches a bound only geometrically, so a curve without adhesion is refitted on the bound
+    itself)."""
     model = _Model(R, z, layout)
     keep = layout.keep
     cols = [0, 1, 3, 4] if no_adhesion else [0, 1, 2, 3, 4]
@@ -532,13 +534,13 @@ def _lm(R, z, F, w, layout, p0, *, no_adhesion=False):
                             x_scale=scale[cols], **tol)
     else:
         lower = np.array([-np.inf, -np.inf, 0.0, -np.inf, -np.inf])
-        sol = least_squares(residuals, np.maximum(p0, lower), jac=jacobian, method="trf",
-                            x_scale=scale, bounds=(lower, np.inf), **tol)
-        if sol.x[2] > 0:  # inside the bound: MINPACK's Levenberg-Marquardt converges further
-            # along the ill-conditioned directions (F_0 against s_0) than 'trf' stops
-            pol = least_squares(residuals, sol.x, jac=jacobian, method="lm", x_scale=scale,
-                                **tol)
-            if pol.x[2] >= 0 and pol.cost <= sol.cost:
-                sol = pol
+        p0 = np.maximum(p0, lower)
+        # MINPACK's Levenberg-Marquardt first (unbounded; the fastest, and it converges
+        # further along ill-conditioned directions such as F_0 against s_0 than 'trf' stops);
+        # only when it ends below Delta gamma = 0, 'trf' with the bound
+        sol = least_squares(residuals, p0, jac=jacobian, method="lm", x_scale=scale, **tol)
+        if not sol.x[2] >= 0:
+            sol = least_squares(residuals, p0, jac=jacobian, method="trf", x_scale=scale,
+                                bounds=(lower, np.inf), **tol)
     sol.x = full(sol.x)
     return sol, model
