@@ -53,7 +53,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import fit as _fit
 from hertzmdr.numeric._validate import as_float
 
-__all__ = ["AdhesiveFitResult", "fit_curve", "contact_radius", "PARAMETERS", "UNITS"]
+__all__ = ["AdhesiveFitResult", "JKRTip", "fit_curve", "contact_radius", "PARAMETERS", "UNITS"]
 
 #: names of the reported parameters, in the order of :attr:`AdhesiveFitResult.values`
 PARAMETERS = ("E_star", "z_0", "dgamma", "F_0", "s_0")
@@ -293,6 +293,21 @@ def _start(R, z, F, w, layout, z0_guess):
 
 
 @dataclass(frozen=True)
+class JKRTip:
+    """The tip of an adhesive fit: the paraboloid of radius R [m] in JKR contact."""
+
+    paraboloid: _fit.Paraboloid
+
+    @property
+    def R(self) -> float:
+        """Radius of curvature [m]."""
+        return self.paraboloid.R
+
+    def describe(self) -> str:
+        return f"paraboloid, adhesive (JKR), R = {self.R:.6g} m"
+
+
+@dataclass(frozen=True)
 class AdhesiveFitResult:
     """The fitted parameters of an adhesive (JKR) retract curve and the fit's diagnostics.
 
@@ -309,7 +324,7 @@ class AdhesiveFitResult:
         Position [m] of the first point after the jump-off found in the data (None: no jump).
     """
 
-    tip: _fit.Paraboloid
+    tip: JKRTip
     values: np.ndarray
     errors: np.ndarray
     correlation: np.ndarray
@@ -490,8 +505,8 @@ def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=N
     E, E_err = _fit._sample_modulus(E_s, float(err[0]), nu, tip_modulus, tip_nu)
     fitted = model.tip_force(E_s, z_0, dgamma) + F_0 + s_0 * z
     return AdhesiveFitResult(
-        tip=tip, values=values, errors=err, correlation=corr, E=E, E_error=E_err, z=z, F=F,
-        fitted=fitted, residuals=F - fitted, reduced_chi2=chi2, weighted=sigma is not None,
+        tip=JKRTip(tip), values=values, errors=err, correlation=corr, E=E, E_error=E_err, z=z,
+        F=F, fitted=fitted, residuals=F - fitted, reduced_chi2=chi2, weighted=sigma is not None,
         n_contact=n_contact, max_depth=d_max, warnings=tuple(warn), used=keep,
         jump_off=jump_off, z_split=None if jump is None else float(z_split))
 
