@@ -8,8 +8,8 @@ length and force pint reads (``nm``, ``um``, ``m``; ``pN``, ``nN``, ``N``).
 The tip file is a scene (docs/scenes.md) with its two bodies: the sample is the ``flat`` body
 (its ``nu`` gives the sample's Young's modulus beside E*; its ``E``, which a scene requires, is
 shown beside the fitted one for comparison, not used), the tip is the other body (``sphere``:
-the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``flat_punch`` or ``power_law``; rigid or
-elastic). The scene's effects and load are not used.
+the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``pyramid`` (its equal-area cone),
+``flat_punch`` or ``power_law``; rigid or elastic). The scene's effects and load are not used.
 """
 
 from __future__ import annotations
@@ -29,9 +29,18 @@ TIP_SHAPES = {
     "sphere": lambda p: fit.Paraboloid(R=p["radius"]),
     "exact_sphere": lambda p: fit.ExactSphere(R=p["radius"]),
     "cone": lambda p: fit.Cone(theta=p["angle"]),
+    "pyramid": lambda p: _pyramid_tip(p),
     "flat_punch": lambda p: fit.FlatPunch(a=p["radius"]),
     "power_law": lambda p: fit.PowerLaw(c_n=p["coefficient"], n=p["exponent"]),
 }
+
+
+def _pyramid_tip(p) -> fit.Pyramid:
+    """The fit's pyramid (its equal-area cone) of a scene's pyramid body: its keys or preset."""
+    from hertzmdr.numeric.scene.shapes.pyramid import Pyramid
+
+    sides, alpha = Pyramid.geometry(p)
+    return fit.Pyramid(alpha=alpha, sides=sides)
 
 
 class CurveError(ValueError):

@@ -366,6 +366,14 @@ class _Reader:
             if not isinstance(value, str) or not value.strip():
                 self.fail(key, f"must be a length unit such as \"nm\" or \"um\", got {value!r}")
             return self.quantity(f"1 {value.strip()}", "length", key)
+        if kind == "integer":  # its range is the shape's check
+            if isinstance(value, bool) or not isinstance(value, int):
+                self.fail(key, f"must be an integer, got {value!r}")
+            return value
+        if kind == "name":  # one of the shape's names, checked by the shape
+            if not isinstance(value, str) or not value.isprintable():
+                self.fail(key, f"must be a name (a string), got {value!r}")
+            return value
         if kind == "count":
             if isinstance(value, bool) or not isinstance(value, int) or not 8 <= value <= 2048:
                 self.fail(key, f"must be an integer in [8, 2048], got {value!r}")
