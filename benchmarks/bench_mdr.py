@@ -12,6 +12,7 @@ of derive/, this refreshes the Derivations table). Timings are wall clock on thi
 from __future__ import annotations
 
 import json
+import os
 import time
 
 import _common
@@ -248,6 +249,7 @@ def measure_all(quick, budget):
     for N in SPEED_QUICK if quick else SPEED:
         res["speed"][str(N)] = smooth_speed(N, speed_budget)
     res["conditions"] = _timing.conditions()
+    res["load"] = list(os.getloadavg())  # the 1, 5, 15 min load averages at the end
     return res
 
 
@@ -353,7 +355,7 @@ def write_docs(res, abel_section, docs_dir):
                "(`hertzmdr.numeric._timing`; the minimum, not the median: on the shared 2-core "
                "machine the other jobs' share of the CPU is not the method's cost); 'CPU': the "
                "same first and next depth with the estimate, CPU time of the process, the "
-               "least of 15.\n\n"
+               "least of 15." + _load(res) + "\n\n"
                "| N | solve | first p | first depth: solve + p | + est. | CPU | next depth: "
                "solve + p | + est. | CPU | F error | a error | p error (max) | F estimate | "
                "p estimate (max) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
@@ -373,6 +375,17 @@ def write_docs(res, abel_section, docs_dir):
     out.append("## Abel transforms (5.59), (5.61) from samples: PyAbel on the same grids\n\n")
     out.append(abel_section)
     (docs_dir / "mdr.md").write_text("".join(out))
+
+
+def _load(res):
+    """The machine's load during the run, where recorded: it inflates wall clock (and, less,
+    CPU time: shared caches) on the 2-core machine."""
+    if "load" not in res:
+        return ""
+    one, five, _ = res["load"]
+    return (f" Load average at the end of the run: {one:.1f} (1 min), {five:.1f} (5 min) on "
+            f"{os.cpu_count()} cores; above the core count every figure here is inflated, "
+            "wall clock most.")
 
 
 def _issue18(speed):
@@ -402,12 +415,13 @@ def _issue18(speed):
         f"`Profile.force_depth_curve` of {s['curve_depths']} depths on a solved profile: "
         f"{s['cpu_curve']:.1f} ms ({1e3 * s['cpu_curve'] / s['curve_depths']:.1f} us a "
         "depth).\n\n"
-        "How: every depth is solved on the tables of g, g' and integral g (quintic splines of "
-        "the quadrature's values), by one vectorized safeguarded Newton over all depths, with "
-        "the force from (5.57) and the bound made as before (coarse vs fine, the envelope of "
-        "the differences around a); the tables are computed only as far as the contact radius "
-        "needs and grown with it; the quadrature's far pieces in place (one pass fewer over "
-        "the kernel matrix).\n\n")
+        "How: every depth is solved on the tables of g and g' (quintic splines of the "
+        "quadrature's values) by one vectorized safeguarded Newton over all depths, the force "
+        "from (5.57) with integral g at the table node below a (the quadrature's value) plus "
+        "an exact Gauss integral of the spline to a, and the bound made as before (coarse vs "
+        "fine, the envelope of the differences around a); the tables are computed only as "
+        "far as the contact radius needs and grown with it; the quadrature's far pieces in "
+        "place (one pass fewer over the kernel matrix).\n\n")
     if not (ok_first and ok_later):
         out += (
             "What bounds it: (1) the first depth computes the tables of both representations "
