@@ -69,6 +69,11 @@ def verification_section() -> str:
         ("`RTOL_RANGE[0]`, what the refinement reaches", "callables of five profiles (smooth, "
          "kinked, sphere-cone with and without its tangent point as a breakpoint) meet it at "
          "two depths", "tests/test_mdr.py::test_rtol_range_lower_end"),
+        ("the vectorized force-depth curve (301 depths in any order, 0 among them) and its "
+         "stiffness dF/dd = 2 E* a (5.12)", "the power law's closed forms at every depth (the "
+         "bound holds), each depth's own solve (equal), central differences of the curve "
+         "(the stiffness)",
+         "tests/test_mdr.py::test_force_depth_curve_vectorized_bounds_every_depth"),
     ]
     out = ["## Verification\n\n| what | against | test |\n| --- | --- | --- |\n"]
     out += [f"| {a} | {b} | `{c}` |\n" for a, b, c in rows]
@@ -93,7 +98,12 @@ The bound is the larger of the coarse-vs-fine differences (every other sample, o
 and the envelope of the differences of g and of its integral on radii within two coarse sample
 spacings of a, put through the linearized (5.55) and (5.57) (the differences at a alone can
 vanish by accident), plus a rounding floor (64 + 4 N) eps. `python tests/test_mdr_bounds.py`
-prints every bound next to its actual error against 30-digit references.
+prints every bound next to its actual error against 30-digit references. At given depths
+(`solve(depth=...)`, `force_depth_curve`) g, g' and the integral of g come from the tables
+(quintic splines of the quadrature's values, computed as far as the contact radius needs), so
+their interpolation error is part of both representations' values and of the bound; a depth
+whose bound misses rtol by at most `mdr.NEAR` (30) is solved again by quadrature, without
+tables (the finest callable grids, whose bound near `RTOL_RANGE[0]` the tables would limit).
 
 ### Two (5.59) engines, on purpose
 

@@ -21,15 +21,19 @@ Method (all lengths in m, pressures in Pa, forces in N):
   acosh(x / b_j) (terms for x > b_j), q(x) = integral_0^x h(u) du / sqrt(x^2 - u^2), G_s' = q.
   The kink terms are exact; q and G_s go like c0 + c1 sqrt(x - b_j) + ... past a kink and are
   tabulated in t = sqrt(x - b_j) there (in x on the first segment) by quintic splines,
-  built on first use (a pressure, g or a displacement).
+  with the remainder of integral_0^x g (the kinks' primitives off); computed by quadrature
+  on first use and only as far as the radii asked for need (a contact radius, a pressure,
+  g, a displacement), grown when a later call needs more.
 - (5.52) by quadrature: g(x) = x integral_0^x f'(u) du / sqrt(x^2 - u^2) and q(x): the
   spline's pieces at least two widths below x by Gauss-Legendre on fixed nodes in u (f', f''
   evaluated once for every x), the rest with u = x sin(theta), which removes the endpoint
   singularity, by Gauss-Legendre in theta broken at the pieces' ends.
-- (5.55) g(a) = d by safeguarded Newton on g and g' by quadrature (no tables); force control
-  solves F(a) = F by Brent's method on the monotone F(a) = 2 E* integral_0^a x g'(x) dx.
+- (5.55) g(a) = d at every depth at once by a safeguarded Newton on the tables of g and g'
+  (started between the table nodes that bracket d); force control solves F(a) = F by
+  Brent's method on the monotone F(a) = 2 E* integral_0^a x g'(x) dx by quadrature.
 - (5.57) F = 2 E* (d a - integral_0^a g) by the generated ``mdr_force``, with
-  integral_0^a g = integral_0^a f'(u) sqrt(a^2 - u^2) du by quadrature.
+  integral_0^a g = integral_0^a f'(u) sqrt(a^2 - u^2) du from its table (by quadrature under
+  force control).
 - (5.59) p(r) = (E*/pi) integral_r^a g'(x) dx / sqrt(x^2 - r^2): the kink terms by the
   generated ``mdr_kink_pressure`` (incomplete elliptic integrals, log-infinite at r = b_j);
   the q part per segment with x = r + w^2 on the segment holding r (removes the Abel kernel's
@@ -93,6 +97,11 @@ DEFAULT_RTOL = 1e-8
 #: force and contact-radius errors up to 6e-4, and a target above 1e-2 would rest on it where
 #: it is untested.
 RTOL_RANGE = (1e-11, 1e-2)
+#: A depth whose bound on the tables misses rtol by at most this factor is solved again by
+#: quadrature (no tables) [1]: the tables' interpolation error reaches ~1e-10 relative on
+#: the finest callable grids, 14 times RTOL_RANGE[0] (tests/test_mdr.py::
+#: test_rtol_range_lower_end).
+NEAR = 30.0
 
 
 def _check_rtol(rtol) -> float:
@@ -381,24 +390,68 @@ class Profile:
             return Solution(depth=0.0, contact_radius=0.0, force=0.0, E_star=E_star,
                             rel_error=0.0, rtol=rtol, met=True, why_not_met=None, _rep=fine,
                             _coarse=coarse, _d_coarse=0.0, _a_coarse=0.0)
-        level, best = 0, None
-        while True:
-            pair = self._source.pair(level)
-            if pair is None:
-                break
-            *res, err = solve.pair(*pair, self.r_max, depth, force, E_star)
-            if best is not None and self._source.only_quadrature and err > best[-1] / 2:
-                break  # the quadrature is not what limits a sampled profile: keep the last
-            best = (pair, level, *res, err)
-            if err <= rtol:
-                break
-            level += 1
-        (coarse, fine), lvl, d, a, F, dc, ac, err = best
+        if depth is not None:
+            at = self._at_depths(np.array([depth]), E_star, rtol)
+            a, F, ac, err = (float(v[0]) for v in at[:4])
+            lvl, d, dc = int(at[4][0]), depth, depth
+            coarse, fine = self._source.pair(lvl)
+        else:
+            level, best = 0, None
+            while True:
+                pair = self._source.pair(level)
+                if pair is None:
+                    break
+                *res, err = solve.pair(*pair, self.r_max, None, force, E_star)
+                if best is not None and self._source.only_quadrature and err > best[-1] / 2:
+                    break  # the quadrature is not what limits a sampled profile: keep the last
+                best = (pair, level, *res, err)
+                if err <= rtol:
+                    break
+                level += 1
+            (coarse, fine), lvl, d, a, F, dc, ac, err = best
         met = err <= rtol
         return Solution(depth=d, contact_radius=a, force=F, E_star=E_star, rel_error=err,
                         rtol=rtol, met=met, why_not_met=None if met else
                         self._source.why_not(err, lvl), _rep=fine, _coarse=coarse,
                         _d_coarse=dc, _a_coarse=ac)
+
+    def _at_depths(self, depths: np.ndarray, E_star: float, rtol: float):
+        """a [m], F [N], the coarse a [m], the bound [1] and the refinement level at every
+        depth [m] (0: exact zeros, level 0): each level is one (coarse, fine) pair, all its
+        depths solved at once on the tables (``solve.curve``), those still short of rtol
+        again by quadrature (``solve.pair``: slower, without the tables' interpolation error);
+        every depth still short of rtol goes on to the next level (a sampled profile: only
+        while the level at least halves its bound, else the last is kept)."""
+        M = len(depths)
+        a, F, ac, err = np.zeros(M), np.zeros(M), np.zeros(M), np.zeros(M)
+        lvl = np.zeros(M, int)
+        live = np.flatnonzero(depths > 0)
+        level = 0
+        while len(live):
+            pair = self._source.pair(level)
+            if pair is None:
+                break
+            aa, FF, cc, ee = solve.curve(*pair, self.r_max, depths[live], E_star)
+            # where the tables' own interpolation error may keep the bound above rtol (fine
+            # callable grids at rtol near RTOL_RANGE[0]: bounds ~1e-10 on the tables, ~1e-11
+            # without), the quadrature route of a single solve, which has no tables; the
+            # smaller bound is kept. Not where the bound misses rtol by more than NEAR: the
+            # representations differ by more than the tables could explain, and the
+            # quadrature's cost would be spent for nothing
+            for k in np.flatnonzero((ee > rtol) & (ee <= NEAR * rtol)):
+                _, a1, F1, _, c1, e1 = solve.pair(*pair, self.r_max, float(depths[live[k]]),
+                                                  None, E_star)
+                if e1 < ee[k]:
+                    aa[k], FF[k], cc[k], ee[k] = a1, F1, c1, e1
+            if level > 0 and self._source.only_quadrature:
+                # the quadrature is not what limits a sampled profile: keep the last
+                better = ee <= err[live] / 2
+                live, aa, FF, cc, ee = (live[better], aa[better], FF[better], cc[better],
+                                        ee[better])
+            a[live], F[live], ac[live], err[live], lvl[live] = aa, FF, cc, ee, level
+            live = live[ee > rtol]
+            level += 1
+        return a, F, ac, err, lvl
 
     def force_depth_curve(self, depths, *, E_star: float,
                           rtol: float | None = None) -> ForceDepthCurve:
@@ -416,23 +469,7 @@ class Profile:
         rtol = _check_rtol(rtol)
         E_star = float(positive("E_star", E_star))
         depths = nonnegative("depths", depths).ravel()
-        M = len(depths)
-        a, F, err = np.zeros(M), np.zeros(M), np.zeros(M)
-        lvl = np.zeros(M, int)
-        live = np.flatnonzero(depths > 0)
-        level = 0
-        while len(live):
-            pair = self._source.pair(level)
-            if pair is None:
-                break
-            aa, FF, _, ee = solve.curve(*pair, self.r_max, depths[live], E_star)
-            if level > 0 and self._source.only_quadrature:
-                # the quadrature is not what limits a sampled profile: keep the last
-                better = ee <= err[live] / 2
-                live, aa, FF, ee = live[better], aa[better], FF[better], ee[better]
-            a[live], F[live], err[live], lvl[live] = aa, FF, ee, level
-            live = live[ee > rtol]
-            level += 1
+        a, F, _, err, lvl = self._at_depths(depths, E_star, rtol)
         met = err <= rtol
         why = [None if m else self._source.why_not(float(e), int(v))
                for m, e, v in zip(met, err, lvl, strict=True)]

@@ -227,6 +227,36 @@ def test_force_depth_curve_is_monotone(d1, factor):
     assert curve.force[1] > curve.force[0] and curve.contact_radius[1] > curve.contact_radius[0]
 
 
+def test_force_depth_curve_vectorized_bounds_every_depth():
+    """A force-depth curve of many depths (any order, 0 among them) is one vectorized solve:
+    each depth equals its own solve, each rel_error bounds the error of F and a against the
+    closed forms of the power law sampled, and the stiffness is the curve's own derivative
+    (central differences of F at d (1 -+ 1e-3): truncation ~1e-6, the bounds' share
+    rel_error / 1e-3 ~1e-5 at most here; tolerance 1e-4). Depths past g(r_max) are named."""
+    n = 2.5
+    prof, _ = _powerlaw_case(n, 200)
+    dmax = float(prof.g(1e-3)) * 0.9
+    rng = np.random.default_rng(18)
+    ds = np.concatenate([[0.0], rng.uniform(0.01, 1.0, 300) * dmax])
+    curve = prof.force_depth_curve(ds, E_star=E)
+    assert curve.force[0] == curve.contact_radius[0] == curve.rel_error[0] == 0.0
+    F_ref = npl.force(ds[1:], 2.0, n, E)
+    a_ref = npl.contact_radius(ds[1:], 2.0, n)
+    err = np.maximum(np.abs(curve.force[1:] / F_ref - 1),
+                     np.abs(curve.contact_radius[1:] / a_ref - 1))
+    assert np.all(err <= curve.rel_error[1:]) and curve.met[1:].all()
+    for i in (1, 57, 300):
+        sol = prof.solve(depth=ds[i], E_star=E)
+        assert (sol.force, sol.contact_radius, sol.rel_error) == (
+            curve.force[i], curve.contact_radius[i], curve.rel_error[i])
+    d0 = ds[1:6]
+    lo, hi = (prof.force_depth_curve(d0 * (1 + c), E_star=E).force for c in (-1e-3, 1e-3))
+    k = prof.force_depth_curve(d0, E_star=E).stiffness
+    assert np.all(np.abs((hi - lo) / (2e-3 * d0) / k - 1) < 1e-4)
+    with pytest.raises(ValueError, match="exceeds g"):
+        prof.force_depth_curve([dmax, 2 * dmax / 0.9], E_star=E)
+
+
 def test_bad_input_is_named():
     with pytest.raises(ValueError, match="r must start at 0"):
         nmdr.Profile.from_samples([0.1, 0.2, 0.3, 0.4], [0, 1, 2, 3])

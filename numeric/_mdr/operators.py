@@ -43,9 +43,9 @@ def abel(rep: Rep, r, a: float, E_star: float, m: int, other: Rep | None = None)
     (E*/pi) integral_r^a |q - q_other| / sqrt(x^2 - r^2) dx on the same nodes: the
     difference of the two tables without the cancellations of the signed difference."""
     dev = np.zeros(r.shape)
-    otabs = tables.tables(other) if other is not None else None
+    otabs = tables.tables(other, a) if other is not None else None
     out = kinks.pressure(rep, r, a, E_star)  # (5.59)
-    tabs = tables.tables(rep)
+    tabs = tables.tables(rep, a)
     idx = rep.seg_index(r)
     smooth = np.zeros(r.shape)
     for i, seg in enumerate(tabs):

@@ -55,19 +55,29 @@ def direct(rep: Rep, x, with_G: bool = False):
     # chunks computed up to the chunk's largest nfar
     nfar = first * (len(u) // len(lo))
     order = np.argsort(nfar, kind="stable")
+    W = np.column_stack([wf1, wh])
     for c in range(0, len(x), 64):
         rows = order[c:c + 64]
-        ncol = int(nfar[rows[-1]])
+        ncol, nmin = int(nfar[rows[-1]]), int(nfar[rows[0]])
         if ncol == 0:
             continue
         xc, uc = x[rows, None], u[None, :ncol]
-        far = np.arange(ncol)[None, :] < nfar[rows, None]
-        root = np.sqrt(np.maximum((xc - uc) * (xc + uc), 1e-300))
-        inv = far / root
-        g[rows] = x[rows] * (inv @ wf1[:ncol])
-        q[rows] = inv @ wh[:ncol]
+        # sqrt(x^2 - u^2) in place; the columns past a row's far pieces (a tail, the rows
+        # being sorted by nfar) are zeroed for G and made infinite for the kernel
+        root = xc - uc
+        root *= xc + uc
+        with np.errstate(invalid="ignore"):
+            np.sqrt(root, out=root)
+        tail = root[:, nmin:]
+        past = np.arange(nmin, ncol)[None, :] >= nfar[rows, None]
+        tail[past] = 0.0
         if with_G:
-            G[rows] = (root * far) @ wf1[:ncol]
+            G[rows] = root @ wf1[:ncol]
+        tail[past] = np.inf
+        np.divide(1.0, root, out=root)
+        gq = root @ W[:ncol]
+        g[rows] = x[rows] * gq[:, 0]
+        q[rows] = gq[:, 1]
     # near part: theta from asin(u_near/x) to pi/2, broken at the pieces' ends
     jx = np.clip(np.searchsorted(br, x, side="right") - 1, 0, len(lo) - 1)
     K = int(np.max(jx - first)) + 1 if len(x) else 1

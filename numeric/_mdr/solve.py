@@ -1,10 +1,12 @@
 """Numerical MDR, solving: the contact radius (5.55) and the force (5.57) at a depth or a
 force on a pair of representations, and the bound of their relative error.
 
-g(a) = d by safeguarded Newton on g and g' by quadrature (no tables); under force control the
-monotone F(a) by Brent's method. The bound is the larger of the coarse-vs-fine differences and
-the envelope of the differences of g and of its integral around a put through the linearized
-(5.55) and (5.57), plus a rounding floor.
+At given depths (``curve``, every depth at once): g(a) = d by safeguarded Newton on the
+tables of g and g' and F from the table of integral g; under force control (``pair``)
+g(a) = d by Newton on g and g' by quadrature and the monotone F(a) by Brent's method. The
+bound is the larger of the coarse-vs-fine differences and the envelope of the differences of
+g and of its integral around a put through the linearized (5.55) and (5.57), plus a rounding
+floor.
 """
 
 from __future__ import annotations
@@ -132,14 +134,34 @@ def _too_deep(d: float, g_hi: float, r_max: float) -> ValueError:
                       "sample it further out")
 
 
-def radii(rep: Rep, r_max: float, d: np.ndarray) -> np.ndarray:
+def radii(rep: Rep, r_max: float, d: np.ndarray, guess: np.ndarray | None = None
+          ) -> np.ndarray:
     """Solve g(a) = d (5.55) for every depth of the array d > 0 [m] at once: safeguarded
     Newton on g and g' from the tables (``tables``), started by the secant between the table
-    nodes that bracket d, each radius to the same tolerance as :func:`radius`. -> a [m]."""
-    xs = np.concatenate([seg.x_nodes() for seg in tables.tables(rep)])
-    gs = np.maximum.accumulate(tables.g(rep, xs))  # at the nodes: the quadrature's values
-    if d.max() > gs[-1]:
-        raise _too_deep(d.max(), gs[-1], r_max)
+    nodes that bracket d, each radius to the same tolerance as :func:`radius`. The tables are
+    computed as far as the depths need: from a quarter of r_max (or the largest ``guess``
+    [m], e.g. the other representation's radii), grown to past the radius where a local
+    power law g ~ x^n through the last two nodes reaches the largest depth. d [m] -> a [m]."""
+    dmax = float(d.max())
+    xs, gs = tables.covered(rep)
+    cap = None
+    if not len(xs):  # nothing computed yet: as far as the guess, or a quarter of r_max
+        cap = r_max / 4 if guess is None else float(np.max(guess))
+    while True:
+        if cap is not None:
+            tables.tables(rep, cap)
+            xs, gs = tables.covered(rep)
+        gs = np.maximum.accumulate(gs)
+        if gs[-1] >= dmax:
+            break
+        if xs[-1] >= r_max:
+            raise _too_deep(dmax, gs[-1], r_max)
+        n = 1.0
+        if len(xs) > 1 and gs[-2] > 0 and xs[-2] > 0:
+            n = max(1.0, np.log(gs[-1] / gs[-2]) / np.log(xs[-1] / xs[-2]))
+        est = xs[-1] * (dmax / gs[-1]) ** (1 / n) if gs[-1] > 0 else 2 * xs[-1]
+        # (the table goes EXTRA nodes past cap: the margin)
+        cap = min(r_max, max(est, 1.1 * xs[-1]))
     i = np.clip(np.searchsorted(gs, d), 1, len(xs) - 1)
     lo, hi, g_lo, g_hi = xs[i - 1], xs[i], gs[i - 1], gs[i]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -148,8 +170,8 @@ def radii(rep: Rep, r_max: float, d: np.ndarray) -> np.ndarray:
     act = np.arange(len(d))
     for _ in range(100):
         aa = a[act]
-        ga = tables.g(rep, aa) - d[act]
-        gp = tables.gprime(rep, aa)
+        ga, gp = tables.g_and_gprime(rep, aa)
+        ga = ga - d[act]
         up = ga > 0
         hi[act] = np.where(up, aa, hi[act])
         lo[act] = np.where(up, lo[act], aa)
@@ -180,7 +202,7 @@ def curve(coarse: Rep, fine: Rep, r_max: float, depths: np.ndarray, E_star: floa
     error is part of both representations' values; the coarse tables have half the nodes
     (an error 2^6 times larger for the quintic splines), so the comparison covers it."""
     a = radii(fine, r_max, depths)
-    ac = radii(coarse, r_max, depths)
+    ac = radii(coarse, r_max, depths, 1.02 * a)
     F = gen.mdr_force(E_star, a, depths, tables.G(fine, a))  # (5.57)
     Fc = gen.mdr_force(E_star, ac, depths, tables.G(coarse, ac))  # (5.57)
     diff = np.maximum(np.abs(F - Fc) / F, np.abs(a - ac) / a)
