@@ -124,13 +124,13 @@ class Paraboloid:
 
     def g(self, x):
         """MDR profile g(x) = x^2/R [m] (5.52)."""
-        return np.asarray(x, float) ** 2 / self.R
+        return gen.paraboloid_g(self.R, np.asarray(x, float))  # (5.52)
 
     def normal_force(self, a, E_star):
         return gen.powerlaw_force_from_radius(E_star, a, self.g(a), 2.0)  # (5.57), (5.23)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * a * a / (self.R * G_star)
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.g(a))  # d = g(a) (5.55)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return gen.cattaneo_stick_radius(a, self.R, E_star, G_star, mu, u)
@@ -167,13 +167,13 @@ class Cone:
 
     def g(self, x):
         """MDR profile g(x) = (pi/2) tan(theta) |x| [m] (5.52)."""
-        return np.pi / 2 * np.tan(self.theta) * np.abs(np.asarray(x, float))
+        return gen.cone_g(self.theta, np.abs(np.asarray(x, float)))  # (5.52)
 
     def normal_force(self, a, E_star):
         return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * self.g(a) / G_star
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.g(a))  # d = g(a) (5.55)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return gen.tangential_cone_stick_radius(a, self.theta, E_star, G_star, mu, u)
@@ -224,7 +224,7 @@ class PowerLaw:
         return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * self.g(a) / G_star
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.g(a))  # d = g(a) (5.55)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return gen.tangential_powerlaw_stick_radius(a, self.c_n, self.n, self.kappa, E_star,
@@ -281,7 +281,7 @@ class FlatPunch:
         return gen.powerlaw_punch_force(E_star, a, self.depth)  # (5.11)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * self.depth / G_star
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.depth)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return np.broadcast_arrays(np.asarray(a, float), np.asarray(u, float))[0].copy()
