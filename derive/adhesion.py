@@ -186,9 +186,14 @@ def power() -> dict[str, sp.Expr]:
 
 @cache
 def slopes_of_profiles() -> dict[str, sp.Expr]:
-    """g'(x) of the exact sphere and of the worn paraboloid (x > b), from their (5.52)."""
+    """g'(x) of the exact sphere, the worn paraboloid (x > b), the paraboloid, the cone and the
+    power law (x > 0), from their (5.52)."""
+    rr = sp.Symbol("rr", positive=True)
     return {"sphere": sp.simplify(sp.diff(sphere.solution()["g"], x)),
-            "worn": sp.simplify(sp.diff(worn.solution()["g"], x))}
+            "worn": sp.simplify(sp.diff(worn.solution()["g"], x)),
+            "paraboloid": sp.diff(mdr.transform(rr**2 / (2 * R), rr), x),
+            "cone": sp.diff(cone()["g"], x),
+            "powerlaw": sp.diff(powerlaw.solution()["g"], x)}
 
 
 @cache
@@ -287,6 +292,21 @@ def relations() -> list[Relation]:
                  stable_why="atanh(x/R) as log1p(2x/(R - x))/2 and R^2 - x^2 as "
                  "(R - x)(R + x), exact as x -> R where the slope is largest",
                  domain={x: R * unit_interval()}),
+        Relation("adhesion_paraboloid_g_slope", "(5.52) of r^2/(2R)", sps["paraboloid"],
+                 (R, x), "slope g'(x) [1] of the MDR profile of the paraboloid, x >= 0",
+                 "the derivative of (5.52) for f = r^2/(2R)",
+                 f"{TEST}::test_g_slopes_by_differences"),
+        Relation("adhesion_cone_g_slope", "(5.52) of r tan(theta)", sps["cone"], (theta,),
+                 "slope g'(x) [1] of the MDR profile of the cone (the same at every x > 0)",
+                 "the derivative of (5.52) for f = r tan(theta)",
+                 f"{TEST}::test_g_slopes_by_differences"),
+        Relation("adhesion_powerlaw_g_slope", "(5.52), Problem 7(d)", sps["powerlaw"],
+                 (c_n, kappa_n, n, x),
+                 "slope g'(x) [1] of the MDR profile of the power law f = c_n r^n, x > 0",
+                 "the derivative of (5.52) for f = c_n r^n, g = kappa_n c_n x^n",
+                 f"{TEST}::test_g_slopes_by_differences",
+                 stable=n * kappa_n * c_n * x ** (n - 1),
+                 stable_why="x^n/x is 0/0 at x = 0 and overflows before x^(n - 1) does"),
         Relation("adhesion_worn_g_slope", "(5.52), Problem 8", sps["worn"], (R, b, x),
                  "slope g'(x) [1] of the MDR profile of the worn paraboloid for x > b (0 for "
                  "x < b; infinite at the kink x = b+)",

@@ -232,6 +232,24 @@ def powerlaw() -> dict[str, sp.Expr]:
     return {"g": g, "c_u": c_u, "F_x": Fx, "F_a": F_a, "c_F": c_F, "u_F": u_F, "W": W}
 
 
+@cache
+def slide_onset() -> sp.Expr:
+    """u_x at which the last spring, the centre x = 0, starts to slide: G* u_x = mu E* d.
+
+    q_z = E* (d - g(x)) is largest at the centre (g(0) = 0, g non-decreasing), so the slip
+    depth G* u_x/(mu E*) reaches d there last. Asserted to be where the stick radius of the
+    paraboloid, the cone and the power law closes (c = 0 at d = g(a)); the flat punch
+    (g = 0 inside) slides all at once at the same u_x.
+    """
+    (u_on,) = sp.solve(sp.Eq(SLIP_DEPTH, mdr.d), u_x)
+    for prof in (paraboloid(), cone()):
+        at = {u_x: u_on.subs(mdr.d, prof["g"].subs(x, a))}
+        assert sp.simplify(prof["c_u"].subs(at)) == 0, prof["c_u"]
+    Pw = powerlaw()
+    assert sp.simplify(Pw["c_u"].subs(u_x, u_on.subs(mdr.d, Pw["g"].subs(x, a)))) == 0
+    return u_on
+
+
 def flat_punch_traction() -> sp.Expr:
     """(5.59) of the stuck flat punch's line load q_x = G* u_x on |x| < a, 0 outside.
 
@@ -510,6 +528,23 @@ def relations() -> list[Relation]:
         small_amplitude(Wp_F), (a, n, F, G_star, mu_f, F_amp),
         "leading term [J] of the energy per cycle of a power-law profile at small amplitude",
         "series in F_amp of the energy per cycle", f"{TEST}::test_cubic_small_amplitude_law"))
+
+    # the profiles' g(x) (5.52) and the onset of sliding, for numeric/tangential.py
+    rels.append(Relation(
+        "paraboloid_g", "(5.52) of f = r^2/(2R)", P["g"], (R, x),
+        "MDR profile g(x) [m] of the paraboloid f = r^2/(2R) (the springs' gap; d = g(a))",
+        "(5.52) of r^2/(2R)", f"{TEST}::test_profiles_g_against_the_mdr_transform"))
+    rels.append(Relation(
+        "cone_g", "(5.52) of f = r tan(theta)", C["g"], (theta, x),
+        "MDR profile g(x) [m] of the cone f = r tan(theta), x >= 0 (g is even in x)",
+        "(5.52) of r tan(theta)", f"{TEST}::test_profiles_g_against_the_mdr_transform"))
+    rels.append(Relation(
+        "tangential_slide_onset", "MDR tangential springs (not in the chapter)",
+        slide_onset(), (E_star, G_star, mu_f, mdr.d),
+        "tangential displacement u_x [m] at which the last spring (the centre, g(0) = 0) "
+        "starts to slide, depth d (d = g(a), or the flat punch's depth)",
+        "G* u_x = mu q_z(0) = mu E* d, where the stick radius closes (asserted per profile)",
+        f"{TEST}::test_slide_onset_against_the_normal_force"))
 
     # flat punch: q_z = E* d on |x| < a, all springs stick until F_x = mu F_N
     rels.append(Relation(

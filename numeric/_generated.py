@@ -15,6 +15,7 @@ import numpy
 __all__ = [
     'adhesion_cone_depth',
     'adhesion_cone_force_from_radius',
+    'adhesion_cone_g_slope',
     'adhesion_cone_pull_off_depth_dc',
     'adhesion_cone_pull_off_depth_fc',
     'adhesion_cone_pull_off_force_dc',
@@ -28,8 +29,10 @@ __all__ = [
     'adhesion_displacement_outside_edge',
     'adhesion_energy_release_rate',
     'adhesion_force_slope',
+    'adhesion_paraboloid_g_slope',
     'adhesion_powerlaw_depth',
     'adhesion_powerlaw_force_from_radius',
+    'adhesion_powerlaw_g_slope',
     'adhesion_powerlaw_pull_off_depth_dc',
     'adhesion_powerlaw_pull_off_depth_fc',
     'adhesion_powerlaw_pull_off_force_dc',
@@ -91,6 +94,7 @@ __all__ = [
     'cone_depth',
     'cone_depth_from_force',
     'cone_force',
+    'cone_g',
     'cone_mean_pressure',
     'cone_pressure',
     'cone_stiffness',
@@ -274,6 +278,7 @@ __all__ = [
     'mdr_stiffness',
     'mindlin_energy',
     'mindlin_energy_small',
+    'paraboloid_g',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -346,6 +351,7 @@ __all__ = [
     'tangential_powerlaw_stick_deficit',
     'tangential_powerlaw_stick_radius',
     'tangential_powerlaw_stick_radius_from_force',
+    'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
     'uniform_pressure_displacement',
@@ -368,6 +374,7 @@ __all__ = [
 RELATIONS = (
     ('adhesion_cone_depth', '(5.55), adhesive', 'adhesion', 'pi*a*tan(theta)/2 - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
     ('adhesion_cone_force_from_radius', '(5.57), adhesive', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma) + pi*E_star*a**2*tan(theta)/2', ''),
+    ('adhesion_cone_g_slope', '(5.52) of r tan(theta)', 'adhesion', 'pi*tan(theta)/2', ''),
     ('adhesion_cone_pull_off_depth_dc', '(5.55), adhesive', 'adhesion', '-dgamma/(E_star*tan(theta))', ''),
     ('adhesion_cone_pull_off_depth_fc', '(5.55), adhesive', 'adhesion', '3*dgamma/(E_star*tan(theta))', ''),
     ('adhesion_cone_pull_off_force_dc', '(5.57), adhesive', 'adhesion', '-6*dgamma**2/(pi*E_star*tan(theta)**3)', ''),
@@ -381,8 +388,10 @@ RELATIONS = (
     ('adhesion_displacement_outside_edge', '(5.60), adhesive', 'adhesion', '-2*sqrt(2)*sqrt(a)*sqrt(dgamma)*asin(a/r)/(sqrt(pi)*sqrt(E_star))', ''),
     ('adhesion_energy_release_rate', '(5.57), energy balance', 'adhesion', 'E_star*(d - g_a)**2/(2*pi*a)', ''),
     ('adhesion_force_slope', '(5.57), adhesive', 'adhesion', '-3*sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(a)*sqrt(dgamma) + 2*E_star*a*g_slope', ''),
+    ('adhesion_paraboloid_g_slope', '(5.52) of r^2/(2R)', 'adhesion', '2*x/R', ''),
     ('adhesion_powerlaw_depth', '(5.55), adhesive', 'adhesion', 'a**n*c_n*kappa_n - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
     ('adhesion_powerlaw_force_from_radius', '(5.57), adhesive', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)*n/(n + 1) - 2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)', ''),
+    ('adhesion_powerlaw_g_slope', '(5.52), Problem 7(d)', 'adhesion', 'c_n*kappa_n*n*x**n/x', ''),
     ('adhesion_powerlaw_pull_off_depth_dc', '(5.55), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(dgamma)*(2*n - 1)*sqrt((pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))/(2*sqrt(E_star)*n)', ''),
     ('adhesion_powerlaw_pull_off_depth_fc', '(5.55), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(dgamma)*(2*n - 3)*sqrt((9*pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))/(2*sqrt(E_star)*n)', ''),
     ('adhesion_powerlaw_pull_off_force_dc', '(5.57), adhesive', 'adhesion', '-sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(dgamma)*(2*n + 1)*((pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1)))**(3/2)/(n + 1)', ''),
@@ -444,6 +453,7 @@ RELATIONS = (
     ('cone_depth', '(5.38)', 'cone', 'pi*a*tan(theta)/2', ''),
     ('cone_depth_from_force', '(5.40), inverted', 'cone', 'sqrt(2)*sqrt(pi)*sqrt(F)*sqrt(tan(theta))/(2*sqrt(E_star))', ''),
     ('cone_force', '(5.40)', 'cone', '2*E_star*d**2/(pi*tan(theta))', ''),
+    ('cone_g', '(5.52) of f = r tan(theta)', 'tangential', 'pi*x*tan(theta)/2', ''),
     ('cone_mean_pressure', '(5.40)/(pi a^2)', 'cone', 'E_star*tan(theta)/2', ''),
     ('cone_pressure', '(5.39)', 'cone', 'E_star*tan(theta)*acosh(2*d/(pi*r*tan(theta)))/2', "the print has a spurious minus sign: the pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it"),
     ('cone_stiffness', 'Problem 5', 'cone', '4*E_star*d/(pi*tan(theta))', ''),
@@ -627,6 +637,7 @@ RELATIONS = (
     ('mdr_stiffness', '(5.12), Problem 5', 'contact', '2*E_star*a', ''),
     ('mindlin_energy', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', '3*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(5*G_star*a)', ''),
     ('mindlin_energy_small', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', 'F_amp**3/(9*F*G_star*a*mu_f)', ''),
+    ('paraboloid_g', '(5.52) of f = r^2/(2R)', 'tangential', 'x**2/R', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
@@ -699,6 +710,7 @@ RELATIONS = (
     ('tangential_powerlaw_stick_deficit', 'MDR tangential, power law (not in the chapter)', 'tangential', '1 - (1 - F_amp/(F*mu_f))**(1/(n + 1))', ''),
     ('tangential_powerlaw_stick_radius', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - G_star*u_x/(E_star*a**n*c_n*kappa_n*mu_f))**(1/n)', ''),
     ('tangential_powerlaw_stick_radius_from_force', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - F_x/(F*mu_f))**(1/(n + 1))', ''),
+    ('tangential_slide_onset', 'MDR tangential springs (not in the chapter)', 'tangential', 'E_star*d*mu_f/G_star', ''),
     ('tangential_stiffness', 'MDR tangential springs (not in the chapter)', 'tangential', '2*G_star*a', ''),
     ('tangential_stiffness_ratio', 'MDR tangential springs (not in the chapter)', 'tangential', '2*(nu - 1)/(nu - 2)', ''),
     ('uniform_pressure_displacement', 'Problem 6', 'pressures', '4*a*p0*elliptic_e(r**2/a**2)/(pi*E_star)', ''),
@@ -772,6 +784,28 @@ def adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma) + (1/2)*numpy.pi*E_star*a**2*numpy.tan(theta)
+
+
+def adhesion_cone_g_slope(theta):
+    """Slope g'(x) [1] of the MDR profile of the cone (the same at every x > 0).
+
+    Chapter: (5.52) of r tan(theta). Derived from: the derivative of (5.52) for f = r
+    tan(theta).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    """
+    if type(theta) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_cone_g_slope(theta)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*numpy.pi*numpy.tan(theta)
 
 
 def adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
@@ -1117,6 +1151,29 @@ def adhesion_force_slope(E_star, a, dgamma, g_slope):
     return -3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma) + 2*E_star*a*g_slope
 
 
+def adhesion_paraboloid_g_slope(R, x):
+    """Slope g'(x) [1] of the MDR profile of the paraboloid, x >= 0.
+
+    Chapter: (5.52) of r^2/(2R). Derived from: the derivative of (5.52) for f = r^2/(2R).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_paraboloid_g_slope(R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*x/R
+
+
 def adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
     """Indentation depth d [m] of a power-law profile c_n r^n (n > 1/2) in adhesive contact of radius a.
 
@@ -1179,6 +1236,37 @@ def adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)*n/(n + 1) - 2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*numpy.sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)
+
+
+def adhesion_powerlaw_g_slope(c_n, kappa_n, n, x):
+    """Slope g'(x) [1] of the MDR profile of the power law f = c_n r^n, x > 0.
+
+    Chapter: (5.52), Problem 7(d). Derived from: the derivative of (5.52) for f = c_n r^n, g
+    = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Printed in a stable form: x^n/x is 0/0 at x = 0 and overflows before x^(n - 1) does.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if (type(c_n) is float and type(kappa_n) is float and type(n) is float and
+            type(x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_powerlaw_g_slope(c_n, kappa_n, n, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return c_n*kappa_n*n*x**(n - 1)
 
 
 def adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
@@ -2965,6 +3053,29 @@ def cone_force(E_star, d, theta):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*E_star*d**2/(numpy.pi*numpy.tan(theta))
+
+
+def cone_g(theta, x):
+    """MDR profile g(x) [m] of the cone f = r tan(theta), x >= 0 (g is even in x).
+
+    Chapter: (5.52) of f = r tan(theta). Derived from: (5.52) of r tan(theta).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_g_against_the_mdr_transform``.
+
+    Parameters
+    ----------
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(theta) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_g(theta, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*numpy.pi*x*numpy.tan(theta)
 
 
 def cone_mean_pressure(E_star, theta):
@@ -7900,6 +8011,29 @@ def mindlin_energy_small(a, F, G_star, mu_f, F_amp):
     return (1/9)*F_amp**3/(F*G_star*a*mu_f)
 
 
+def paraboloid_g(R, x):
+    """MDR profile g(x) [m] of the paraboloid f = r^2/(2R) (the springs' gap; d = g(a)).
+
+    Chapter: (5.52) of f = r^2/(2R). Derived from: (5.52) of r^2/(2R).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_g_against_the_mdr_transform``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(R) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_paraboloid_g(R, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return x**2/R
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -9941,6 +10075,35 @@ def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
     return a*(1 - F_x/(F*mu_f))**((n + 1)**(-1.0))
 
 
+def tangential_slide_onset(E_star, G_star, mu_f, d):
+    """Tangential displacement u_x [m] at which the last spring (the centre, g(0) = 0) starts to slide, depth d (d = g(a), or the flat punch's depth).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: G* u_x = mu q_z(0) =
+    mu E* d, where the stick radius closes (asserted per profile).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_slide_onset_against_the_normal_force``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    if (type(E_star) is float and type(G_star) is float and type(mu_f) is float and
+            type(d) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_slide_onset(E_star, G_star, mu_f, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*d*mu_f/G_star
+
+
 def tangential_stiffness(G_star, a):
     """Tangential contact stiffness k_x = dF_x/du_x [N/m] before any slip (c = a).
 
@@ -10358,6 +10521,35 @@ def worn_profile(R, b, r):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return (1/2)*functools.reduce(numpy.maximum, [0, (-b + r)*(b + r)])/R
+
+
+def textbook_adhesion_powerlaw_g_slope(c_n, kappa_n, n, x):
+    """Slope g'(x) [1] of the MDR profile of the power law f = c_n r^n, x > 0, in the derived (textbook) form; use adhesion_powerlaw_g_slope: x^n/x is 0/0 at x = 0 and overflows before x^(n - 1) does.
+
+    Chapter: (5.52), Problem 7(d). Derived from: the derivative of (5.52) for f = c_n r^n, g
+    = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if (type(c_n) is float and type(kappa_n) is float and type(n) is float and
+            type(x) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_adhesion_powerlaw_g_slope(c_n, kappa_n, n, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return c_n*kappa_n*n*x**n/x
 
 
 def textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
@@ -12256,6 +12448,11 @@ def _math_adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
     return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma) + (1/2)*math.pi*E_star*(a*a)*math.tan(theta)
 
 
+def _math_adhesion_cone_g_slope(theta):
+    """``adhesion_cone_g_slope`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pi*math.tan(theta)
+
+
 def _math_adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
     """``adhesion_cone_pull_off_depth_dc`` for Python floats (the math module); raises where it does."""
     return -dgamma/(E_star*math.tan(theta))
@@ -12321,6 +12518,11 @@ def _math_adhesion_force_slope(E_star, a, dgamma, g_slope):
     return -3*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma) + 2*E_star*a*g_slope
 
 
+def _math_adhesion_paraboloid_g_slope(R, x):
+    """``adhesion_paraboloid_g_slope`` for Python floats (the math module); raises where it does."""
+    return 2*x/R
+
+
 def _math_adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
     """``adhesion_powerlaw_depth`` for Python floats (the math module); raises where it does."""
     return math.pow(a, n)*c_n*kappa_n - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*math.sqrt(dgamma)/math.sqrt(E_star)
@@ -12329,6 +12531,16 @@ def _math_adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
 def _math_adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
     """``adhesion_powerlaw_force_from_radius`` for Python floats (the math module); raises where it does."""
     return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)*n/(n + 1) - 2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)/(n + 1) + 2*E_star*a*math.pow(a, n)*c_n*kappa_n*n/(n + 1)
+
+
+def _math_adhesion_powerlaw_g_slope(c_n, kappa_n, n, x):
+    """``adhesion_powerlaw_g_slope`` for Python floats (the math module); raises where it does."""
+    return c_n*kappa_n*n*math.pow(x, n - 1)
+
+
+def _math_textbook_adhesion_powerlaw_g_slope(c_n, kappa_n, n, x):
+    """``textbook_adhesion_powerlaw_g_slope`` for Python floats (the math module); raises where it does."""
+    return c_n*kappa_n*n*math.pow(x, n)/x
 
 
 def _math_adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
@@ -12689,6 +12901,11 @@ def _math_cone_depth_from_force(E_star, F, theta):
 def _math_cone_force(E_star, d, theta):
     """``cone_force`` for Python floats (the math module); raises where it does."""
     return 2*E_star*(d*d)/(math.pi*math.tan(theta))
+
+
+def _math_cone_g(theta, x):
+    """``cone_g`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pi*x*math.tan(theta)
 
 
 def _math_cone_mean_pressure(E_star, theta):
@@ -13541,6 +13758,11 @@ def _math_mindlin_energy_small(a, F, G_star, mu_f, F_amp):
     return (1/9)*F_amp**3/(F*G_star*a*mu_f)
 
 
+def _math_paraboloid_g(R, x):
+    """``paraboloid_g`` for Python floats (the math module); raises where it does."""
+    return (x*x)/R
+
+
 def _math_powerlaw_contact_radius(c_n, d, kappa_n, n):
     """``powerlaw_contact_radius`` for Python floats (the math module); raises where it does."""
     return math.pow(d/(c_n*kappa_n), 1/n)
@@ -13989,6 +14211,11 @@ def _math_textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, 
 def _math_tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
     """``tangential_powerlaw_stick_radius_from_force`` for Python floats (the math module); raises where it does."""
     return a*math.pow(1 - F_x/(F*mu_f), 1/(n + 1))
+
+
+def _math_tangential_slide_onset(E_star, G_star, mu_f, d):
+    """``tangential_slide_onset`` for Python floats (the math module); raises where it does."""
+    return E_star*d*mu_f/G_star
 
 
 def _math_tangential_stiffness(G_star, a):

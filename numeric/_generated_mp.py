@@ -12,6 +12,7 @@ import mpmath
 __all__ = [
     'adhesion_cone_depth',
     'adhesion_cone_force_from_radius',
+    'adhesion_cone_g_slope',
     'adhesion_cone_pull_off_depth_dc',
     'adhesion_cone_pull_off_depth_fc',
     'adhesion_cone_pull_off_force_dc',
@@ -25,8 +26,10 @@ __all__ = [
     'adhesion_displacement_outside_edge',
     'adhesion_energy_release_rate',
     'adhesion_force_slope',
+    'adhesion_paraboloid_g_slope',
     'adhesion_powerlaw_depth',
     'adhesion_powerlaw_force_from_radius',
+    'adhesion_powerlaw_g_slope',
     'adhesion_powerlaw_pull_off_depth_dc',
     'adhesion_powerlaw_pull_off_depth_fc',
     'adhesion_powerlaw_pull_off_force_dc',
@@ -88,6 +91,7 @@ __all__ = [
     'cone_depth',
     'cone_depth_from_force',
     'cone_force',
+    'cone_g',
     'cone_mean_pressure',
     'cone_pressure',
     'cone_stiffness',
@@ -271,6 +275,7 @@ __all__ = [
     'mdr_stiffness',
     'mindlin_energy',
     'mindlin_energy_small',
+    'paraboloid_g',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_outside',
@@ -343,6 +348,7 @@ __all__ = [
     'tangential_powerlaw_stick_deficit',
     'tangential_powerlaw_stick_radius',
     'tangential_powerlaw_stick_radius_from_force',
+    'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
     'uniform_pressure_displacement',
@@ -404,6 +410,23 @@ def adhesion_cone_force_from_radius(E_star, a, dgamma, theta):
         angle between the cone's surface and the plane [rad]
     """
     return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*E_star*a**2*mpmath.tan(theta)
+
+
+def adhesion_cone_g_slope(theta):
+    """Slope g'(x) [1] of the MDR profile of the cone (the same at every x > 0).
+
+    Chapter: (5.52) of r tan(theta). Derived from: the derivative of (5.52) for f = r
+    tan(theta).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*mpmath.tan(theta)
 
 
 def adhesion_cone_pull_off_depth_dc(E_star, dgamma, theta):
@@ -679,6 +702,24 @@ def adhesion_force_slope(E_star, a, dgamma, g_slope):
     return -3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma) + 2*E_star*a*g_slope
 
 
+def adhesion_paraboloid_g_slope(R, x):
+    """Slope g'(x) [1] of the MDR profile of the paraboloid, x >= 0.
+
+    Chapter: (5.52) of r^2/(2R). Derived from: the derivative of (5.52) for f = r^2/(2R).
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return 2*x/R
+
+
 def adhesion_powerlaw_depth(E_star, a, dgamma, c_n, kappa_n, n):
     """Indentation depth d [m] of a power-law profile c_n r^n (n > 1/2) in adhesive contact of radius a.
 
@@ -729,6 +770,31 @@ def adhesion_powerlaw_force_from_radius(E_star, a, dgamma, c_n, kappa_n, n):
         exponent of the power-law profile f = c_n r^n, n > 0 [1]
     """
     return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma)*n/(n + 1) - 2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(dgamma)/(n + 1) + 2*E_star*a*a**n*c_n*kappa_n*n/(n + 1)
+
+
+def adhesion_powerlaw_g_slope(c_n, kappa_n, n, x):
+    """Slope g'(x) [1] of the MDR profile of the power law f = c_n r^n, x > 0.
+
+    Chapter: (5.52), Problem 7(d). Derived from: the derivative of (5.52) for f = c_n r^n, g
+    = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Printed in a stable form: x^n/x is 0/0 at x = 0 and overflows before x^(n - 1) does.
+
+    Parameters
+    ----------
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return c_n*kappa_n*n*x**(n - 1)
 
 
 def adhesion_powerlaw_pull_off_depth_dc(E_star, dgamma, c_n, kappa_n, n):
@@ -2169,6 +2235,24 @@ def cone_force(E_star, d, theta):
         angle between the cone's surface and the plane [rad]
     """
     return 2*E_star*d**2/(mpmath.pi*mpmath.tan(theta))
+
+
+def cone_g(theta, x):
+    """MDR profile g(x) [m] of the cone f = r tan(theta), x >= 0 (g is even in x).
+
+    Chapter: (5.52) of f = r tan(theta). Derived from: (5.52) of r tan(theta).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_g_against_the_mdr_transform``.
+
+    Parameters
+    ----------
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*x*mpmath.tan(theta)
 
 
 def cone_mean_pressure(E_star, theta):
@@ -6227,6 +6311,24 @@ def mindlin_energy_small(a, F, G_star, mu_f, F_amp):
     return (mpmath.mpf(1)/mpmath.mpf(9))*F_amp**3/(F*G_star*a*mu_f)
 
 
+def paraboloid_g(R, x):
+    """MDR profile g(x) [m] of the paraboloid f = r^2/(2R) (the springs' gap; d = g(a)).
+
+    Chapter: (5.52) of f = r^2/(2R). Derived from: (5.52) of r^2/(2R).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_g_against_the_mdr_transform``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return x**2/R
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -7903,6 +8005,29 @@ def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
     return a*(1 - F_x/(F*mu_f))**(1/(n + 1))
 
 
+def tangential_slide_onset(E_star, G_star, mu_f, d):
+    """Tangential displacement u_x [m] at which the last spring (the centre, g(0) = 0) starts to slide, depth d (d = g(a), or the flat punch's depth).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: G* u_x = mu q_z(0) =
+    mu E* d, where the stick radius closes (asserted per profile).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_slide_onset_against_the_normal_force``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return E_star*d*mu_f/G_star
+
+
 def tangential_stiffness(G_star, a):
     """Tangential contact stiffness k_x = dF_x/du_x [N/m] before any slip (c = a).
 
@@ -8245,6 +8370,29 @@ def worn_profile(R, b, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.mpf(1)/mpmath.mpf(2))*max(0, (-b + r)*(b + r))/R
+
+
+def textbook_adhesion_powerlaw_g_slope(c_n, kappa_n, n, x):
+    """Slope g'(x) [1] of the MDR profile of the power law f = c_n r^n, x > 0, in the derived (textbook) form; use adhesion_powerlaw_g_slope: x^n/x is 0/0 at x = 0 and overflows before x^(n - 1) does.
+
+    Chapter: (5.52), Problem 7(d). Derived from: the derivative of (5.52) for f = c_n r^n, g
+    = kappa_n c_n x^n.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_g_slopes_by_differences``.
+
+    Parameters
+    ----------
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return c_n*kappa_n*n*x**n/x
 
 
 def textbook_adhesion_pressure_edge(E_star, a, dgamma, r):

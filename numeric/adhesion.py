@@ -168,8 +168,10 @@ class Shape:
         return gen.adhesion_depth(E_star, a, dgamma, self.g(a))  # (5.55), adhesive
 
     def force(self, a, E_star, dgamma):
-        return self.force0(a, E_star) - 2 * E_star * a * gen.adhesion_critical_elongation(
-            E_star, a, dgamma)  # (5.57) at d = g(a) - Delta l
+        # (5.57) at d = g(a) - Delta l: the non-adhesive force less a flat punch's (5.11) of
+        # depth Delta l (F is linear in d at fixed a)
+        return self.force0(a, E_star) - gen.powerlaw_punch_force(
+            E_star, a, gen.adhesion_critical_elongation(E_star, a, dgamma))
 
 
 @dataclass(frozen=True)
@@ -186,22 +188,22 @@ class Paraboloid(Shape):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
     def g(self, a):
-        return a**2 / self.R  # (5.52): g = x^2/R
+        return gen.paraboloid_g(self.R, a)  # (5.52): g = x^2/R
 
     def g_slope(self, a):
-        return 2 * a / self.R
+        return gen.adhesion_paraboloid_g_slope(self.R, a)
 
     def force0(self, a, E_star):
-        return _hertz.force(a**2 / self.R, self.R, E_star)
+        return _hertz.force(self.g(a), self.R, E_star)  # d = g(a) (5.55)
 
     def height(self, r):
         return r**2 / (2 * self.R)
 
     def pressure0(self, r, a, E_star):
-        return _hertz.pressure(r, a**2 / self.R, self.R, E_star)
+        return _hertz.pressure(r, self.g(a), self.R, E_star)
 
     def displacement0_outside(self, r, a):
-        return _hertz.surface_displacement(r, a**2 / self.R, self.R)
+        return _hertz.surface_displacement(r, self.g(a), self.R)
 
     def scale(self, E_star, dgamma):
         return float(gen.jkr_pull_off_radius_fc(E_star, dgamma, self.R))
@@ -234,7 +236,7 @@ class Cone(Shape):
         return _cone.depth(a, self.theta)  # (5.38): g(a) = (pi/2) a tan(theta)
 
     def g_slope(self, a):
-        return np.pi / 2 * np.tan(self.theta) + 0 * a
+        return gen.adhesion_cone_g_slope(self.theta) + np.zeros_like(np.asarray(a, float))
 
     def force0(self, a, E_star):
         return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
@@ -293,7 +295,7 @@ class PowerLaw(Shape):
         return _powerlaw.g_profile(a, self.c_n, self.n)
 
     def g_slope(self, a):
-        return self.n * self.kappa * self.c_n * a ** (self.n - 1)
+        return gen.adhesion_powerlaw_g_slope(self.c_n, self.kappa, self.n, a)
 
     def force0(self, a, E_star):
         return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)

@@ -45,6 +45,11 @@ __all__ = ["effective_modulus", "shear_modulus", "stiffness_ratio", "stiffness",
 GAUSS_NODES = 24
 
 
+#: within this many ulp under the onset of sliding a stick-zone form that rounds to NaN
+#: (its radicand 1 - u/onset below 0) takes the full-slip value, its limit at the onset
+ONSET_ULPS = 64
+
+
 #: the power law's energy per cycle is integrated (not taken from its closed form, which
 #: cancels like (1 - c/a)^3) where 1 - c/a is below this
 ENERGY_QUADRATURE_BELOW = 0.25
@@ -119,13 +124,13 @@ class Paraboloid:
 
     def g(self, x):
         """MDR profile g(x) = x^2/R [m] (5.52)."""
-        return np.asarray(x, float) ** 2 / self.R
+        return gen.paraboloid_g(self.R, np.asarray(x, float))  # (5.52)
 
     def normal_force(self, a, E_star):
         return gen.powerlaw_force_from_radius(E_star, a, self.g(a), 2.0)  # (5.57), (5.23)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * a * a / (self.R * G_star)
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.g(a))  # d = g(a) (5.55)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return gen.cattaneo_stick_radius(a, self.R, E_star, G_star, mu, u)
@@ -162,13 +167,13 @@ class Cone:
 
     def g(self, x):
         """MDR profile g(x) = (pi/2) tan(theta) |x| [m] (5.52)."""
-        return np.pi / 2 * np.tan(self.theta) * np.abs(np.asarray(x, float))
+        return gen.cone_g(self.theta, np.abs(np.asarray(x, float)))  # (5.52)
 
     def normal_force(self, a, E_star):
         return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * self.g(a) / G_star
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.g(a))  # d = g(a) (5.55)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return gen.tangential_cone_stick_radius(a, self.theta, E_star, G_star, mu, u)
@@ -219,7 +224,7 @@ class PowerLaw:
         return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * self.g(a) / G_star
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.g(a))  # d = g(a) (5.55)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return gen.tangential_powerlaw_stick_radius(a, self.c_n, self.n, self.kappa, E_star,
@@ -276,7 +281,7 @@ class FlatPunch:
         return gen.powerlaw_punch_force(E_star, a, self.depth)  # (5.11)
 
     def slide_onset(self, a, E_star, G_star, mu):
-        return mu * E_star * self.depth / G_star
+        return gen.tangential_slide_onset(E_star, G_star, mu, self.depth)
 
     def stick_radius(self, u, a, E_star, G_star, mu):
         return np.broadcast_arrays(np.asarray(a, float), np.asarray(u, float))[0].copy()
@@ -377,28 +382,39 @@ class Contact:
         return np.clip(value, -lim, lim)
 
     # -- monotonic loading -----------------------------------------------------------------
+    def _clip_at_onset(self, form, au, full):
+        """``form(min(au, onset))`` for the displacements ``au`` >= 0 [m] below the onset of
+        sliding, ``full`` (the full-slip value) at and beyond it.
+
+        The stick-zone forms hold for au < onset; they reach the full-slip value through a
+        radicand or logarithm of 1 - au/onset, which the rounding of the onset and of the form
+        can push below 0 within a few ulp under the onset (NaN). There, and only there
+        (au >= (1 - ONSET_ULPS eps) onset), the value is the limit au -> onset: ``full``.
+        """
+        on = self.slide_onset
+        with np.errstate(invalid="ignore", divide="ignore"):
+            v = np.asarray(form(np.minimum(au, on), *self._args()), float)
+        rounded = (au >= on * (1 - ONSET_ULPS * np.finfo(float).eps)) & ~np.isfinite(v)
+        return np.where((au >= on) | rounded, full, v)
+
     def stick_radius(self, u_x):
         """Stick radius c [m] at the tangential displacement u_x [m] (monotonic from 0);
-        0 once everything slides."""
+        0 once everything slides (at and beyond the onset of sliding, exactly)."""
         u = np.abs(as_float("u_x", u_x))
         if self.mu == 0:
             return result(np.zeros_like(u))
-        on = self.slide_onset
-        with np.errstate(invalid="ignore"):
-            c = self.profile.stick_radius(np.minimum(u, on), *self._args())
-        return result(np.where(u < on, np.maximum(c, 0.0), 0.0))
+        c = self._clip_at_onset(self.profile.stick_radius, u, 0.0)
+        return result(np.maximum(c, 0.0))
 
     def force(self, u_x):
         """Tangential force F_x [N] at the displacement u_x [m] (monotonic from 0, odd in u_x);
-        mu F_N beyond the onset of sliding."""
+        mu F_N at and beyond the onset of sliding, exactly."""
         u = as_float("u_x", u_x)
         if self.mu == 0:
             return result(np.zeros_like(u))
-        on = self.slide_onset
-        au = np.abs(u)
-        Fx = self.profile.force(np.minimum(au, on), *self._args())
-        return result(np.sign(u) * np.where(au < on, np.minimum(Fx, self.sliding_force),
-                                            self.sliding_force))
+        lim = self.sliding_force
+        Fx = self._clip_at_onset(self.profile.force, np.abs(u), lim)
+        return result(np.sign(u) * np.minimum(Fx, lim))
 
     def displacement(self, F_x):
         """Tangential displacement u_x [m] under the tangential force F_x [N], |F_x| <= mu F_N

@@ -190,6 +190,25 @@ def test_g_slopes_by_differences():
             ref = mp.diff(lambda u: gmp.worn_g(R, b, u), x)
             assert_close(gen.adhesion_worn_g_slope(float(R), float(b), float(x)), ref, 4e-15,
                          f"worn g'({t} b)")
+        # the paraboloid, the cone and the power law: g of the literature (x^2/R, (pi/2)
+        # tan(theta) x, kappa_n c_n x^n with kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2))
+        # differentiated by mpmath; a few roundings
+        th = mp.mpf(0.4)
+        for n, c_n in ((1.5, 40.0), (3.0, 1e6), (0.75, 2.0)):
+            nn = mp.mpf(n)
+            kap = mp.sqrt(mp.pi) * mp.gamma(nn / 2 + 1) / mp.gamma(nn / 2 + mp.mpf(1) / 2)
+            kc = kap * mp.mpf(c_n)
+            for x in (0.0, 1e-9, 3e-6, 2e-3) if n > 1 else (1e-9, 3e-6, 2e-3):
+                # at x = 0: g' = 0 for n > 1 (x^n/x would be 0/0); infinite for n < 1
+                ref = mp.diff(lambda u, k=kc, m=nn: k * u**m, mp.mpf(x)) if x else 0
+                got = gen.adhesion_powerlaw_g_slope(c_n, float(kap), n, x)
+                assert_close(got, ref, 4e-15, f"power law n = {n} g'({x})")
+        for x in (0.0, 1e-9, 3e-6, 2e-3):
+            xm = mp.mpf(x)
+            got = gen.adhesion_paraboloid_g_slope(float(R), x)
+            assert_close(got, mp.diff(lambda u: u * u / R, xm), 4e-15, f"paraboloid g'({x})")
+        assert_close(gen.adhesion_cone_g_slope(0.4), mp.diff(lambda u: mp.pi / 2 * mp.tan(th) * u,
+                                                             mp.mpf("1e-3")), 4e-15, "cone g'")
 
 
 def _jkr_mp(E, R, dg, a):

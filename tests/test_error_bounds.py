@@ -149,8 +149,8 @@ ROUTES = {
     "study_dem_depth_glass_beads": (lambda: Hertz(e_star(BEAD, BEAD), mp.mpf("0.5e-3")),
                                     0.22),
 }
-#: the examples that sweep a key other than the load: each point is a scene that the studies'
-#: tests compare with its own single run (tests/test_studies.py), whose routes are these
+#: the examples that sweep a key other than the load: every point of each against its own
+#: route (test_study_* below; tests/test_studies.py compares each point with its single run)
 STUDIES = ("study_bearing_load_radius", "study_crossing_angle", "study_poisson_ratio")
 
 
@@ -288,6 +288,92 @@ def test_example_bounds(stem):
 
 def test_every_example_has_a_route():
     assert sorted(p.stem for p in EXAMPLES.glob("*.toml")) == sorted([*ROUTES, *STUDIES])
+
+
+# -- the studies that sweep a key other than the load: every point against its own route -----
+def _study(stem, tmp_path, fewer=None):
+    """The study's document and its points; ``fewer`` = (text, replacement) runs the same study
+    on fewer points of its swept key (CI; HERTZMDR_SWEEP=full runs the example itself)."""
+    path = EXAMPLES / f"{stem}.toml"
+    if fewer is not None and not routes.FULL:
+        text = path.read_text(encoding="utf-8")
+        assert fewer[0] in text, fewer
+        path = tmp_path / path.name
+        path.write_text(text.replace(*fewer), encoding="utf-8")
+    doc = scene.load(path).run()
+    return doc["effects"], doc["study"]["points"]
+
+
+def _check_elliptic_point(route, radii, F, eff, i, what):
+    """One force-controlled elliptical contact: the depth by findroot on Johnson's force at 30
+    digits (its semi-axes and p0 from ellipk/ellipe of the axis ratio, itself by findroot), then
+    the semi-axes (in the order of ``radii``: the longer one along the larger radius) and p0,
+    each within the reported rel_error (+ the route's 1e-15)."""
+    d_got = eff["depth"]["value"][i]
+    d = route.depth_of(F, d_got)
+    a, b, p0 = route.state(d)
+    routes.close(d_got, d, routes.tol_of(eff["depth"]), f"{what}: depth")
+    ref = [b, a] if radii[0] <= radii[1] else [a, b]
+    for got, r in zip(eff["semi_axes"]["value"][i], ref, strict=True):
+        routes.close(got, r, routes.tol_of(eff["semi_axes"]), f"{what}: semi-axis")
+    routes.close(eff["max_pressure"]["value"][i], p0, routes.tol_of(eff["max_pressure"]),
+                 f"{what}: max pressure")
+
+
+def test_study_bearing_load_radius_bounds(tmp_path):
+    """Every (ball radius, load) point of the bearing study (40 in the example, 2 x 8 in CI):
+    the gap's principal radii 1/(1/R_b + 1/25 mm) along the rolling direction and
+    1/(1/R_b - 1/6.3 mm) across it, then Johnson's elliptical contact at 30 digits."""
+    eff, pts = _study("study_bearing_load_radius", tmp_path,
+                      ('radius = { from = "4 mm", to = "6 mm", points = 5 }',
+                       'radius = { from = "4 mm", to = "6 mm", points = 2 }'))
+    E = e_star(STEEL, STEEL)
+    with mp.workdps(DPS):
+        for i, (Rb, F) in enumerate(zip(pts["body[0] (ball).radius"], pts["load.force"],
+                                        strict=True)):
+            Rb = mp.mpf(Rb)
+            radii = [1 / (1 / Rb + 1 / mp.mpf("25e-3")), 1 / (1 / Rb - 1 / mp.mpf("6.3e-3"))]
+            _check_elliptic_point(Elliptic(E, radii), radii, F, eff, i,
+                                  f"R_b = {float(Rb)}, F = {F}")
+
+
+def test_study_crossing_angle_bounds(tmp_path):
+    """Every crossing angle of the crossed-cylinder study (R = 20 mm at 0, 10 mm at 10..90 deg,
+    1 kN): the gap's principal radii as the reciprocal eigenvalues of the summed curvature
+    tensors (mpmath eigsy at 30 digits), then Johnson's elliptical contact."""
+    eff, pts = _study("study_crossing_angle", tmp_path)
+    E = e_star(STEEL, STEEL)
+    with mp.workdps(DPS):
+        for i, alpha in enumerate(pts["body[1] (cylinder 2).axis"]):
+            radii = gap_radii((mp.mpf("0.02"), 0), (mp.mpf("0.01"), mp.mpf(alpha)))  # ascending
+            for got, r in zip(eff["principal_radii"]["value"][i], radii, strict=True):
+                routes.close(got, r, routes.tol_of(eff["principal_radii"]),
+                             f"alpha = {alpha}: principal radius")
+            _check_elliptic_point(Elliptic(E, radii), radii, 1000, eff, i, f"alpha = {alpha}")
+
+
+def test_study_poisson_ratio_bounds(tmp_path):
+    """Every Poisson's ratio of the rubber-block study (a rigid ball, R = 10 mm, 50 um deep into
+    E = 5 MPa; nu = 0 .. 0.5, 6 points in the example, 2 in CI): force, contact radius and p0
+    from the Boussinesq kernel alone at E* = E/(1 - nu^2), and the largest shear from the
+    axis's closed form (Johnson (3.45)) by golden section, located to sqrt(rel_error)."""
+    eff, pts = _study("study_poisson_ratio", tmp_path,
+                      ("nu = { from = 0, to = 0.5, points = 6 }",
+                       "nu = { from = 0, to = 0.5, points = 2 }"))
+    d = mp.mpf("50e-6")
+    with mp.workdps(DPS):
+        for i, nu in enumerate(pts["body[1] (block).nu"]):
+            a, p0, F = Hertz(e_star((5e6, nu)), mp.mpf("0.01")).state(d)
+            for name, ref in (("force", F), ("contact_radius", a), ("max_pressure", p0)):
+                routes.close(eff[name]["value"][i], ref, routes.tol_of(eff[name]),
+                             f"nu = {nu}: {name}")
+            tau, t = hertz_axis_tau_max(nu)
+            ms = eff["max_shear"]
+            routes.close(ms["value"]["value"][i], tau * p0, routes.tol_of(ms),
+                         f"nu = {nu}: max shear")
+            # tau is flat at its maximum: its depth is known to sqrt(rel_error) only
+            routes.close(ms["value"]["depth"][i], t * a, 10 * math.sqrt(routes.tol_of(ms)),
+                         f"nu = {nu}: depth of the max shear")
 
 
 # -- sampled profiles -----------------------------------------------------------------------------

@@ -178,6 +178,94 @@ def test_initial_stiffness_is_2_G_star_a_for_every_profile():
         assert ct.stiffness == pytest.approx(2 * G_STAR * a, rel=1e-15)
 
 
+ONSET_PROFILES = (tg.Paraboloid(R), tg.Cone(0.3), tg.PowerLaw(1e5, 2.5), tg.PowerLaw(50.0, 1.5),
+                  tg.PowerLaw(1e20, 6.0), tg.FlatPunch(1e-7))
+
+
+def _normal_force_mp(prof, a):
+    """F_N at contact radius a by the literature's forms at 30 digits: Hertz 4 E* a^3/(3R),
+    the cone (pi/2) E* a^2 tan(theta), the power law 2n/(n+1) E* kappa_n c_n a^(n+1) with
+    kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2), the punch 2 E* a d."""
+    a, Es = mp.mpf(a), mp.mpf(E_STAR)
+    if isinstance(prof, tg.Paraboloid):
+        return 4 * Es * a**3 / (3 * mp.mpf(prof.R)), 2
+    if isinstance(prof, tg.Cone):
+        return mp.pi / 2 * Es * a**2 * mp.tan(mp.mpf(prof.theta)), 1
+    if isinstance(prof, tg.PowerLaw):
+        n = mp.mpf(prof.n)
+        kap = mp.sqrt(mp.pi) * mp.gamma(n / 2 + 1) / mp.gamma(n / 2 + mp.mpf(1) / 2)
+        return 2 * n / (n + 1) * Es * kap * mp.mpf(prof.c_n) * a ** (n + 1), n
+    return 2 * Es * a * mp.mpf(prof.depth), mp.inf
+
+
+def test_slide_onset_against_the_normal_force():
+    """The onset of sliding is u_x(F_x = mu F_N): mu F_N (n + 1)/(2 n a G*) for f ~ r^n, with
+    F_N from the literature's normal force at 30 digits (3 mu F/(4 a G*) for the sphere,
+    mu F/(2 a G*) for the punch, n -> inf); the closed form mu E* d/G* is a different route
+    (the depth, not the force). >= 14 digits."""
+    a = 1e-4
+    for prof in ONSET_PROFILES:
+        ct = tg.Contact(prof, a, E_STAR, G_STAR, MU)
+        with mp.workdps(30):
+            FN, n = _normal_force_mp(prof, a)
+            ref = MU * FN / (2 * mp.mpf(a) * G_STAR) * (1 if n == mp.inf else (n + 1) / n)
+            # 1e-14: kappa_n (Gamma ratio, power law) and a few roundings of g(a) and mu E*/G*
+            assert_close(ct.slide_onset, ref, 1e-14, f"{prof} onset")
+            assert_close(ct.normal_force, FN, 1e-14, f"{prof} F_N")
+
+
+def test_profiles_g_against_the_mdr_transform():
+    """g(x) of the paraboloid and the cone against (5.52), g(x) = |x| int_0^|x| f'(r)/
+    sqrt(x^2 - r^2) dr, by mpmath quadrature (tanh-sinh copes with the endpoint singularity)
+    at 30 digits, for x of both signs over 8 decades; <= 4e-16 (two or three roundings)."""
+    xs = np.array([-3e-3, -1e-6, 0.0, 1e-11, 2e-7, 5e-5, 1e-3])
+    for prof, fprime in ((tg.Paraboloid(R), lambda r: r / mp.mpf(R)),
+                         (tg.Cone(0.3), lambda r: mp.tan(mp.mpf(0.3))),
+                         (tg.Cone(1.5), lambda r: mp.tan(mp.mpf(1.5)))):
+        g = np.asarray(prof.g(xs))
+        with mp.workdps(30):
+            for x, got in zip(xs, g, strict=True):
+                ax = abs(mp.mpf(x))
+                if ax == 0:
+                    assert got == 0
+                    continue
+                ref = ax * mp.quad(lambda r, fp=fprime, s=ax: fp(r) / mp.sqrt(s * s - r * r),
+                                   [0, ax])
+                assert_close(got, ref, 4e-16, f"{prof} g({x})")
+
+
+def test_stick_zone_forms_at_the_onset():
+    """At u = onset and one ulp either side (and a few ulp under it), every profile's stick
+    radius and force are finite, c = 0 and F_x = mu F_N at and beyond the onset exactly, and
+    just under it c and F_x are within their conditioning of the limit: c/a = (1 - u/onset)^(1/n)
+    with 1 - u/onset ~ rounding (a few eps) gives c <= a (64 eps)^(1/n), and F_x =
+    mu F_N (1 - (1 - u/onset)^((n+1)/n)) rounds to mu F_N to 1e-15. The traction stays finite."""
+    eps = np.finfo(float).eps
+    a = 1e-4
+    for prof in ONSET_PROFILES:
+        for mu in (MU, 1e-3, 1.7):
+            ct = tg.Contact(prof, a, E_STAR, G_STAR, mu)
+            on = ct.slide_onset
+            below = [np.nextafter(on, 0), on * (1 - 2 * eps), on * (1 - 8 * eps)]
+            us = np.array([on, np.nextafter(on, np.inf), 2 * on] + below)
+            for sign in (1, -1):
+                c, F = ct.stick_radius(sign * us), ct.force(sign * us)
+                assert np.all(np.isfinite(c)) and np.all(np.isfinite(F)), (prof, mu, c, F)
+                assert np.all(c[:3] == 0) and np.all(F[:3] == sign * ct.sliding_force), (prof, c)
+                if isinstance(prof, tg.FlatPunch):
+                    assert np.all(c[3:] == a)  # the punch sticks everywhere until it slides
+                    tol = 16 * eps  # F_x = 2 G* a u is linear: 1 - u/onset (8 eps) and rounding
+                else:
+                    n = {tg.Paraboloid: 2.0, tg.Cone: 1.0}.get(type(prof), getattr(prof, "n", 0))
+                    assert np.all((c[3:] >= 0) & (c[3:] <= a * (64 * eps) ** (1 / n))), (prof, c)
+                    tol = 1e-15  # (1 - u/onset)^((n+1)/n) < 1e-20: rounding of the form only
+                assert np.all(np.abs(F[3:] / (sign * ct.sliding_force) - 1) <= tol), (prof, F)
+                # off the axis (the cone's stick-zone form is inf - inf on it: see
+                # docs/tangential.md)
+                q = ct.traction(np.linspace(0.01 * a, 0.99 * a, 7), sign * us[3])
+                assert np.all(np.isfinite(q)), (prof, q)
+
+
 def _loop_area(ct, F_amp):
     """Area of the Masing loop by mpmath quadrature of the float branches: -4 F* u* + 8 int_0^u*
     F_mono (the loop's two branches F* - 2F((u* -+ u)/2))."""

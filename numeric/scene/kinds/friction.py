@@ -167,6 +167,8 @@ class TangentialEffects:
 
     def _history_state(self, spec, mu) -> TangentialState:
         """An explicit history: every state through the springs, normal load included."""
+        from hertzmdr.numeric import tangential as tg
+
         ld = spec.load
         h = ld.tangential.history
         normal = np.asarray(ld.values, float)
@@ -179,16 +181,18 @@ class TangentialEffects:
         H = self._springs(spec, "load.history", h.lines, g=g, x_max=x_max, **kw)
         return TangentialState(None, "history", None, None, 0, Springs(H, True),
                                sliding=mu * float(H.normal_force[-1]),
-                               stiffness=2 * self.materials.G_star
-                               * float(H.contact_radius[-1]))
+                               stiffness=float(tg.stiffness(float(H.contact_radius[-1]),
+                                                            self.materials.G_star)))
 
     def _spring_state(self, spec, st, mu) -> TangentialState:
         """A constant normal load (the scene's depth or force) and a monotonic or oscillating
         tangential load, through the springs at the state's depth."""
+        from hertzmdr.numeric import tangential as tg
+
         d = self.last(st)
         a = self.a_at(d)
         F_N = float(np.max(st.force))
-        base = dict(sliding=mu * F_N, stiffness=2 * self.materials.G_star * a,
+        base = dict(sliding=mu * F_N, stiffness=float(tg.stiffness(a, self.materials.G_star)),
                     rel=float(st.rel_error))
         tl = spec.load.tangential
         if tl is None:
@@ -252,11 +256,13 @@ class TangentialEffects:
         return Value(ts.sliding, "Coulomb: mu F", ts.rel)
 
     def effect_tangential_stiffness(self, ts: TangentialState) -> Value:
+        from hertzmdr.numeric import tangential as tg
+
         sp = ts.springs
         if sp is not None and sp.history:
             H = sp.run
-            return Value(2 * self.materials.G_star * H.contact_radius, "2 G* a (all springs "
-                         f"stick) of every state, a from {SPRINGS}",
+            return Value(tg.stiffness(H.contact_radius, self.materials.G_star),
+                         f"2 G* a (all springs stick) of every state, a from {SPRINGS}",
                          _rel(H.contact_radius_error, H.contact_radius))
         return Value(ts.stiffness, "2 G* a (all springs stick)", ts.rel)
 
