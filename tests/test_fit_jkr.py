@@ -338,3 +338,8 @@ def test_cli_adhesion_errors(tmp_path, capsys):
     assert main(["fit", str(flat), "--scene", str(EXAMPLE_SCENE), "--adhesion"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "no contact in the curve" in err[0], err
+    # a force map with --adhesion: refused in one line (the adhesive fit takes one curve)
+    assert main(["fit", str(EXAMPLES / "fit_force_map.csv"), "--scene", str(EXAMPLE_SCENE),
+                 "--adhesion"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--adhesion" in err[0] and "one curve" in err[0], err
