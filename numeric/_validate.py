@@ -187,8 +187,6 @@ def representable(func):
     def wrapper(*args, **kwargs):
         if fast is not None and not kwargs and len(args) == fast.arity:
             value = fast(*args)
-            if value is None:
-                value = fast.blocked(*args)
             if value is not None:
                 return value
         try:
@@ -231,8 +229,6 @@ def scalar_path(func):
     def wrapper(*args, **kwargs):
         if not kwargs and len(args) == fast.arity:
             value = fast(*args)
-            if value is None:
-                value = fast.blocked(*args)
             if value is not None:
                 return value
         return func(*args, **kwargs)
@@ -265,16 +261,15 @@ def _scalar_check(validator, extra: list, keywords: dict) -> str | None:
 
 
 def _argument_plan(node, func, params: list[str]):
-    """(index of the parameter or None, constant, check, validate) for one argument of the
-    generated call, or None when it is anything but a parameter, a constant or a checked
-    parameter; ``validate(value)`` is the check itself (the array path's), None unchecked."""
+    """(index of the parameter or None, constant, check) for one argument of the generated
+    call, or None when it is anything but a parameter, a constant or a checked parameter."""
     import ast
 
     env = func.__globals__
     if isinstance(node, ast.Name) and node.id in params:
-        return params.index(node.id), None, None, None
+        return params.index(node.id), None, None
     if isinstance(node, ast.Constant) and type(node.value) in (int, float):
-        return None, float(node.value), None, None
+        return None, float(node.value), None
     if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)):
         return None
     target = env.get(node.func.id)
@@ -282,8 +277,7 @@ def _argument_plan(node, func, params: list[str]):
         if (len(node.args) < 2 or not isinstance(node.args[1], ast.Name)
                 or node.args[1].id not in params):
             return None
-        try:  # the name and the bounds are constants (0.0, np.pi / 2): evaluated once, here
-            name = eval(compile(ast.Expression(node.args[0]), "<name>", "eval"), env)  # noqa: S307
+        try:  # the bounds are constants (0.0, np.pi / 2): evaluated once, here
             extra = [eval(compile(ast.Expression(a), "<bound>", "eval"), env)  # noqa: S307
                      for a in node.args[2:]]
             keywords = {k.arg: eval(compile(ast.Expression(k.value), "<bound>", "eval"), env)  # noqa: S307
@@ -291,18 +285,14 @@ def _argument_plan(node, func, params: list[str]):
         except Exception:  # noqa: BLE001 -- not a constant: no scalar path
             return None
         check = _scalar_check(target, extra, keywords)
-
-        def validate(v, _f=target, _n=name, _e=tuple(extra), _k=keywords):
-            return _f(_n, v, *_e, **_k)
-        return None if check is None else (params.index(node.args[1].id), None, check,
-                                           validate)
+        return None if check is None else (params.index(node.args[1].id), None, check)
     # a module's one-line helper around a check (cone._theta): its body, with its parameter
     inner = _return_expression(target) if callable(target) else None
     if (inner is not None and len(node.args) == 1 and isinstance(node.args[0], ast.Name)
             and node.args[0].id in params and len(inner[1]) == 1):
         plan = _argument_plan(inner[0], target, inner[1])
         if plan is not None and plan[0] == 0:
-            return params.index(node.args[0].id), None, plan[2], target
+            return params.index(node.args[0].id), None, plan[2]
     return None
 
 
@@ -352,8 +342,7 @@ def _scalar_path(func):
         return None
     module = env.get(call.func.value.id)
     # the relation's math-module form (``_math_<name>``, printed beside it by the generator)
-    call_name = call.func.attr
-    generated = getattr(module, f"_math_{call_name}", None)
+    generated = getattr(module, f"_math_{call.func.attr}", None)
     if generated is None or getattr(module, "__name__", "").rsplit(".", 1)[-1] != "_generated":
         return None
     plan = [_argument_plan(a, func, params) for a in call.args]
@@ -363,8 +352,8 @@ def _scalar_path(func):
     # over checks costs more than the whole expression
     names = [f"a{k}" for k in range(len(params))]
     conds = [f"type({v}) is float" for v in names]
-    conds += [check.format(v=names[i]) for i, _, check, _ in plan if check is not None]
-    call = ", ".join(repr(c) if i is None else names[i] for i, c, _, _ in plan)
+    conds += [check.format(v=names[i]) for i, _, check in plan if check is not None]
+    call = ", ".join(repr(c) if i is None else names[i] for i, c, _ in plan)
     src = (f"def fast({', '.join(names)}):\n"
            f"    if {' and '.join(conds)}:\n"
            "        try:\n"
@@ -378,53 +367,4 @@ def _scalar_path(func):
     exec(compile(src, f"<scalar path of {func.__qualname__}>", "exec"), scope)  # noqa: S102
     fast = scope["fast"]
     fast.arity = len(params)
-    fast.blocked = _blocked_path(getattr(module, call_name), plan, len(params))
     return fast
-
-
-#: elements of the one array argument evaluated at once by the blocked array path: the
-#: block, its check and the generated function's result stay in the cache (L2: 1 MB here)
-_BLOCK = 1 << 16
-
-
-def _blocked_path(generated, plan, arity):
-    """The array path of a plan-able closed form for calls with one float64 array (at least
-    two blocks) and Python floats: the floats checked once, then block by block the array's
-    check, the generated function and the finiteness of its result, each while the block is
-    in the cache (issue 18: the unblocked path reads the 8 MB array and its result once more
-    from memory for the checks). None for any other call, and wherever a check fails, the
-    result is not finite or an intermediate overflows: the caller's full path then words
-    the error (its index is the whole array's) or the OverflowError."""
-
-    def blocked(*args):
-        big = [i for i, v in enumerate(args) if type(v) is not float]
-        if len(big) != 1:
-            return None
-        j = big[0]
-        arr = args[j]
-        if (type(arr) is not np.ndarray or arr.dtype != np.float64 or arr.size < 2 * _BLOCK
-                or not arr.flags.c_contiguous):
-            return None
-        try:
-            for i, _, _, validate in plan:  # the floats, once
-                if i is not None and i != j and validate is not None:
-                    validate(args[i])
-            flat = arr.reshape(-1)
-            out = np.empty(flat.size)
-            checks = [validate for i, _, _, validate in plan if i == j and validate]
-            with np.errstate(over="raise"):
-                for start in range(0, flat.size, _BLOCK):
-                    blk = flat[start:start + _BLOCK]
-                    for validate in checks:
-                        validate(blk)
-                    value = generated(*[c if i is None else (blk if i == j else args[i])
-                                        for i, c, _, _ in plan])
-                    if np.shape(value) != blk.shape or not math.isfinite(value.sum()):
-                        return None
-                    out[start:start + _BLOCK] = value
-        except (ArithmeticError, ValueError):
-            return None
-        return out.reshape(arr.shape)
-
-    blocked.arity = arity
-    return blocked
