@@ -345,10 +345,9 @@ def test_outside_forms_by_mpmath():
         assert abs(g / f - 1) < tol, (v, g, f)
 
 
-def test_blocked_array_path_same_values_and_errors():
-    """hertz.force on 10^6 depths takes the blocked array path (numeric/_validate.py, issue
-    18): the same bits as the unblocked path, and the errors of the whole array, the index
-    counted from its start, whichever block holds the bad element."""
+def test_force_on_a_large_array_same_values_and_errors():
+    """hertz.force on 10^6 depths (the array path of issue 18's timing): the same bits as the
+    undecorated function, and each error names the index in the whole array."""
     E, R = 1e9, 1e-5
     d = np.linspace(1e-9, 1e-6, 10**6)
     assert np.array_equal(hertz.force(d, R, E), hertz.force.__wrapped__(d, R, E))
