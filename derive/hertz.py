@@ -62,6 +62,86 @@ def displacement_outside_stable() -> sp.Expr:
     return (2 * d / sp.pi * (sp.asin(t) - t / 3 * h)).subs(a, s["a"])
 
 
+#: the far form's Taylor series in z = a^2/r^2 (issue 18): its number of terms and the largest
+#: z where it is used; the elementary form (displacement_outside_elementary) takes z above it.
+#: The choice, from the two error models (tests/test_hertz.py::test_outside_forms_by_mpmath
+#: measures both): the elementary form cancels ~0.65 eps/z (measured over 3000 random z), 2.6
+#: eps at z = 1/4; the series' truncation is below 0.06 eps there (series_tail_bound) and its
+#: 22 positive terms round to ~1 eps. A switch at 1/2 would need 39 terms for 1.3 eps, at 1/8
+#: 13 terms for 5.2 eps: 1/4 keeps the form's error at the level of the rounding of a/r
+SERIES_TERMS = 22
+SERIES_SWITCH = sp.Rational(1, 4)
+
+_zs = sp.Symbol("z_s", positive=True)  # a^2/r^2, only inside this module
+_ts = sp.Symbol("t_s", positive=True)  # a/r
+
+
+@cache
+def displacement_series_coefficients(n: int = SERIES_TERMS) -> tuple[sp.Rational, ...]:
+    """g_0 .. g_{n-1} of asin t - (t/3) 2F1(1/2, 3/2; 5/2; t^2) = t sum g_k t^(2k), the bracket
+    of the stable far form: asin's from SymPy's series, the 2F1's from its definition
+    (1/2)_k (3/2)_k/((5/2)_k k!). They equal
+    (1/2)_k/k! 2/((2k + 1)(2k + 3)) (asin's coefficient (1/2)_k/(k! (2k + 1)) minus the 2F1's
+    (1/2)_k/(k! (2k + 3))): positive, and each ratio g_(k+1)/g_k = (2k + 1)^2/(2 (k + 1)
+    (2k + 5)) < 1, which bounds the tail (:func:`series_tail_bound`)."""
+    half = sp.Rational(1, 2)
+    asin = sp.Poly(sp.series(sp.asin(_ts), _ts, 0, 2 * n + 1).removeO(), _ts)
+    k = sp.Symbol("k", integer=True, nonnegative=True)
+    # the 2F1's own series: its k-th coefficient in t^2 (hyper's definition, SymPy's rf)
+    term = sp.rf(half, k) * sp.rf(3 * half, k) / (sp.rf(5 * half, k) * sp.factorial(k))
+    coeffs = tuple(sp.Rational(asin.coeff_monomial(_ts ** (2 * j + 1)))
+                   - term.subs(k, j) / 3 for j in range(n))
+    for j, c in enumerate(coeffs):  # the closed form the tail bound rests on
+        assert c == sp.rf(half, j) / sp.factorial(j) * 2 / ((2 * j + 1) * (2 * j + 3)), j
+    return coeffs
+
+
+def series_tail_bound(z_max=SERIES_SWITCH, n: int = SERIES_TERMS) -> sp.Rational:
+    """A bound on the series' truncation error relative to its value, for 0 < z <= z_max:
+    the omitted terms sum to at most g_n z^n/(1 - z) (the coefficients decrease), and the
+    value is at least g_0 = 2/3."""
+    g = displacement_series_coefficients(n + 1)
+    return g[n] * z_max**n / (1 - z_max) / g[0]
+
+
+def displacement_outside_series() -> sp.Expr:
+    """u_z(r > a) as its Taylor series in z = a^2/r^2 = R d/r^2 to SERIES_TERMS terms, in
+    Horner's form: (2 d/pi) t sum g_k z^k, t = a/r. For z <= SERIES_SWITCH its relative
+    truncation error is below series_tail_bound() (4.6e-18)."""
+    g = displacement_series_coefficients()
+    poly = g[-1]
+    for c in reversed(g[:-1]):
+        poly = c + _zs * poly
+    s = solution()
+    t = s["a"] / r
+    return (2 * d / sp.pi * t * poly).subs(_zs, R * d / r**2)
+
+
+def displacement_outside_elementary() -> tuple[sp.Expr, sp.Expr]:
+    """(derived, printed) u_z(r > a) with the 2F1 of the stable far form in elementary
+    functions: hyperexpand gives 2F1(1/2, 3/2; 5/2; t^2) = 3 (asin t - t sqrt(1 - t^2))/(2 t^3),
+    so the bracket is asin t - (asin t - t sqrt(1 - t^2))/(2 t^2), printed with z = R d/r^2
+    for t^2 (R d < r^2 there, so 1 - z >= 0 in floats too). It cancels: ~0.65 eps/z relative
+    (the terms are ~t/(2z), the result ~2t/3), so it is used for z > SERIES_SWITCH only."""
+    s = solution()
+    h = sp.hyperexpand(sp.hyper([sp.Rational(1, 2), sp.Rational(3, 2)], [sp.Rational(5, 2)],
+                                _ts**2))
+    derived = (2 * d / sp.pi * (sp.asin(_ts) - _ts / 3 * h)).subs(_ts, s["a"] / r)
+    t, z = s["a"] / r, R * d / r**2
+    arcsin = sp.asin(t)
+    printed = 2 * d / sp.pi * (arcsin - (arcsin - t * sp.sqrt(1 - z)) / (2 * z))
+    return derived, printed
+
+
+#: the two forms of the outside displacement each printed as one function with its common
+#: subexpressions computed once (codegen.render_fused): numeric/hertz.py evaluates them on
+#: blocks of radii (issue 18)
+FUSED = {
+    "hertz_displacement_far": ("hertz_displacement_outside_series",),
+    "hertz_displacement_near": ("hertz_displacement_outside_elementary",),
+}
+
+
 def relations() -> list[Relation]:
     s = solution()
     at_depth = {a: s["a"], p0: s["p0"]}
@@ -69,6 +149,7 @@ def relations() -> list[Relation]:
     u_out = sp.simplify(pressures.displacement_outside(sp.Rational(1, 2)).subs(at_depth))
     pressure = s["p0"] * sp.sqrt(sp.Max(0, 1 - r**2 / s["a"] ** 2))  # (5.15), 0 outside
     third = sp.Rational(1, 3)
+    _elementary = displacement_outside_elementary()
     return [
         Relation("hertz_contact_radius", "(5.21)", s["a"], (R, d),
                  "contact radius a [m] of a Hertz contact at depth d",
@@ -120,6 +201,25 @@ def relations() -> list[Relation]:
                  stable_why="the textbook form cancels terms of size r/a to leave one of "
                  "size a/r; asin t - t sqrt(1 - t^2) is written as (2 t^3/3) 2F1(1/2, 3/2; "
                  "5/2; t^2) with t = a/r",
+                 domain={r: s["a"] / unit_interval()}),
+        Relation("hertz_displacement_outside_series", "Fig. 5.2, Problem 7(b), r >= 2a",
+                 displacement_outside_series(), (R, d, r),
+                 f"surface displacement u_z(r) [m] outside a Hertz contact, its Taylor series in "
+                 f"z = a^2/r^2 to {SERIES_TERMS} terms: for r >= 2a (z <= "
+                 f"{SERIES_SWITCH}) the truncation is below "
+                 f"{float(series_tail_bound()):.1e} relative",
+                 "the series of the stable far form (2F1(1/2, 3/2; 5/2; z) and asin)",
+                 f"{TEST}::test_outside_forms_by_mpmath",
+                 domain={r: s["a"] / unit_interval()}),
+        Relation("hertz_displacement_outside_elementary", "Fig. 5.2, Problem 7(b), a < r < 2a",
+                 _elementary[0], (R, d, r),
+                 "surface displacement u_z(r) [m] outside a Hertz contact with the 2F1 in "
+                 "elementary functions; it cancels ~0.65 eps a^2/r^2 relative: for a < r < 2a",
+                 "the stable far form with 2F1(1/2, 3/2; 5/2; t^2) hyperexpanded",
+                 f"{TEST}::test_outside_forms_by_mpmath",
+                 stable=_elementary[1],
+                 stable_why="asin t - (asin t - t sqrt(1 - z))/(2 z), t = a/r, z = R d/r^2: "
+                 "the 2F1 in elementary functions as one cancellation of ~0.65 eps/z",
                  domain={r: s["a"] / unit_interval()}),
         Relation("hertz_mean_pressure", "(5.17)", s["pm"], (E_star, R, d),
                  "mean pressure F/(pi a^2) [Pa] of a Hertz contact at depth d",

@@ -201,6 +201,8 @@ __all__ = [
     'hertz_depth_from_force',
     'hertz_displacement_inside',
     'hertz_displacement_outside',
+    'hertz_displacement_outside_elementary',
+    'hertz_displacement_outside_series',
     'hertz_energy',
     'hertz_force',
     'hertz_max_pressure',
@@ -560,6 +562,8 @@ RELATIONS = (
     ('hertz_depth_from_force', '(5.23), inverted', 'hertz', '6**(2/3)*F**(2/3)/(4*E_star**(2/3)*R**(1/3))', ''),
     ('hertz_displacement_inside', '(5.18)', 'hertz', 'd - r**2/(2*R)', ''),
     ('hertz_displacement_outside', 'Fig. 5.2, Problem 7(b)', 'hertz', '(sqrt(R)*sqrt(d)*sqrt(-R*d + r**2) + 2*R*d*asin(sqrt(R)*sqrt(d)/r) - r**2*asin(sqrt(R)*sqrt(d)/r))/(pi*R)', ''),
+    ('hertz_displacement_outside_elementary', 'Fig. 5.2, Problem 7(b), a < r < 2a', 'hertz', '2*d*(-sqrt(R)*sqrt(d)*(r**2*(3*R*d/(2*r**2) - 3/2)/(R*d*sqrt(-R*d/r**2 + 1)) + 3*r**3*asin(sqrt(R)*sqrt(d)/r)/(2*R**(3/2)*d**(3/2)))/(3*r) + asin(sqrt(R)*sqrt(d)/r))/pi', ''),
+    ('hertz_displacement_outside_series', 'Fig. 5.2, Problem 7(b), r >= 2a', 'hertz', '2*sqrt(R)*d**(3/2)*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(4485482287*R*d/(35459249995776*r**2) + 34461632205/242304874971136)/r**2 + 1472719325/9156870275072)/r**2 + 756261275/4131758538752)/r**2 + 116680311/556198264832)/r**2 + 20036013/82678120448)/r**2 + 3231615/11442061312)/r**2 + 5014575/15082717184)/r**2 + 1300075/3284140032)/r**2 + 676039/1415577600)/r**2 + 88179/150732800)/r**2 + 46189/63307776)/r**2 + 12155/13074432)/r**2 + 6435/5292032)/r**2 + 143/87040)/r**2 + 77/33280)/r**2 + 63/18304)/r**2 + 35/6336)/r**2 + 5/504)/r**2 + 3/140)/r**2 + 1/15)/r**2 + 2/3)/(pi*r)', ''),
     ('hertz_energy', '(5.25)', 'hertz', '8*E_star*sqrt(R)*d**(5/2)/15', ''),
     ('hertz_force', '(5.23)', 'hertz', '4*E_star*sqrt(R)*d**(3/2)/3', ''),
     ('hertz_max_pressure', '(5.22)', 'hertz', '2*E_star*sqrt(d)/(pi*sqrt(R))', ''),
@@ -5913,6 +5917,61 @@ def hertz_displacement_outside(R, d, r):
     import scipy.special
 
     return 2*d*(-1/3*numpy.sqrt(R)*numpy.sqrt(d)*scipy.special.hyp2f1(1/2, 3/2, 5/2, R*d/r**2)/r + numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/numpy.pi
+
+
+def hertz_displacement_outside_elementary(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact with the 2F1 in elementary functions; it cancels ~0.65 eps a^2/r^2 relative: for a < r < 2a.
+
+    Chapter: Fig. 5.2, Problem 7(b), a < r < 2a. Derived from: the stable far form with
+    2F1(1/2, 3/2; 5/2; t^2) hyperexpanded.
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_hertz.py::test_outside_forms_by_mpmath``.
+
+    Printed in a stable form: asin t - (asin t - t sqrt(1 - z))/(2 z), t = a/r, z = R d/r^2:
+    the 2F1 in elementary functions as one cancellation of ~0.65 eps/z.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(R) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_displacement_outside_elementary(R, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*d*(numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - 1/2*r**2*(-numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d/r**2 + 1)/r + numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(R*d))/numpy.pi
+
+
+def hertz_displacement_outside_series(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact, its Taylor series in z = a^2/r^2 to 22 terms: for r >= 2a (z <= 1/4) the truncation is below 1.3e-17 relative.
+
+    Chapter: Fig. 5.2, Problem 7(b), r >= 2a. Derived from: the series of the stable far
+    form (2F1(1/2, 3/2; 5/2; z) and asin).
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_hertz.py::test_outside_forms_by_mpmath``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(R) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_hertz_displacement_outside_series(R, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*numpy.sqrt(R)*d**(3/2)*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*((4485482287/35459249995776)*R*d/r**2 + 34461632205/242304874971136)/r**2 + 1472719325/9156870275072)/r**2 + 756261275/4131758538752)/r**2 + 116680311/556198264832)/r**2 + 20036013/82678120448)/r**2 + 3231615/11442061312)/r**2 + 5014575/15082717184)/r**2 + 1300075/3284140032)/r**2 + 676039/1415577600)/r**2 + 88179/150732800)/r**2 + 46189/63307776)/r**2 + 12155/13074432)/r**2 + 6435/5292032)/r**2 + 143/87040)/r**2 + 77/33280)/r**2 + 63/18304)/r**2 + 35/6336)/r**2 + 5/504)/r**2 + 3/140)/r**2 + 1/15)/r**2 + 2/3)/(numpy.pi*r)
 
 
 def hertz_energy(E_star, R, d):
@@ -11301,6 +11360,32 @@ def textbook_hertz_displacement_outside(R, d, r):
     return (numpy.sqrt(R)*numpy.sqrt(d)*numpy.sqrt(-R*d + r**2) + 2*R*d*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r) - r**2*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/(numpy.pi*R)
 
 
+def textbook_hertz_displacement_outside_elementary(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact with the 2F1 in elementary functions; it cancels ~0.65 eps a^2/r^2 relative: for a < r < 2a, in the derived (textbook) form; use hertz_displacement_outside_elementary: asin t - (asin t - t sqrt(1 - z))/(2 z), t = a/r, z = R d/r^2: the 2F1 in elementary functions as one cancellation of ~0.65 eps/z.
+
+    Chapter: Fig. 5.2, Problem 7(b), a < r < 2a. Derived from: the stable far form with
+    2F1(1/2, 3/2; 5/2; t^2) hyperexpanded.
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_hertz.py::test_outside_forms_by_mpmath``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : float or ndarray
+        indentation depth [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(R) is float and type(d) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_hertz_displacement_outside_elementary(R, d, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*d*(-1/3*numpy.sqrt(R)*numpy.sqrt(d)*(r**2*((3/2)*R*d/r**2 - 3/2)/(R*d*numpy.sqrt(-R*d/r**2 + 1)) + (3/2)*r**3*numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r)/(R**(3/2)*d**(3/2)))/r + numpy.arcsin(numpy.sqrt(R)*numpy.sqrt(d)/r))/numpy.pi
+
+
 def textbook_jkr_pressure(E_star, R, a, dgamma, r):
     """Contact pressure p(r) [Pa] of a paraboloid in JKR contact, r < a, in the derived (textbook) form; use jkr_pressure: Hertz's part and the edge term apart, each with (a - r)(a + r) for a^2 - r^2, which loses the digits of a - r next to the edge.
 
@@ -12390,6 +12475,26 @@ def textbook_worn_force(E_star, R, b, d):
     return (1/3)*E_star*numpy.sqrt(-2*b**2 + 2*numpy.sqrt(4*R**2*d**2 + b**4))*(2*b**2 + numpy.sqrt(4*R**2*d**2 + b**4))/R
 
 
+def hertz_displacement_far(R, d, r):
+    """(``hertz_displacement_outside_series``) at once, their common subexpressions
+    computed once (SymPy's cse): each as the relation's own function gives it, to
+    rounding. Arguments as there.
+    """
+    _c0 = R*d/(r*r)
+    return 2*numpy.sqrt(R)*d**(3/2)*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*(_c0*((4485482287/35459249995776)*_c0 + 34461632205/242304874971136) + 1472719325/9156870275072) + 756261275/4131758538752) + 116680311/556198264832) + 20036013/82678120448) + 3231615/11442061312) + 5014575/15082717184) + 1300075/3284140032) + 676039/1415577600) + 88179/150732800) + 46189/63307776) + 12155/13074432) + 6435/5292032) + 143/87040) + 77/33280) + 63/18304) + 35/6336) + 5/504) + 3/140) + 1/15) + 2/3)/(numpy.pi*r)
+
+
+def hertz_displacement_near(R, d, r):
+    """(``hertz_displacement_outside_elementary``) at once, their common subexpressions
+    computed once (SymPy's cse): each as the relation's own function gives it, to
+    rounding. Arguments as there.
+    """
+    _c0 = numpy.sqrt(R)*numpy.sqrt(d)/r
+    _c1 = numpy.arcsin(_c0)
+    _c2 = (r*r)
+    return 2*d*(_c1 - 1/2*_c2*(-_c0*numpy.sqrt(-R*d/_c2 + 1) + _c1)/(R*d))/numpy.pi
+
+
 def stress_hertz_field(chi, eta, nu, p0, xi):
     """(``stress_hertz_sigma_rr``, ``stress_hertz_sigma_tt``, ``stress_hertz_sigma_zz``,
     ``stress_hertz_tau_rz``) at once, their common subexpressions computed once (SymPy's
@@ -13331,6 +13436,21 @@ def _math_hertz_displacement_inside(R, d, r):
 def _math_textbook_hertz_displacement_outside(R, d, r):
     """``textbook_hertz_displacement_outside`` for Python floats (the math module); raises where it does."""
     return (math.sqrt(R)*math.sqrt(d)*math.sqrt(-R*d + (r*r)) + 2*R*d*math.asin(math.sqrt(R)*math.sqrt(d)/r) - (r*r)*math.asin(math.sqrt(R)*math.sqrt(d)/r))/(math.pi*R)
+
+
+def _math_hertz_displacement_outside_elementary(R, d, r):
+    """``hertz_displacement_outside_elementary`` for Python floats (the math module); raises where it does."""
+    return 2*d*(math.asin(math.sqrt(R)*math.sqrt(d)/r) - 1/2*(r*r)*(-math.sqrt(R)*math.sqrt(d)*math.sqrt(-R*d/(r*r) + 1)/r + math.asin(math.sqrt(R)*math.sqrt(d)/r))/(R*d))/math.pi
+
+
+def _math_textbook_hertz_displacement_outside_elementary(R, d, r):
+    """``textbook_hertz_displacement_outside_elementary`` for Python floats (the math module); raises where it does."""
+    return 2*d*(-1/3*math.sqrt(R)*math.sqrt(d)*((r*r)*((3/2)*R*d/(r*r) - 3/2)/(R*d*math.sqrt(-R*d/(r*r) + 1)) + (3/2)*r**3*math.asin(math.sqrt(R)*math.sqrt(d)/r)/(math.pow(R, 3/2)*math.pow(d, 3/2)))/r + math.asin(math.sqrt(R)*math.sqrt(d)/r))/math.pi
+
+
+def _math_hertz_displacement_outside_series(R, d, r):
+    """``hertz_displacement_outside_series`` for Python floats (the math module); raises where it does."""
+    return 2*math.sqrt(R)*math.pow(d, 3/2)*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*((4485482287/35459249995776)*R*d/(r*r) + 34461632205/242304874971136)/(r*r) + 1472719325/9156870275072)/(r*r) + 756261275/4131758538752)/(r*r) + 116680311/556198264832)/(r*r) + 20036013/82678120448)/(r*r) + 3231615/11442061312)/(r*r) + 5014575/15082717184)/(r*r) + 1300075/3284140032)/(r*r) + 676039/1415577600)/(r*r) + 88179/150732800)/(r*r) + 46189/63307776)/(r*r) + 12155/13074432)/(r*r) + 6435/5292032)/(r*r) + 143/87040)/(r*r) + 77/33280)/(r*r) + 63/18304)/(r*r) + 35/6336)/(r*r) + 5/504)/(r*r) + 3/140)/(r*r) + 1/15)/(r*r) + 2/3)/(math.pi*r)
 
 
 def _math_hertz_energy(E_star, R, d):

@@ -198,6 +198,8 @@ __all__ = [
     'hertz_depth_from_force',
     'hertz_displacement_inside',
     'hertz_displacement_outside',
+    'hertz_displacement_outside_elementary',
+    'hertz_displacement_outside_series',
     'hertz_energy',
     'hertz_force',
     'hertz_max_pressure',
@@ -4625,6 +4627,51 @@ def hertz_displacement_outside(R, d, r):
     return 2*d*(-mpmath.mpf(1)/mpmath.mpf(3)*mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), R*d/r**2)/r + mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/mpmath.pi
 
 
+def hertz_displacement_outside_elementary(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact with the 2F1 in elementary functions; it cancels ~0.65 eps a^2/r^2 relative: for a < r < 2a.
+
+    Chapter: Fig. 5.2, Problem 7(b), a < r < 2a. Derived from: the stable far form with
+    2F1(1/2, 3/2; 5/2; t^2) hyperexpanded.
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_hertz.py::test_outside_forms_by_mpmath``.
+
+    Printed in a stable form: asin t - (asin t - t sqrt(1 - z))/(2 z), t = a/r, z = R d/r^2:
+    the 2F1 in elementary functions as one cancellation of ~0.65 eps/z.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return 2*d*(mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - mpmath.mpf(1)/mpmath.mpf(2)*r**2*(-mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d/r**2 + 1)/r + mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(R*d))/mpmath.pi
+
+
+def hertz_displacement_outside_series(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact, its Taylor series in z = a^2/r^2 to 22 terms: for r >= 2a (z <= 1/4) the truncation is below 1.3e-17 relative.
+
+    Chapter: Fig. 5.2, Problem 7(b), r >= 2a. Derived from: the series of the stable far
+    form (2F1(1/2, 3/2; 5/2; z) and asin).
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_hertz.py::test_outside_forms_by_mpmath``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return 2*mpmath.sqrt(R)*d**(mpmath.mpf(3)/mpmath.mpf(2))*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*(R*d*((mpmath.mpf(4485482287)/mpmath.mpf(35459249995776))*R*d/r**2 + mpmath.mpf(34461632205)/mpmath.mpf(242304874971136))/r**2 + mpmath.mpf(1472719325)/mpmath.mpf(9156870275072))/r**2 + mpmath.mpf(756261275)/mpmath.mpf(4131758538752))/r**2 + mpmath.mpf(116680311)/mpmath.mpf(556198264832))/r**2 + mpmath.mpf(20036013)/mpmath.mpf(82678120448))/r**2 + mpmath.mpf(3231615)/mpmath.mpf(11442061312))/r**2 + mpmath.mpf(5014575)/mpmath.mpf(15082717184))/r**2 + mpmath.mpf(1300075)/mpmath.mpf(3284140032))/r**2 + mpmath.mpf(676039)/mpmath.mpf(1415577600))/r**2 + mpmath.mpf(88179)/mpmath.mpf(150732800))/r**2 + mpmath.mpf(46189)/mpmath.mpf(63307776))/r**2 + mpmath.mpf(12155)/mpmath.mpf(13074432))/r**2 + mpmath.mpf(6435)/mpmath.mpf(5292032))/r**2 + mpmath.mpf(143)/mpmath.mpf(87040))/r**2 + mpmath.mpf(77)/mpmath.mpf(33280))/r**2 + mpmath.mpf(63)/mpmath.mpf(18304))/r**2 + mpmath.mpf(35)/mpmath.mpf(6336))/r**2 + mpmath.mpf(5)/mpmath.mpf(504))/r**2 + mpmath.mpf(3)/mpmath.mpf(140))/r**2 + mpmath.mpf(1)/mpmath.mpf(15))/r**2 + mpmath.mpf(2)/mpmath.mpf(3))/(mpmath.pi*r)
+
+
 def hertz_energy(E_star, R, d):
     """Elastic energy U [J] stored in a Hertz contact at depth d.
 
@@ -9027,6 +9074,27 @@ def textbook_hertz_displacement_outside(R, d, r):
         radial coordinate on the surface [m]
     """
     return (mpmath.sqrt(R)*mpmath.sqrt(d)*mpmath.sqrt(-R*d + r**2) + 2*R*d*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r) - r**2*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/(mpmath.pi*R)
+
+
+def textbook_hertz_displacement_outside_elementary(R, d, r):
+    """Surface displacement u_z(r) [m] outside a Hertz contact with the 2F1 in elementary functions; it cancels ~0.65 eps a^2/r^2 relative: for a < r < 2a, in the derived (textbook) form; use hertz_displacement_outside_elementary: asin t - (asin t - t sqrt(1 - z))/(2 z), t = a/r, z = R d/r^2: the 2F1 in elementary functions as one cancellation of ~0.65 eps/z.
+
+    Chapter: Fig. 5.2, Problem 7(b), a < r < 2a. Derived from: the stable far form with
+    2F1(1/2, 3/2; 5/2; t^2) hyperexpanded.
+
+    Derivation: ``hertzmdr.derive.hertz``. Verified by
+    ``tests/test_hertz.py::test_outside_forms_by_mpmath``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return 2*d*(-mpmath.mpf(1)/mpmath.mpf(3)*mpmath.sqrt(R)*mpmath.sqrt(d)*(r**2*((mpmath.mpf(3)/mpmath.mpf(2))*R*d/r**2 + mpmath.mpf(-3)/mpmath.mpf(2))/(R*d*mpmath.sqrt(-R*d/r**2 + 1)) + (mpmath.mpf(3)/mpmath.mpf(2))*r**3*mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r)/(R**(mpmath.mpf(3)/mpmath.mpf(2))*d**(mpmath.mpf(3)/mpmath.mpf(2))))/r + mpmath.asin(mpmath.sqrt(R)*mpmath.sqrt(d)/r))/mpmath.pi
 
 
 def textbook_jkr_pressure(E_star, R, a, dgamma, r):

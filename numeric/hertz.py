@@ -187,6 +187,13 @@ def pressure(r, d, R, E_star):
                            0.0))  # (5.15)
 
 
+#: radii evaluated at once by :func:`surface_displacement`: a block's intermediates (the far
+#: form's ~45 temporaries of 128 kB) stay in the cache (issue 18)
+_BLOCK = 16384
+#: where r, d and R need no scaling: nothing in the forms can over- or underflow
+_LO, _HI = 2.0**-250, 2.0**250
+
+
 @representable
 def surface_displacement(r, d, R):
     """Surface displacement u_z(r) [m] inside (5.18) and outside (Fig. 5.2) the contact.
@@ -195,9 +202,12 @@ def surface_displacement(r, d, R):
     1e+06] (SI units; searched by tests/domain_search.py). Beyond float64 (|result| > 1.8e308):
     OverflowError naming the inputs.
 
-    Inside, u_z = d - r^2/(2R); outside, the displacement of the Hertz pressure, printed in a
-    form that keeps full accuracy for r >> a, where it decays like the point-load field
-    F/(pi E* r) (5.6).
+    Inside, u_z = d - r^2/(2R); outside, the displacement of the Hertz pressure, in two forms
+    of its stable far form (2 d/pi)(asin t - (t/3) 2F1(1/2, 3/2; 5/2; t^2)), t = a/r, each
+    where it keeps full accuracy: for r >= 2a its Taylor series in a^2/r^2 (22 terms,
+    truncation < 1.3e-17 relative), which decays like the point-load field F/(pi E* r) (5.6);
+    for a < r < 2a the 2F1 in elementary functions (its cancellation ~0.65 eps a^2/r^2 stays
+    below 2.6 eps there). See ``hertzmdr.derive.hertz.SERIES_SWITCH``.
 
     Parameters
     ----------
@@ -212,43 +222,64 @@ def surface_displacement(r, d, R):
     shape = np.broadcast_shapes(r.shape, d.shape, R.shape)
     r = np.broadcast_to(r, shape).ravel()
     d, R = (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in (d, R))
-    # in or out on the same rounded a = sqrt(R) sqrt(d) as the outside form's asin(a/r), so
-    # that a/r <= 1 there (r*r <= R*d disagreed with it at r = nextafter(a, 0): NaN)
-    # u is homogeneous of degree 1 in (r, d, R): lengths in units of s ~ r, an even power of
-    # 2 (exact, square roots too), so that the outside form's R d/r^2 never squares a huge r;
-    # outside only where both its asin(sqrt(R d)/r) and its 2F1(..., R d/r^2) see < 1.
-    # Speed (issue 18): where r, d and R all lie in [2^-250, 2^250] nothing can over- or
-    # underflow and s = 1 gives the same bits: only the other points are scaled; d and R stay
-    # scalars when they are
+    out = np.empty(r.shape)
+    # d and R scalars within [2^-250, 2^250]: blocks of such radii need no scaling either
+    plain = all(np.ndim(v) == 0 and _LO < v < _HI for v in (d, R))
+    for start in range(0, r.size, _BLOCK):
+        b = slice(start, start + _BLOCK)
+        _displacement_block(r[b], _take(d, b), _take(R, b), out[b], plain)
+    return result(out.reshape(shape))
+
+
+def _displacement_block(r, d, R, out, plain):
+    """u_z at the radii r of one block into out; ``plain``: d and R are scalars that need no
+    scaling. A block of such radii wholly inside, or wholly at r >= 2a, is one call."""
     a = gen.hertz_contact_radius(R, d)  # (5.21)
+    if plain:
+        lo, hi = r.min(), r.max()
+        if _LO < lo and hi < _HI:
+            if hi <= a:
+                out[...] = gen.hertz_displacement_inside(R, d, r)  # (5.18)
+                return
+            if lo >= 2 * a:  # z = a^2/r^2 <= 1/4: the series
+                out[...] = gen.hertz_displacement_far(R, d, r)  # Fig. 5.2
+                return
+    # in or out on the same rounded a = sqrt(R) sqrt(d) as the outside forms' t = a/r, so
+    # that t <= 1 there (r*r <= R*d disagreed with it at r = nextafter(a, 0): NaN); outside
+    # only where R d < r^2 too (1 - R d/r^2 >= 0 under the elementary form's root).
+    # Where r, d and R all lie in [2^-250, 2^250] nothing can over- or underflow. Where only
+    # r is larger, the forms run as they are: r^2 may overflow (r > 2^512), but then
+    # z = R d/r^2 < 2^-500 is 0 to rounding in the series, which is what inf gives, while its
+    # prefactor sqrt(R) d^(3/2)/r stays in range. Elsewhere u, homogeneous of degree 1 in
+    # (r, d, R), is evaluated in units of s ~ r, an even power of 2 (exact, square roots too)
     o = np.flatnonzero(r > a)
     ro, do, Ro = r[o], _take(d, o), _take(R, o)
-    lo, hi = 2.0**-250, 2.0**250
-    plain = (ro > lo) & (ro < hi)
-    if np.ndim(do) or not lo < do < hi:
-        plain &= (do > lo) & (do < hi)
-    if np.ndim(Ro) or not lo < Ro < hi:
-        plain &= (Ro > lo) & (Ro < hi)
+    ok = ro > _LO  # no scaling needed
+    if not plain:
+        ok &= (do > _LO) & (do < _HI) & (Ro > _LO) & (Ro < _HI)
+    huge = bool((ok & (ro >= _HI)).any())
     s = np.ones(ro.shape)
-    k = np.flatnonzero(~plain)
+    k = np.flatnonzero(~ok)
     s[k] = pow2_scale(ro[k])  # s > a/4 there: (R/s)(d/s) <= 16
     if k.size:
         rs, ds, Rs = ro / s, do / s, Ro / s
     else:
         rs, ds, Rs = ro, do, Ro
-    far = Rs * ds < rs * rs
-    out = np.empty(r.shape)
-    inside = np.ones(r.shape, dtype=bool)
-    inside[o[far]] = False
-    i = np.flatnonzero(inside)
-    out[i] = gen.hertz_displacement_inside(_take(R, i), _take(d, i), r[i])  # (5.18)
-    f = np.flatnonzero(far)
-    out[o[f]] = _times(s, f, gen.hertz_displacement_outside(_take(Rs, f), _take(ds, f), rs[f]))
-    return result(out.reshape(shape))
+    with np.errstate(over="ignore" if huge else "raise"):
+        far = Rs * ds < rs * rs
+        inside = np.ones(r.shape, dtype=bool)
+        inside[o[far]] = False
+        i = np.flatnonzero(inside)
+        out[i] = gen.hertz_displacement_inside(_take(R, i), _take(d, i), r[i])  # (5.18)
+        series = far & (rs >= 2 * gen.hertz_contact_radius(Rs, ds))  # z <= 1/4
+        for f, form in ((np.flatnonzero(series), gen.hertz_displacement_far),
+                        (np.flatnonzero(far & ~series), gen.hertz_displacement_near)):
+            if f.size:  # Fig. 5.2
+                out[o[f]] = _times(s, f, form(_take(Rs, f), _take(ds, f), rs[f]))
 
 
 def _take(v, idx):
-    """v at the flat indices idx, or v itself when it is a scalar."""
+    """v at the flat indices (or slice) idx, or v itself when it is a scalar."""
     return v if np.ndim(v) == 0 else v[idx]
 
 

@@ -266,3 +266,103 @@ def test_pressure_of_a_contact_wider_than_a_metre_and_zero_outside():
             else:
                 ref = p0 * mp.sqrt(1 - (mp.mpf(ri) / am) ** 2)
                 assert abs(pi / ref - 1) < TOL, (ri / a, pi, ref)
+
+
+def _far_form_mp(R, d, r):
+    """u_z(r > a) at 40 digits from the stable far form's own functions, mpmath's hyp2f1 and
+    asin, with a = sqrt(R d) exact: neither the series nor the elementary form enters it."""
+    R, d, r = mp.mpf(float(R)), mp.mpf(float(d)), mp.mpf(float(r))
+    t = mp.sqrt(R * d) / r
+    return 2 * d / mp.pi * (mp.asin(t) - t / 3 * mp.hyp2f1(0.5, 1.5, 2.5, t * t))
+
+
+def test_outside_forms_by_mpmath():
+    """The two printed forms of the outside displacement (issue 18) against the 2F1 far form at
+    40 digits, each over its range of z = a^2/r^2 (r log-spaced from a to 1e8 a, and at 2a,
+    the switch, from both sides), at three contacts; the series' stated truncation bound
+    against its actual truncation; the public function at the extremes."""
+    from hertzmdr.derive.hertz import SERIES_SWITCH, SERIES_TERMS, series_tail_bound
+
+    eps = np.finfo(float).eps
+    bound = float(series_tail_bound())
+    assert float(SERIES_SWITCH) == 0.25 and bound < eps / 16
+    with mp.workdps(40):
+        # the bound is a bound, and a close one: the 22-term sum at the switch (exact
+        # rationals) falls short of the bracket by between bound/4 and bound
+        from hertzmdr.derive.hertz import displacement_series_coefficients as coeffs
+        z = mp.mpf(1) / 4
+        t = mp.sqrt(z)
+        exact = mp.asin(t) / t - mp.hyp2f1(0.5, 1.5, 2.5, z) / 3
+        short = 1 - mp.fsum(mp.mpf(c.p) / c.q * z**k for k, c in enumerate(coeffs())) / exact
+        assert bound / 4 < short <= bound, (short, bound)
+        assert len(coeffs()) == SERIES_TERMS
+    for R, d in ((0.02, 1e-6), (3e-6, 1e-9), (7.0, 2e-3)):
+        a = float(np.sqrt(R * d))
+        rho = np.concatenate([1 + np.geomspace(1e-9, 1, 40), np.geomspace(2, 1e8, 60),
+                              2 * (1 + np.arange(-4, 5) * eps)])
+        r = a * rho
+        z = R * d / (r * r)
+        series, near = z <= 0.25, (z > 0.25) & (z < 1)
+        assert series.sum() > 60 and near.sum() > 40
+        got = {"series": gen.hertz_displacement_outside_series(R, d, r[series]),
+               "far": gen.hertz_displacement_far(R, d, r[series]),
+               "elementary": gen.hertz_displacement_outside_elementary(R, d, r[near]),
+               "near": gen.hertz_displacement_near(R, d, r[near])}
+        with mp.workdps(40):
+            ref_s = [_far_form_mp(R, d, v) for v in r[series]]
+            ref_n = [_far_form_mp(R, d, v) for v in r[near]]
+        for name in ("series", "far"):
+            err = np.array([float(abs(g / f - 1)) for g, f in zip(got[name], ref_s,
+                                                                   strict=True)])
+            # truncation < bound; a/r, z and the prefactor's sqrt, pow, products: ~6
+            # roundings; Horner's 21 steps with positive terms and z <= 1/4 each damp the
+            # rounding before by z: ~2 more. 10 eps covers them with room
+            assert err.max() < 10 * eps + bound, (name, err.max())
+        zn = z[near]
+        for name in ("elementary", "near"):
+            err = np.array([float(abs(g / f - 1)) for g, f in zip(got[name], ref_n,
+                                                                   strict=True)])
+            # the cancellation, measured at 0.65 eps/z over 3000 random z (< 2.6 eps at the
+            # switch), 1 eps/z allowed; the same ~6 roundings as above; and next to the rim
+            # asin(t) amplifies the rounding of t = a/r by t/sqrt(1 - t^2) (the test above:
+            # 2e-15/sqrt(rho - 1))
+            tol = (1 / zn + 6) * eps + 3 * eps / np.sqrt(1 - zn)
+            assert (err < tol).all(), (name, err.max(), zn[np.argmax(err / tol)])
+    # the public function at the extremes: next to the rim, at the switch, r = 1e300 m
+    R, d = 0.5, 1e-6
+    a = float(np.sqrt(R * d))
+    r = np.array([a * (1 + 1e-12), 2 * a * (1 - eps), 2 * a, 1e8 * a, 1e150, 1e300])
+    # the last with d = 1 mm, R = 1 km, where u ~ 1e-293 m stays a normal float
+    R, d = np.array([R] * 5 + [1e3]), np.array([d] * 5 + [1e-3])
+    got = hertz.surface_displacement(r, d, R)
+    with mp.workdps(40):
+        ref = [_far_form_mp(*p) for p in zip(R, d, r, strict=True)]
+    for v, g, f, a in zip(r, got, ref, np.sqrt(R * d), strict=True):
+        # as above (1/z + 6 roundings and the rim's 3/sqrt(1 - z), or the series' 10 eps);
+        # beyond r = 2^512 m the series' z = R d/r^2 is 0 (r^2 = inf): < 1e-300 relative
+        zv = min(a / v, 1.0) ** 2
+        tol = 10 * eps if zv <= 0.25 else (1 / zv + 6) * eps + 3 * eps / np.sqrt(1 - zv)
+        assert abs(g / f - 1) < tol, (v, g, f)
+
+
+def test_force_on_a_large_array_same_values_and_errors():
+    """hertz.force on 10^6 depths (the array path of issue 18's timing): the same bits as the
+    undecorated function, and each error names the index in the whole array."""
+    E, R = 1e9, 1e-5
+    d = np.linspace(1e-9, 1e-6, 10**6)
+    assert np.array_equal(hertz.force(d, R, E), hertz.force.__wrapped__(d, R, E))
+    assert np.array_equal(hertz.force(d.reshape(1000, 1000), R, E).ravel(),
+                          hertz.force(d, R, E))
+    for k, bad, message in ((700001, -1.0, r"d\[700001\] = -1.0 is out of range; valid: "
+                                          r"0 <= d < inf"),
+                            (65536, np.nan, r"d\[65536\] = nan")):
+        e = d.copy()
+        e[k] = bad
+        with pytest.raises(ValueError, match=message):
+            hertz.force(e, R, E)
+    with pytest.raises(ValueError, match=r"R = -1.0 is out of range"):
+        hertz.force(d, -1.0, E)
+    e = d.copy()
+    e[300007] = 1e300  # F ~ 1e450: beyond float64
+    with pytest.raises(OverflowError, match=r"force\[300007\]"):
+        hertz.force(e, R, E)
