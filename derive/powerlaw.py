@@ -192,6 +192,87 @@ def displacement_outside() -> sp.Expr:
     return sp.collect(sp.factor_terms(sp.expand(sp.cancel(u))), sp.asin(a / r))
 
 
+#: terms of the centre series of (5.59) (r/a)^0 ... (r/a)^(2 CENTRE_TERMS - 2) printed; the
+#: first term left out is below 1e-20 of the centre value for r < a/10
+CENTRE_TERMS = 10
+#: terms of the far-field series of (5.60) in (a/r)^2 printed (a/r < 1e-3: the first term
+#: left out is below 1e-24 of the result)
+FAR_TERMS = 4
+
+
+@cache
+def pressure_centre() -> sp.Expr:
+    """p(r) inside near the centre, r << a, in terms of (E*, a, d, n, r), for 0 < n < 3.
+
+    The 2F1 forms of :func:`pressure_hyper` take z = 1 - r^2/a^2, which rounds to 1 for
+    r < 1e-8 a and loses the non-analytic part (r/a)^(n-1) of p - p(0) (for 1 < n < 3) or
+    its own leading part (n < 1). The connection formula DLMF 15.8.4 (z -> 1 - z) splits the
+    2F1(1/2, (n+1)/2; 3/2; z) of the derived form into a 2F1 whose b = c (hyperexpanded to
+    (1 - w)^(-1/2), w = r^2/a^2: the singular term) and a 2F1 in w times w^((1-n)/2), a power
+    series in w, of which CENTRE_TERMS terms are kept (times the sqrt(1 - w) of the form):
+    p = E* n d/(pi a) (sum_k (1/2)_k/k! (r/a)^(2k)/(n - 1 - 2k)
+    + sqrt(pi) Gamma((1 - n)/2)/(2 Gamma(1 - n/2)) (r/a)^(n-1)).
+    """
+    w = sp.Symbol("w", positive=True)  # (r/a)^2
+    rho = sp.Symbol("rho", positive=True)  # r/a
+    p_b, _ = pressure_hyper()
+    (h,) = p_b.atoms(sp.hyper)
+    (pa, pb), (pc,) = h.ap, h.bq
+    assert sp.simplify(h.argument - (1 - r**2 / a**2)) == 0, h
+    gam = sp.gamma
+    singular = (gam(pc) * gam(pc - pa - pb) / (gam(pc - pa) * gam(pc - pb))
+                * sp.hyperexpand(sp.hyper([pa, pb], [pa + pb - pc + 1], w)))
+    a2, b2, c2 = pc - pa, pc - pb, pc - pa - pb + 1
+    regular = (w ** (pc - pa - pb) * gam(pc) * gam(pa + pb - pc) / (gam(pa) * gam(pb))
+               * sum(sp.rf(a2, j) * sp.rf(b2, j) / (sp.rf(c2, j) * sp.factorial(j)) * w**j
+                     for j in range(CENTRE_TERMS)))
+    scale = E_star * n * d / (sp.pi * a)
+    base = sp.simplify((p_b / h / scale).subs(r, rho * a))  # rho^(n-1) sqrt(1 - rho^2)
+    sing = sp.powsimp(sp.expand_power_base(sp.simplify((base * singular).subs(w, rho**2)),
+                                           force=True), force=True)
+    reg = sp.powsimp(sp.expand_power_base((base * regular).subs(rho, sp.sqrt(w)), force=True),
+                     force=True)
+    ser = sp.series(reg, w, 0, CENTRE_TERMS).removeO()
+    coeffs = [sp.factor(sp.simplify(sp.expand_func(ser.coeff(w, j))))  # Gamma(m + 1) = m Gamma(m)
+              for j in range(CENTRE_TERMS)]
+    for j, c in enumerate(coeffs):  # the termwise expansion of (1 - r^2/x^2)^(-1/2) in (5.59)
+        assert sp.simplify(c - sp.rf(sp.Rational(1, 2), j) / sp.factorial(j)
+                           / (n - 1 - 2 * j)) == 0, (j, c)
+    assert not sing.has(w) and sp.simplify(sing / rho ** (n - 1)).free_symbols == {n}, sing
+    wr = (r / a) ** 2
+    poly = sp.horner(sum(c * w**j for j, c in enumerate(coeffs)), w).subs(w, wr)
+    return scale * (poly + sing.subs(rho, r / a))
+
+
+@cache
+def displacement_far() -> sp.Expr:
+    """u_z(r) of (5.60) for r >> a, in terms of (a, d, n, r): the series in (a/r)^2.
+
+    (5.60) with g = d (x/a)^n, d = g(a) (5.55): u_z = (2/pi) integral_0^a (d - g(x))/
+    sqrt(r^2 - x^2) dx; 1/sqrt(r^2 - x^2) = (1/r) sum_j (1/2)_j/j! (x/r)^(2j) converges
+    uniformly on [0, a] for r > a, and each term integrates in closed form. FAR_TERMS terms:
+    u_z = (2 d a/(pi r)) sum_j (1/2)_j/j! n/((2j + 1)(n + 2j + 1)) (a/r)^(2j). Unlike the 2F1
+    form it never squares r/a into an underflow (its (a/r)^2 terms underflow harmlessly).
+    """
+    xx = sp.Symbol("xx", positive=True)
+    q = sp.Symbol("q", positive=True)
+    g = solution()["g"].subs(c_n, d / (kappa_n * a**n)).subs(x, xx)  # (5.52) with (5.55)
+    kernel = sp.series(1 / sp.sqrt(1 - q), q, 0, FAR_TERMS).removeO()  # (1 - (x/r)^2)^(-1/2)
+    terms = []
+    for j in range(FAR_TERMS):
+        cj = kernel.coeff(q, j)
+        moment = sp.integrate((g.subs(xx, a) - g) * xx ** (2 * j), (xx, 0, a))
+        terms.append(sp.simplify(2 / sp.pi * cj * moment / r ** (2 * j + 1)))
+    w = sp.Symbol("w", positive=True)  # (a/r)^2
+    lead = sp.factor(terms[0])
+    rest = [sp.factor(sp.simplify(tj / lead).subs(a, sp.sqrt(w) * r)) for tj in terms]
+    for j, c in enumerate(rest):  # a power of (a/r)^2 with a rational coefficient in n
+        assert c.free_symbols <= {n, w}, c
+        assert sp.simplify(c - sp.rf(sp.Rational(1, 2), j) / sp.factorial(j) * (n + 1)
+                           / ((2 * j + 1) * (n + 2 * j + 1)) * w**j) == 0, (j, c)
+    return lead * sp.horner(sum(rest), w).subs(w, (a / r) ** 2)
+
+
 w_out = symbol("w_out")
 
 
@@ -303,6 +384,21 @@ def relations() -> list[Relation]:
                  "contact pressure p(r) [Pa] of a power-law indenter, 0 for r > a; the form "
                  "accurate for n < 1.5 (singular like r^(n-1) at the centre for n < 1)",
                  "(5.59) with x = r/sqrt(1 - z t)", f"{TEST}::test_against_3d_elasticity"),
+        Relation("powerlaw_pressure_centre", "Problem 7(d), (5.59), r << a",
+                 pressure_centre(), (E_star, a, d, n, r),
+                 "contact pressure p(r) [Pa] of a power-law indenter near the centre, "
+                 f"0 < n < 3 (n != 1), r < a/10: the series to (r/a)^{2 * CENTRE_TERMS - 2} "
+                 "plus its (r/a)^(n-1) term",
+                 "the 2F1 of (5.59) by the connection formula z -> 1 - z (DLMF 15.8.4)",
+                 f"{TEST}::test_pressure_near_the_centre_by_quadrature",
+                 domain={r: a * unit_interval()}),
+        Relation("powerlaw_displacement_far", "Problem 7(d), (5.60), r >> a",
+                 displacement_far(), (a, d, n, r),
+                 "surface displacement u_z(r) [m] of a power-law indenter far outside the "
+                 f"contact (a/r < 1e-3: the series to (a/r)^{2 * FAR_TERMS - 1})",
+                 "(5.60) with 1/sqrt(r^2 - x^2) expanded in (x/r)^2",
+                 f"{TEST}::test_surface_displacement_far_outside",
+                 domain={r: a / unit_interval()}),
         Relation("powerlaw_pressure_integrand", "Problem 7(d), (5.59)", pq_derived,
                  (E_star, a, d, n, r, w_quad),
                  "integrand [Pa] of (5.59) in w: p(r) = integral_0^1 of it dw, smooth in w (a "

@@ -283,6 +283,7 @@ __all__ = [
     'paraboloid_g',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
+    'powerlaw_displacement_far',
     'powerlaw_displacement_outside',
     'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
@@ -293,6 +294,7 @@ __all__ = [
     'powerlaw_mean_pressure',
     'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
+    'powerlaw_pressure_centre',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
     'powerlaw_pressure_n2',
@@ -644,6 +646,7 @@ RELATIONS = (
     ('paraboloid_g', '(5.52) of f = r^2/(2R)', 'tangential', 'x**2/R', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
+    ('powerlaw_displacement_far', 'Problem 7(d), (5.60), r >> a', 'powerlaw', '2*a*d*n*(a**2*(a**2*(a**2*(5*n + 5)/(r**2*(112*n + 784)) + (3*n + 3)/(40*n + 200))/r**2 + (n + 1)/(6*n + 18))/r**2 + 1)/(pi*r*(n + 1))', ''),
     ('powerlaw_displacement_outside', 'Problem 7(d), (5.60)', 'powerlaw', '2*d*(-a*hyper((1/2, n/2 + 1/2), (n/2 + 3/2,), a**2/r**2)/r + (n + 1)*asin(a/r))/(pi*(n + 1))', ''),
     ('powerlaw_displacement_outside_integrand', 'Problem 7(d), (5.60)', 'powerlaw', '(-2*d*(-r*sin(w_out - asin(a/r))/a)**n + 2*d)/pi', ''),
     ('powerlaw_force', 'Problem 7(d)', 'powerlaw', '2*E_star*d*n*(d/(c_n*kappa_n))**(1/n)/(n + 1)', 'the factor (kappa_n c_n)^(1/n) must be (kappa_n c_n)^(-1/n): with a = (d/(kappa_n c_n))^(1/n), (5.57) gives F = 2n/(n+1) E* a d; for n = 2 (kappa_2 c_2 = 1/R) only the corrected form reproduces (5.23)'),
@@ -654,6 +657,7 @@ RELATIONS = (
     ('powerlaw_mean_pressure', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n/(pi*a*(n + 1))', ''),
     ('powerlaw_mean_pressure_from_depth', 'Fig. 5.17', 'powerlaw', '2*E_star*d*n*(c_n*kappa_n/d)**(1/n)/(pi*(n + 1))', ''),
     ('powerlaw_pressure', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*hyper((1, 1 - n/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a**2)', ''),
+    ('powerlaw_pressure_centre', 'Problem 7(d), (5.59), r << a', 'powerlaw', 'E_star*d*n*(sqrt(pi)*(r/a)**(n - 1)*gamma(1/2 - n/2)/(2*gamma(1 - n/2)) + 1/(n - 1) + r**2*(1/(2*n - 6) + r**2*(3/(8*n - 40) + r**2*(5/(16*n - 112) + r**2*(35/(128*n - 1152) + r**2*(63/(256*n - 2816) + r**2*(231/(1024*n - 13312) + r**2*(429/(2048*n - 30720) + r**2*(6435/(32768*n - 557056) + 12155*r**2/(a**2*(65536*n - 1245184)))/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/(pi*a)', ''),
     ('powerlaw_pressure_integrand', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*sqrt(a**2 - r**2)*(r**2 + (1 - w_quad)**2*(a**2 - r**2))**(n/2 - 1)/(pi*a**n)', ''),
     ('powerlaw_pressure_n1', 'Problem 7(d), n = 1', 'powerlaw', 'E_star*d*log((a + sqrt(a**2 - r**2))/r)/(pi*a)', ''),
     ('powerlaw_pressure_n2', 'Problem 7(d), n = 2', 'powerlaw', '2*E_star*d*sqrt(a**2 - r**2)/(pi*a**2)', ''),
@@ -8156,6 +8160,34 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     return (c_n*kappa_n)**((n + 1)**(-1.0))*((1/2)*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
+def powerlaw_displacement_far(a, d, n, r):
+    """Surface displacement u_z(r) [m] of a power-law indenter far outside the contact (a/r < 1e-3: the series to (a/r)^7).
+
+    Chapter: Problem 7(d), (5.60), r >> a. Derived from: (5.60) with 1/sqrt(r^2 - x^2)
+    expanded in (x/r)^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_surface_displacement_far_outside``.
+
+    Parameters
+    ----------
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(a) is float and type(d) is float and type(n) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_displacement_far(a, d, n, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*a*d*n*(a**2*(a**2*(a**2*(5*n + 5)/(r**2*(112*n + 784)) + (3*n + 3)/(40*n + 200))/r**2 + (n + 1)/(6*n + 18))/r**2 + 1)/(numpy.pi*r*(n + 1))
+
+
 def powerlaw_displacement_outside(a, d, n, r):
     """Surface displacement u_z(r) [m] outside the contact (r > a) of a power-law indenter.
 
@@ -8435,6 +8467,39 @@ def powerlaw_pressure(E_star, a, d, n, r):
     import scipy.special
 
     return E_star*d*n*scipy.special.hyp2f1(1, 1 - 1/2*n, 3/2, functools.reduce(numpy.maximum, [0, (a - r)*(a + r)])/a**2)*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - r)*(a + r)]))/(numpy.pi*a**2)
+
+
+def powerlaw_pressure_centre(E_star, a, d, n, r):
+    """Contact pressure p(r) [Pa] of a power-law indenter near the centre, 0 < n < 3 (n != 1), r < a/10: the series to (r/a)^18 plus its (r/a)^(n-1) term.
+
+    Chapter: Problem 7(d), (5.59), r << a. Derived from: the 2F1 of (5.59) by the connection
+    formula z -> 1 - z (DLMF 15.8.4).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_pressure_near_the_centre_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    import scipy.special
+
+    if (type(E_star) is float and type(a) is float and type(d) is float and type(n) is float
+            and type(r) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_pressure_centre(E_star, a, d, n, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*d*n*((1/2)*numpy.sqrt(numpy.pi)*(r/a)**(n - 1)*scipy.special.gamma(1/2 - 1/2*n)/scipy.special.gamma(1 - 1/2*n) + (n - 1)**(-1.0) + r**2*((2*n - 6)**(-1.0) + r**2*(3/(8*n - 40) + r**2*(5/(16*n - 112) + r**2*(35/(128*n - 1152) + r**2*(63/(256*n - 2816) + r**2*(231/(1024*n - 13312) + r**2*(429/(2048*n - 30720) + r**2*(6435/(32768*n - 557056) + 12155*r**2/(a**2*(65536*n - 1245184)))/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/(numpy.pi*a)
 
 
 def powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):
@@ -13898,6 +13963,11 @@ def _math_textbook_powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     return math.pow((1/2)*F*math.pow(c_n*kappa_n, 1/n)*(n + 1)/(E_star*n), n/(n + 1))
 
 
+def _math_powerlaw_displacement_far(a, d, n, r):
+    """``powerlaw_displacement_far`` for Python floats (the math module); raises where it does."""
+    return 2*a*d*n*((a*a)*((a*a)*((a*a)*(5*n + 5)/((r*r)*(112*n + 784)) + (3*n + 3)/(40*n + 200))/(r*r) + (n + 1)/(6*n + 18))/(r*r) + 1)/(math.pi*r*(n + 1))
+
+
 def _math_powerlaw_displacement_outside_integrand(a, d, n, r, w_out):
     """``powerlaw_displacement_outside_integrand`` for Python floats (the math module); raises where it does."""
     return -2*d*math.expm1(n*math.log1p(-2*(math.sin((1/2)*w_out)*math.sin((1/2)*w_out)) - math.sqrt(-a + r)*math.sqrt(a + r)*math.sin(w_out)/a))/math.pi
@@ -13946,6 +14016,11 @@ def _math_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
 def _math_textbook_powerlaw_mean_pressure_from_depth(E_star, c_n, d, kappa_n, n):
     """``textbook_powerlaw_mean_pressure_from_depth`` for Python floats (the math module); raises where it does."""
     return 2*E_star*d*n*math.pow(c_n*kappa_n/d, 1/n)/(math.pi*(n + 1))
+
+
+def _math_powerlaw_pressure_centre(E_star, a, d, n, r):
+    """``powerlaw_pressure_centre`` for Python floats (the math module); raises where it does."""
+    return E_star*d*n*((1/2)*math.sqrt(math.pi)*math.pow(r/a, n - 1)*math.gamma(1/2 - 1/2*n)/math.gamma(1 - 1/2*n) + 1/(n - 1) + (r*r)*(1/(2*n - 6) + (r*r)*(3/(8*n - 40) + (r*r)*(5/(16*n - 112) + (r*r)*(35/(128*n - 1152) + (r*r)*(63/(256*n - 2816) + (r*r)*(231/(1024*n - 13312) + (r*r)*(429/(2048*n - 30720) + (r*r)*(6435/(32768*n - 557056) + 12155*(r*r)/((a*a)*(65536*n - 1245184)))/(a*a))/(a*a))/(a*a))/(a*a))/(a*a))/(a*a))/(a*a))/(a*a))/(math.pi*a)
 
 
 def _math_powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):

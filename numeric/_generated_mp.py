@@ -280,6 +280,7 @@ __all__ = [
     'paraboloid_g',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
+    'powerlaw_displacement_far',
     'powerlaw_displacement_outside',
     'powerlaw_displacement_outside_integrand',
     'powerlaw_force',
@@ -290,6 +291,7 @@ __all__ = [
     'powerlaw_mean_pressure',
     'powerlaw_mean_pressure_from_depth',
     'powerlaw_pressure',
+    'powerlaw_pressure_centre',
     'powerlaw_pressure_integrand',
     'powerlaw_pressure_n1',
     'powerlaw_pressure_n2',
@@ -6427,6 +6429,29 @@ def powerlaw_depth_from_force(E_star, F, c_n, kappa_n, n):
     return (c_n*kappa_n)**(1/(n + 1))*((mpmath.mpf(1)/mpmath.mpf(2))*F*(n + 1)/(E_star*n))**(n/(n + 1))
 
 
+def powerlaw_displacement_far(a, d, n, r):
+    """Surface displacement u_z(r) [m] of a power-law indenter far outside the contact (a/r < 1e-3: the series to (a/r)^7).
+
+    Chapter: Problem 7(d), (5.60), r >> a. Derived from: (5.60) with 1/sqrt(r^2 - x^2)
+    expanded in (x/r)^2.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_surface_displacement_far_outside``.
+
+    Parameters
+    ----------
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return 2*a*d*n*(a**2*(a**2*(a**2*(5*n + 5)/(r**2*(112*n + 784)) + (3*n + 3)/(40*n + 200))/r**2 + (n + 1)/(6*n + 18))/r**2 + 1)/(mpmath.pi*r*(n + 1))
+
+
 def powerlaw_displacement_outside(a, d, n, r):
     """Surface displacement u_z(r) [m] outside the contact (r > a) of a power-law indenter.
 
@@ -6655,6 +6680,31 @@ def powerlaw_pressure(E_star, a, d, n, r):
         radial coordinate on the surface [m]
     """
     return E_star*d*n*mpmath.hyper((1, 1 - mpmath.mpf(1)/mpmath.mpf(2)*n), (mpmath.mpf(3)/mpmath.mpf(2),), max(0, (a - r)*(a + r))/a**2)*mpmath.sqrt(max(0, (a - r)*(a + r)))/(mpmath.pi*a**2)
+
+
+def powerlaw_pressure_centre(E_star, a, d, n, r):
+    """Contact pressure p(r) [Pa] of a power-law indenter near the centre, 0 < n < 3 (n != 1), r < a/10: the series to (r/a)^18 plus its (r/a)^(n-1) term.
+
+    Chapter: Problem 7(d), (5.59), r << a. Derived from: the 2F1 of (5.59) by the connection
+    formula z -> 1 - z (DLMF 15.8.4).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_pressure_near_the_centre_by_quadrature``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return E_star*d*n*((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(mpmath.pi)*(r/a)**(n - 1)*mpmath.gamma(mpmath.mpf(1)/mpmath.mpf(2) - mpmath.mpf(1)/mpmath.mpf(2)*n)/mpmath.gamma(1 - mpmath.mpf(1)/mpmath.mpf(2)*n) + 1/(n - 1) + r**2*(1/(2*n - 6) + r**2*(3/(8*n - 40) + r**2*(5/(16*n - 112) + r**2*(35/(128*n - 1152) + r**2*(63/(256*n - 2816) + r**2*(231/(1024*n - 13312) + r**2*(429/(2048*n - 30720) + r**2*(6435/(32768*n - 557056) + 12155*r**2/(a**2*(65536*n - 1245184)))/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/a**2)/(mpmath.pi*a)
 
 
 def powerlaw_pressure_integrand(E_star, a, d, n, r, w_quad):

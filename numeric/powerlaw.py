@@ -5,8 +5,11 @@ from :mod:`hertzmdr.derive.powerlaw`; this module validates, broadcasts and pick
 is accurate for the given n:
 
 - kappa_n: the Gamma ratio for n < 40, the Stirling series above (no overflow up to n = 1e150).
-- pressure: elementary forms for n = 1, 2, 3, 4; the 2F1 form for n >= 1.5; the Euler-
-  transformed 2F1 for n < 1.5.
+- pressure: elementary forms for n = 1, 2, 3, 4; near the centre (r < a/10) for n < 3 the
+  series about the centre; else the Euler-transformed 2F1 form for n >= 1.5, the 2F1 form
+  for n < 1.5; the quadrature of (5.59) for n > 40.
+- surface displacement outside: the 2F1 form of (5.60), its quadrature next to the edge and
+  for n > 40, the far-field series for r > 1000 a.
 
 ``c_n`` has the unit m^(1-n) (f = c_n r^n in metres for r in metres).
 """
@@ -36,6 +39,12 @@ N_PRESSURE_QUADRATURE = 40.0
 #: :func:`surface_displacement` integrates (5.60) instead of evaluating its 2F1 form where
 #: n > N_PRESSURE_QUADRATURE or r < a (1 + EDGE_QUADRATURE)
 EDGE_QUADRATURE = 1e-4
+#: :func:`pressure` takes the series about the centre (powerlaw_pressure_centre) for n < 3
+#: and r < CENTRE_SERIES a (its first term left out is below 1e-20 of the centre value there)
+CENTRE_SERIES = 0.1
+#: :func:`surface_displacement` takes the far-field series (powerlaw_displacement_far) for
+#: r > a/FAR_SERIES, where its first term left out is below 1e-24 of u_z
+FAR_SERIES = 1e-3
 #: kappa_n switches from the Gamma ratio to the Stirling series at this n (both < 1e-15 there)
 N_ASYMPTOTIC = 40.0
 
@@ -205,6 +214,16 @@ def _pressure_at(r, a, d, n, E_star):
             sel &= r > 0  # log(a/r): the cone's centre is singular; n = 3 uses the 2F1 at 0
         out[sel] = fn(E_star[sel], a[sel], d[sel], r[sel])
         done |= sel
+    # near the centre for n < 3 the 2F1 forms, whose z = 1 - r^2/a^2 rounds to 1, lose the
+    # (r/a)^(n-1) part (6e-5 at n = 1.5, r = 1e-8 a; inf for n < 1.5): the series about the
+    # centre, whose (r/a)^2/(2 (n - 3)) and (r/a)^(n-1) terms cancel as n -> 3 (kept where
+    # (r/a)^2 < (3 - n)/10: at most 1e-14 there, measured against (5.59) by quadrature)
+    rho = r / a
+    centre = ~done & (n < 3) & (n != 1) & (rho < CENTRE_SERIES) & (rho * rho < (3 - n) / 10)
+    with np.errstate(divide="ignore"):  # (r/a)^(n-1) at r = 0 for n < 1: the singularity
+        out[centre] = gen.powerlaw_pressure_centre(E_star[centre], a[centre], d[centre],
+                                                   n[centre], r[centre])
+    done |= centre
     # n >= 1.5, and the centre for 1 < n < 1.5, where the small-n form is 0 * inf but this
     # one's 2F1 converges at z = 1 (c - a - b = (n - 1)/2 > 0)
     big = ~done & ((n >= 1.5) | ((r == 0) & (n > 1)))
@@ -291,7 +310,8 @@ def pressure(r, d, c_n, n, E_star):
         Profile coefficient [m^(1-n)], > 0 (the punch radius [m] for n = inf).
     n : float or array_like
         Exponent, n > 0, or inf. Up to N_PRESSURE_QUADRATURE (40) the closed forms (2F1,
-        elementary for n = 1 ... 4); above it (5.59) by Gauss-Legendre quadrature of a smooth
+        elementary for n = 1 ... 4, and for n < 3 at r < a/10 the series about the centre,
+        powerlaw_pressure_centre); above it (5.59) by Gauss-Legendre quadrature of a smooth
         integrand (``powerlaw_pressure_integrand``), to ~1e-15 at any n.
     E_star : float or array_like
         Effective modulus [Pa], > 0.
@@ -369,7 +389,12 @@ def surface_displacement(r, d, c_n, n):
     # the 2F1 form subtracts two terms with a sqrt(r - a) singularity: next to the edge it
     # loses eps/sqrt(1 - a/r) (1e-7 at r = a(1 + 1e-15)), and for n > 40 SciPy's 2F1 fails
     quad = (n > N_PRESSURE_QUADRATURE) | (r < a * (1 + EDGE_QUADRATURE))
-    sel = ~inside & fin & ~quad
+    far = ~inside & fin & ~quad & (a < r * FAR_SERIES)
+    # (a/r)^2 of the 2F1 form underflows beyond r ~ 1e154 a (5e-4 off at 1e160 m for a = 1 m):
+    # the far-field series, whose r^2 may overflow to inf harmlessly (its terms then are 0)
+    with np.errstate(over="ignore"):
+        out[far] = gen.powerlaw_displacement_far(a[far], d[far], n[far], r[far])
+    sel = ~inside & fin & ~quad & ~far
     s = pow2_scale(r[sel])  # homogeneous of degree 1 in (a, d, r): in units of s ~ r (a power
     out[sel] = s * gen.powerlaw_displacement_outside(  # of 2, exact), (a/r)^2 cannot overflow
         a[sel] / s, d[sel] / s, n[sel], r[sel] / s)

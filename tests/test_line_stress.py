@@ -512,3 +512,12 @@ def test_roller_scene_by_superposition():
     assert round(ms["value"] / 1e6, 1) == 287.7 and round(ms["depth"] * 1e6, 1) == 87.0
     assert round(mv["value"] / 1e6, 1) == 534.2 and round(mv["z"] * 1e6, 1) == 78.0
     assert round(mo["value"] / 1e6, 1) == 239.6 and round(mo["z"] * 1e6, 1) == 55.4
+
+
+def test_max_shear_3d_names_nu_in_its_error():
+    """max_shear_3d's only input is named in its error (a NaN and nu = 0.6 > 0.5)."""
+    from named import assert_inputs_named
+
+    assert_inputs_named(ls.max_shear_3d, {"nu": 0.3})
+    with pytest.raises(ValueError, match=r"^nu = 0\.6"):
+        ls.max_shear_3d(0.6)

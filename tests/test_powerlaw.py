@@ -478,11 +478,11 @@ def test_pressure_is_finite_near_the_centre_for_n_from_1_5():
 def test_surface_displacement_outside_at_several_radii_in_one_call():
     """Several radii in one call on each route of u_z outside: next to the edge and for n > 40
     by quadrature (one row of panels per radius), and at r = 1e154 m by the 2F1 form in units
-    of a power of 2 of r (unscaled, its r^2 would overflow); against (5.60) by 40-digit
-    quadrature in x (displacement_outside_reference). Beyond r ~ 3e155 m the 2F1 form loses
-    digits as (a/r)^2 underflows (benchmarks/mutation_notes.toml, finding)."""
+    of a power of 2 of r, and at r = 1e154 m by the far-field series (its r^2 overflows to
+    inf, harmlessly); against (5.60) by 40-digit quadrature in x
+    (displacement_outside_reference)."""
     d = 0.3
-    for n, ks in ((2.5, [1e-9, 1e-6, 5e-5, 1e154]), (41.0, [1e-9, 1e-3, 0.5, 10.0])):
+    for n, ks in ((2.5, [1e-9, 1e-6, 5e-5, 1e154, 500.0]), (41.0, [1e-9, 1e-3, 0.5, 10.0])):
         c = d / float(powerlaw.kappa(n))  # a = 1 m
         a = float(powerlaw.contact_radius(d, c, n))
         r = a * (1 + np.array(ks))
@@ -492,3 +492,61 @@ def test_surface_displacement_outside_at_several_radii_in_one_call():
             # cancellation at r >> a (~1e-12 measured for n = 2.5)
             assert_close(gi, displacement_outside_reference(ri, d, a, n), 2e-11,
                          f"u_z(r = a(1 + {k:g})), n = {n:g}")
+
+
+def test_pressure_near_the_centre_by_quadrature():
+    """Near the centre, for n < 3, the series about the centre (powerlaw_pressure_centre): the
+    2F1 forms lost the (r/a)^(n-1) part of p - p(0) there as z = 1 - r^2/a^2 rounds to 1 (6e-5
+    off at n = 1.5, r = 1e-8 a; inf for 1 < n < 1.5). Against (5.59) by 30-digit quadrature
+    (_abel_reference), down to r = 1e-300 m, for n from 0.5 to next to 3 (where the series'
+    (r/a)^2/(2 (n - 3)) and (r/a)^(n-1) terms cancel: it is kept for (r/a)^2 < (3 - n)/10),
+    and on either side of r = a/10 and of that bound."""
+    E, d = 1e9, 1e-5
+    for n, aa in ((0.5, 1e-3), (1.2, 1.0), (1.5, 1e-3), (1.8, 2.0), (2.0, 1e-3), (2.5, 1e-3),
+                  (2.9, 0.5), (2.999, 1e-3), (2.99999, 1e-3)):
+        c = d / (float(powerlaw.kappa(n)) * aa**n)  # the contact radius is aa at depth d
+        a = float(powerlaw.contact_radius(d, c, n))
+        rt = np.array([0.0, 1e-300 / a, 1e-12, 1e-8, 1e-4, 1e-2, 0.0999, 0.1001, 0.3,
+                       0.99 * np.sqrt((3 - n) / 10), 1.01 * np.sqrt((3 - n) / 10)])
+        rt = rt[rt < 0.9]
+        got = powerlaw.pressure(rt * a, d, c, n, E)
+        for gi, ri in zip(got, rt, strict=True):
+            if ri == 0 and n < 1:  # the r^(n-1) singularity
+                assert gi == np.inf
+                continue
+            # the series to 1e-15 (its terms left out < 1e-20, its cancellation next to n = 3
+            # ~1e-16 (r/a)^2/(3 - n) < 1e-17), the 2F1 forms to ~1e-14 (measured 4e-14 at
+            # r = a/20), the contact radius from c a few ulps times (n - 1): 2e-13
+            assert_close(gi, _abel_reference(E, a, d, n, ri * a), 2e-13, f"n={n}, r/a={ri}")
+
+
+def _far_reference(r, d, a, n):
+    """(5.60) for g = d (x/a)^n at r >> a: (2 d/(pi r)) integral_0^a (1 - (x/a)^n)/
+    sqrt((1 - x/r)(1 + x/r)) dx with x = a s^2 (smooth in s also for small n), 40-digit
+    tanh-sinh on an integrand of order 1 (mp.quad's tolerance is absolute: the unscaled one,
+    ~1e-157 at r = 3e155 m, came out 1e-13 off for n = 0.5)."""
+    with mp.workdps(40):
+        r, d, a, n = (mp.mpf(v) for v in (r, d, a, n))
+        q = a / r
+        f = lambda s: 2 * a * s * (1 - s ** (2 * n)) / mp.sqrt((1 - q * s * s) * (1 + q * s * s))  # noqa: E731
+        return 2 * d / (mp.pi * r) * mp.quad(f, [0, mp.mpf(1) / 2, 1])
+
+
+def test_surface_displacement_far_outside():
+    """Far outside (r > 1000 a) the far-field series of (5.60) (powerlaw_displacement_far):
+    the 2F1 form lost digits beyond r ~ 3e155 m as (a/r)^2 underflowed (5e-4 off at r = 1e160
+    m, 0 instead of 1.4e-201 m at 1e200 m for n = 2.5, a = 1 m). Against (5.60) by 40-digit
+    quadrature (_far_reference), on both sides of r = 1000 a and up to r = 1e300 m, several
+    in one call."""
+    d = 0.3
+    for n, aa in ((0.5, 1.0), (2.5, 1.0), (2.5, 1e-9), (39.0, 1e3)):
+        c = d / (float(powerlaw.kappa(n)) * aa**n)
+        a = float(powerlaw.contact_radius(d, c, n))
+        r = np.array([999.0 * a, 1001.0 * a, 1e6 * a, 3e155, 1e160, 1e200, 1e300])
+        got = powerlaw.surface_displacement(r, d, c, n)
+        for gi, ri in zip(got, r, strict=True):
+            # the series' terms left out < 1e-24; the 2F1 form at 999 a cancels to ~1e-12
+            # (test_displacement_outside_large_n): 2e-11 as there; the series alone ~1e-15
+            tol = 2e-11 if ri < 1000 * a else 1e-14
+            assert_close(gi, _far_reference(ri, d, a, n), tol,
+                         f"u_z(r = {ri:g} m), n = {n:g}, a = {a:g} m")

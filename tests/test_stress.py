@@ -567,3 +567,29 @@ def test_superposed_plane_error_is_relative():
     # the same quadrature on a pressure 1e9 times larger; both estimates are at the rounding
     # level here (~2e-15), which differs between the two scalings by a few tenths of itself
     assert 0.5 < giga.rel_error / unit.rel_error < 2
+
+
+def test_superposed_maximum_of_the_orthogonal_shear_within_its_bound():
+    """superposed_maximum (the refined largest stress of the superposition route, with its
+    bound) under the Hertz pressure (a = 2 mm, p0 = 1 GPa) on a 5-point grid: the orthogonal
+    shear against the derived closed form (hertz_max_orthogonal_shear, exact: |tau_rz| =
+    0.213891 p0 at r = 0.848 a, z = 0.351 a), and von Mises against 2 tau_1 on the axis
+    (axis_max_shear, Fig. 5.8): the actual error within the bound it reports, the bound below
+    1e-2 (the grid alone misses by about that), the place within 0.02 a (the field is flat at
+    its maximum: an error e in the value allows ~sqrt(e) a in the place)."""
+    aa, p00, nu_ = 2e-3, 1e9, 0.3
+    p = lambda rr: p00 * np.sqrt(np.maximum((1 - np.asarray(rr) / aa)  # noqa: E731
+                                            * (1 + np.asarray(rr) / aa), 0.0))
+    plane = stress.superposed_plane(p, aa, nu_, n=5)
+    tau, r0, z0 = stress.hertz_max_orthogonal_shear()
+    zt, t1 = stress.axis_max_shear(nu_)
+    for crit, ref, x_ref, z_ref in (("orthogonal_shear", tau, r0, z0),
+                                    ("von_mises", 2 * t1, 0.0, zt)):
+        v, x, z, bound = stress.superposed_maximum(p, aa, nu_, crit, plane)
+        err = abs(v / (ref * p00) - 1)
+        assert err <= bound < 1e-2, (crit, err, bound)
+        assert abs(abs(x) / aa - x_ref) < 0.02 and abs(z / aa - z_ref) < 0.02, (crit, x, z)
+    with pytest.raises(ValueError, match="criterion = 'tresca'"):
+        stress.superposed_maximum(p, aa, nu_, "tresca", plane)
+    with pytest.raises(ValueError, match="^a"):
+        stress.superposed_maximum(p, -aa, nu_, "von_mises", plane)
