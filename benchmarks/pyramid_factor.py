@@ -15,8 +15,9 @@ d = 1, E* = 1, cot(alpha) = 1 on grids of N = 128 ... 1024 pixels a side over a 
 holds the contact with a margin, residual 1e-11. Richardson extrapolation with the observed
 order of the last three grids; the uncertainty is the larger of that correction and the last
 step (twice the last step when the steps do not shrink monotonically): a bound of the
-discretization error of the measured sequences, which the extrapolation does not claim to beat. Nanite's three-sided model (Bilodeau 1992)
-uses F = 0.8887 tan(alpha) E* d^2 (its code); it is listed beside.
+discretization error of the measured sequences, which the extrapolation does not claim to
+beat. Nanite's three-sided model (Bilodeau 1992) uses F = 0.8887 tan(alpha) E* d^2 (its
+code); it is listed beside.
 
 Run: ``python benchmarks/pyramid_factor.py [--quick] [--out DIR]`` (``make benchmark`` runs
 it; ``--quick``: N = 64, 128, 256 for n = 3, 4); writes docs/pyramid.md and
