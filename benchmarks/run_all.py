@@ -55,6 +55,7 @@ STEPS = (
     Step("bench_mdr.py", ("mdr.md", "mdr_convergence.png"), ("mdr.json",)),  # reads abel.json
     Step("beta.py", (), ("beta.json",)),
     Step("bench_bem.py", (), ("bem.json",)),
+    Step("pyramid_factor.py", ("pyramid.md",), ("pyramid.json",)),  # fit.Pyramid's beta_n
     Step("make_nonaxi_doc.py", ("non_axisymmetric.md", "non_axisymmetric_errors.png")),
     Step("bench_stress.py", ("stress.md", "figures/fig5_8_axis_stresses.png",
                              "figures/fig5_9_von_mises.png")),

@@ -109,6 +109,7 @@ def sphere_model() -> dict[str, sp.Expr]:
 
 alpha_p = symbol("alpha_p", positive=True)
 n_sides = symbol("n_sides", positive=True)
+beta_p = symbol("beta_p", positive=True)
 
 
 @cache
@@ -131,6 +132,25 @@ def pyramid_cone() -> sp.Expr:
     if len(roots) != 2 or sp.simplify(roots[0] + roots[1]) != 0:
         raise AssertionError(f"the pyramid's equal-area cone: unexpected roots {roots}")
     return sp.atan(1 / root)
+
+
+def pyramid_force_cone() -> sp.Expr:
+    """theta [rad] of the cone whose force (5.40) is the pyramid's at every depth.
+
+    The pyramid's force is beta_p times its equal-area cone's (:func:`pyramid_cone`), beta_p
+    measured by the BEM for each number of faces (benchmarks/pyramid_factor.py,
+    docs/pyramid.md); (5.40) is E* d^2 times a function of theta alone, so the cone with
+    F(theta) = beta_p F(theta_area) carries the pyramid's force law exactly (to beta_p's
+    error); its pressure and contact radius stand in for the pyramid's non-circular ones.
+    """
+    theta = cone.theta
+    F = cone.solution()["F"]
+    th = sp.Symbol("th", positive=True)
+    target = beta_p * F.subs(theta, pyramid_cone())
+    roots = sp.solve(sp.Eq(F.subs(theta, th), target), sp.tan(th))
+    if len(roots) != 1:
+        raise AssertionError(f"the pyramid's equal-force cone: unexpected roots {roots}")
+    return sp.atan(sp.simplify(roots[0]))
 
 
 @cache
@@ -176,6 +196,15 @@ def relations() -> list[Relation]:
         f"{TEST}::test_pyramid_cone_by_polygon_area",
         # 0 < alpha_p < pi/2 and n_sides >= 3, as t_a, t_n in (0, 1)
         domain={alpha_p: sp.pi / 2 * unit_interval("t_a"), n_sides: 3 / unit_interval("t_n")}))
+    rels.append(Relation(
+        "fit_pyramid_force_cone_angle", "(5.40), equal force", pyramid_force_cone(),
+        (alpha_p, n_sides, beta_p),
+        "angle theta [rad] between the surface and the plane of the cone whose force (5.40) is "
+        "beta_p times the equal-area cone's: a regular pyramid's force law, beta_p from the BEM",
+        "(2/pi) E* d^2 / tan(theta) = beta_p (2/pi) E* d^2 / tan(theta_area)",
+        f"{TEST}::test_pyramid_force_by_bem",
+        domain={alpha_p: sp.pi / 2 * unit_interval("t_a"), n_sides: 3 / unit_interval("t_n"),
+                beta_p: 1 / unit_interval("t_b")}))
     base = (z_p, z_0, F_0, s_0)
     for name, (_, geom, eq) in tip_forces().items():
         m = models()[name]

@@ -126,6 +126,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "alpha_p": ("rad", "half-angle of a regular pyramid: between its axis and the mid-line of "
                 "a face"),
     "n_sides": ("1", "number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich)"),
+    "beta_p": ("1", "a regular pyramid's force over its equal-area cone's at the same depth "
+               "(by the BEM, docs/pyramid.md)"),
 }
 
 

@@ -160,6 +160,7 @@ __all__ = [
     'fit_punch_force_dE',
     'fit_punch_force_dz0',
     'fit_pyramid_cone_angle',
+    'fit_pyramid_force_cone_angle',
     'fit_sample_modulus',
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
@@ -523,6 +524,7 @@ RELATIONS = (
     ('fit_punch_force_dE', 'Problem 7(a), fit model', 'fit', '2*a*Max(0, -z_0 + z_p)', ''),
     ('fit_punch_force_dz0', 'Problem 7(a), fit model', 'fit', '-2*E_star*a*Heaviside(-z_0 + z_p, 0)', ''),
     ('fit_pyramid_cone_angle', '(5.38), equal area', 'fit', 'atan(sqrt(pi)/(sqrt(n_sides)*tan(alpha_p)*sqrt(tan(pi/n_sides))))', ''),
+    ('fit_pyramid_force_cone_angle', '(5.40), equal force', 'fit', 'atan(sqrt(pi)/(beta_p*sqrt(n_sides)*tan(alpha_p)*sqrt(tan(pi/n_sides))))', ''),
     ('fit_sample_modulus', '(5.26), inverted', 'fit', 'E2*E_star*(1 - nu1**2)/(E2 + E_star*nu2**2 - E_star)', ''),
     ('fit_sample_modulus_dE', '(5.26), inverted', 'fit', '-E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2', ''),
     ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
@@ -5013,6 +5015,32 @@ def fit_pyramid_cone_angle(alpha_p, n_sides):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return numpy.arctan(numpy.sqrt(numpy.pi)/(numpy.sqrt(n_sides)*numpy.tan(alpha_p)*numpy.sqrt(numpy.tan(numpy.pi/n_sides))))
+
+
+def fit_pyramid_force_cone_angle(alpha_p, n_sides, beta_p):
+    """Angle theta [rad] between the surface and the plane of the cone whose force (5.40) is beta_p times the equal-area cone's: a regular pyramid's force law, beta_p from the BEM.
+
+    Chapter: (5.40), equal force. Derived from: (2/pi) E* d^2 / tan(theta) = beta_p (2/pi)
+    E* d^2 / tan(theta_area).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_pyramid_force_by_bem``.
+
+    Parameters
+    ----------
+    alpha_p : float or ndarray
+        half-angle of a regular pyramid: between its axis and the mid-line of a face [rad]
+    n_sides : float or ndarray
+        number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
+    beta_p : float or ndarray
+        a regular pyramid's force over its equal-area cone's at the same depth (by the BEM, docs/pyramid.md) [1]
+    """
+    if type(alpha_p) is float and type(n_sides) is float and type(beta_p) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_pyramid_force_cone_angle(alpha_p, n_sides, beta_p)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return numpy.arctan(numpy.sqrt(numpy.pi)/(beta_p*numpy.sqrt(n_sides)*numpy.tan(alpha_p)*numpy.sqrt(numpy.tan(numpy.pi/n_sides))))
 
 
 def fit_sample_modulus(E_star, nu1, E2, nu2):
@@ -13306,6 +13334,11 @@ def _math_fit_punch_force_dz0(E_star, a, z_p, z_0):
 def _math_fit_pyramid_cone_angle(alpha_p, n_sides):
     """``fit_pyramid_cone_angle`` for Python floats (the math module); raises where it does."""
     return math.atan(math.sqrt(math.pi)/(math.sqrt(n_sides)*math.tan(alpha_p)*math.sqrt(math.tan(math.pi/n_sides))))
+
+
+def _math_fit_pyramid_force_cone_angle(alpha_p, n_sides, beta_p):
+    """``fit_pyramid_force_cone_angle`` for Python floats (the math module); raises where it does."""
+    return math.atan(math.sqrt(math.pi)/(beta_p*math.sqrt(n_sides)*math.tan(alpha_p)*math.sqrt(math.tan(math.pi/n_sides))))
 
 
 def _math_fit_sample_modulus(E_star, nu1, E2, nu2):

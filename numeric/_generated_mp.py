@@ -157,6 +157,7 @@ __all__ = [
     'fit_punch_force_dE',
     'fit_punch_force_dz0',
     'fit_pyramid_cone_angle',
+    'fit_pyramid_force_cone_angle',
     'fit_sample_modulus',
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
@@ -3864,6 +3865,27 @@ def fit_pyramid_cone_angle(alpha_p, n_sides):
         number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
     """
     return mpmath.atan(mpmath.sqrt(mpmath.pi)/(mpmath.sqrt(n_sides)*mpmath.tan(alpha_p)*mpmath.sqrt(mpmath.tan(mpmath.pi/n_sides))))
+
+
+def fit_pyramid_force_cone_angle(alpha_p, n_sides, beta_p):
+    """Angle theta [rad] between the surface and the plane of the cone whose force (5.40) is beta_p times the equal-area cone's: a regular pyramid's force law, beta_p from the BEM.
+
+    Chapter: (5.40), equal force. Derived from: (2/pi) E* d^2 / tan(theta) = beta_p (2/pi)
+    E* d^2 / tan(theta_area).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_pyramid_force_by_bem``.
+
+    Parameters
+    ----------
+    alpha_p : mpmath.mpf
+        half-angle of a regular pyramid: between its axis and the mid-line of a face [rad]
+    n_sides : mpmath.mpf
+        number of faces of a regular pyramid (4: most AFM tips; 3: Berkovich) [1]
+    beta_p : mpmath.mpf
+        a regular pyramid's force over its equal-area cone's at the same depth (by the BEM, docs/pyramid.md) [1]
+    """
+    return mpmath.atan(mpmath.sqrt(mpmath.pi)/(beta_p*mpmath.sqrt(n_sides)*mpmath.tan(alpha_p)*mpmath.sqrt(mpmath.tan(mpmath.pi/n_sides))))
 
 
 def fit_sample_modulus(E_star, nu1, E2, nu2):

@@ -19,12 +19,12 @@ of (J^T J)^-1 s^2 at the solution, s^2 = sum(r^2)/(N - 4) the residual variance 
 residuals when ``sigma`` is given): the linearised covariance, which is what the coverage test
 of tests/test_fit.py checks against the nominal 68 % per standard error.
 
-A regular pyramid is fitted as its equal-area cone (:class:`Pyramid`). A measured tip
-(:class:`SampledTip`) goes through the numerical MDR: the scan and Levenberg-Marquardt use a
-table of its force law, then Gauss-Newton steps on the exact MDR at every point finish the fit
-(:func:`_polish`) and carry the MDR's error bound into the parameters (``model_error``).
-Batches and force maps: :mod:`hertzmdr.numeric.fit_batch`. Not yet (issue 17): adhesion
-(docs/fitting.md).
+A regular pyramid is fitted as the cone of its force law (:class:`Pyramid`: the BEM's factor
+over the equal-area cone). A measured tip (:class:`SampledTip`) goes through the numerical MDR:
+the scan and Levenberg-Marquardt use a table of its force law, then Gauss-Newton steps on the
+exact MDR at every point finish the fit (:func:`_polish`) and carry the MDR's error bound into
+the parameters (``model_error``). Adhesive retract curves: :mod:`hertzmdr.numeric.fit_adhesive`.
+Batches and force maps: :mod:`hertzmdr.numeric.fit_batch`.
 """
 
 from __future__ import annotations
@@ -242,27 +242,47 @@ class Cone(_Tip):
         return f"cone, theta = {self.theta:.6g} rad"
 
 
+#: a regular pyramid's force over its equal-area cone's, by the BEM, for each number of faces:
+#: (beta_n, a bound of its error) from benchmarks/pyramid_factor.py (docs/pyramid.md: grids of
+#: 128 to 1024 pixels a side, Richardson-extrapolated; the bound is the larger of the last
+#: correction and the last step)
+PYRAMID_BEM_FACTOR = {3: (1.0777689, 6e-7), 4: (1.0268222, 2.2e-5), 6: (1.0071782, 2.1e-6),
+                      8: (1.0029514, 3.8e-6)}
+
+
 @dataclass(frozen=True)
 class Pyramid(_Tip):
     """Regular pyramid of ``sides`` faces and half-angle alpha [rad] (between its axis and the
-    mid-line of a face), fitted as its **equivalent cone**: the cone of the same cross-section
-    area at every depth, theta = ``fit_pyramid_cone_angle(alpha, sides)``, with the cone's
-    force (5.40). A pyramid is not axisymmetric: this is an approximation of its force, not the
-    chapter's result (docs/fitting.md says what it neglects). sides >= 3 (an integer),
-    0 < alpha < pi/2.
+    mid-line of a face), fitted as its **equal-force cone**: the pyramid's force is beta_n
+    times that of its equal-area cone (theta_area = ``fit_pyramid_cone_angle(alpha, sides)``,
+    the cone with the pyramid's cross-section area at every depth), beta_n measured by the BEM
+    (``PYRAMID_BEM_FACTOR``, docs/pyramid.md: 1.0778 for three faces, 1.0268 for four), and
+    the cone theta = ``fit_pyramid_force_cone_angle(alpha, sides, beta_n)`` has that force by
+    (5.40). The force law is the pyramid's to beta_n's error (<= 2.2e-5); the cone's contact
+    radius stands in for the pyramid's non-circular contact. sides in 3, 4, 6, 8 (the
+    pyramids the BEM has measured), 0 < alpha < pi/2.
     """
 
     alpha: float
     sides: int = 4
     cone: Cone = field(init=False, repr=False)
+    theta_area: float = field(init=False, repr=False)
+    beta: float = field(init=False, repr=False)
 
     def __post_init__(self):
         alpha = float(between("alpha", self.alpha, 0.0, np.pi / 2))
-        if not (isinstance(self.sides, int | np.integer) and self.sides >= 3):
-            raise ValueError(f"sides = {self.sides!r} is out of range; valid: an integer >= 3")
+        if not (isinstance(self.sides, int | np.integer)
+                and int(self.sides) in PYRAMID_BEM_FACTOR):
+            raise ValueError(f"sides = {self.sides!r} is out of range; valid: "
+                             f"{', '.join(map(str, PYRAMID_BEM_FACTOR))} (the pyramids whose "
+                             "force the BEM has measured, docs/pyramid.md)")
+        n = int(self.sides)
+        beta = PYRAMID_BEM_FACTOR[n][0]
         object.__setattr__(self, "alpha", alpha)
-        object.__setattr__(self, "sides", int(self.sides))
-        theta = float(gen.fit_pyramid_cone_angle(alpha, float(self.sides)))  # equal area
+        object.__setattr__(self, "sides", n)
+        object.__setattr__(self, "beta", beta)
+        object.__setattr__(self, "theta_area", float(gen.fit_pyramid_cone_angle(alpha, float(n))))
+        theta = float(gen.fit_pyramid_force_cone_angle(alpha, float(n), beta))  # equal force
         object.__setattr__(self, "cone", Cone(theta=theta))
 
     def force(self, E_star, z, z0, F0, s0):
@@ -282,9 +302,9 @@ class Pyramid(_Tip):
         from hertzmdr.numeric import force_law
 
         K = float(force_law.cone(self.cone.theta, 1.0).K)  # F = K E* d^2, (5.40) at theta
-        return (f"{self.sides}-sided pyramid, alpha = {self.alpha:.6g} rad, as its equal-area "
-                f"cone theta = {self.cone.theta:.6g} rad: F = {K:.6g} E* d^2 (an "
-                "approximation)")
+        return (f"{self.sides}-sided pyramid, alpha = {self.alpha:.6g} rad, as its equal-force "
+                f"cone theta = {self.cone.theta:.6g} rad: F = {K:.6g} E* d^2 (the BEM's "
+                f"{self.beta:.7g} times the equal-area cone's)")
 
 
 @dataclass(frozen=True)

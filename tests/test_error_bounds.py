@@ -138,7 +138,7 @@ ROUTES = {
     "problem7b_parabola": (lambda: Hertz(e_star(STEEL), mp.mpf(1) / 100), 0.3),
     "problem7c_cone": (lambda: PowerLaw(e_star((3e9, 0.35)), mp.tan(_rad(30)), 1), 0.35),
     "problem7d_power_law": (lambda: PowerLaw(e_star((70e9, 0.33)), 1e6, 3), 0.33),
-    # pyramids as their equal-area cones: tan(theta_eq) from the polygon's shoelace area
+    # pyramids as the cones of their force laws: beta_n times the shoelace-area cone's cot
     "pyramid_berkovich_silica": (lambda: PowerLaw(e_star((72e9, 0.17), (1141e9, 0.07)),
                                                   1 / _cot_pyramid(3, "65.27"), 1), 0.17),
     "fit_pyramid_afm": (lambda: PowerLaw(e_star((20e3, 0.5)), 1 / _cot_pyramid(4, 35), 1),
@@ -543,11 +543,12 @@ def _jkr_sphere(E, R, dgamma):
 
 
 def _cot_pyramid(sides, deg):
-    """cot(theta) of the pyramid's equal-area cone (tests/test_fit_scene.py: shoelace area)."""
-    from test_fit_scene import cot_equal_area
+    """cot(theta) of the cone of the pyramid's force law (tests/test_fit_scene.py: beta_n times
+    the shoelace-area cone's)."""
+    from test_fit_scene import cot_force_law
 
     with mp.workdps(DPS):
-        return +cot_equal_area(sides, _rad(deg))
+        return +cot_force_law(sides, _rad(deg))
 
 
 def _jkr_cone(E, theta_deg, dgamma):

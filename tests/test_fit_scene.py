@@ -1,8 +1,10 @@
 """A pyramid in scenes and a scene's ``[fit]`` table (issue 17).
 
-The pyramid is solved as its equal-area cone: checked against the cone's closed form (Sneddon)
-at the angle computed here, at 30 digits, from the area of the pyramid's cross-section (the
-shoelace formula over the polygon's corners), not from the derived relation. Every effect a cone
+The pyramid is solved as the cone of its force law, beta_n times its equal-area cone's force
+(beta_n by the BEM: tests/test_fit.py::test_pyramid_force_by_bem checks it against the BEM of the
+pyramid itself): checked against the cone's closed form (Sneddon) at the equal-area angle
+computed here, at 30 digits, from the area of the pyramid's cross-section (the shoelace formula
+over the polygon's corners), not from the derived relations. Every effect a cone
 scene gives, the pyramid's scene gives, with the same numbers. The ``[fit]`` table: ``hertzmdr
 fit --scene`` without a curve fits and prints what ``hertzmdr fit CURVE --scene`` does; a
 depth range is a fixed point of the fit; every bad key is one line naming it, exit 2.
@@ -43,6 +45,12 @@ def cot_equal_area(sides: int, alpha) -> mp.mpf:
     return mp.sqrt(area / 2 / mp.pi)
 
 
+def cot_force_law(sides: int, alpha) -> mp.mpf:
+    """cot(theta) of the cone with the pyramid's force: beta_n (the BEM's, fit.PYRAMID_BEM_FACTOR)
+    times the equal-area cone's (Sneddon's force (5.40) is proportional to cot(theta))."""
+    return mp.mpf(fit.PYRAMID_BEM_FACTOR[sides][0]) * cot_equal_area(sides, alpha)
+
+
 def _pyramid(**keys) -> dict:
     return {"name": "tip", "shape": "pyramid", "rigid": True, **keys}
 
@@ -55,16 +63,17 @@ def _run(body, effects, load=None, **extra) -> dict:
 
 # -- the pyramid ------------------------------------------------------------------------------
 @pytest.mark.parametrize("sides,deg", [(3, 65.27), (4, 68.0), (3, 35.2644), (4, 35.0), (6, 20.0),
-                                       (5, 80.0)])
+                                       (8, 80.0)])
 def test_pyramid_force_by_the_area_and_sneddon(sides, deg):
     """F = (2/pi) E* d^2 cot(theta) (Sneddon's cone) and a = 2 d cot(theta)/pi (5.38) at the
-    equal-area cone's cot(theta) from the polygon's shoelace area, at 30 digits. The scene's
+    force law's cot(theta): beta_n times the equal-area cone's from the polygon's shoelace area,
+    at 30 digits. The scene's
     float64 chain (atan of the derived relation, tan inside the cone's laws) rounds a few
     times: 1e-13 relative bounds it, the closed forms' reported 1e-14 a value at a time."""
     d, E_star = 1e-7, 70e9 / (1 - 0.25**2)
     doc = _run(_pyramid(sides=sides, half_angle=f"{deg} deg"), ["force", "contact_radius"])
     with mp.workdps(30):
-        cot = cot_equal_area(sides, mp.radians(deg))
+        cot = cot_force_law(sides, mp.radians(deg))
         F = 2 / mp.pi * E_star * mp.mpf(d) ** 2 * cot
         a = 2 * mp.mpf(d) * cot / mp.pi
     assert abs(doc["effects"]["force"]["value"] / float(F) - 1) < 1e-13
@@ -78,10 +87,13 @@ def test_pyramid_force_by_the_area_and_sneddon(sides, deg):
 def test_presets_have_the_indenters_areas(preset, sides, area):
     """The projected areas per d^2 the nanoindentation literature quotes (Vickers 24.504,
     modified Berkovich 24.494, cube corner 3 sqrt(3)/2 = 2.598; to their 4 digits) from the
-    model's equal-area angle: pi cot^2(theta)."""
+    model's angle: pi cot^2(theta)/beta_n^2 (its cone has beta_n times the equal-area cone's
+    cot(theta))."""
     doc = _run(_pyramid(preset=preset), ["force"])
     assert doc["model"]["sides"] == sides
-    got = math.pi / math.tan(doc["model"]["angle"]) ** 2
+    beta = fit.PYRAMID_BEM_FACTOR[sides][0]
+    assert doc["model"]["bem_factor"] == beta
+    got = math.pi / (math.tan(doc["model"]["angle"]) * beta) ** 2
     assert abs(got / area - 1) < 5e-4, got  # the quoted figures' 4 digits
 
 
@@ -89,7 +101,7 @@ def test_pyramid_warns_that_it_is_an_approximation():
     doc = _run(_pyramid(sides=4, half_angle="68 deg"), ["force"])
     w = {x["ratio"]: x for x in doc["warnings"]}
     assert w["1/sides"]["value"] == 0.25 and "approximation" in w["1/sides"]["message"]
-    assert "equal-area cone" in doc["model"]["description"]
+    assert "cone of its force law" in doc["model"]["description"]
     assert f"F = {doc['model']['force_factor']:.6g} E* d^2" in doc["model"]["description"]
 
 
@@ -125,7 +137,8 @@ def test_every_cone_effect_with_the_same_numbers(extra, effects):
 
 
 @pytest.mark.parametrize("keys,key,words", [
-    ({"sides": 2, "half_angle": "60 deg"}, "sides", "integer in [3, 64]"),
+    ({"sides": 2, "half_angle": "60 deg"}, "sides", "one of 3, 4, 6, 8"),
+    ({"sides": 5, "half_angle": "60 deg"}, "sides", "one of 3, 4, 6, 8"),
     ({"sides": 4.0, "half_angle": "60 deg"}, "sides", "must be an integer"),
     ({"sides": True, "half_angle": "60 deg"}, "sides", "must be an integer"),
     ({"sides": 4, "half_angle": "90 deg"}, "half_angle", "(0, 90 deg)"),
@@ -164,17 +177,17 @@ def test_pyramid_example_runs(capsys):
 # -- the [fit] table ---------------------------------------------------------------------------
 def example_curve() -> str:
     """The text of examples/fit_pyramid_afm_curve.csv: its recipe. The force is the cone's
-    (numeric/cone.py, (5.40)) at the equal-area angle computed here from the polygon's area
+    (numeric/cone.py, (5.40)) at the force law's angle computed here from the polygon's area
     (not by the derived relation); three columns as an instrument exports them, the header
     without units (the scene's [fit] gives them)."""
     with mp.workdps(30):
-        theta = float(mp.acot(cot_equal_area(EXAMPLE_SIDES, mp.mpf(EXAMPLE_ALPHA))))
+        theta = float(mp.acot(cot_force_law(EXAMPLE_SIDES, mp.mpf(EXAMPLE_ALPHA))))
     z = np.linspace(0.0, 3e-6, 600)
     d = np.maximum(z - 1.5e-6, 0.0)
     F = cone.force(d, theta, EXAMPLE_E_STAR) + 0.5e-9 + 2e-4 * z
     F = F + np.random.default_rng(17).normal(0.0, 0.1e-9, z.size)
     lines = ["# synthetic AFM force curve: a rigid 4-sided pyramid (half-angle 35 deg) on E = 20",
-             "# kPa, nu = 0.5 (E* = 26.667 kPa), as its equal-area cone; contact point 1.5 um,",
+             "# kPa, nu = 0.5 (E* = 26.667 kPa), by its force law; contact point 1.5 um,",
              "# baseline 0.5 nN + 2e-4 N/m * z, Gaussian noise of 0.1 nN (seed 17); made by",
              "# tests/test_fit_scene.py::example_curve. Columns: time [s], height [nm], force",
              "# [pN] (the units are in examples/fit_pyramid_afm.toml's [fit] table)",
@@ -256,13 +269,14 @@ def test_depth_range_is_a_fixed_point():
 
 
 def test_noise_free_pyramid_curve_by_the_shoelace_route(tmp_path, capsys):
-    """A noise-free curve whose force is Sneddon's cone at the shoelace-area angle (mpmath, 30
-    digits), fitted through a [fit] table: E* back to 1e-10 (the issue's noise-free bound; the
-    curve's values are float64 roundings of the 30-digit force)."""
+    """A noise-free curve whose force is Sneddon's cone at the force law's angle (beta_n times
+    the shoelace-area cot; mpmath, 30 digits), fitted through a [fit] table: E* back to 1e-10
+    (the issue's noise-free bound; the curve's values are float64 roundings of the 30-digit
+    force)."""
     E_star, z0, sides = 3e6, 2e-7, 3
     z = np.linspace(0.0, 4e-7, 300)
     with mp.workdps(30):
-        cot = cot_equal_area(sides, mp.radians(65.27))
+        cot = cot_force_law(sides, mp.radians(65.27))
         F = [float(2 / mp.pi * E_star * max(mp.mpf(float(x)) - mp.mpf(z0), 0) ** 2 * cot + 1e-9)
              for x in z]
     (tmp_path / "c.csv").write_text("z [m], F [N]\n" + "".join(

@@ -124,13 +124,12 @@ ASSUMPTIONS: dict[str, Assumption] = {a.ratio: a for a in [
         "power law n = 2) whose interface gives a `range`", "below"),
     Assumption(
         "1/sides", "the MDR takes the profile axisymmetric (a cone is a pyramid of infinitely "
-        "many faces); a pyramid is solved as the cone of the same cross-section area at every "
-        "depth (F = K E* d^2, K stated with the model), an approximation of its force", 0.0,
-        "no pyramid is axisymmetric: the equal-area cone has its contact area at every depth "
-        "but not its exact force; the flat punch of square section is 1.021 times stiffer "
-        "than the circular one of the same area, of triangular section 1.061 "
-        "(docs/non_axisymmetric.md), and other equivalent-cone conventions differ by a few "
-        "per cent (docs/fitting.md)",
+        "many faces); a pyramid is solved as the cone of its force law (the BEM's beta_n times "
+        "the equal-area cone's force, docs/pyramid.md): its force is the pyramid's, its "
+        "contact radius, pressure and stresses are the cone's, an approximation", 0.0,
+        "no pyramid is axisymmetric: its contact is not a disc and its pressure is singular "
+        "along the edges; the force law F = K E* d^2 is the BEM's to 2.2e-5, the equal-area "
+        "cone's alone would be 7.8 % (three faces) and 2.7 % (four) too small (docs/pyramid.md)",
         "pyramid"),
 ]}
 
