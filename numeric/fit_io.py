@@ -9,7 +9,10 @@ The tip file is a scene (docs/scenes.md) with its two bodies: the sample is the 
 (its ``nu`` gives the sample's Young's modulus beside E*; its ``E``, which a scene requires, is
 shown beside the fitted one for comparison, not used), the tip is the other body (``sphere``:
 the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``pyramid`` (its equal-area cone),
-``flat_punch`` or ``power_law``; rigid or elastic). The scene's effects and load are not used.
+``flat_punch`` or ``power_law``; rigid or elastic). The scene's effects and load are not
+used. Its optional ``[fit]`` table (:class:`..scene.schema.FitSpec`, docs/fitting.md) names the
+curve, its columns and units (:func:`read_columns`), the modulus reported and a depth range
+(:func:`fit_in_range`).
 """
 
 from __future__ import annotations
