@@ -128,6 +128,8 @@ def test_every_cone_effect_with_the_same_numbers(extra, effects):
     ({"sides": 2, "half_angle": "60 deg"}, "sides", "integer in [3, 64]"),
     ({"sides": 4.0, "half_angle": "60 deg"}, "sides", "must be an integer"),
     ({"sides": True, "half_angle": "60 deg"}, "sides", "must be an integer"),
+    ({"sides": {"from": 3, "to": 5, "points": 3}, "half_angle": "60 deg"}, "sides",
+     "not swept"),
     ({"sides": 4, "half_angle": "90 deg"}, "half_angle", "(0, 90 deg)"),
     ({"sides": 4, "half_angle": "1 mm"}, "half_angle", ""),
     ({"sides": 4}, "half_angle", "missing"),
