@@ -53,21 +53,24 @@ class StepTimeout(Exception):
 
 @contextmanager
 def _time_limit(seconds: float | None):
-    """Interrupt a SymPy step after ``seconds`` (only in the main thread, where SIGALRM works)."""
+    """Interrupt a SymPy step after ``seconds`` of this process's CPU time (ITIMER_PROF, only in
+    the main thread, where signals work). CPU time, not wall time: on a loaded machine a
+    wall-clock limit cut SymPy off before it had even returned its unevaluated Integral, so what
+    a derivation could do depended on the other processes."""
     if not seconds or threading.current_thread() is not threading.main_thread():
         yield
         return
 
     def handler(signum, frame):
-        raise StepTimeout(f"no closed form within {seconds} s")
+        raise StepTimeout(f"no closed form within {seconds} s of CPU time")
 
-    old = signal.signal(signal.SIGALRM, handler)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
+    old = signal.signal(signal.SIGPROF, handler)
+    signal.setitimer(signal.ITIMER_PROF, seconds)
     try:
         yield
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, old)
 
 
 def _clean(expr: sp.Expr) -> sp.Expr:
@@ -277,7 +280,7 @@ def solve(f: sp.Expr, r: sp.Symbol, *, seconds: float | None = 20) -> MDRSolutio
     r
         Its radial symbol (declare it positive).
     seconds
-        Time limit for each SymPy integral (main thread only); None for no limit.
+        Limit of CPU time [s] for each SymPy integral (main thread only); None for no limit.
 
     Returns
     -------

@@ -3,6 +3,7 @@
     hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
+    hertzmdr fit RETRACT.csv --scene TIP.toml --adhesion [...]   (JKR: E*, z_0, Delta gamma)
     hertzmdr fit --scene SCENE.toml [...]   (the curve and its settings from the scene's [fit])
     hertzmdr fit MAP --scene TIP.toml [--out DIR [--force]] [--workers N] [--z0 ..] [--sigma ..]
 
@@ -73,6 +74,10 @@ p_fit.add_argument("--workers", type=int, help="a map: worker processes (default
 p_fit.add_argument("--z0", help="a guess of the contact point, with a unit (e.g. \"1.2 um\")")
 p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a unit "
                    "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
+p_fit.add_argument("--adhesion", action="store_true",
+                   help="a curve: fit an adhesive retract curve with the JKR paraboloid (the "
+                   "work of adhesion as a fifth parameter; the scene's [interface] "
+                   "work_of_adhesion is shown for comparison, never used)")
 p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")
 p_acc.add_argument("--out", type=Path, default=Path("docs/accuracy.md"),
                    help="the Markdown report to write, its plot beside it as .png (default: "
@@ -292,7 +297,13 @@ def cmd_fit(args) -> int:
 
     table = _fit_table(args)
     if table.columns is None and table.units is None and fit_io.is_batch(args.curve):
+        if args.adhesion:
+            raise UsageError(f"--adhesion: {args.curve} is a force map or a folder; the "
+                             "adhesive fit takes one curve")
         return cmd_fit_batch(args, table)
+    if args.adhesion and table.depth_range is not None:
+        raise UsageError("--adhesion: the scene's [fit] depth_range is for the fits without "
+                         "adhesion; the adhesive fit takes the whole retract curve")
     if args.workers is not None:
         raise UsageError(f"--workers: {args.curve} is one curve; --workers is for a force map "
                          "or a folder of curves")
@@ -302,7 +313,11 @@ def cmd_fit(args) -> int:
         options = _fit_options(args, table, nu, tip_E, tip_nu)
         if args.out is not None:
             check_figure_out(args.out, args.force)
-        if table.depth_range is None:
+        if args.adhesion:
+            from hertzmdr.numeric import fit_adhesive
+            scene_dgamma = _scene_work_of_adhesion(args.scene)
+            result = fit_adhesive.fit_curve(z, F, tip, **options)
+        elif table.depth_range is None:
             result = fit.fit_curve(z, F, tip, **options)
         else:
             result = fit_io.fit_in_range(z, F, tip, table.depth_range, **options)
@@ -319,9 +334,19 @@ def cmd_fit(args) -> int:
         except OSError as exc:
             raise UsageError(f"--out {args.out}: cannot write ({exc})") from None
     print(fit_io.report(result, scene_E))
+    if args.adhesion and scene_dgamma:
+        print(f"the scene's work of adhesion = {scene_dgamma:.6g} J/m^2; fitted "
+              f"{result.dgamma:.6g} ± {result.errors[2]:.3g} J/m^2")
     if args.out is not None:
         print(f"wrote {args.out}")
     return 0
+
+
+def _scene_work_of_adhesion(path) -> float:
+    """The scene's [interface] work_of_adhesion [J/m^2] (0 when it gives none)."""
+    from hertzmdr.numeric import scene
+
+    return float(scene.load(path).spec.interface.work_of_adhesion)
 
 
 def cmd_fit_batch(args, table) -> int:

@@ -19,9 +19,12 @@ of (J^T J)^-1 s^2 at the solution, s^2 = sum(r^2)/(N - 4) the residual variance 
 residuals when ``sigma`` is given): the linearised covariance, which is what the coverage test
 of tests/test_fit.py checks against the nominal 68 % per standard error.
 
-A regular pyramid is fitted as its equal-area cone (:class:`Pyramid`). Batches and force maps:
-:mod:`hertzmdr.numeric.fit_batch`. Not yet (issue 17): sampled tips through the numerical MDR,
-adhesion (docs/fitting.md).
+A regular pyramid is fitted as its equal-area cone (:class:`Pyramid`). A measured tip
+(:class:`SampledTip`) goes through the numerical MDR: the scan and Levenberg-Marquardt use a
+table of its force law, then Gauss-Newton steps on the exact MDR at every point finish the fit
+(:func:`_polish`) and carry the MDR's error bound into the parameters (``model_error``).
+Batches and force maps: :mod:`hertzmdr.numeric.fit_batch`. Not yet (issue 17): adhesion
+(docs/fitting.md).
 """
 
 from __future__ import annotations
@@ -37,8 +40,8 @@ from hertzmdr.numeric._validate import as_float, between, poisson, positive
 from hertzmdr.numeric.powerlaw import kappa
 from hertzmdr.numeric.scene.assumptions import check as check_assumptions
 
-__all__ = ["Paraboloid", "ExactSphere", "Cone", "Pyramid", "FlatPunch", "PowerLaw", "FitResult",
-           "NoContactError", "fit_curve", "PARAMETERS"]
+__all__ = ["Paraboloid", "ExactSphere", "Cone", "Pyramid", "FlatPunch", "PowerLaw", "SampledTip",
+           "FitResult", "NoContactError", "fit_curve", "PARAMETERS"]
 
 #: names of the fitted parameters, in the order of :attr:`FitResult.values`
 PARAMETERS = ("E_star", "z_0", "F_0", "s_0")
@@ -96,6 +99,14 @@ class _Tip(ABC):
         """(dF/dE*, dF/dz_0 at E* = 1) at one contact point; dF/dz_0 is proportional to E*
         (asserted in derive/fit.py), so the fit evaluates the tip once per contact point."""
         return self.derivatives(1.0, z, z0)
+
+    #: whether :meth:`_unit` is a table (a sampled tip): the fit then ends on :meth:`_exact`
+    tabulated = False
+
+    def _exact(self, z, z0):
+        """:meth:`_unit` and a bound of its relative error per point (0: a closed form)."""
+        g, h = self._unit(z, z0)
+        return g, h, np.zeros(np.shape(g))
 
     @abstractmethod
     def ratios(self, d_max: float) -> dict[str, float]:
@@ -333,6 +344,166 @@ class PowerLaw(_Tip):
         return f"power law f = c_n r^n, c_n = {self.c_n:.6g} m^(1-n), n = {self.n:.6g}"
 
 
+#: intervals in sqrt(d) of a sampled tip's table (the start's scan and Levenberg-Marquardt's
+#: model; the fit ends on the exact MDR at every point, so the table sets speed, not accuracy:
+#: at 128 the table's error moves the parameters by ~1e-11 relative, and one Gauss-Newton
+#: step on the exact MDR, confirmed by a second evaluation, finishes the fit; at 48 it took two)
+TABLE_INTERVALS = 128
+#: the table reaches this factor beyond the deepest indentation asked for (fewer rebuilds)
+TABLE_MARGIN = 1.25
+#: most Gauss-Newton steps on the exact MDR after Levenberg-Marquardt on a sampled tip's table
+#: (one suffices in the usual case, see TABLE_INTERVALS)
+POLISH_STEPS = 4
+#: a Gauss-Newton step below this fraction of every parameter's scale (E*, the span of z, of F
+#: and of F/z) ends the polish: the next one would be of its square
+POLISH_TOL = 1e-12
+#: ... or below this fraction of every parameter's standard error (a noisy curve)
+POLISH_SIGMA = 1e-3
+
+
+@dataclass(frozen=True, eq=False)
+class SampledTip(_Tip):
+    """A measured axisymmetric tip: any :class:`hertzmdr.numeric.mdr.Profile` (samples r_i, f_i
+    or a callable), its force law F_tip = E* Phi(d) by the numerical MDR ((5.55), (5.57)).
+
+    Phi(d) = F(d)/E* [m^2] and the stiffness dF/dd = 2 E* a(d) ((5.12), the MDR's own
+    derivative ``ForceDepthCurve.stiffness``, not a finite difference) do not depend on E* or
+    z_0: the tip keeps a table of (d, Phi, dPhi/dd) at depths uniform in sqrt(d) (Phi goes like
+    d^(3/2) for a smooth apex, d^2 for a conical one), interpolated by cubic Hermite
+    polynomials in sqrt(d) with the exact slopes, for the start's scan and for
+    Levenberg-Marquardt. :func:`fit_curve` then finishes with Gauss-Newton steps on the exact
+    MDR at every point (:meth:`_exact`), whose ``rel_error`` per point bounds the model's
+    error; :attr:`FitResult.model_error` carries it into the parameters.
+
+    Parameters
+    ----------
+    profile : hertzmdr.numeric.mdr.Profile
+        The tip's gap profile f(r) [m] from its apex.
+    rtol : float, optional
+        Target of the MDR's relative error bound per point (``mdr.RTOL_RANGE``, default
+        ``mdr.DEFAULT_RTOL``); a sampled profile reaches what its samples allow.
+    """
+
+    profile: object
+    rtol: float | None = None
+
+    tabulated = True  # a class attribute, not a field: fit_curve polishes on _exact
+
+    def __post_init__(self):
+        from hertzmdr.numeric import mdr
+
+        if not isinstance(self.profile, mdr.Profile):
+            raise ValueError(f"profile = {self.profile!r} is out of range; valid: a "
+                             "hertzmdr.numeric.mdr.Profile (Profile.from_samples(r, f))")
+        if self.rtol is not None:
+            object.__setattr__(self, "rtol", mdr._check_rtol(self.rtol))
+        g, err = self.profile.g(np.array([self.profile.r_max]), return_error=True)
+        # the deepest depth both representations (fine and coarse) reach (5.55)
+        object.__setattr__(self, "d_limit", float(g[0] - 2 * err[0]))
+        if not self.d_limit > 0:
+            raise ValueError(f"the sampled tip reaches no depth: g(r_max) = {float(g[0]):.3g} m "
+                             f"(5.52) at r_max = {self.profile.r_max:.6g} m, within its error "
+                             f"{float(err[0]):.3g} m of 0 (flat over its samples); valid: a "
+                             "profile that rises above its apex within the samples")
+        object.__setattr__(self, "_memo", {})
+
+    @classmethod
+    def from_samples(cls, r, f, *, breakpoints=(), k: int = 5, rtol=None) -> SampledTip:
+        """The tip of samples r_i [m] (from 0, increasing) and f_i [m] (non-decreasing):
+        :meth:`hertzmdr.numeric.mdr.Profile.from_samples` with its ``breakpoints`` and ``k``."""
+        from hertzmdr.numeric import mdr
+
+        return cls(mdr.Profile.from_samples(r, f, breakpoints=breakpoints, k=k), rtol)
+
+    def __repr__(self):  # no object address: messages must be the same in every run
+        return f"SampledTip({self.profile.source!r}, r_max={self.profile.r_max!r})"
+
+    def _too_deep(self, d_max: float) -> ValueError:
+        return ValueError(
+            f"the indentation d = {d_max:.6g} m is deeper than the sampled tip reaches: "
+            f"g(r_max) = {self.d_limit:.6g} m (5.55), its samples ending at r_max = "
+            f"{self.profile.r_max:.6g} m; valid: d < {self.d_limit:.6g} m (sample the tip "
+            "further out, or fit the curve to a shallower depth)")
+
+    def _curve(self, d):
+        """(Phi [m^2], dPhi/dd = 2 a [m], rel_error [1]) at the depths d > 0 [m] by the exact
+        MDR ((5.55), (5.57); the stiffness (5.12), whose relative error is that of a)."""
+        c = self.profile.force_depth_curve(d, E_star=1.0, rtol=self.rtol)
+        return c.force, c.stiffness, c.rel_error
+
+    def _table(self, d_max: float):
+        """The cubic Hermite interpolant of Phi in s = sqrt(d) up to d_max [m] at least (with
+        TABLE_MARGIN), and the top of the table [m], its Phi [m^2] and dPhi/dd [m]."""
+        from scipy.interpolate import CubicHermiteSpline
+
+        t = self._memo.get("table")
+        if t is not None and t[1] >= min(d_max, self.d_limit):
+            return t
+        top = min(TABLE_MARGIN * d_max, self.d_limit)
+        s = np.sqrt(top) * np.linspace(0.0, 1.0, TABLE_INTERVALS + 1)
+        phi, k, _ = self._curve(s[1:] ** 2)
+        phi, k = np.r_[0.0, phi], np.r_[0.0, k]
+        t = (CubicHermiteSpline(s, phi, k * 2 * s), top, float(phi[-1]), float(k[-1]))
+        self._memo["table"] = t
+        return t
+
+    def _tabled(self, d):
+        """(Phi [m^2], dPhi/dd [m]) at the depths d [m] (any shape) from the table; 0 for
+        d <= 0, continued linearly (as the cylinder of the last contact radius) past its top."""
+        d = np.asarray(d, float)
+        spl, top, phi_top, k_top = self._table(float(np.max(d, initial=0.0)))
+        ds = np.sqrt(np.clip(d, 0.0, top))
+        phi = spl(ds)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            k = np.where(ds > 0, spl(ds, 1) / (2 * ds), 0.0)
+        over = d > top
+        phi = np.where(over, phi_top + k_top * (d - top), np.where(d > 0, phi, 0.0))
+        k = np.where(over, k_top, np.where(d > 0, k, 0.0))
+        return phi, k
+
+    def _exact(self, z, z0):
+        """(dF/dE* [m^2], dF/dz_0 at E* = 1 [m], rel_error [1]) at the positions z [m] by the
+        exact MDR at every point in contact: dF/dE* = Phi(d), dF/dz_0 = -E* 2 a(d) (the
+        stiffness (5.12) with a minus: d = z - z_0), and the bound of the relative error of
+        both per point (0 where d <= 0)."""
+        d = np.asarray(z, float) - z0
+        touch = d > 0
+        out = np.zeros((3, d.size))
+        if touch.any():
+            d_max = float(d[touch].max())
+            if d_max > self.d_limit:
+                raise self._too_deep(d_max)
+            phi, k, err = self._curve(d[touch])
+            out[0, touch], out[1, touch] = phi, -k
+            out[2, touch] = err
+        return out[0], out[1], out[2]
+
+    def force(self, E_star, z, z0, F0, s0):
+        g, _, _ = self._exact(np.ravel(z), z0)
+        return E_star * g.reshape(np.shape(z)) + F0 + s0 * np.asarray(z, float)
+
+    def derivatives(self, E_star, z, z0):
+        g, h, _ = self._exact(np.ravel(z), z0)
+        return g.reshape(np.shape(z)), E_star * h.reshape(np.shape(z))
+
+    def basis(self, z, z0):
+        return self._tabled(np.asarray(z, float) - z0)[0]
+
+    def _unit(self, z, z0):  # Levenberg-Marquardt's model: the table
+        phi, k = self._tabled(np.asarray(z, float) - z0)
+        return phi, -k
+
+    def ratios(self, d_max):
+        if d_max > self.d_limit:
+            raise self._too_deep(d_max)
+        c = self.profile.force_depth_curve(np.array([d_max]), E_star=1.0, rtol=self.rtol)
+        return {"d/a": d_max / float(c.contact_radius[0])}
+
+    def describe(self):
+        return (f"sampled tip ({self.profile.source}, r_max = {self.profile.r_max:.6g} m), "
+                "numerical MDR")
+
+
 @dataclass(frozen=True)
 class FitResult:
     """The fitted parameters of a force curve, their uncertainties and the fit's diagnostics.
@@ -363,6 +534,12 @@ class FitResult:
     warnings
         One sentence per problem found (limits of the chapter's assumptions exceeded, a poorly
         determined contact point, few points in contact).
+    model_error
+        A sampled tip only (None otherwise): bounds of the shift of each parameter, in the order
+        of :data:`PARAMETERS`, that the numerical MDR's error can cause: sum_i |A_ki| eps_i
+        |E* Phi_i| / w_i, A = (J^T J)^-1 J^T the linearised least-squares map of the weighted
+        data, eps_i the MDR's ``rel_error`` bound of point i (docs/fitting.md, "Measured
+        tips").
     """
 
     tip: _Tip
@@ -380,6 +557,7 @@ class FitResult:
     n_contact: int
     max_depth: float
     warnings: tuple[str, ...]
+    model_error: np.ndarray | None = None
 
     @property
     def E_star(self) -> float:
@@ -398,6 +576,9 @@ class FitResult:
             rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
         if self.E is not None:
             rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
+        if self.model_error is not None:
+            rows.append(f"the tip's MDR error moves E* by at most {self.model_error[0]:.3g} Pa "
+                        f"and z_0 by {self.model_error[1]:.3g} m")
         fit = (f"reduced chi^2 = {self.reduced_chi2:.4g}" if self.weighted else
                f"residuals' std = {np.sqrt(self.reduced_chi2):.4g} N")
         rows.append(f"{fit}, {self.F.size} points, {self.n_contact} in contact, deepest "
@@ -521,6 +702,42 @@ def _jump(z, r, F):
             "biased by it (fit the curve on one side of it)")
 
 
+def _polish(tip, z, F, w, p):
+    """Gauss-Newton steps from p on the exact model of a tabulated tip (:meth:`_Tip._exact`):
+    (parameters, weighted residuals, bounds of the parameters' shifts by the model's error,
+    the model's (dF/dE*, dF/dz_0 at E* = 1) at the returned z_0).
+
+    Each step is -pinv(J) r at the current parameters. The loop ends when the step the last
+    evaluation proposes is below POLISH_TOL of every parameter's scale or below POLISH_SIGMA
+    of its standard error (the parameters are then that close to the exact model's least
+    squares; the step is not taken, so the returned residuals and model are those of the
+    returned parameters), or when it stopped shrinking (rounding). The table's error moves p
+    by ~1e-11 relative for a smooth tip: two evaluations of the MDR at every point. Gauss-Newton
+    converges linearly on noisy curves (a nonzero residual), by ~1e-2 a step: the POLISH_SIGMA
+    test then ends it after a step or two. The bound of the model error's effect is
+    propagated linearly: |dp_k| <= sum_i |A_ki| |dF_i|/w_i, A = pinv(J), |dF_i| <= rel_error_i
+    E* Phi_i the MDR's bound at point i.
+    """
+    big, last = np.ptp(F) or 1.0, np.inf
+    scale = np.array([abs(p[0]), np.ptp(z), big, big / np.ptp(z)])
+    for it in range(POLISH_STEPS + 1):
+        g, h, eps = tip._exact(z, p[1])
+        r = (p[0] * g + p[2] + p[3] * z - F) / w
+        J = np.column_stack([g, p[0] * h, np.ones_like(z), z]) / w[:, None]
+        norms = np.linalg.norm(J, axis=0)
+        norms = np.where(norms > 0, norms, 1.0)
+        A = np.linalg.pinv(J / norms) / norms[:, None]
+        step = -A @ r
+        sigma = np.sqrt(np.einsum("kn,kn->k", A, A) * (r @ r) / max(z.size - 4, 1))
+        size = float(np.max(np.abs(step) / scale))
+        if (it == POLISH_STEPS or size <= POLISH_TOL or size > last / 4
+                or np.all(np.abs(step) <= POLISH_SIGMA * sigma)):
+            break  # converged, or at the floor of rounding (the step stopped shrinking)
+        p, last = p + step, size
+    bound = np.abs(A) @ (eps * np.abs(p[0] * g) / w)
+    return p, r, bound, (g, h)
+
+
 def _covariance(J):
     """(J^T J)^-1 by the SVD of the column-scaled J, and whether J is of full rank."""
     norms = np.linalg.norm(J, axis=0)
@@ -563,7 +780,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
         the cantilever's deflection subtracted.
     F : array_like
         Force on the tip [N], positive in compression, one per position.
-    tip : Paraboloid, ExactSphere, Cone, Pyramid, FlatPunch or PowerLaw
+    tip : Paraboloid, ExactSphere, Cone, Pyramid, FlatPunch, PowerLaw or SampledTip
         The tip's shape.
     nu : float, optional
         Poisson's ratio of the sample, -1 < nu <= 0.5: when given, the sample's Young's modulus
@@ -591,7 +808,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     """
     if not isinstance(tip, _Tip):
         raise ValueError(f"tip = {tip!r} is not a tip; valid: Paraboloid, ExactSphere, Cone, "
-                         "Pyramid, FlatPunch or PowerLaw of hertzmdr.numeric.fit")
+                         "Pyramid, FlatPunch, PowerLaw or SampledTip of hertzmdr.numeric.fit")
     z, F, w = _curve(z, F, sigma)
     if z0 is not None:
         z0 = float(as_float("z0", z0))
@@ -622,6 +839,11 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
                             xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
     p = sol.x
     res = sol.fun
+    model_error = None
+    if tip.tabulated:  # Levenberg-Marquardt ran on the tip's table: finish on the exact MDR
+        p, res, model_error, exact = _polish(tip, z, F, w, p)
+        cache.clear()
+        cache[p[1]] = exact
     dof = z.size - len(PARAMETERS)
     chi2 = float(res @ res) / dof
     d = z - p[1]
@@ -629,7 +851,8 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if not p[0] > 0 or n_contact < MIN_CONTACT_POINTS:
         _no_contact(f"the best fit has E* = {p[0]:.3g} Pa and {n_contact} point(s) in contact")
     d_max = float(d[-1])
-    tip_force = float(tip.force(p[0], z[-1:], p[1], 0.0, 0.0)[0])
+    g_fit, _ = unit(p[1])
+    tip_force = float(p[0] * g_fit[-1])
     noise = np.sqrt(chi2) * float(w[-1])
     if tip_force < CONTACT_SIGNIFICANCE * noise:
         _no_contact(f"the tip's force at the deepest point, {tip_force:.3g} N, is below "
@@ -657,8 +880,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if jump is not None:
         warn.append(jump)
     E, E_err = _sample_modulus(float(p[0]), float(err[0]), nu, tip_modulus, tip_nu)
-    fitted = tip.force(p[0], z, p[1], p[2], p[3])
+    fitted = p[0] * g_fit + p[2] + p[3] * z  # = tip.force(p..) (asserted in derive/fit.py)
     return FitResult(tip=tip, values=p, errors=err, correlation=corr, E=E, E_error=E_err,
                      z=z, F=F, fitted=fitted, residuals=F - fitted, reduced_chi2=chi2,
                      weighted=sigma is not None,
-                     n_contact=n_contact, max_depth=d_max, warnings=tuple(warn))
+                     n_contact=n_contact, max_depth=d_max, warnings=tuple(warn),
+                     model_error=model_error)

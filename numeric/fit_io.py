@@ -9,10 +9,10 @@ The tip file is a scene (docs/scenes.md) with its two bodies: the sample is the 
 (its ``nu`` gives the sample's Young's modulus beside E*; its ``E``, which a scene requires, is
 shown beside the fitted one for comparison, not used), the tip is the other body (``sphere``:
 the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``pyramid`` (its equal-area cone),
-``flat_punch`` or ``power_law``; rigid or elastic). The scene's effects and load are not
-used. Its optional ``[fit]`` table (:class:`..scene.schema.FitSpec`, docs/fitting.md) names the
-curve, its columns and units (:func:`read_columns`), the modulus reported and a depth range
-(:func:`fit_in_range`).
+``flat_punch``, ``power_law``, or a measured ``profile``, fitted through the numerical MDR; rigid
+or elastic). The scene's effects and load are not used. Its optional ``[fit]`` table
+(:class:`..scene.schema.FitSpec`, docs/fitting.md) names the curve, its columns and units
+(:func:`read_columns`), the modulus reported and a depth range (:func:`fit_in_range`).
 """
 
 from __future__ import annotations
@@ -35,7 +35,17 @@ TIP_SHAPES = {
     "pyramid": lambda p: _pyramid_tip(p),
     "flat_punch": lambda p: fit.FlatPunch(a=p["radius"]),
     "power_law": lambda p: fit.PowerLaw(c_n=p["coefficient"], n=p["exponent"]),
+    "profile": lambda p: _sampled_tip(p),
 }
+
+
+def _sampled_tip(p):
+    """A measured tip of a scene's ``profile`` body (samples r, f [m], inline or from a file;
+    the spline degree the scene's numerical MDR uses)."""
+    from hertzmdr.numeric.scene.shapes import SHAPES
+
+    r, f, k = SHAPES["profile"].samples(p)
+    return fit.SampledTip.from_samples(r, f, k=k)
 
 
 def _pyramid_tip(p) -> fit.Pyramid:
@@ -290,7 +300,7 @@ def tip_from_scene(path):
                          "nu (E is shown for comparison, nu converts E* to E)")
     if tip_body.shape not in TIP_SHAPES:
         raise CurveError(f"{path}: body ({tip_body.name}).shape: {tip_body.shape!r} has no fit "
-                         f"model yet; closed-form tips: {', '.join(TIP_SHAPES)}")
+                         f"model yet; tips: {', '.join(TIP_SHAPES)}")
     try:
         tip = TIP_SHAPES[tip_body.shape](tip_body.params)
     except ValueError as exc:

@@ -109,6 +109,8 @@ ROUTES = {
     "fit_colloidal_probe": (lambda: Hertz(e_star((1e6, 0.5)), 10e-6), 0.5),
     # the example force map's probe on its background (E = 1 MPa), run at 100 nm
     "fit_force_map": (lambda: Hertz(e_star((1e6, 0.5)), 25e-6), 0.5),
+    # the measured worn tip's scene (Problem 8's R = 5 um worn flat to b = 1 um, sampled)
+    "fit_worn_tip": (lambda: _worn(e_star((1e6, 0.5)), 5e-6, 1e-6), 0.5),
     "fig5_8_fig5_9_stresses": (lambda: Hertz(e_star((70e9, 0.33)), 10e-3), 0.33),
     "height_map_tip": (lambda: Hertz(e_star((2e9, 0.4)), 1e-3), 0.4),
     "line_contact_roller": (lambda: Line(e_star(STEEL, STEEL), mp.mpf(5e-3) * mp.mpf(25e-3)

@@ -48,6 +48,23 @@ def terms(rep: Rep, x: np.ndarray, nu: int) -> np.ndarray:
     return out
 
 
+def primitive(rep: Rep, x: np.ndarray) -> np.ndarray:
+    """sum_j of integral_(b_j)^x of the kink terms of g [m^2] at x [m] (x > b_j), by parts:
+    integral_b^x g_j = x g_j(x) - integral_b^x y g_j'(y) dy, and y g_j' = y b s / sqrt(y^2 -
+    b^2) integrates to b s sqrt(x^2 - b^2) = (x - b)(x + b) g_j'(x) (both terms of the
+    difference go like (x - b)^(1/2): it loses digits relative to them as x -> b, not
+    relative to the integral of g, which it is added to)."""
+    b, s = jumps(rep)
+    out = np.zeros(x.shape)
+    for bj, sj in zip(b, s, strict=True):
+        sel = x > bj
+        if sel.any():
+            xs = x[sel]
+            out[sel] += (xs * gen.mdr_kink_g(bj, sj, xs)  # (5.52)
+                         - (xs - bj) * (xs + bj) * gen.mdr_kink_gprime(bj, sj, xs))
+    return out
+
+
 def pressure(rep: Rep, r: np.ndarray, a: float, E_star: float) -> np.ndarray:
     """sum_j of the kink terms of p(r) [Pa] (5.59), log-infinite at r = b_j."""
     out = np.zeros(r.shape)

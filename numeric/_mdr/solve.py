@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._mdr import quadrature
+from hertzmdr.numeric._mdr import quadrature, tables
 from hertzmdr.numeric._mdr.spline import Rep
 
 _EPS = np.finfo(float).eps
@@ -24,10 +24,7 @@ def radius(rep: Rep, r_max: float, d: float, guess: float | None = None) -> floa
     lo, hi = 0.0, r_max
     g_hi = quadrature.g(rep, np.array([hi]))[0]
     if g_hi < d:
-        raise ValueError(f"depth {float(d):.6g} m exceeds g(r_max) = {float(g_hi):.6g} m, the "
-                         f"largest depth the samples reach (they end at r_max = "
-                         f"{float(r_max):.6g} m): the "
-                         "profile is too short for this depth; sample it further out")
+        raise _too_deep(d, g_hi, r_max)
     if guess is None:
         xs = np.linspace(0, hi, 17)[1:]
         gs = quadrature.g(rep, xs)
@@ -126,3 +123,76 @@ def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float 
     # 3. rounding: f' of a spline through N samples loses about log10(N) digits
     floor = (64 + 4 * len(fine.knots)) * _EPS
     return d, a, F, dc, ac, max(diff, dev) + floor
+
+
+def _too_deep(d: float, g_hi: float, r_max: float) -> ValueError:
+    return ValueError(f"depth {float(d):.6g} m exceeds g(r_max) = {float(g_hi):.6g} m, the "
+                      f"largest depth the samples reach (they end at r_max = "
+                      f"{float(r_max):.6g} m): the profile is too short for this depth; "
+                      "sample it further out")
+
+
+def radii(rep: Rep, r_max: float, d: np.ndarray) -> np.ndarray:
+    """Solve g(a) = d (5.55) for every depth of the array d > 0 [m] at once: safeguarded
+    Newton on g and g' from the tables (``tables``), started by the secant between the table
+    nodes that bracket d, each radius to the same tolerance as :func:`radius`. -> a [m]."""
+    xs = np.concatenate([seg.x_nodes() for seg in tables.tables(rep)])
+    gs = np.maximum.accumulate(tables.g(rep, xs))  # at the nodes: the quadrature's values
+    if d.max() > gs[-1]:
+        raise _too_deep(d.max(), gs[-1], r_max)
+    i = np.clip(np.searchsorted(gs, d), 1, len(xs) - 1)
+    lo, hi, g_lo, g_hi = xs[i - 1], xs[i], gs[i - 1], gs[i]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        a = np.where(g_hi > g_lo, lo + (hi - lo) * (d - g_lo) / (g_hi - g_lo), (lo + hi) / 2)
+    lo, hi = lo.copy(), hi.copy()
+    act = np.arange(len(d))
+    for _ in range(100):
+        aa = a[act]
+        ga = tables.g(rep, aa) - d[act]
+        gp = tables.gprime(rep, aa)
+        up = ga > 0
+        hi[act] = np.where(up, aa, hi[act])
+        lo[act] = np.where(up, lo[act], aa)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(gp > 0, ga / gp, np.inf)
+        new = aa - step
+        out = ~((lo[act] <= new) & (new <= hi[act]))
+        new[out] = (lo[act][out] + hi[act][out]) / 2
+        # quadratic convergence: a step of 1e-15 a leaves ~1e-30 a, below rounding (the
+        # tables' g, unlike the quadrature's, rounds differently at neighbouring radii, so
+        # steps of 2e-16 a are not always reached); or the bracket has closed
+        done = ((ga == 0) | (np.abs(step) <= 1e-15 * aa)
+                | (hi[act] - lo[act] <= 4e-16 * hi[act]))
+        a[act] = np.where(ga == 0, aa, new)
+        act = act[~done]
+        if not len(act):
+            break
+    return a
+
+
+def curve(coarse: Rep, fine: Rep, r_max: float, depths: np.ndarray, E_star: float):
+    """:func:`pair` at every depth of the array ``depths`` > 0 [m] at once, from the tables
+    of g, g' and integral g of both representations (no quadrature once they exist): the
+    fine a [m] and F [N], the coarse a [m], and the bound of the relative error of a and F
+    per depth, made as :func:`pair` makes it (coarse-vs-fine differences; the envelope of the
+    differences of g and its integral on 9 radii within two coarse sample spacings of a, put
+    through the linearized (5.55), (5.57); the rounding floor). The tables' interpolation
+    error is part of both representations' values; the coarse tables have half the nodes
+    (an error 2^6 times larger for the quintic splines), so the comparison covers it."""
+    a = radii(fine, r_max, depths)
+    ac = radii(coarse, r_max, depths)
+    F = gen.mdr_force(E_star, a, depths, tables.G(fine, a))  # (5.57)
+    Fc = gen.mdr_force(E_star, ac, depths, tables.G(coarse, ac))  # (5.57)
+    diff = np.maximum(np.abs(F - Fc) / F, np.abs(a - ac) / a)
+    kn = coarse.knots
+    i = np.clip(np.searchsorted(kn, a), 1, len(kn) - 1)
+    h = kn[i] - kn[i - 1]
+    x = np.clip(a[:, None] + h[:, None] * np.linspace(-2, 2, 9), (a / 2)[:, None], kn[-1])
+    xf = x.ravel()
+    Dg = np.max(np.abs(tables.g(fine, xf) - tables.g(coarse, xf)).reshape(x.shape), axis=1)
+    DG = np.max(np.abs(tables.G(fine, xf) - tables.G(coarse, xf)).reshape(x.shape), axis=1)
+    slope = a * tables.gprime(fine, a)  # a g'(a) [m]
+    with np.errstate(divide="ignore"):
+        dev = np.maximum(np.where(slope > 0, Dg / slope, np.inf), 2 * E_star * DG / F)
+    floor = (64 + 4 * len(fine.knots)) * _EPS
+    return a, F, ac, np.maximum(diff, dev) + floor

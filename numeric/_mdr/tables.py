@@ -66,6 +66,11 @@ class Seg:
     nodes: np.ndarray  # in the table variable
     G: BSpline  # quintic spline of G_s (the remainder of g)
     q: BSpline  # quintic spline of q (the remainder of g')
+    I: BSpline  # quintic spline of the remainder of integral_0^x g (kinks.primitive off)
+
+    def x_nodes(self) -> np.ndarray:
+        """The table's nodes as radii x [m]."""
+        return self.lo + self.nodes**2 if self.in_t else self.nodes
 
     def var(self, x):
         """The table variable of x [m]: x, or sqrt(x - lo) past a kink."""
@@ -95,11 +100,13 @@ def tables(rep: Rep) -> list[Seg]:
                 v = _fill(np.concatenate([[0.0], np.sqrt(kn - lo), [T]]), T / (len(kn) + 1))
                 xv = lo + v * v
                 xv[-1] = hi
-            gg, q, _ = quadrature.direct(rep, xv)
+            gg, q, GG = quadrature.direct(rep, xv, with_G=True)
             Gs = gg - kinks.terms(rep, xv, 0)
+            # the remainder of integral_0^x g: its derivative is G_s, smooth in v as well
+            Is = GG - kinks.primitive(rep, xv)
             kk = min(5, len(v) - 1)
             out.append(Seg(lo, hi, lo != 0, v, make_interp_spline(v, Gs, k=kk),
-                            make_interp_spline(v, q, k=kk)))
+                           make_interp_spline(v, q, k=kk), make_interp_spline(v, Is, k=kk)))
         rep.tables = out
     return rep.tables
 
@@ -120,3 +127,16 @@ def g(rep: Rep, x) -> np.ndarray:
     """g(x) [m] (5.52) from the tables and the kink terms."""
     x = np.abs(np.asarray(x, float))
     return _eval(rep, x, "G") + kinks.terms(rep, x, 0)
+
+
+def gprime(rep: Rep, x) -> np.ndarray:
+    """g'(x) [1] from the table of q and the kink terms (+inf at a kink x = b_j)."""
+    x = np.abs(np.asarray(x, float))
+    return _eval(rep, x, "q") + kinks.terms(rep, x, 1)
+
+
+def G(rep: Rep, x) -> np.ndarray:
+    """integral_0^x g [m^2] (the integral of (5.57)) from the tables and the kinks'
+    primitives."""
+    x = np.abs(np.asarray(x, float))
+    return _eval(rep, x, "I") + kinks.primitive(rep, x)
