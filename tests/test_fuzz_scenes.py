@@ -131,7 +131,8 @@ TANGENTIAL = ["sliding_force", "tangential_stiffness", "tangential_force",
 
 
 SHAPES = ("sphere", "cylinder", "ellipsoid", "cone", "flat_punch", "power_law",
-          "flattened_parabola", "exact_sphere", "profile", "polygon_punch", "height_map")
+          "flattened_parabola", "exact_sphere", "pyramid", "profile", "polygon_punch",
+          "height_map")
 QUADRATIC = ("sphere", "cylinder", "ellipsoid")
 
 
@@ -153,6 +154,12 @@ def shaped_body(draw, shapes=SHAPES):
         b["radii"] = [draw(length), draw(length)]
     elif shape == "cone":
         b["angle"] = draw(quantity("angle", 0.01, 1.4))
+    elif shape == "pyramid":
+        if draw(st.booleans()):
+            b["preset"] = draw(st.sampled_from(["berkovich", "vickers", "cube_corner"]))
+        else:
+            b["sides"] = draw(st.sampled_from([3, 4, 6, 64]))
+            b["half_angle"] = draw(quantity("angle", 0.1, 1.5))
     elif shape == "power_law":
         b["coefficient"] = draw(st.floats(1.0, 1e8))
         b["exponent"] = draw(st.sampled_from([1, 1.5, 2, 3, 4.5]))
@@ -243,7 +250,40 @@ def valid_scene(draw):
     if draw(st.integers(0, 3)) == 0:  # a study: one swept key, now and then two
         for _ in range(draw(st.integers(1, 2))):
             study_sweep(draw, bodies)
+    if draw(st.integers(0, 4)) == 0:  # a [fit] table (issue 17) and its curve
+        doc["fit"], more = draw(fit_table())
+        files.update(more)
     return doc, files
+
+
+#: a force curve (a tip pushed 50 nm past its contact point) with units in its header, and
+#: the same without them (for [fit] units)
+CURVE_ROWS = "".join(f"{k}, {max(k - 50, 0) ** 1.5 / 10 + 0.01 * (k % 3):g}\n"
+                     for k in range(100))
+FIT_FILES = {"curve.csv": "z [nm], F [nN]\n" + CURVE_ROWS, "bare.csv": "z, F\n" + CURVE_ROWS}
+
+
+@st.composite
+def fit_table(draw):
+    """A valid ``[fit]`` table (docs/fitting.md) and the curve file it names."""
+    table = {}
+    if draw(st.booleans()):
+        table["curve"] = "bare.csv"
+        table["units"] = draw(st.sampled_from([["nm", "nN"], ["um", "pN"], ["m", "N"]]))
+    else:
+        table["curve"] = "curve.csv"
+    if draw(st.booleans()):
+        table["columns"] = ["z", "F"]
+    if draw(st.booleans()):
+        table["modulus"] = draw(st.sampled_from(["E", "E_star"]))
+    if draw(st.booleans()):
+        table["depth_range"] = draw(st.sampled_from([["-40 nm", "30 nm"], [-1.0, 1.0],
+                                                     ["-1 um", "5 nm"]]))
+    if draw(st.booleans()):
+        table["contact_point"] = draw(quantity("length", 1e-9, 1e-6))
+    if draw(st.booleans()):
+        table["sigma"] = draw(quantity("force", 1e-12, 1e-9))
+    return table, dict(FIT_FILES)
 
 
 @st.composite
@@ -472,7 +512,7 @@ def broken_scene(draw, base=None):
                         "friction": st.sampled_from([0.6, -0.1, "0.6", math.inf, True]),
                         "stickiness": st.just(1.0)}))
         elif how == "csv":
-            name = draw(st.sampled_from(["tip.csv", "map.csv", "h.csv"]))
+            name = draw(st.sampled_from(["tip.csv", "map.csv", "h.csv", "curve.csv"]))
             files[name] = draw(st.sampled_from([
                 "", "r, f\n", "0, 0\n", "0, 0\n1, nan\n2, 4\n", "0, 0\n1, 1, 1\n2, 4\n",
                 "0, 0\nabc\n", "0; 0\n1; 1\n", "0, 0\n10, 5\n20, 1\n", "5, 0\n10, 1\n20, 4\n",
@@ -486,6 +526,8 @@ def broken_scene(draw, base=None):
                     b["file"] = name
                     if b["shape"] == "profile":
                         b["unit"] = draw(st.sampled_from(["nm", "m", "N", "", "furlong", 3]))
+            if isinstance(doc.get("fit"), dict) and draw(st.booleans()):
+                doc["fit"]["curve"] = name
             hist = doc.get("load", {}).get("history") if isinstance(doc.get("load"), dict) \
                 else None
             if isinstance(hist, dict):
@@ -563,6 +605,33 @@ def check_scene(tmp_path, doc_or_text, files):
         assert err == f"hertzmdr: {error}\n", err
         assert not out.exists(), "written under --out"
     assert "Traceback" not in err
+    if isinstance(doc_or_text, dict) and "fit" in doc_or_text:
+        check_fit(path)
+
+
+def check_fit(path):
+    """`hertzmdr fit --scene` of a scene with a [fit] table: the error of reading the scene
+    (the same line; what only running its effects finds is no concern of a fit), or a fit
+    (exit 0), or one line naming what the curve or the tip cannot do (exit 2): no curve, a
+    column or unit the file lacks, a tip with no fit model, no contact."""
+    try:
+        scene.load(path)
+    except scene.SceneError as exc:
+        error = exc
+    else:
+        error = None
+    so, se = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(so), contextlib.redirect_stderr(se):
+        rc = main(["fit", "--scene", str(path)])
+    err = se.getvalue()
+    assert "Traceback" not in err
+    event(f"fit exit {rc}")
+    if error is not None:
+        assert rc == 2 and err == f"hertzmdr: {error}\n", err
+    elif rc == 0:
+        assert so.getvalue().startswith("tip: ") and not err
+    else:
+        assert rc == 2 and err.startswith("hertzmdr: ") and err.count("\n") == 1, (rc, err)
 
 
 # CI: a fixed sample (derandomized, no database); the sweep runs many more

@@ -468,6 +468,8 @@ class _Reader:
                 self.fail(key, f"must be a length unit such as \"nm\" or \"um\", got {value!r}")
             return self.quantity(f"1 {value.strip()}", "length", key)
         if kind == "integer":  # its range is the shape's check
+            if isinstance(value, dict):
+                self.fail(key, "is a count, not swept: give one integer")
             if isinstance(value, bool) or not isinstance(value, int):
                 self.fail(key, f"must be an integer, got {value!r}")
             return value
