@@ -86,6 +86,8 @@ def hertz_far_displacement() -> Quantity:
         out = [
             Way("stable closed form (hypergeometric)", "float64",
                 lambda: gen.hertz_displacement_outside(R, d, r)),
+            Way("series in a^2/r^2 (the runtime's form for r >= 2a)", "float64",
+                lambda: gen.hertz_displacement_outside_series(R, d, r)),
             Way("textbook closed form (Problem 7 b)", "float64",
                 lambda: gen.hertz_pressure_displacement_outside(1.0, a, p0_over_E, r)),
         ]

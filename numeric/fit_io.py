@@ -8,7 +8,7 @@ length and force pint reads (``nm``, ``um``, ``m``; ``pN``, ``nN``, ``N``).
 The tip file is a scene (docs/scenes.md) with its two bodies: the sample is the ``flat`` body
 (its ``nu`` gives the sample's Young's modulus beside E*; its ``E``, which a scene requires, is
 shown beside the fitted one for comparison, not used), the tip is the other body (``sphere``:
-the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``pyramid`` (its equal-area cone),
+the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``pyramid`` (the cone of its force law),
 ``flat_punch``, ``power_law``, or a measured ``profile``, fitted through the numerical MDR; rigid
 or elastic). The scene's effects and load are not used. Its optional ``[fit]`` table
 (:class:`..scene.schema.FitSpec`, docs/fitting.md) names the curve, its columns and units
