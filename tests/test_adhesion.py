@@ -629,3 +629,39 @@ def test_pressure_and_displacement_of_each_shape_by_their_own_routes(name):
     r_far = 1e4 * a
     u_far = float(c.surface_displacement(r_far, a))
     assert abs(u_far / (F / (math.pi * E * r_far)) - 1) <= 1e-7, (name, u_far)
+
+
+@pytest.mark.parametrize("control", ["depth", "force"])
+def test_punch_cycle_path(control):
+    """The flat punch's cycle point by point: out of contact F = 0 and a = 0; in contact F is
+    Boussinesq's 2 E* a d with the punch's radius (typed here); the retract goes down to
+    Kendall's pull-off F_c = -(8 pi E* dgamma a^3)^(1/2) at d_c = F_c/(2 E* a), then jumps to
+    F = 0 there; the top is ``to`` (a depth, or a force over 2 E* a); the default start lies a
+    fifth of the depth range below d_c. Each value is a few roundings: 1e-14."""
+    E, a, dg, pts = 3e6, 1e-6, 0.04, 101
+    k = 2 * E * a
+    F_c = -math.sqrt(8 * math.pi * E * dg * a**3)
+    d_c, d_top = F_c / k, 1e-7
+    to = d_top if control == "depth" else k * d_top
+    c = ad.AdhesiveContact(ad.FlatPunch(a), E, dg)
+    # the pull-off depth itself is a valid start (its own float: d_c here may differ by an ulp)
+    own_d_c = c.cycle(to, control, pts).jumps[0].before[0]
+    for start in (None, -3e-7, own_d_c):
+        cyc = c.cycle(to, control, pts, start=start)
+        d, F, aa = cyc.depth, cyc.force, cyc.contact_radius
+        assert len(d) == len(F) == len(aa) == len(cyc.loading) == pts
+        s = d_c - 0.2 * (d_top - d_c) if start is None else start
+        assert d[0] == pytest.approx(s, rel=1e-14, abs=0) and d[-1] == d[0], start
+        assert d.max() == pytest.approx(d_top, rel=1e-14), start
+        touching = aa > 0
+        assert np.all(aa[touching] == a) and np.all(F[~touching] == 0.0), start
+        np.testing.assert_allclose(F[touching], k * d[touching], rtol=1e-14, atol=0)
+        assert np.all(d[~touching] <= 0) and touching.sum() >= pts // 2 - 2, start
+        assert F.min() == pytest.approx(F_c, rel=1e-14), start
+        # the approach and push first, then the retract
+        assert cyc.loading[:pts // 2 - 1].all() and not cyc.loading[pts // 2 + 1:].any()
+        [jump] = cyc.jumps
+        assert jump.kind == "pull-off" and jump.after[1:] == (0.0, 0.0), start
+        assert jump.before == pytest.approx((d_c, F_c, a), rel=1e-14), start
+    with pytest.raises(ValueError, match=r"^start = .* m is in contact; valid: start <= "):
+        c.cycle(to, control, pts, start=d_c / 2)
