@@ -665,3 +665,5 @@ def test_punch_cycle_path(control):
         assert jump.before == pytest.approx((d_c, F_c, a), rel=1e-14), start
     with pytest.raises(ValueError, match=r"^start = .* m is in contact; valid: start <= "):
         c.cycle(to, control, pts, start=d_c / 2)
+    with pytest.raises(ValueError, match=r"^start = nan"):
+        c.cycle(to, control, pts, start=float("nan"))
