@@ -14,6 +14,8 @@
 - The hysteresis of a cycle against the mpmath quadrature of F dd along the derived curve.
 """
 
+import math
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -587,3 +589,100 @@ def test_sampled_cone_and_paraboloid_pull_off(name):
         po, pr = c.pull_off(control), ref.pull_off(control)
         err = abs(po.force / pr.force - 1)
         assert err <= po.rel_error and err < 1e-12, (control, err, po.rel_error)
+
+
+# the 3-D fields of the shapes other than the paraboloid, each by its own route: the profile
+# typed here, the force as the integral of the pressure, the far field of a point force
+_FIELD_SHAPES = {
+    "cone": (ad.Cone(0.3), lambda r: r * math.tan(0.3)),
+    "power law": (ad.PowerLaw(1.0, 1.5), lambda r: r**1.5),
+    "sphere": (ad.Sphere(1e-3), lambda r: 1e-3 - math.sqrt((1e-3 - r) * (1e-3 + r))),
+    "worn": (ad.Worn(1e-3, 2e-5), lambda r: max(r * r - 4e-10, 0.0) / 2e-3),
+}
+
+
+@pytest.mark.parametrize("name", list(_FIELD_SHAPES))
+def test_pressure_and_displacement_of_each_shape_by_their_own_routes(name):
+    """E* = 1 GPa, dgamma = 0.05 J/m^2, a = 50 um (compressed well past the pull-off):
+    F(a) = 2 pi int_0^a p r dr by tanh-sinh in phi, r = a sin(phi) (the edge's
+    1/sqrt(a^2 - r^2) and the cone's log at the axis are endpoint singularities; the worn tip's
+    kink at r = b a break point, panels graded toward the axis; where a node rounds onto the
+    kink's log singularity, the float below it); inside, u = d - f(r) with f typed here
+    (5.54); outside, continuity at the edge (the edge term goes as sqrt(r - a): 1e-6 at
+    1e-12 a) and the far field of the point force F/(pi E* r) at r = 1e4 a ((5.60): O((a/r)^2)
+    = 1e-8 from it).
+    The force is checked without adhesion (the shape's own pressure0 and force0): the edge
+    term -E* Delta l/(pi sqrt(a^2 - r^2)) at a float r cannot be integrated to the last
+    1.5e-8 of phi below pi/2, where a sin(phi) rounds to a (it costs 8e-9 of that term; the
+    JKR tests check it). Tolerances: the quadrature of a float64 integrand, 1e-11 of the
+    force's scale (the cone: 2e-16); u inside a few roundings of d and f, 1e-13 of d."""
+    shape, f = _FIELD_SHAPES[name]
+    E, dg, a = 1e9, 0.05, 5e-5
+    c0 = ad.AdhesiveContact(shape, E, 0.0)
+    F0, d0 = float(c0.force(a)), float(c0.depth(a))
+    below = np.nextafter(a, 0.0)
+
+    def integrand(phi):
+        r = min(a * float(mp.sin(phi)), below)
+        p = float(c0.pressure(r, a))
+        if math.isinf(p):  # r rounded onto the worn tip's kink r = b
+            r = float(np.nextafter(r, 0.0))
+            p = float(c0.pressure(r, a))
+        return p * r * a * float(mp.cos(phi))
+
+    with mp.workdps(20):
+        # panels graded toward the axis (the cone's log), the worn tip's kink a break point
+        cuts = sorted({mp.mpf(0), mp.mpf("1e-6"), mp.mpf("1e-3"), mp.mpf("0.1"), mp.pi / 2}
+                      | ({mp.asin(2e-5 / a)} if name == "worn" else set()))
+        F_ref = 2 * mp.pi * mp.quad(integrand, cuts, maxdegree=10)
+    assert abs(F0 - float(F_ref)) <= 1e-11 * F0, (name, F0, F_ref)
+    c = ad.AdhesiveContact(shape, E, dg)
+    F, d = float(c.force(a)), float(c.depth(a))
+    assert d < d0 and F < F0, name  # adhesion pulls
+    r_in = np.array([0.0, 0.3 * a, 0.9 * a, a])
+    u_in = c.surface_displacement(r_in, a)
+    for r, u in zip(r_in, u_in, strict=True):
+        assert abs(u - (d - f(r))) <= 1e-13 * abs(d), (name, r, u, d - f(r))
+    u_edge = float(c.surface_displacement(a * (1 + 1e-12), a))
+    assert abs(u_edge - (d - f(a))) <= 1e-5 * abs(d), (name, u_edge, d - f(a))
+    r_far = 1e4 * a
+    u_far = float(c.surface_displacement(r_far, a))
+    assert abs(u_far / (F / (math.pi * E * r_far)) - 1) <= 1e-7, (name, u_far)
+
+
+@pytest.mark.parametrize("control", ["depth", "force"])
+def test_punch_cycle_path(control):
+    """The flat punch's cycle point by point: out of contact F = 0 and a = 0; in contact F is
+    Boussinesq's 2 E* a d with the punch's radius (typed here); the retract goes down to
+    Kendall's pull-off F_c = -(8 pi E* dgamma a^3)^(1/2) at d_c = F_c/(2 E* a), then jumps to
+    F = 0 there; the top is ``to`` (a depth, or a force over 2 E* a); the default start lies a
+    fifth of the depth range below d_c. Each value is a few roundings: 1e-14."""
+    E, a, dg, pts = 3e6, 1e-6, 0.04, 101
+    k = 2 * E * a
+    F_c = -math.sqrt(8 * math.pi * E * dg * a**3)
+    d_c, d_top = F_c / k, 1e-7
+    to = d_top if control == "depth" else k * d_top
+    c = ad.AdhesiveContact(ad.FlatPunch(a), E, dg)
+    # the pull-off depth itself is a valid start (its own float: d_c here may differ by an ulp)
+    own_d_c = c.cycle(to, control, pts).jumps[0].before[0]
+    for start in (None, -3e-7, own_d_c):
+        cyc = c.cycle(to, control, pts, start=start)
+        d, F, aa = cyc.depth, cyc.force, cyc.contact_radius
+        assert len(d) == len(F) == len(aa) == len(cyc.loading) == pts
+        s = d_c - 0.2 * (d_top - d_c) if start is None else start
+        assert d[0] == pytest.approx(s, rel=1e-14, abs=0) and d[-1] == d[0], start
+        assert d.max() == pytest.approx(d_top, rel=1e-14), start
+        touching = aa > 0
+        assert np.all(aa[touching] == a) and np.all(F[~touching] == 0.0), start
+        np.testing.assert_allclose(F[touching], k * d[touching], rtol=1e-14, atol=0)
+        assert np.all(d[~touching] <= 0) and touching.sum() >= pts // 2 - 2, start
+        assert F.min() == pytest.approx(F_c, rel=1e-14), start
+        # the approach and push first, then the retract
+        assert cyc.loading[:pts // 2 - 1].all() and not cyc.loading[pts // 2 + 1:].any()
+        [jump] = cyc.jumps
+        assert jump.kind == "pull-off" and jump.after[1:] == (0.0, 0.0), start
+        assert jump.before == pytest.approx((d_c, F_c, a), rel=1e-14), start
+    with pytest.raises(ValueError, match=r"^start = .* m is in contact; valid: start <= "):
+        c.cycle(to, control, pts, start=d_c / 2)
+    with pytest.raises(ValueError, match=r"^start = nan"):
+        c.cycle(to, control, pts, start=float("nan"))
