@@ -106,6 +106,18 @@ _MDR_TESTS = [f"tests/test_mdr.py::test_{t}" for t in """
     numeric_worn_with_and_without_breakpoint rtol_is_the_target
     rtol_range_lower_end""".split()]
 
+# test_ellipse_stress.py but the bearing scene's two tests (the scene plumbing, 10 s each: the
+# maxima they check are reached by test_maxima_lie_on_the_axis and
+# test_orthogonal_shear_limits) and the 2-D polar route beside a slender contact (6 s; the
+# field there is reached by test_field_by_polar_superposition and test_hard_points_...)
+_ELLIPSE_STRESS_TESTS = [f"tests/test_ellipse_stress.py::test_{t}" for t in """
+    love_form_is_boussinesq derivation_identities harmonic_h field_by_superposition
+    field_by_polar_superposition hard_points_by_polar_superposition polar_route_converges
+    circle_reproduces_huber axis_limits axis_maxima_at_30_digits maxima_lie_on_the_axis
+    orthogonal_shear_limits bad_input_is_named
+    von_mises_and_principal_shear_by_polar_superposition
+    axis_stresses_in_si_units_by_polar_superposition""".split()]
+
 # the modules of numeric/ but the generated ones, demo.py, plots.py and scene/ (its own page),
 # most physics first, each with the (fast) test files written for it
 MODULES: dict[str, list[str]] = {
@@ -135,6 +147,9 @@ MODULES: dict[str, list[str]] = {
     "bem.py": ["tests/test_bem.py"],
     "_validate.py": ["tests/test_validate.py"],
     "_quadrature.py": ["tests/test_quadrature.py"],
+    "ellipse_stress.py": _ELLIPSE_STRESS_TESTS,
+    "force_law.py": ["tests/test_force_law.py"],
+    "adhesion.py": ["tests/test_adhesion.py"],
 }
 
 STATUS = {1: "killed", 3: "killed", 0: "survived", 5: "no tests", 33: "no tests",

@@ -70,6 +70,8 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "z_0": ("m", "contact point: the position z_p where the tip first touches the sample"),
     "F_0": ("N", "force baseline: the force at z_p = 0 before contact"),
     "s_0": ("N/m", "slope of the force baseline before contact (drift, drag)"),
+    "rho_g": ("(J/m^2)^(1/2)", "square root of the work of adhesion, sqrt(Delta gamma) (the "
+              "JKR fit model's relations are written in it: no sqrt of a sum)"),
     # stress family (derive/stress.py)
     "xi": ("1", "oblate spheroidal coordinate of the contact disc: xi^2 = u/a^2"),
     "eta": ("1", "cos(beta) of the oblate spheroidal angle beta: r = a (1 + xi^2)^(1/2) "

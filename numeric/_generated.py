@@ -143,6 +143,12 @@ __all__ = [
     'fit_hertz_force',
     'fit_hertz_force_dE',
     'fit_hertz_force_dz0',
+    'fit_jkr_depth',
+    'fit_jkr_depth_da',
+    'fit_jkr_force',
+    'fit_jkr_force_dE',
+    'fit_jkr_force_ddgamma',
+    'fit_jkr_force_dz0',
     'fit_powerlaw_force',
     'fit_powerlaw_force_dE',
     'fit_powerlaw_force_dz0',
@@ -490,6 +496,12 @@ RELATIONS = (
     ('fit_hertz_force', '(5.23), fit model', 'fit', '4*E_star*sqrt(R)*Max(0, -z_0 + z_p)**(3/2)/3 + F_0 + s_0*z_p', ''),
     ('fit_hertz_force_dE', '(5.23), fit model', 'fit', '4*sqrt(R)*Max(0, -z_0 + z_p)**(3/2)/3', ''),
     ('fit_hertz_force_dz0', '(5.23), fit model', 'fit', '-2*E_star*sqrt(R)*Heaviside(-z_0 + z_p, 0)*sqrt(Max(0, -z_0 + z_p))', ''),
+    ('fit_jkr_depth', '(5.55), (5.57), JKR, fit model', 'fit', 'a**2/R - sqrt(2)*sqrt(pi)*sqrt(a)*rho_g/sqrt(E_star)', ''),
+    ('fit_jkr_depth_da', '(5.55), (5.57), JKR, fit model', 'fit', '2*a/R - sqrt(2)*sqrt(pi)*rho_g/(2*sqrt(E_star)*sqrt(a))', ''),
+    ('fit_jkr_force', '(5.55), (5.57), JKR, fit model', 'fit', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*rho_g + 4*E_star*a**3/(3*R) + F_0 + s_0*z_p', ''),
+    ('fit_jkr_force_dE', '(5.55), (5.57), JKR, fit model', 'fit', '4*(4*E_star**(5/2)*a**(9/2) + 6*pi*E_star**(3/2)*R**2*a**(3/2)*rho_g**2 - 7*sqrt(2)*sqrt(pi)*E_star**2*R*a**3*rho_g)/(3*R*(4*E_star**(5/2)*a**(3/2) - sqrt(2)*sqrt(pi)*E_star**2*R*rho_g))', ''),
+    ('fit_jkr_force_ddgamma', '(5.55), (5.57), JKR, fit model', 'fit', '4*pi*E_star*R*a**(3/2)/(sqrt(2)*sqrt(pi)*sqrt(E_star)*R*rho_g - 4*E_star*a**(3/2))', ''),
+    ('fit_jkr_force_dz0', '(5.55), (5.57), JKR, fit model', 'fit', '2*(-4*E_star**(3/2)*a**(5/2) + 3*sqrt(2)*sqrt(pi)*E_star*R*a*rho_g)/(4*sqrt(E_star)*a**(3/2) - sqrt(2)*sqrt(pi)*R*rho_g)', ''),
     ('fit_powerlaw_force', 'Problem 7(d), fit model', 'fit', '2*E_star*n*(Max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*Max(0, -z_0 + z_p)/(n + 1) + F_0 + s_0*z_p', ''),
     ('fit_powerlaw_force_dE', 'Problem 7(d), fit model', 'fit', '2*n*(Max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*Max(0, -z_0 + z_p)/(n + 1)', ''),
     ('fit_powerlaw_force_dz0', 'Problem 7(d), fit model', 'fit', '-2*E_star*(Max(0, -z_0 + z_p)/(c_n*kappa_n))**(1/n)*Heaviside(-z_0 + z_p, 0)', ''),
@@ -4480,6 +4492,186 @@ def fit_hertz_force_dz0(E_star, R, z_p, z_0):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -2*E_star*numpy.sqrt(R)*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*numpy.sqrt(functools.reduce(numpy.maximum, [0, -z_0 + z_p]))
+
+
+def fit_jkr_depth(E_star, R, a, rho_g):
+    """Indentation depth d [m] of a paraboloid in JKR contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth at Delta gamma =
+    rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_jkr_depth(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return a**2/R - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*rho_g/numpy.sqrt(E_star)
+
+
+def fit_jkr_depth_da(E_star, R, a, rho_g):
+    """Derivative dd/da [1] of the JKR depth: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_jkr_depth_da(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*a/R - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g/(numpy.sqrt(E_star)*numpy.sqrt(a))
+
+
+def fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on a paraboloid in JKR contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_force_from_radius at Delta
+    gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float and type(z_p) is float and type(F_0) is float and
+            type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*rho_g + (4/3)*E_star*a**3/R + F_0 + s_0*z_p
+
+
+def fit_jkr_force_dE(E_star, R, a, rho_g):
+    """Derivative dF/dE* [m^2] of the JKR fit model at a fixed position.
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
+    = z_p - z_0 of jkr_force_from_radius in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_jkr_force_dE(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (4/3)*(4*E_star**(5/2)*a**(9/2) + 6*numpy.pi*E_star**(3/2)*R**2*a**(3/2)*rho_g**2 - 7*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R*a**3*rho_g)/(R*(4*E_star**(5/2)*a**(3/2) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R*rho_g))
+
+
+def fit_jkr_force_ddgamma(E_star, R, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the JKR fit model at a fixed position (-pi R at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
+    = z_p - z_0 of jkr_force_from_radius in Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_jkr_force_ddgamma(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 4*numpy.pi*E_star*R*a**(3/2)/(numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*R*rho_g - 4*E_star*a**(3/2))
+
+
+def fit_jkr_force_dz0(E_star, R, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the JKR fit model at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
+    = z_p - z_0 of jkr_force_from_radius in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_jkr_force_dz0(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(-4*E_star**(3/2)*a**(5/2) + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*R*a*rho_g)/(4*numpy.sqrt(E_star)*a**(3/2) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*R*rho_g)
 
 
 def fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):
@@ -12662,6 +12854,36 @@ def _math_fit_hertz_force_dE(R, z_p, z_0):
 def _math_fit_hertz_force_dz0(E_star, R, z_p, z_0):
     """``fit_hertz_force_dz0`` for Python floats (the math module); raises where it does."""
     return -2*E_star*math.sqrt(R)*(((0) if (z_0 - z_p >= 0) else (1)))*math.sqrt(max(0, -z_0 + z_p))
+
+
+def _math_fit_jkr_depth(E_star, R, a, rho_g):
+    """``fit_jkr_depth`` for Python floats (the math module); raises where it does."""
+    return (a*a)/R - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*rho_g/math.sqrt(E_star)
+
+
+def _math_fit_jkr_depth_da(E_star, R, a, rho_g):
+    """``fit_jkr_depth_da`` for Python floats (the math module); raises where it does."""
+    return 2*a/R - 1/2*math.sqrt(2)*math.sqrt(math.pi)*rho_g/(math.sqrt(E_star)*math.sqrt(a))
+
+
+def _math_fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
+    """``fit_jkr_force`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*rho_g + (4/3)*E_star*a**3/R + F_0 + s_0*z_p
+
+
+def _math_fit_jkr_force_dE(E_star, R, a, rho_g):
+    """``fit_jkr_force_dE`` for Python floats (the math module); raises where it does."""
+    return (4/3)*(4*math.pow(E_star, 5/2)*math.pow(a, 9/2) + 6*math.pi*math.pow(E_star, 3/2)*(R*R)*math.pow(a, 3/2)*(rho_g*rho_g) - 7*math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*R*a**3*rho_g)/(R*(4*math.pow(E_star, 5/2)*math.pow(a, 3/2) - math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*R*rho_g))
+
+
+def _math_fit_jkr_force_ddgamma(E_star, R, a, rho_g):
+    """``fit_jkr_force_ddgamma`` for Python floats (the math module); raises where it does."""
+    return 4*math.pi*E_star*R*math.pow(a, 3/2)/(math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*R*rho_g - 4*E_star*math.pow(a, 3/2))
+
+
+def _math_fit_jkr_force_dz0(E_star, R, a, rho_g):
+    """``fit_jkr_force_dz0`` for Python floats (the math module); raises where it does."""
+    return 2*(-4*math.pow(E_star, 3/2)*math.pow(a, 5/2) + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*R*a*rho_g)/(4*math.sqrt(E_star)*math.pow(a, 3/2) - math.sqrt(2)*math.sqrt(math.pi)*R*rho_g)
 
 
 def _math_fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):

@@ -140,6 +140,12 @@ __all__ = [
     'fit_hertz_force',
     'fit_hertz_force_dE',
     'fit_hertz_force_dz0',
+    'fit_jkr_depth',
+    'fit_jkr_depth_da',
+    'fit_jkr_force',
+    'fit_jkr_force_dE',
+    'fit_jkr_force_ddgamma',
+    'fit_jkr_force_dz0',
     'fit_powerlaw_force',
     'fit_powerlaw_force_dE',
     'fit_powerlaw_force_dz0',
@@ -3456,6 +3462,149 @@ def fit_hertz_force_dz0(E_star, R, z_p, z_0):
         contact point: the position z_p where the tip first touches the sample [m]
     """
     return -2*E_star*mpmath.sqrt(R)*(((0) if (z_0 - z_p >= 0) else (1)))*mpmath.sqrt(max(0, -z_0 + z_p))
+
+
+def fit_jkr_depth(E_star, R, a, rho_g):
+    """Indentation depth d [m] of a paraboloid in JKR contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth at Delta gamma =
+    rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return a**2/R - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*rho_g/mpmath.sqrt(E_star)
+
+
+def fit_jkr_depth_da(E_star, R, a, rho_g):
+    """Derivative dd/da [1] of the JKR depth: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*a/R - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g/(mpmath.sqrt(E_star)*mpmath.sqrt(a))
+
+
+def fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on a paraboloid in JKR contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_force_from_radius at Delta
+    gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g + (mpmath.mpf(4)/mpmath.mpf(3))*E_star*a**3/R + F_0 + s_0*z_p
+
+
+def fit_jkr_force_dE(E_star, R, a, rho_g):
+    """Derivative dF/dE* [m^2] of the JKR fit model at a fixed position.
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
+    = z_p - z_0 of jkr_force_from_radius in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return (mpmath.mpf(4)/mpmath.mpf(3))*(4*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(mpmath.mpf(9)/mpmath.mpf(2)) + 6*mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*R**2*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g**2 - 7*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R*a**3*rho_g)/(R*(4*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(mpmath.mpf(3)/mpmath.mpf(2)) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R*rho_g))
+
+
+def fit_jkr_force_ddgamma(E_star, R, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the JKR fit model at a fixed position (-pi R at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
+    = z_p - z_0 of jkr_force_from_radius in Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 4*mpmath.pi*E_star*R*a**(mpmath.mpf(3)/mpmath.mpf(2))/(mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*R*rho_g - 4*E_star*a**(mpmath.mpf(3)/mpmath.mpf(2)))
+
+
+def fit_jkr_force_dz0(E_star, R, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the JKR fit model at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
+    = z_p - z_0 of jkr_force_from_radius in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_jkr.py::test_jkr_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(-4*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(5)/mpmath.mpf(2)) + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*R*a*rho_g)/(4*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2)) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*R*rho_g)
 
 
 def fit_powerlaw_force(E_star, c_n, kappa_n, n, z_p, z_0, F_0, s_0):

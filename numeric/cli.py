@@ -3,6 +3,8 @@
     hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
+    hertzmdr fit RETRACT.csv --scene TIP.toml --adhesion [...]   (JKR: E*, z_0, Delta gamma)
+    hertzmdr fit --scene SCENE.toml [...]   (the curve and its settings from the scene's [fit])
     hertzmdr fit MAP --scene TIP.toml [--out DIR [--force]] [--workers N] [--z0 ..] [--sigma ..]
 
 ``hertzmdr run`` with no SCENE runs the built-in tour (the chapter's Problems 1-8 and figures).
@@ -53,13 +55,16 @@ p_run.add_argument("--force", action="store_true", help="allow --out into a non-
 sub.add_parser("effects", help="list the effects a scene can ask for, with their units")
 p_fit = sub.add_parser("fit", help="fit a force curve, or a force map, for the sample's "
                        "modulus, the contact point and the baseline (docs/fitting.md)")
-p_fit.add_argument("curve", type=Path, metavar="CURVE_OR_MAP",
-                   help="a curve (CSV: a header `z [um], F [nN]` with any length and force "
+p_fit.add_argument("curve", type=Path, metavar="CURVE_OR_MAP", nargs="?",
+                   help="omit it to fit the scene's [fit] curve (docs/fitting.md); a curve "
+                   "(CSV: a header `z [um], F [nN]` with any length and force "
                    "units, then one position and force per line); or a force map (CSV with the "
                    "header `x [um], y [um], z [nm], F [nN]` or `curve, z [nm], F [nN]`), or a "
                    "folder of curve files")
 p_fit.add_argument("--scene", type=Path, required=True,
-                   help="scene (TOML) with the tip and the flat sample (its nu converts E* to E)")
+                   help="scene (TOML) with the tip and the flat sample (its nu converts E* to E), "
+                   "and optionally a [fit] table: the curve, its columns and units, the depth "
+                   "range (a CURVE and --z0/--sigma given here replace the table's)")
 p_fit.add_argument("--out", type=Path, help="a curve: write the figure of data, fit and "
                    "residuals (PNG); a map: write the table, the map and a fit's figure into "
                    "this folder")
@@ -69,6 +74,10 @@ p_fit.add_argument("--workers", type=int, help="a map: worker processes (default
 p_fit.add_argument("--z0", help="a guess of the contact point, with a unit (e.g. \"1.2 um\")")
 p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a unit "
                    "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
+p_fit.add_argument("--adhesion", action="store_true",
+                   help="a curve: fit an adhesive retract curve with the JKR paraboloid (the "
+                   "work of adhesion as a fifth parameter; the scene's [interface] "
+                   "work_of_adhesion is shown for comparison, never used)")
 p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")
 p_acc.add_argument("--out", type=Path, default=Path("docs/accuracy.md"),
                    help="the Markdown report to write, its plot beside it as .png (default: "
@@ -249,29 +258,71 @@ def main(argv: list[str] | None = None) -> int:
         return 0
 
 
+def _fit_table(args):
+    """The scene's [fit] table (schema.FitSpec; an empty one without), with args.curve set to
+    the curve: the command line's CURVE, else the table's (a UsageError without either)."""
+    from hertzmdr.numeric import fit_io
+    from hertzmdr.numeric.scene.schema import FitSpec, SceneError
+
+    try:
+        table = fit_io.fit_table(args.scene) or FitSpec()
+    except SceneError as exc:
+        raise UsageError(str(exc)) from None
+    if args.curve is None:
+        if table.curve is None:
+            raise UsageError(f"fit: give a CURVE_OR_MAP, or a [fit] table with curve = "
+                             f"\"...\" in {args.scene} (see: hertzmdr fit -h)")
+        args.curve = table.curve
+    return table
+
+
+def _fit_options(args, table, nu, tip_E, tip_nu) -> dict:
+    """fit_curve's keywords: --z0 and --sigma, else the [fit] table's contact_point and sigma;
+    no sample modulus with [fit] modulus = "E_star"."""
+    from hertzmdr.numeric.scene.units import UnitError, to_si
+
+    try:
+        z0 = table.contact_point if args.z0 is None else to_si(args.z0, "length")
+        sigma = table.sigma if args.sigma is None else to_si(args.sigma, "force")
+    except UnitError as exc:
+        raise UsageError(f"--z0/--sigma: {exc}") from None
+    if table.modulus == "E_star":
+        nu = tip_E = tip_nu = None
+    return {"nu": nu, "tip_modulus": tip_E, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
+
+
 def cmd_fit(args) -> int:
     from hertzmdr.numeric import fit, fit_io
     from hertzmdr.numeric.scene.schema import SceneError
-    from hertzmdr.numeric.scene.units import UnitError, to_si
 
-    if fit_io.is_batch(args.curve):
-        return cmd_fit_batch(args)
+    table = _fit_table(args)
+    if table.columns is None and table.units is None and fit_io.is_batch(args.curve):
+        if args.adhesion:
+            raise UsageError(f"--adhesion: {args.curve} is a force map or a folder; the "
+                             "adhesive fit takes one curve")
+        return cmd_fit_batch(args, table)
+    if args.adhesion and table.depth_range is not None:
+        raise UsageError("--adhesion: the scene's [fit] depth_range is for the fits without "
+                         "adhesion; the adhesive fit takes the whole retract curve")
     if args.workers is not None:
         raise UsageError(f"--workers: {args.curve} is one curve; --workers is for a force map "
                          "or a folder of curves")
     try:
         tip, nu, scene_E, tip_E, tip_nu = fit_io.tip_from_scene(args.scene)
-        z, F = fit_io.read_curve(args.curve)
-        z0 = None if args.z0 is None else to_si(args.z0, "length")
-        sigma = None if args.sigma is None else to_si(args.sigma, "force")
+        z, F = fit_io.read_columns(args.curve, table.columns, table.units)
+        options = _fit_options(args, table, nu, tip_E, tip_nu)
         if args.out is not None:
             check_figure_out(args.out, args.force)
-        result = fit.fit_curve(z, F, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
-                               sigma=sigma)
+        if args.adhesion:
+            from hertzmdr.numeric import fit_adhesive
+            scene_dgamma = _scene_work_of_adhesion(args.scene)
+            result = fit_adhesive.fit_curve(z, F, tip, **options)
+        elif table.depth_range is None:
+            result = fit.fit_curve(z, F, tip, **options)
+        else:
+            result = fit_io.fit_in_range(z, F, tip, table.depth_range, **options)
     except SceneError as exc:
         raise UsageError(str(exc)) from None
-    except UnitError as exc:
-        raise UsageError(f"--z0/--sigma: {exc}") from None
     except ValueError as exc:  # CurveError, NoContactError and the validators' messages
         raise UsageError(f"{args.curve}: {exc}" if not isinstance(exc, fit_io.CurveError)
                          else str(exc)) from None
@@ -283,12 +334,22 @@ def cmd_fit(args) -> int:
         except OSError as exc:
             raise UsageError(f"--out {args.out}: cannot write ({exc})") from None
     print(fit_io.report(result, scene_E))
+    if args.adhesion and scene_dgamma:
+        print(f"the scene's work of adhesion = {scene_dgamma:.6g} J/m^2; fitted "
+              f"{result.dgamma:.6g} ± {result.errors[2]:.3g} J/m^2")
     if args.out is not None:
         print(f"wrote {args.out}")
     return 0
 
 
-def cmd_fit_batch(args) -> int:
+def _scene_work_of_adhesion(path) -> float:
+    """The scene's [interface] work_of_adhesion [J/m^2] (0 when it gives none)."""
+    from hertzmdr.numeric import scene
+
+    return float(scene.load(path).spec.interface.work_of_adhesion)
+
+
+def cmd_fit_batch(args, table) -> int:
     """Fit a force map or a folder of curves: a summary on stdout, one line per failed curve on
     stderr, the table (fits.csv), the map (modulus_map.png) and the fit of the curve of median
     modulus (fit_median.png) in --out. Exit 0 when a curve was fitted, 1 when none was."""
@@ -296,21 +357,22 @@ def cmd_fit_batch(args) -> int:
 
     from hertzmdr.numeric import fit, fit_batch, fit_io
     from hertzmdr.numeric.scene.schema import SceneError
-    from hertzmdr.numeric.scene.units import UnitError, to_si
 
     if args.workers is not None and args.workers < 1:
         raise UsageError(f"--workers {args.workers}: give a number of processes >= 1")
+    if table.depth_range is not None:
+        raise UsageError(f"{args.scene}: fit.depth_range: applies to one curve; {args.curve} "
+                         "is a force map or a folder of curves, fitted whole")
     try:
         tip, nu, scene_E, tip_E, tip_nu = fit_io.tip_from_scene(args.scene)
-        z0 = None if args.z0 is None else to_si(args.z0, "length")
-        sigma = None if args.sigma is None else to_si(args.sigma, "force")
+        opts = _fit_options(args, table, nu, tip_E, tip_nu)
+        nu, tip_E, tip_nu, z0, sigma = (opts[k] for k in ("nu", "tip_modulus", "tip_nu", "z0",
+                                                          "sigma"))
         if args.out is not None:
             check_out(args.out, args.force)
         curves, unread = fit_io.read_batch(args.curve)
     except SceneError as exc:
         raise UsageError(str(exc)) from None
-    except UnitError as exc:
-        raise UsageError(f"--z0/--sigma: {exc}") from None
     except ValueError as exc:  # CurveError and the validators' messages
         raise UsageError(str(exc)) from None
     if args.out is not None:

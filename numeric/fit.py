@@ -275,11 +275,16 @@ class Pyramid(_Tip):
         return self.cone.basis(z, z0)
 
     def ratios(self, d_max):
-        return self.cone.ratios(d_max)
+        """The cone's, and 1/sides: the warning that the pyramid is solved as a cone."""
+        return {**self.cone.ratios(d_max), "1/sides": 1.0 / self.sides}
 
     def describe(self):
+        from hertzmdr.numeric import force_law
+
+        K = float(force_law.cone(self.cone.theta, 1.0).K)  # F = K E* d^2, (5.40) at theta
         return (f"{self.sides}-sided pyramid, alpha = {self.alpha:.6g} rad, as its equal-area "
-                f"cone theta = {self.cone.theta:.6g} rad")
+                f"cone theta = {self.cone.theta:.6g} rad: F = {K:.6g} E* d^2 (an "
+                "approximation)")
 
 
 @dataclass(frozen=True)

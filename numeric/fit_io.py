@@ -8,9 +8,9 @@ length and force pint reads (``nm``, ``um``, ``m``; ``pN``, ``nN``, ``N``).
 The tip file is a scene (docs/scenes.md) with its two bodies: the sample is the ``flat`` body
 (its ``nu`` gives the sample's Young's modulus beside E*; its ``E``, which a scene requires, is
 shown beside the fitted one for comparison, not used), the tip is the other body (``sphere``:
-the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``flat_punch``, ``power_law``, or a measured
-``profile``, fitted through the numerical MDR; rigid or elastic). The scene's effects and load
-are not used.
+the paraboloid of Hertz, ``exact_sphere``, ``cone``, ``pyramid`` (the cone of its force law),
+``flat_punch``, ``power_law``, or a measured ``profile``, fitted through the numerical MDR; rigid
+or elastic). The scene's effects and load are not used.
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ TIP_SHAPES = {
     "sphere": lambda p: fit.Paraboloid(R=p["radius"]),
     "exact_sphere": lambda p: fit.ExactSphere(R=p["radius"]),
     "cone": lambda p: fit.Cone(theta=p["angle"]),
+    "pyramid": lambda p: _pyramid_tip(p),
     "flat_punch": lambda p: fit.FlatPunch(a=p["radius"]),
     "power_law": lambda p: fit.PowerLaw(c_n=p["coefficient"], n=p["exponent"]),
     "profile": lambda p: _sampled_tip(p),
@@ -43,6 +44,14 @@ def _sampled_tip(p):
 
     r, f, k = SHAPES["profile"].samples(p)
     return fit.SampledTip.from_samples(r, f, k=k)
+
+
+def _pyramid_tip(p) -> fit.Pyramid:
+    """The fit's pyramid (its equal-area cone) of a scene's pyramid body: its keys or preset."""
+    from hertzmdr.numeric.scene.shapes.pyramid import Pyramid
+
+    sides, alpha = Pyramid.geometry(p)
+    return fit.Pyramid(alpha=alpha, sides=sides)
 
 
 class CurveError(ValueError):
@@ -107,6 +116,95 @@ def read_curve(path) -> tuple[np.ndarray, np.ndarray]:
               zip(header, ("length", "force"), ("`z [um]`", "`F [nN]`"), strict=True)]
     arr = _numbers(path, rows, 0, scales)
     return arr[:, 0], arr[:, 1]
+
+
+def read_columns(path, columns=None, units=None) -> tuple[np.ndarray, np.ndarray]:
+    """Positions z [m] and forces F [N] of a curve file as a scene's ``[fit]`` table reads it.
+
+    ``columns`` (the header names of the position and the force column, e.g. ("z", "F")) picks
+    two of any number of columns; without it the file has two. ``units`` (the SI size of one
+    unit of each, [m] and [N]) is for a header without units, e.g. ``z, F``; a header that has
+    them and ``units`` too is refused (the unit is given once). Neither: :func:`read_curve`.
+    """
+    if columns is None and units is None:
+        return read_curve(path)
+    path = Path(path)
+    hline, header, rows = _read_rows(path)
+    names = [c.split("[", 1)[0].strip() for c in header]
+    if columns is None:
+        if len(header) != 2:
+            raise CurveError(f"{path}:{hline}: the header names {len(header)} columns; without "
+                             "[fit] columns the file has two, position and force")
+        picks = [0, 1]
+    else:
+        picks = []
+        for want, what in zip(columns, ("position", "force"), strict=True):
+            if names.count(want) != 1:
+                found = "twice" if names.count(want) else "not"
+                raise CurveError(f"{path}:{hline}: the {what} column {want!r} of [fit] columns "
+                                 f"is {found} in the header (its names: "
+                                 f"{', '.join(map(repr, names))})")
+            picks.append(names.index(want))
+    scales = []
+    for k, dim, ex, j in zip(picks, ("length", "force"), ("`z [um]`", "`F [nN]`"), (0, 1),
+                             strict=True):
+        given = _HEADER.match(header[k]) is not None
+        if units is not None and given:
+            raise CurveError(f"{path}:{hline}: column {header[k].strip()!r} gives its unit, and "
+                             "so does [fit] units: give it once")
+        scales.append(units[j] if units is not None else
+                      _unit_column(path, hline, header[k], dim, ex))
+    width = len(header)
+    data = []
+    for lineno, row in rows:
+        if len(row) != width:
+            raise CurveError(f"{path}:{lineno}: {len(row)} values; each line has {width}")
+        try:
+            data.append([float(row[k]) for k in picks])
+        except ValueError:
+            raise CurveError(f"{path}:{lineno}: {','.join(row)!r}: the position and force are "
+                             "not numbers") from None
+    arr = np.array(data, dtype=float).reshape(-1, 2) * np.asarray(scales)
+    if not np.isfinite(arr).all():
+        bad = int(np.argwhere(~np.isfinite(arr))[0][0])
+        raise CurveError(f"{path}:{rows[bad][0]}: a value is not finite")
+    return arr[:, 0], arr[:, 1]
+
+
+#: most fits of a depth range before its points must have settled
+RANGE_PASSES = 20
+
+
+def fit_in_range(z, F, tip, depth_range, **options) -> fit.FitResult:
+    """Fit the points whose z - z_0 lies in ``depth_range`` = (lowest, highest) [m], z_0 the
+    fitted contact point: fit the whole curve, keep the points in the range of its z_0, fit
+    them, and repeat until the points kept no longer change (at most :data:`RANGE_PASSES`
+    fits; CurveError if they still change). ``options`` as :func:`fit.fit_curve`'s."""
+    z, F = np.asarray(z, float), np.asarray(F, float)
+    lo, hi = depth_range
+    result = fit.fit_curve(z, F, tip, **options)
+    keep = None
+    for _ in range(RANGE_PASSES):
+        d = z - result.z_0
+        now = (d >= lo) & (d <= hi)
+        if keep is not None and np.array_equal(now, keep):
+            return result
+        keep = now
+        if keep.sum() < fit.MIN_POINTS:
+            raise CurveError(f"[fit] depth_range [{lo:g}, {hi:g}] m of the contact point "
+                             f"{result.z_0:.6g} m holds {int(keep.sum())} points; at least "
+                             f"{fit.MIN_POINTS} are needed")
+        result = fit.fit_curve(z[keep], F[keep], tip, **{**options, "z0": result.z_0})
+    raise CurveError(f"[fit] depth_range [{lo:g}, {hi:g}] m: the points in it still change "
+                     f"after {RANGE_PASSES} fits (the contact point moves with them); widen it")
+
+
+def fit_table(path):
+    """The ``[fit]`` table of the scene file ``path`` (:class:`..scene.schema.FitSpec`), or
+    None; SceneError for a bad scene."""
+    from hertzmdr.numeric import scene
+
+    return scene.load(path).spec.fit
 
 
 def is_batch(path) -> bool:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hertzmdr.numeric import _generated as gen
-from hertzmdr.numeric._validate import between, positive, result
+from hertzmdr.numeric._validate import between, nonnegative, positive, result
 
 __all__ = ["Law", "cone", "ellipse", "flat_punch", "hertz", "line", "power_law"]
 
@@ -40,12 +40,13 @@ class Law:
     stiffness_n: object
 
     def force(self, d):
-        """F = K d^n [N] at depths d [m] (a line contact: F/L [N/m])."""
-        return self.K * np.asarray(d, float) ** self.n
+        """F = K d^n [N] at depths d [m], 0 <= d < inf (a line contact: F/L [N/m])."""
+        return self.K * nonnegative("d", d) ** self.n
 
     def stiffness(self, d):
-        """dF/dd = K_k d^(n_k) [N/m] at depths d [m] (a line contact: per unit length)."""
-        return self.stiffness_K * np.asarray(d, float) ** self.stiffness_n
+        """dF/dd = K_k d^(n_k) [N/m] at depths d [m], 0 <= d < inf (a line contact: per
+        unit length)."""
+        return self.stiffness_K * nonnegative("d", d) ** self.stiffness_n
 
 
 def _law(K, n, Kk, nk) -> Law:

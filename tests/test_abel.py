@@ -15,6 +15,7 @@ sqrt(x^2 - b^2) at x = b limits (5.59) to O(dx^1.5) for r < b.
 """
 
 import math
+import os
 import subprocess
 import sys
 
@@ -26,6 +27,8 @@ from hypothesis import strategies as st
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import abel
+from hertzmdr.numeric._abel import edge as abel_edge
+from hertzmdr.numeric._abel import moments, operators
 
 from oracle import WORST
 from test_worn import pressure_ref as worn_pressure_ref
@@ -33,6 +36,16 @@ from test_worn import pressure_ref as worn_pressure_ref
 E = 2.1e11  # Pa
 A_CONTACT = 3e-4  # m
 D = 2e-6  # m
+
+
+@pytest.fixture(autouse=True)
+def _operators_built_anew_under_mutation_testing():
+    """Under mutmut (benchmarks/mutation.py) each mutant's tests run in a process forked from
+    one that has run them all, with the operator and edge caches full: a mutant of a builder
+    would never be called. There every test builds its operators anew."""
+    if os.environ.get("MUTANT_UNDER_TEST"):
+        operators._CACHE.clear()
+        abel_edge._EDGE_CACHE.clear()
 
 
 def _record(what, err, tol):
@@ -481,3 +494,19 @@ def test_edge_on_the_last_sample_and_beyond_it():
     with pytest.raises(ValueError, match=r"^edge = 2.0 is out of range; valid: 0 < edge <= "
                                          r"\(N-1\)\*dx = 1.0$"):
         abel.pressure_matrix(5, 0.25, edge=2.0)
+
+
+def test_beta_table_by_quadrature():
+    """_beta_table's c[k, j] (the moments of the pieces in closed form, built at import) against
+    int_0^1 x^k (x + beta (1 - x))^k dx by 30-digit quadrature at four beta, k <= 8 (the
+    tables used): sums of k + 1 positive terms, each a ratio of exact factorials, so a few
+    ulps (1e-15); and zero above the diagonal."""
+    for k in range(9):
+        c = moments._beta_table(k)
+        assert c.shape == (k + 1, k + 1) and not np.triu(c, 1).any(), k
+        for kk in range(k + 1):
+            for beta in (0.0, 0.3, 1.0, 7.0):
+                with mp.workdps(30):
+                    ref = mp.quad(lambda x, k=kk, b=beta: x**k * (x + b * (1 - x)) ** k, [0, 1])
+                got = sum(c[kk, j] * beta**j for j in range(kk + 1))
+                _record("beta table", abs(got / ref - 1), 1e-15)

@@ -534,3 +534,45 @@ def test_bearing_scene_maxima_sweep():
         mid = _tau_yz(t, y0, z0)
         for dy, dz in ((h, 0), (-h, 0), (0, h), (0, -h)):
             assert mid > _tau_yz(t, y0 + dy, z0 + dz)
+
+
+def test_von_mises_and_principal_shear_by_polar_superposition():
+    """von_mises and principal_shear in SI units (a = 2 mm, b = 1 mm, p0 = 1.5 GPa) at two
+    points below the contact, for a coarse rtol = 1e-4 and the default: against the tensor of
+    the polar superposition (tests/ellipse_reference.py), tau_1 from its eigenvalues and
+    sigma_vM from its deviator (sqrt(3/2 s:s), not (5.50)'s form). The reported error must
+    bound the true one; it is that of the components (twice it for sigma_vM, 1-Lipschitz in
+    each difference), and the coarse rtol's is the larger. Tolerance beyond it: the route's
+    POLAR_ERROR per component and a few roundings of the eigenvalues, 1e-14 p0."""
+    a, b, p0, nu_ = 2e-3, 1e-3, 1.5e9, 0.3
+    for X, Y, Z in ((0.3, 0.2, 0.15), (0.1, -0.1, 0.4)):
+        r = superposed_fast(nu_, 1.0, b / a, X, Y, Z)
+        T = p0 * np.array([[r["xx"], r["xy"], r["xz"]], [r["xy"], r["yy"], r["yz"]],
+                           [r["xz"], r["yz"], r["zz"]]])
+        ev = np.linalg.eigvalsh(T)
+        dev = T - np.trace(T) / 3 * np.eye(3)
+        tau_ref, vm_ref = (ev[-1] - ev[0]) / 2, np.sqrt(1.5 * np.sum(dev * dev))
+        errs = []
+        for rtol in (1e-4, el.DEFAULT_RTOL):
+            kw = {"rtol": rtol} if rtol != el.DEFAULT_RTOL else {}
+            comp = el.stresses(X * a, Y * a, Z * a, a, b, p0, nu_, **kw).error
+            vm, vm_err = el.von_mises(X * a, Y * a, Z * a, a, b, p0, nu_, **kw)
+            tau, tau_err = el.principal_shear(X * a, Y * a, Z * a, a, b, p0, nu_, **kw)
+            assert vm_err == 2 * comp and tau_err == comp, (X, rtol)
+            assert abs(vm - vm_ref) <= vm_err + 1e-14 * p0, (X, rtol, vm, vm_ref)
+            assert abs(tau - tau_ref) <= tau_err + 1e-14 * p0, (X, rtol, tau, tau_ref)
+            errs.append(comp)
+        assert errs[0] > errs[1], (X, errs)
+
+
+def test_axis_stresses_in_si_units_by_polar_superposition():
+    """axis_stresses at depths in metres under a 2 mm x 0.5 mm contact at p0 = 1.2 GPa against
+    the polar superposition on the axis (scaled by a and p0): 1e-14 p0, a few roundings in the
+    R_D forms and the route's 1e-15 (as test_hard_points_by_polar_superposition)."""
+    a, b, p0, nu_ = 2e-3, 0.5e-3, 1.2e9, 0.3
+    z = np.array([0.1, 0.786, 3.0]) * b
+    got = el.axis_stresses(z, a, b, p0, nu_)
+    for i, zz in enumerate(z):
+        ref = superposed_fast(nu_, 1.0, b / a, 0.0, 0.0, zz / a)
+        for g, comp in zip(got, ("xx", "yy", "zz"), strict=True):
+            assert abs(float(g[i]) - p0 * ref[comp]) < 1e-14 * p0, (zz, comp, g[i], ref[comp])

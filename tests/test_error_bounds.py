@@ -138,6 +138,11 @@ ROUTES = {
     "problem7b_parabola": (lambda: Hertz(e_star(STEEL), mp.mpf(1) / 100), 0.3),
     "problem7c_cone": (lambda: PowerLaw(e_star((3e9, 0.35)), mp.tan(_rad(30)), 1), 0.35),
     "problem7d_power_law": (lambda: PowerLaw(e_star((70e9, 0.33)), 1e6, 3), 0.33),
+    # pyramids as their equal-area cones: tan(theta_eq) from the polygon's shoelace area
+    "pyramid_berkovich_silica": (lambda: PowerLaw(e_star((72e9, 0.17), (1141e9, 0.07)),
+                                                  1 / _cot_pyramid(3, "65.27"), 1), 0.17),
+    "fit_pyramid_afm": (lambda: PowerLaw(e_star((20e3, 0.5)), 1 / _cot_pyramid(4, 35), 1),
+                        0.5),
     "problem8_worn_parabola": (lambda: _worn(e_star((130e9, 0.28)), 50e-6, 2e-6), 0.28),
     # the load sweeps among the studies (docs/scenes.md, "Studies"): every load point
     "study_afm_force_gel": (lambda: Hertz(e_star((70e9, 0.17), (10e3, 0.5)), 10e-6), 0.17),
@@ -449,6 +454,14 @@ def _jkr_sphere(E, R, dgamma):
     route = Adhesive(E, dgamma, lambda a: a * a / R, lambda a: 4 * E * a**3 / (3 * R))
     route.R = R
     return route
+
+
+def _cot_pyramid(sides, deg):
+    """cot(theta) of the pyramid's equal-area cone (tests/test_fit_scene.py: shoelace area)."""
+    from test_fit_scene import cot_equal_area
+
+    with mp.workdps(DPS):
+        return +cot_equal_area(sides, _rad(deg))
 
 
 def _jkr_cone(E, theta_deg, dgamma):

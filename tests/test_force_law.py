@@ -20,6 +20,7 @@ from hertzmdr.numeric import force_law
 from hertzmdr.numeric.scene import SceneError, load
 
 from kernels import force_axisymmetric, hertz_reference
+from named import assert_inputs_named
 from oracle import assert_close
 
 TOL = 1e-13
@@ -50,10 +51,12 @@ def test_hertz_law_by_pressure_quadrature():
     check(force_law.hertz(R, E), K, n, "hertz")
 
 
-def test_cone_law_by_pressure_quadrature():
+@pytest.mark.parametrize("theta", [0.35, 1.3])
+def test_cone_law_by_pressure_quadrature(theta):
     """(5.39) as printed, p = (E* d/(pi a)) arccosh(a/r), a = 2 d/(pi tan theta) (5.38),
-    integrated over the disc (tanh-sinh takes the log singularity at r = 0)."""
-    E, theta = 3e9, 0.35
+    integrated over the disc (tanh-sinh takes the log singularity at r = 0); a shallow cone and
+    a sharp one (theta = 1.3 rad, near the pi/2 limit)."""
+    E = 3e9
     with mp.workdps(30):
         def F(d):
             a = 2 * d / (mp.pi * mp.tan(theta))
@@ -136,6 +139,50 @@ def test_stiffness_law_is_the_derivative():
         # 1/n against (n + 1)/n - 1: two roundings
         assert abs(float(law.stiffness_n) - (float(law.n) - 1)) <= 4e-16, name
     assert gen.force_law_powerlaw_stiffness_exponent(2.5) == pytest.approx(0.4, rel=1e-15)
+
+
+def test_law_force_and_stiffness_at_depths_by_pressure_quadrature():
+    """Law.force and Law.stiffness at an array of depths (0, one between the fit's depths, one
+    beyond them) against the 30-digit quadrature of the Hertz pressure (tests/kernels.py), and
+    the punch's constant stiffness (n_k = 0, so 0^0 = 1 at d = 0) against F(d)/d of the
+    quadrature of Boussinesq's punch pressure: K d^n is one power and one product (a few
+    ulps, TOL)."""
+    E, R, a = 2.1e11, 0.012, 2.5e-3
+    ds = np.array([0.0, 5e-7, 2e-5])
+    law = force_law.hertz(R, E)
+    F, k = law.force(ds), law.stiffness(ds)
+    assert F[0] == 0.0 and k[0] == 0.0
+    with mp.workdps(30):
+        for i, d in enumerate(ds[1:], 1):
+            ref = hertz_reference(mp.mpf(E), mp.mpf(R), mp.mpf(d))[2]
+            assert_close(F[i], ref, TOL, f"hertz force at d = {d}")
+            # F ~ d^(3/2): dF/dd = (3/2) F/d (the power law's derivative, not its K_k)
+            assert_close(k[i], ref * 3 / (2 * mp.mpf(d)), TOL, f"hertz stiffness at d = {d}")
+        am, d = mp.mpf(a), mp.mpf("1e-6")
+        punch = force_axisymmetric(lambda r: E * d / (mp.pi * mp.sqrt((am - r) * (am + r))), am)
+        for kk in force_law.flat_punch(a, E).stiffness(np.array([0.0, 1e-6, 3.0])):
+            assert_close(kk, punch / d, TOL, "punch stiffness")
+
+
+def test_each_input_named_in_its_error():
+    """Every input of every law, set to NaN, is named in the one-line error (tests/named.py)."""
+    assert_inputs_named(force_law.hertz, {"R": 0.01, "E_star": 1e9})
+    assert_inputs_named(force_law.cone, {"theta": 0.3, "E_star": 1e9})
+    assert_inputs_named(force_law.flat_punch, {"a": 1e-3, "E_star": 1e9})
+    assert_inputs_named(force_law.power_law, {"c_n": 2.0, "n": 2.5, "E_star": 1e9})
+    assert_inputs_named(force_law.line, {"E_star": 1e9})
+    assert_inputs_named(force_law.ellipse, {"R1": 0.01, "R2": 0.002, "E_star": 1e9})
+
+
+def test_law_refuses_a_negative_or_nan_depth_naming_d():
+    """A depth below 0 (no contact: K d^n would be NaN for n = 3/2) or NaN is refused, one line
+    naming d and its range, at its index in an array."""
+    law = force_law.hertz(0.01, 1e9)
+    for call in (law.force, law.stiffness):
+        with pytest.raises(ValueError, match=r"^d = -1e-09 is out of range; valid: 0 <= d"):
+            call(-1e-9)
+        with pytest.raises(ValueError, match=r"^d\[1\] = nan"):
+            call([1e-6, float("nan")])
 
 
 def test_vectorized_and_validated():

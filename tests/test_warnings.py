@@ -26,7 +26,9 @@ EXPECTED = {"exact_sphere_deep": {"a/R", "d/R"},
             "problem5_differential_stiffness": {"tan(theta)"},
             "problem7c_cone": {"tan(theta)"},
             "afm_sphere_tip_pdms": {"a/R", "d/R"},
-            "afm_cone_tip_pdms": {"tan(theta)"}}
+            "afm_cone_tip_pdms": {"tan(theta)"},
+            "pyramid_berkovich_silica": {"tan(theta)", "1/sides"},
+            "fit_pyramid_afm": {"tan(theta)", "1/sides"}}
 #: the relative agreement of a warning's value with the same ratio from the reported effects:
 #: both are quotients of the same float64 quantities, a few roundings apart
 RATIO_RTOL = 1e-14

@@ -122,6 +122,16 @@ ASSUMPTIONS: dict[str, Assumption] = {a.ratio: a for a in [
         "to 0)",
         "adhesive contacts with a radius of curvature (sphere, exact sphere, worn parabola, "
         "power law n = 2) whose interface gives a `range`", "below"),
+    Assumption(
+        "1/sides", "the MDR takes the profile axisymmetric (a cone is a pyramid of infinitely "
+        "many faces); a pyramid is solved as the cone of the same cross-section area at every "
+        "depth (F = K E* d^2, K stated with the model), an approximation of its force", 0.0,
+        "no pyramid is axisymmetric: the equal-area cone has its contact area at every depth "
+        "but not its exact force; the flat punch of square section is 1.021 times stiffer "
+        "than the circular one of the same area, of triangular section 1.061 "
+        "(docs/non_axisymmetric.md), and other equivalent-cone conventions differ by a few "
+        "per cent (docs/fitting.md)",
+        "pyramid"),
 ]}
 
 

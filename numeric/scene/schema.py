@@ -27,7 +27,9 @@ class SceneError(ValueError):
 
 
 MATERIAL_KEYS = {"E", "nu", "rigid"}
-TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model", "interface"}
+TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model", "interface", "fit"}
+#: the keys of a ``[fit]`` table (docs/fitting.md)
+FIT_KEYS = {"curve", "columns", "units", "modulus", "depth_range", "contact_point", "sigma"}
 
 
 @dataclass
@@ -94,6 +96,38 @@ class Load:
     tangential: Tangential | None = None
 
 
+@dataclass(frozen=True)
+class FitSpec:
+    """A scene's ``[fit]`` table: what ``hertzmdr fit --scene`` fits (docs/fitting.md).
+
+    Attributes
+    ----------
+    curve : Path or None
+        The curve file (or force map, or folder of curves), resolved against the scene's
+        folder; None when the table leaves it to the command line.
+    columns : tuple of str or None
+        The header names of the position and force columns (default: a two-column file).
+    units : tuple of float or None
+        The SI size of one unit of each of those columns [m], [N], for a header without units.
+    modulus : str
+        "E" (the sample's Young's modulus through its nu, and E*) or "E_star" (E* alone).
+    depth_range : tuple of float or None
+        (lowest, highest) z - z_0 [m] of the points fitted, z_0 the fitted contact point.
+    contact_point : float or None
+        A guess of the contact point z_0 [m].
+    sigma : float or None
+        The force noise's standard deviation [N].
+    """
+
+    curve: Path | None = None
+    columns: tuple[str, str] | None = None
+    units: tuple[float, float] | None = None
+    modulus: str = "E"
+    depth_range: tuple[float, float] | None = None
+    contact_point: float | None = None
+    sigma: float | None = None
+
+
 @dataclass
 class SceneSpec:
     title: str
@@ -111,6 +145,8 @@ class SceneSpec:
     #: (key as in errors -> (how, dimension or unit)): what result.json echoes (echo.py)
     raw: dict = field(default_factory=dict)
     read_as: dict[str, tuple[str, str]] = field(default_factory=dict)
+    #: the ``[fit]`` table, None without one (it changes nothing `hertzmdr run` computes)
+    fit: FitSpec | None = None
 
 
 def read(path_or_dict, *, known_effects) -> SceneSpec:
@@ -291,8 +327,73 @@ class _Reader:
             elliptic = model.get("elliptic", "exact")
             if elliptic not in ("exact", "gaussian"):
                 self.fail("model.elliptic", f"must be \"exact\" or \"gaussian\", got {elliptic!r}")
+        fit = self.fit(self.table(data["fit"], "fit")) if "fit" in data else None
         return SceneSpec(title, list(effects), parsed, load, rtol, elliptic, interface,
-                         self.where, self.base_dir, raw=data, read_as=dict(self.read_as))
+                         self.where, self.base_dir, raw=data, read_as=dict(self.read_as),
+                         fit=fit)
+
+    def fit(self, ft: dict) -> FitSpec:
+        """``[fit]``: the curve to fit and how (docs/fitting.md); every value checked here,
+        the curve file's content when it is fitted (numeric/fit_io.py)."""
+        self.extra_keys(ft, FIT_KEYS, "fit")
+        out = {}
+        if "curve" in ft:
+            name = ft["curve"]
+            if not isinstance(name, str) or not name.strip() or not name.isprintable():
+                self.fail("fit.curve", f"must be a file name (a string), got {name!r}")
+            path = (self.base_dir or Path.cwd()) / name
+            try:
+                is_file, is_dir = path.is_file(), path.is_dir()
+            except (OSError, ValueError) as exc:  # a name too long, a NUL byte
+                self.fail("fit.curve", f"{name!r} cannot be a file name ({exc})")
+            if not (is_file or is_dir):
+                self.fail("fit.curve", f"{name!r}: no such file or folder (a name relative to "
+                          "the scene's folder)")
+            if is_file:  # echoed resolved, with its SHA-256
+                self.read_as["fit.curve"] = ("path", "")
+            out["curve"] = path
+        if "columns" in ft:
+            cols = ft["columns"]
+            if not (isinstance(cols, list) and len(cols) == 2 and all(
+                    isinstance(c, str) and c.strip() and c.isprintable() for c in cols)
+                    and cols[0].strip() != cols[1].strip()):
+                self.fail("fit.columns", "must be the header names of two different columns, "
+                          f"position then force, e.g. [\"z\", \"F\"]; got {cols!r}")
+            out["columns"] = (cols[0].strip(), cols[1].strip())
+        if "units" in ft:
+            units = ft["units"]
+            if not (isinstance(units, list) and len(units) == 2
+                    and all(isinstance(u, str) and u.strip() for u in units)):
+                self.fail("fit.units", "must be a list of two unit strings [position, force], "
+                          f"e.g. [\"nm\", \"nN\"]; got {units!r}")
+            out["units"] = tuple(self.positive(f"1 {u.strip()}", dim, f"fit.units[{j}]")
+                                 for j, (u, dim) in enumerate(zip(units, ("length", "force"),
+                                                                  strict=True)))
+            for j in range(2):  # a unit, not a quantity: result.json echoes it as given
+                self.read_as.pop(f"fit.units[{j}]", None)
+        if "modulus" in ft:
+            if ft["modulus"] not in ("E", "E_star"):
+                self.fail("fit.modulus", "must be \"E\" (the sample's Young's modulus, through "
+                          "its nu) or \"E_star\" (the effective modulus alone); got "
+                          f"{ft['modulus']!r}")
+            out["modulus"] = ft["modulus"]
+        if "depth_range" in ft:
+            rng = ft["depth_range"]
+            if not isinstance(rng, list) or len(rng) != 2:
+                self.fail("fit.depth_range", "must be a list of two depths [lowest, highest] "
+                          f"of z - z_0, e.g. [\"-1 um\", \"200 nm\"]; got {rng!r}")
+            lo, hi = (self.quantity(v, "length", f"fit.depth_range[{j}]")
+                      for j, v in enumerate(rng))
+            if not (lo < hi and hi > 0):
+                self.fail("fit.depth_range", f"needs lowest < highest and highest > 0 (some "
+                          f"indentation), got {lo:g} m and {hi:g} m")
+            out["depth_range"] = (lo, hi)
+        if "contact_point" in ft:
+            out["contact_point"] = self.quantity(ft["contact_point"], "length",
+                                                 "fit.contact_point")
+        if "sigma" in ft:
+            out["sigma"] = self.positive(ft["sigma"], "force", "fit.sigma")
+        return FitSpec(**out)
 
     def body(self, b: dict, i: int) -> Body:
         key = f"body[{i}]"
@@ -366,6 +467,14 @@ class _Reader:
             if not isinstance(value, str) or not value.strip():
                 self.fail(key, f"must be a length unit such as \"nm\" or \"um\", got {value!r}")
             return self.quantity(f"1 {value.strip()}", "length", key)
+        if kind == "integer":  # its range is the shape's check
+            if isinstance(value, bool) or not isinstance(value, int):
+                self.fail(key, f"must be an integer, got {value!r}")
+            return value
+        if kind == "name":  # one of the shape's names, checked by the shape
+            if not isinstance(value, str) or not value.isprintable():
+                self.fail(key, f"must be a name (a string), got {value!r}")
+            return value
         if kind == "count":
             if isinstance(value, bool) or not isinstance(value, int) or not 8 <= value <= 2048:
                 self.fail(key, f"must be an integer in [8, 2048], got {value!r}")

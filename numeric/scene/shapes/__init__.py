@@ -20,12 +20,13 @@ from hertzmdr.numeric.scene.shapes.height_map import HeightMap
 from hertzmdr.numeric.scene.shapes.polygon_punch import PolygonPunch
 from hertzmdr.numeric.scene.shapes.power_law import PowerLaw
 from hertzmdr.numeric.scene.shapes.profile import Profile
+from hertzmdr.numeric.scene.shapes.pyramid import Pyramid
 from hertzmdr.numeric.scene.shapes.sphere import Sphere
 
 #: shape name -> the shape; the order is that of the docs' table
 SHAPES: dict[str, Shape] = {s.name: s for s in (
     Flat(), Sphere(), Cylinder(), Ellipsoid(), Cone(), FlatPunch(), PowerLaw(),
-    FlattenedParabola(), ExactSphere(), Profile(), PolygonPunch(), HeightMap(),
+    FlattenedParabola(), ExactSphere(), Pyramid(), Profile(), PolygonPunch(), HeightMap(),
 )}
 
 __all__ = ["SHAPES", "Key", "Shape"]

@@ -24,7 +24,7 @@ Fail = Callable[[str, str], NoReturn]
 
 #: how a key's value is read (schema.py): a quantity with this dimension, or a structure
 VALUE_KINDS = ("length", "angle", "number", "length_pair", "length_list", "path", "points",
-               "count", "length_unit")
+               "count", "length_unit", "integer", "name")
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,561 @@
+"""Fit an adhesive (JKR) retract curve F(z_p) for E*, the contact point and the work of adhesion.
+
+The model (generated from :func:`hertzmdr.derive.fit.jkr_model`, itself from the MDR's adhesive
+paraboloid in :mod:`hertzmdr.derive.adhesion`) is parametric in the contact radius a:
+
+    d(a) = z_p - z_0 = jkr_depth(E*, R, a, Delta gamma),
+    F(z_p) = jkr_force_from_radius(E*, R, a, Delta gamma) + F_0 + s_0 z_p,
+
+with z_p the position of the tip's base (increasing into the sample, the cantilever's
+deflection subtracted) and F_0 + s_0 z_p the baseline of the free cantilever. Five parameters:
+E* [Pa], z_0 [m] (the depth d = 0: where the non-adhesive Hertz contact would start),
+Delta gamma >= 0 [J/m^2], F_0 [N], s_0 [N/m]. The generated relations are written in
+rho_g = sqrt(Delta gamma); dF/dDelta gamma is finite at Delta gamma = 0 (-pi R), so the fit
+runs in Delta gamma itself, bounded below by 0.
+
+Which branch, and where it jumps off. A displacement-controlled retract (a stiff cantilever:
+the position, hence d, is prescribed) follows the equilibrium branch that is stable under depth
+control, dd/da > 0, i.e. a > a_dc = (pi Delta gamma R^2/(8 E*))^(1/3)
+(``jkr_pull_off_radius_dc``): past the force minimum -3 pi R Delta gamma/2 (force-controlled
+pull-off, a_fc) it keeps its contact while the force rises again, and it jumps off at
+a_dc, d_dc = ``jkr_pull_off_depth_dc`` < 0, F_dc = -5 pi R Delta gamma/6, to the free
+cantilever's baseline. A softer cantilever jumps earlier (between a_fc and a_dc); either way the
+points still in contact lie on this branch. For every position a is solved from d on the
+branch a >= a_dc by Newton's method (d(a) is convex and increasing there, so Newton's iteration
+from above converges monotonically; linearly only next to a_dc, where dd/da = 0).
+
+The curve is split at its jump-off, found in the data (the largest downward step of F towards
+positive z, significant against the noise and against the neighbouring steps): the points
+before it (z below the step: the free cantilever) are fitted with the baseline only, the points
+after it with the JKR model. A point of the contact part whose depth at the fitted parameters
+lies below d_dc (past the jump-off, where no equilibrium exists) is excluded with a warning and
+the fit repeated. Without a jump in the data (no visible adhesion, or the retract recorded
+only in contact) a point is in contact where d >= d_dc and on the baseline elsewhere.
+
+Method: at a fixed kappa = rho_g/sqrt(E*) the model is E* times a shape of (z - z_0) (asserted
+in derive/fit.py), so a scan over (z_0, kappa) solves (E*, F_0, s_0) by linear least squares
+(:func:`hertzmdr.numeric.fit._linear_scan`) and gives a start without a guess; then
+Levenberg-Marquardt (MINPACK; :func:`scipy.optimize.least_squares`'s 'trf' with the bound
+Delta gamma >= 0 when it ends below 0, and the fit at Delta gamma = 0 itself when it ends next
+to it) of all five parameters with the generated Jacobian (implicit differentiation, derived
+by SymPy). The standard errors are those of :mod:`~.fit`: the linearised covariance times the
+residual variance.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from hertzmdr.numeric import _generated as gen
+from hertzmdr.numeric import fit as _fit
+from hertzmdr.numeric._validate import as_float
+
+__all__ = ["AdhesiveFitResult", "JKRTip", "fit_curve", "contact_radius", "PARAMETERS", "UNITS"]
+
+#: names of the reported parameters, in the order of :attr:`AdhesiveFitResult.values`
+PARAMETERS = ("E_star", "z_0", "dgamma", "F_0", "s_0")
+#: their SI units
+UNITS = ("Pa", "m", "J/m^2", "N", "N/m")
+#: fewest points: five parameters and two degrees of freedom
+MIN_POINTS = 7
+#: most Newton steps for a (4-6 suffice; a bisection step each at worst)
+A_MAX_STEPS = 80
+#: trial contact points and trial kappa of the start scan, then of its refinement
+N_SCAN_Z0, N_SCAN_KAPPA, N_REFINE = 32, 12, 8
+#: points of the curve the start scans use at most (evenly spread, the deepest ones kept)
+SCAN_POINTS = 128
+#: the trial kappa give jump-off depths |d_dc| between these fractions of the curve's span
+KAPPA_SPAN = (1e-4, 1.0)
+#: a downward step of F is the jump-off when it exceeds this many robust standard deviations of
+#: the neighbouring differences ...
+JUMP_SIGNIFICANCE = 8.0
+#: ... and this many times the largest of the 2 steps on either side of it (the smooth curve's
+#: own steps, steepest next to the vertical tangent at d_dc, stay below)
+JUMP_NEIGHBOURS = 4.0
+#: a fitted Delta gamma below this fraction of its scale (pi R Delta gamma = the force range)
+#: is compared with the fit on the bound Delta gamma = 0
+NEAR_BOUND = 1e-3
+#: refits after excluding points past the jump-off
+MAX_EXCLUDE_ROUNDS = 4
+
+_EPS = float(np.finfo(float).eps)
+
+
+def _jump_off_radius(E_star, R, rho):
+    """(a_dc [m], d_dc [m]): the depth-controlled pull-off; (0, 0) for rho <= 0 (no adhesion)."""
+    if not rho > 0:
+        return 0.0, 0.0
+    a_c = float(gen.jkr_pull_off_radius_dc(E_star, rho * rho, R))
+    return a_c, float(gen.fit_jkr_depth(E_star, R, a_c, rho))
+
+
+def contact_radius(d, R, E_star, rho):
+    """Contact radius a [m] on the branch stable under depth control (dd/da > 0) at the depths
+    d [m] (vectorized); NaN where there is no such state (d < d_dc, past the jump-off; d <= 0
+    without adhesion). R [m], E* [Pa] > 0; rho = sqrt(Delta gamma) [(J/m^2)^(1/2)] >= 0.
+
+    Newton's method on phi(a) = sqrt(d(a) - d_dc) - sqrt(d - d_dc), d(a) = ``fit_jkr_depth``,
+    phi' = ``fit_jkr_depth_da``/(2 sqrt(d(a) - d_dc)): at the fold a_dc, d(a) - d_dc grows as
+    (a - a_dc)^2, so Newton on d(a) itself slows to one bit per step there, while phi is about
+    linear in a from the fold (sqrt(d''/2) (a - a_dc)) to deep contact (a/sqrt(R)): 4-6 steps
+    everywhere. The steps stay inside the bracket [a_dc, a_hi] (d(a_hi) >= d, found by
+    doubling), a step out of it is a bisection step, so the iteration cannot diverge. Near the
+    fold a is determined only to ~sqrt(eps) of a by the data (d is flat in a there), whatever
+    the method.
+    """
+    d = np.asarray(d, float)
+    a_c, d_c = _jump_off_radius(E_star, R, rho)
+    out = np.full(d.shape, np.nan)
+    on = d >= d_c if rho > 0 else d > 0
+    dd = d[on]
+    hi = np.maximum(np.sqrt(R * np.maximum(dd, 0.0)), a_c)
+    hi = np.where(hi > 0, hi, np.maximum(a_c, R * _EPS))
+    for _ in range(200):  # double until above the root: d(hi) >= d
+        low = gen.fit_jkr_depth(E_star, R, hi, rho) < dd
+        if not low.any():
+            break
+        hi = np.where(low, 2 * hi, hi)
+    lo = np.full(dd.shape, a_c)
+    target = np.sqrt(dd - d_c)
+    a = hi.copy()
+    idx = np.arange(dd.size)  # the points still iterating
+    for _ in range(A_MAX_STEPS):
+        ai, lo_i, hi_i, t_i, d_i = a[idx], lo[idx], hi[idx], target[idx], dd[idx]
+        depth = gen.fit_jkr_depth(E_star, R, ai, rho)
+        D = np.maximum(depth - d_c, 0.0)
+        f = np.sqrt(D) - t_i
+        # f at the rounding of d(a) - d_dc (4 ulp of each term): a is as good as the data
+        # make it (at the fold only to ~sqrt(eps)); such a point stops here
+        err = 4 * _EPS * (np.abs(depth) + abs(d_c) + np.abs(d_i))
+        going = np.abs(f) > err / (np.sqrt(D) + np.sqrt(err))
+        lo_i = np.where(f < 0, ai, lo_i)
+        hi_i = np.where(f > 0, ai, hi_i)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            new = ai - f * 2 * np.sqrt(D) / gen.fit_jkr_depth_da(E_star, R, ai, rho)
+        new = np.where(np.isfinite(new) & (new >= lo_i) & (new <= hi_i), new,
+                       0.5 * (lo_i + hi_i))
+        new = np.where(going, new, ai)
+        going &= np.abs(new - ai) > 2 * _EPS * new
+        a[idx], lo[idx], hi[idx] = new, lo_i, hi_i
+        idx = idx[going]
+        if idx.size == 0:
+            break
+    out[on] = a
+    return out
+
+
+@dataclass(frozen=True)
+class _Layout:
+    """Which points the JKR model covers: the data's jump-off split and the excluded points."""
+
+    z_split: float  # points with z >= z_split may be in contact (-inf: no jump in the data)
+    keep: np.ndarray  # bool per point: used in the fit
+
+
+def _find_jump_off(z, F):
+    """(z of the first point after the jump-off, the step [N]) or None: the largest downward step
+    F[k+1] - F[k] < 0 (z sorted ascending) that exceeds JUMP_SIGNIFICANCE robust standard
+    deviations of the differences, JUMP_NEIGHBOURS times its neighbouring steps, and 1e-6 of
+    the force's range (noise-free curves)."""
+    dF = np.diff(F)
+    if dF.size < 5:
+        return None
+    k = int(np.argmin(dF))
+    step = float(dF[k])
+    if not step < 0:
+        return None
+    ddF = np.diff(dF)  # the noise of differences, robustly: the smooth part's trend removed
+    scale = 1.4826 * float(np.median(np.abs(ddF - np.median(ddF)))) / np.sqrt(2)
+    near = np.r_[dF[max(k - 2, 0):k], dF[k + 1:k + 3]]
+    if abs(step) <= max(JUMP_SIGNIFICANCE * scale, 1e-6 * float(np.ptp(F)),
+                        JUMP_NEIGHBOURS * float(np.abs(near).max(initial=0.0))):
+        return None
+    return float(z[k + 1]), step
+
+
+def _tip_state(d, side, split, R, E_star, rho):
+    """(a [m]: NaN off contact, past: bool, the tip's force [N] without baseline) at the depths
+    d [m] (any shape). ``side``: the points after the data's jump-off (all when ``split`` is
+    False). Past the jump-off (side, d < d_dc, with a split) the force is clamped at F(a_dc),
+    the value the iterations use before such points are excluded."""
+    if not E_star > 0:  # a trial step of the optimizer to E* <= 0: no contact (no state)
+        return np.full(np.shape(d), np.nan), np.zeros(np.shape(d), bool), np.zeros(np.shape(d))
+    a = np.where(side, contact_radius(d, R, E_star, rho), np.nan)
+    a_c, d_c = _jump_off_radius(E_star, R, rho)
+    past = side & (d < d_c) if split else np.zeros(np.shape(d), bool)
+    force = np.zeros(np.shape(d))
+    on = np.isfinite(a)
+    force[on] = gen.fit_jkr_force(E_star, R, a[on], rho, 0.0, 0.0, 0.0)
+    if past.any():
+        force[past] = float(gen.fit_jkr_force(E_star, R, a_c, rho, 0.0, 0.0, 0.0))
+    return a, past, force
+
+
+class _Model:
+    """The JKR model of a layout at one (E*, z_0, rho): a, the tip's force, the derivatives."""
+
+    def __init__(self, R, z, layout):
+        self.R, self.z, self.layout = R, z, layout
+        self.split = bool(np.isfinite(layout.z_split))
+        self.side = z >= layout.z_split
+        self._key, self._val = None, None
+
+    def state(self, E_star, z0, dgamma):
+        """(a per point, the points past the jump-off, the tip's force per point)."""
+        key = (E_star, z0, dgamma)
+        if key != self._key:
+            self._key = key
+            rho = np.sqrt(max(dgamma, 0.0))
+            self._val = _tip_state(self.z - z0, self.side, self.split, self.R, E_star, rho)
+        return self._val
+
+    def tip_force(self, E_star, z0, dgamma):
+        """The tip's force [N] per point (no baseline)."""
+        return self.state(E_star, z0, dgamma)[2]
+
+    def jacobian(self, E_star, z0, dgamma):
+        """(dF/dE*, dF/dz_0, dF/dDelta gamma) per point (0 off contact, past the jump-off)."""
+        a = self.state(E_star, z0, dgamma)[0]
+        rho = np.sqrt(max(dgamma, 0.0))
+        J = np.zeros((self.z.size, 3))
+        on = np.isfinite(a) & (a > 0)
+        if on.any():
+            ao = a[on]
+            with np.errstate(divide="ignore", invalid="ignore"):  # dd/da = 0 exactly at a_dc
+                J[on, 0] = gen.fit_jkr_force_dE(E_star, self.R, ao, rho)
+                J[on, 1] = gen.fit_jkr_force_dz0(E_star, self.R, ao, rho)
+                J[on, 2] = gen.fit_jkr_force_ddgamma(E_star, self.R, ao, rho)
+        return np.where(np.isfinite(J), J, 0.0)
+
+
+class _ScanTip:
+    """Adapter for :func:`hertzmdr.numeric.fit._linear_scan`: the model's shape F/E* at one
+    kappa = rho/sqrt(E*) (E* = 1) for all trial contact points at once."""
+
+    def __init__(self, R, layout, kappa):
+        self.R, self.layout, self.kappa = R, layout, kappa
+
+    def basis(self, z, z0):
+        d = z - z0
+        side = np.broadcast_to(z >= self.layout.z_split, d.shape)
+        split = bool(np.isfinite(self.layout.z_split))
+        return _tip_state(d, side, split, self.R, 1.0, self.kappa)[2]
+
+
+def _kappas(R, span):
+    """Trial kappa [m^(1/2)]: 0 and N_SCAN_KAPPA values whose jump-off depths |d_dc| spread
+    log-evenly over KAPPA_SPAN of the curve's span (d_dc from the generated relations)."""
+    grid = np.logspace(-12, 4, 400)
+    depth = -gen.fit_jkr_depth(1.0, R, gen.jkr_pull_off_radius_dc(1.0, grid**2, R), grid)
+    lo, hi = KAPPA_SPAN[0] * span, KAPPA_SPAN[1] * span
+    target = np.geomspace(lo, hi, N_SCAN_KAPPA)
+    return np.r_[0.0, np.interp(np.log(target), np.log(depth), grid)]
+
+
+def _start(R, z, F, w, layout, z0_guess):
+    """The best (E*, z_0, Delta gamma, F_0, s_0) of a scan over trial (z_0, kappa), each solved for
+    (E*, F_0, s_0) by linear least squares; then a finer scan around the best."""
+    zs, Fs, ws = z[layout.keep], F[layout.keep], w[layout.keep]
+    if zs.size > SCAN_POINTS:
+        keep = np.unique(np.r_[np.linspace(0, zs.size - 1, SCAN_POINTS).round().astype(int),
+                               np.arange(zs.size - _fit.MIN_CONTACT_POINTS - 1, zs.size)])
+        zs, Fs, ws = zs[keep], Fs[keep], ws[keep]
+    span = float(np.ptp(z))
+    lo, hi = z[0] - 0.1 * span, z[-_fit.MIN_CONTACT_POINTS - 1] + 0.5 * span
+    z0s = np.linspace(lo, hi, N_SCAN_Z0)
+    if z0_guess is not None:
+        z0s = np.append(z0s, z0_guess)
+    kappas = _kappas(R, span)
+    best = None
+
+    def scan(z0s, kappas):
+        nonlocal best
+        for kap in kappas:
+            params, rss = _fit._linear_scan(_ScanTip(R, layout, kap), zs, Fs, ws, z0s)
+            rss = np.where(params[:, 0] > 0, rss, np.inf)
+            k = int(np.argmin(rss))
+            if np.isfinite(rss[k]) and (best is None or rss[k] < best[1]):
+                best = (params[k], rss[k], kap)
+
+    scan(z0s, kappas)
+    if best is None:
+        return None
+    i = int(np.argmin(np.abs(kappas - best[2])))
+    k_lo, k_hi = kappas[max(i - 1, 0)], kappas[min(i + 1, kappas.size - 1)]
+    dz = (hi - lo) / (N_SCAN_Z0 - 1)
+    scan(np.linspace(best[0][1] - dz, best[0][1] + dz, N_REFINE),
+         np.linspace(k_lo, k_hi, N_REFINE))
+    E, z0, F0, s0 = best[0]
+    return np.array([E, z0, best[2] ** 2 * E, F0, s0])  # Delta gamma = kappa^2 E*
+
+
+@dataclass(frozen=True)
+class JKRTip:
+    """The tip of an adhesive fit: the paraboloid of radius R [m] in JKR contact."""
+
+    paraboloid: _fit.Paraboloid
+
+    @property
+    def R(self) -> float:
+        """Radius of curvature [m]."""
+        return self.paraboloid.R
+
+    def describe(self) -> str:
+        return f"paraboloid, adhesive (JKR), R = {self.R:.6g} m"
+
+
+@dataclass(frozen=True)
+class AdhesiveFitResult:
+    """The fitted parameters of an adhesive (JKR) retract curve and the fit's diagnostics.
+
+    Attributes as :class:`hertzmdr.numeric.fit.FitResult` (``values`` and ``errors`` in the
+    order of :data:`PARAMETERS`: E* [Pa], z_0 [m], Delta gamma [J/m^2], F_0 [N], s_0 [N/m];
+    ``correlation`` 5 x 5), and:
+
+    used
+        Bool per point (sorted by z): in the fit (False: excluded, past the jump-off).
+    jump_off
+        (d_dc [m], F_dc [N], a_dc [m]) of the fitted parameters: where a displacement-controlled
+        retract leaves the sample (None without adhesion, Delta gamma <= 0).
+    z_split
+        Position [m] of the first point after the jump-off found in the data (None: no jump).
+    """
+
+    tip: JKRTip
+    values: np.ndarray
+    errors: np.ndarray
+    correlation: np.ndarray
+    E: float | None
+    E_error: float | None
+    z: np.ndarray
+    F: np.ndarray
+    fitted: np.ndarray
+    residuals: np.ndarray
+    reduced_chi2: float
+    weighted: bool
+    n_contact: int
+    max_depth: float
+    warnings: tuple[str, ...]
+    used: np.ndarray
+    jump_off: tuple[float, float, float] | None
+    z_split: float | None
+
+    @property
+    def E_star(self) -> float:
+        """Fitted effective modulus E* [Pa]."""
+        return float(self.values[0])
+
+    @property
+    def z_0(self) -> float:
+        """Fitted contact point [m] (d = 0)."""
+        return float(self.values[1])
+
+    @property
+    def dgamma(self) -> float:
+        """Fitted work of adhesion Delta gamma [J/m^2]."""
+        return float(self.values[2])
+
+    def table(self) -> str:
+        """The parameters with their standard errors, one per line, in SI units."""
+        rows = [f"{'parameter':<10} {'value':>14} {'std. error':>12}  unit"]
+        for name, v, e, u in zip(PARAMETERS, self.values, self.errors, UNITS, strict=True):
+            rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
+        if self.E is not None:
+            rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
+        fit = (f"reduced chi^2 = {self.reduced_chi2:.4g}" if self.weighted else
+               f"residuals' std = {np.sqrt(self.reduced_chi2):.4g} N")
+        rows.append(f"{fit}, {int(self.used.sum())} points used, {self.n_contact} in contact, "
+                    f"deepest indentation {self.max_depth:.4g} m")
+        if self.jump_off is not None:
+            d_c, F_c, a_c = self.jump_off
+            rows.append(f"jump-off (depth control): d = {d_c:.4g} m (z = {self.z_0 + d_c:.6g} m),"
+                        f" F = {F_c:.4g} N, a = {a_c:.4g} m")
+        return "\n".join(rows)
+
+
+def _check_tip(tip):
+    if not isinstance(tip, _fit.Paraboloid):
+        raise ValueError(f"tip = {tip!r} has no adhesive fit model; valid: a Paraboloid "
+                         "(hertzmdr.numeric.fit.Paraboloid, the scene's `sphere` body): the JKR "
+                         "fit is written for the paraboloid only (docs/fitting.md)")
+
+
+def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=None, z0=None,
+              sigma=None) -> AdhesiveFitResult:
+    """Fit an adhesive retract curve F(z) with the JKR paraboloid, a contact point, the work of
+    adhesion and a linear baseline.
+
+    Parameters
+    ----------
+    z, F : array_like
+        Positions of the tip's base [m] (increasing into the sample, any order) and the force on
+        the tip [N] (positive in compression, negative while adhesion pulls), as
+        :func:`hertzmdr.numeric.fit.fit_curve`.
+    tip : hertzmdr.numeric.fit.Paraboloid
+        The tip (radius of curvature R [m]).
+    nu, tip_modulus, tip_nu, z0, sigma
+        As :func:`hertzmdr.numeric.fit.fit_curve` (z0 [m]: a guess of the contact point d = 0,
+        added to the start scan; sigma [N]: the noise's standard deviation).
+
+    Returns
+    -------
+    AdhesiveFitResult
+
+    Raises
+    ------
+    hertzmdr.numeric.fit.NoContactError
+        When the curve shows no contact.
+    ValueError
+        For invalid input, naming it, its value and the valid range.
+    """
+    _check_tip(tip)
+    R = tip.R
+    z, F, w = _fit._curve(z, F, sigma)
+    if z.size < MIN_POINTS:
+        raise ValueError(f"the curve has {z.size} points; at least {MIN_POINTS} are needed "
+                         "(five parameters and two degrees of freedom)")
+    if z0 is not None:
+        z0 = float(as_float("z0", z0))
+    jump = _find_jump_off(z, F)
+    z_split = -np.inf if jump is None else jump[0]
+    layout = _Layout(z_split, np.ones(z.size, bool))
+    p0 = _start(R, z, F, w, layout, z0)
+    if p0 is None:
+        _fit._no_contact("no contact point makes the force rise with a positive modulus")
+
+    excluded = 0
+    for _ in range(MAX_EXCLUDE_ROUNDS):
+        sol, model = _lm(R, z, F, w, layout, p0)
+        if sol.x[2] < NEAR_BOUND * max(abs(p0[2]), float(np.ptp(F)) / (np.pi * R)):
+            sol0, model0 = _lm(R, z, F, w, layout, p0, no_adhesion=True)
+            if sol0.cost <= sol.cost:
+                sol, model = sol0, model0
+        p = sol.x
+        past = model.state(p[0], p[1], p[2])[1] & layout.keep
+        if not past.any():
+            break
+        excluded += int(past.sum())
+        layout = _Layout(z_split, layout.keep & ~past)
+        p0 = p
+    keep = layout.keep
+    res = sol.fun
+    dof = int(keep.sum()) - len(PARAMETERS)
+    if dof < 2:
+        _fit._no_contact(f"only {int(keep.sum())} points are left in the fit")
+    chi2 = float(res @ res) / dof
+    E_s, z_0, dgamma, F_0, s_0 = (float(v) for v in p)
+    rho = np.sqrt(max(dgamma, 0.0))
+    a = model.state(E_s, z_0, dgamma)[0]
+    contact = np.isfinite(a) & keep
+    n_contact = int(contact.sum())
+    if not E_s > 0 or n_contact < _fit.MIN_CONTACT_POINTS:
+        _fit._no_contact(f"the best fit has E* = {E_s:.3g} Pa and {n_contact} point(s) in "
+                         "contact")
+    tip_force = model.tip_force(E_s, z_0, dgamma)
+    noise = np.sqrt(chi2) * float(np.median(w))
+    if float(np.abs(tip_force[contact]).max()) < _fit.CONTACT_SIGNIFICANCE * noise:
+        _fit._no_contact(f"the tip's largest force, {float(np.abs(tip_force).max()):.3g} N, is "
+                         f"below {_fit.CONTACT_SIGNIFICANCE:g} standard deviations of the "
+                         f"residuals ({noise:.3g} N)")
+    J = _jac(model, z, w, keep, p)
+    cov, full = _fit._covariance(J)
+    cov = cov * chi2
+    err = np.sqrt(np.diag(cov))
+    if not E_s >= _fit.MODULUS_SIGNIFICANCE * err[0]:
+        _fit._no_contact(f"the fitted E* = {E_s:.3g} Pa is below "
+                         f"{_fit.MODULUS_SIGNIFICANCE:g} of its standard errors "
+                         f"({err[0]:.3g} Pa)")
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(err, err)
+    values = np.array([E_s, z_0, dgamma, F_0, s_0])
+    d = z - z_0
+    d_max = float(d[-1])
+    warn = []
+    if excluded:
+        warn.append(f"{excluded} point(s) of the contact part lie past the jump-off (depth "
+                    "below the depth-controlled pull-off d_dc, where no equilibrium exists) "
+                    "and were excluded from the fit")
+    if jump is None and rho > 0:
+        warn.append("no jump-off found in the data: the points with d < d_dc were taken as "
+                    "the free cantilever's baseline (is this a retract curve?)")
+    if not dgamma > err[2]:
+        warn.append(f"no adhesion measured: Delta gamma = {dgamma:.3g} ± {err[2]:.3g} J/m^2 "
+                    "is within one standard error of 0 (its bound); the Hertz fit, without "
+                    "--adhesion, gives the same modulus")
+    elif dgamma < 2 * err[2]:
+        warn.append(f"the work of adhesion is poorly determined: Delta gamma = {dgamma:.3g} "
+                    f"± {err[2]:.3g} J/m^2")
+    warn += [w_["message"] for w_ in _fit.check_assumptions(
+        {"a/R": float(np.nanmax(a[contact])) / R})]
+    if not full:
+        warn.append("the Jacobian is singular: the parameters are not all determined by the "
+                    "curve (their errors are not meaningful)")
+    jump_off = None
+    if rho > 0:
+        a_c, d_c = _jump_off_radius(E_s, R, rho)
+        jump_off = (d_c, float(gen.fit_jkr_force(E_s, R, a_c, rho, 0.0, 0.0, 0.0)), a_c)
+        if jump is not None:  # the data's jump against the model's: a soft cantilever jumps
+            first = float(d[z >= z_split][0])  # earlier, never later
+            if first < d_c - 1e-9 * abs(d_c):
+                warn.append(f"the data leave contact at d = {first:.4g} m, below the "
+                            f"depth-controlled jump-off d_dc = {d_c:.4g} m")
+    E, E_err = _fit._sample_modulus(E_s, float(err[0]), nu, tip_modulus, tip_nu)
+    fitted = model.tip_force(E_s, z_0, dgamma) + F_0 + s_0 * z
+    return AdhesiveFitResult(
+        tip=JKRTip(tip), values=values, errors=err, correlation=corr, E=E, E_error=E_err, z=z,
+        F=F, fitted=fitted, residuals=F - fitted, reduced_chi2=chi2, weighted=sigma is not None,
+        n_contact=n_contact, max_depth=d_max, warnings=tuple(warn), used=keep,
+        jump_off=jump_off, z_split=None if jump is None else float(z_split))
+
+
+def _jac(model, z, w, keep, p):
+    Jt = model.jacobian(p[0], p[1], p[2])
+    J = np.column_stack([Jt, np.ones_like(z), z]) / w[:, None]
+    return J[keep]
+
+
+def _lm(R, z, F, w, layout, p0, *, no_adhesion=False):
+    """Least squares on the kept points, Delta gamma >= 0, with the generated Jacobian
+    (Levenberg-Marquardt; 'trf' with the bound when it ends below 0); or, with
+    ``no_adhesion``, Levenberg-Marquardt at Delta gamma = 0 fixed (the Hertz model: 'trf'
+    approaches a bound only geometrically, so a curve without adhesion is refitted on the bound
+    itself)."""
+    model = _Model(R, z, layout)
+    keep = layout.keep
+    cols = [0, 1, 3, 4] if no_adhesion else [0, 1, 2, 3, 4]
+
+    def full(q):
+        p = np.zeros(5)
+        p[cols] = q
+        return p
+
+    def residuals(q):
+        p = full(q)
+        return ((model.tip_force(p[0], p[1], p[2]) + p[3] + p[4] * z - F) / w)[keep]
+
+    def jacobian(q):
+        return _jac(model, z, w, keep, full(q))[:, cols]
+
+    Fs = max(float(np.ptp(F)), float(np.abs(F).max()))
+    span = float(np.ptp(z))
+    # Delta gamma's scale: the value whose pull-off force pi R Delta gamma is the force range
+    scale = np.array([abs(p0[0]), span, max(abs(p0[2]), Fs / (np.pi * R)), Fs, Fs / span])
+    tol = {"xtol": 1e-15, "ftol": 1e-15, "gtol": 1e-15, "max_nfev": 2000}
+    if no_adhesion:
+        sol = least_squares(residuals, p0[cols], jac=jacobian, method="lm",
+                            x_scale=scale[cols], **tol)
+    else:
+        lower = np.array([-np.inf, -np.inf, 0.0, -np.inf, -np.inf])
+        p0 = np.maximum(p0, lower)
+        # MINPACK's Levenberg-Marquardt first (unbounded; the fastest, and it converges
+        # further along ill-conditioned directions such as F_0 against s_0 than 'trf' stops);
+        # only when it ends below Delta gamma = 0, 'trf' with the bound
+        sol = least_squares(residuals, p0, jac=jacobian, method="lm", x_scale=scale, **tol)
+        if not sol.x[2] >= 0:
+            sol = least_squares(residuals, p0, jac=jacobian, method="trf", x_scale=scale,
+                                bounds=(lower, np.inf), **tol)
+    sol.x = full(sol.x)
+    return sol, model
