@@ -79,7 +79,7 @@ def single_curves(n, budget):
                     f"{(res.E_star / E_STAR - 1):+.2e} | "
                     f"{(res.E_star - E_STAR) / res.errors[0]:+.2f} | {res.reduced_chi2:.3f} |\n")
     return ("## One curve per tip\n\n"
-            "The sampled tip's first call includes its table (48 depths by the numerical MDR) "
+            "The sampled tip's first call includes its table (128 depths by the numerical MDR) "
             "and the MDR's own tables of the profile; later fits with the same tip reuse them "
             "(a force map's curves). The issue's goal for it: 50 ms per fit.\n\n"
             "| tip | points | time per fit (median) | fastest round | first call | "
