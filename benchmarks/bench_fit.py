@@ -27,6 +27,7 @@ from hertzmdr.numeric.fit import (
     FlatPunch,
     Paraboloid,
     PowerLaw,
+    Pyramid,
     SampledTip,
     fit_curve,
 )
@@ -92,6 +93,9 @@ NANITE_METADATA = {"spring constant": 0.1, "sensitivity": 1e-7, "imaging mode": 
                    "enum": 0, "path": "synthetic"}
 NU = 0.5  # the sample's Poisson's ratio: both report E = E* (1 - nu^2)
 #: the comparison's models: name, hertzmdr's tip, forward model F_tip(d), deepest indentation,
+#: a sharp three-sided pyramid: nanite's hertz_pyr3s bounds alpha to 30 deg (its lmfit
+#: parameter's max), so a Berkovich tip (65.27 deg) is out of its reach
+PYR3 = Pyramid(alpha=np.radians(25.0), sides=3)
 #: nanite's model key and its geometry parameters (its cone's alpha is the half-opening angle,
 #: 90 deg - theta; its sphere is Sneddon's truncated series for the cap)
 PEERS = [
@@ -105,6 +109,10 @@ PEERS = [
      lambda d: sphere.force(d, 5e-6, E_STAR), 2e-6, "sneddon_spher_approx", {"R": 5e-6}),
     ("sphere deep, nanite's paraboloid", ExactSphere(R=5e-6),
      lambda d: sphere.force(d, 5e-6, E_STAR), 2e-6, "hertz_para", {"R": 5e-6}),
+    # the curves by the pyramid's force law (the BEM's, docs/pyramid.md); nanite's alpha is
+    # hertzmdr's (axis to a face's mid-line: its 0.8887 tan(alpha) is the BEM's 0.8824 + 0.7 %)
+    ("pyramid, 3 faces, alpha = 25 deg", PYR3,
+     lambda d: cone.force(d, PYR3.cone.theta, E_STAR), 5e-7, "hertz_pyr3s", {"alpha": 25.0}),
 ]
 
 

@@ -109,9 +109,10 @@ def main(argv=None) -> None:
         "CPU time |\n|---|---|---|---|---|---|---|\n", *[r + "\n" for r in rows],
         "\nThe equal-area cone underestimates a pyramid's force: by 7.8 % for three faces (a "
         "Berkovich or cube-corner tip), 2.7 % for four (Vickers, most AFM pyramids); a modulus "
-        "fitted with the cone alone is too large by that much. The fit's `Pyramid` multiplies "
-        "the cone's force by beta_n, so its model error is the ± of beta_n (below 1e-5), not "
-        "the cone's few percent; for other n it refuses (no factor has been computed).\n",
+        "fitted with the cone alone is too large by that much. The fit's `Pyramid` and the scene's "
+        "`pyramid` take the cone whose force is beta_n times the equal-area cone's, so their "
+        "model error in the force is the ± of beta_n (below 2.5e-5), not the cone's few "
+        "percent; other n are refused (no factor has been computed).\n",
     ]
     (run.docs / "pyramid.md").write_text("".join(text))
     print(f"wrote {run.docs / 'pyramid.md'}")

@@ -873,7 +873,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     d_max = float(d[-1])
     g_fit, _ = unit(p[1])
     tip_force = float(p[0] * g_fit[-1])
-    noise = np.sqrt(chi2) * float(w[-1])
+    # the residuals' spread, but not below the forces' own rounding: a noise-free curve can fit
+    # to zero residuals (a straight line, with an E* ~ 1e-12 Pa whose force is below rounding)
+    noise = max(np.sqrt(chi2) * float(w[-1]), np.finfo(float).eps * float(np.abs(F).max()))
     if tip_force < CONTACT_SIGNIFICANCE * noise:
         _no_contact(f"the tip's force at the deepest point, {tip_force:.3g} N, is below "
                     f"{CONTACT_SIGNIFICANCE:g} standard deviations of the residuals "
