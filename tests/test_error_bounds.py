@@ -89,6 +89,8 @@ ROUTES = {
     # adhesion (JKR by the MDR): the literature's forms, pull-off by mpmath root finding
     "afm_cone_tip_pdms": (lambda: _jkr_cone(e_star(PDMS), 20, "0.05"), 0.5),
     "afm_sphere_tip_pdms": (lambda: _jkr_sphere(e_star(SI3N4, PDMS), 20e-9, "0.05"), 0.5),
+    # the scene of the adhesive fit's example curve: a rigid 2 um probe, its pull-off
+    "fit_jkr_retract": (lambda: _jkr_sphere(e_star((1.5e6, 0.5)), 2e-6, "0.05"), 0.5),
     # tangential contact: Cattaneo-Mindlin and Mindlin-Deresiewicz (Johnson 7.2)
     # a history of overlap and tangential displacement: proportional loading (no slip,
     # Mindlin-Deresiewicz), then Cattaneo-Mindlin from that state at constant overlap
@@ -561,7 +563,6 @@ def _jkr_cone(E, theta_deg, dgamma):
 def check_adhesive(case, route, eff, name, doc):
     tol = routes.tol_of(eff)
     v = eff["value"]
-    curve = doc["effects"]["adhesive_force_depth_curve"]["value"]
     if name in ("pull_off_force", "pull_off_depth"):
         for control in ("force", "depth"):
             a = route.stationary(control)
@@ -571,6 +572,7 @@ def check_adhesive(case, route, eff, name, doc):
     if name == "zero_load_contact_radius":
         a = route._bracket(route.force, lo=route.stationary("force"))
         return routes.close(v, a, tol, name)
+    curve = doc["effects"]["adhesive_force_depth_curve"]["value"]
     d_max = max(curve["depth"])  # the single-state effects are at the cycle's deepest point
     if name in ("force", "contact_radius", "pressure_profile"):
         a_rep = doc["effects"]["contact_radius"]["value"]
