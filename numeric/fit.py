@@ -524,8 +524,33 @@ class SampledTip(_Tip):
                 "numerical MDR")
 
 
+class _Fitted:
+    """What the results of fit_curve and fit_adhesive.fit_curve share: E* and z_0 by name (the
+    first two of ``values``) and the rows of the parameter table (``names``, ``units``: the
+    fit's PARAMETERS and UNITS)."""
+
+    @property
+    def E_star(self) -> float:
+        """Fitted effective modulus E* [Pa]."""
+        return float(self.values[0])
+
+    @property
+    def z_0(self) -> float:
+        """Fitted contact point [m] (where d = 0)."""
+        return float(self.values[1])
+
+    def _parameter_rows(self, names, units) -> list[str]:
+        """The header, one line per parameter with its standard error, and E when fitted."""
+        rows = [f"{'parameter':<10} {'value':>14} {'std. error':>12}  unit"]
+        for name, v, e, u in zip(names, self.values, self.errors, units, strict=True):
+            rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
+        if self.E is not None:
+            rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
+        return rows
+
+
 @dataclass(frozen=True)
-class FitResult:
+class FitResult(_Fitted):
     """The fitted parameters of a force curve, their uncertainties and the fit's diagnostics.
 
     Attributes
@@ -579,23 +604,9 @@ class FitResult:
     warnings: tuple[str, ...]
     model_error: np.ndarray | None = None
 
-    @property
-    def E_star(self) -> float:
-        """Fitted effective modulus E* [Pa]."""
-        return float(self.values[0])
-
-    @property
-    def z_0(self) -> float:
-        """Fitted contact point [m]."""
-        return float(self.values[1])
-
     def table(self) -> str:
         """The parameters with their standard errors, one per line, in SI units."""
-        rows = [f"{'parameter':<10} {'value':>14} {'std. error':>12}  unit"]
-        for name, v, e, u in zip(PARAMETERS, self.values, self.errors, UNITS, strict=True):
-            rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
-        if self.E is not None:
-            rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
+        rows = self._parameter_rows(PARAMETERS, UNITS)
         if self.model_error is not None:
             rows.append(f"the tip's MDR error moves E* by at most {self.model_error[0]:.3g} Pa "
                         f"and z_0 by {self.model_error[1]:.3g} m")

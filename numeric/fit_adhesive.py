@@ -308,7 +308,7 @@ class JKRTip:
 
 
 @dataclass(frozen=True)
-class AdhesiveFitResult:
+class AdhesiveFitResult(_fit._Fitted):
     """The fitted parameters of an adhesive (JKR) retract curve and the fit's diagnostics.
 
     Attributes as :class:`hertzmdr.numeric.fit.FitResult` (``values`` and ``errors`` in the
@@ -344,27 +344,13 @@ class AdhesiveFitResult:
     z_split: float | None
 
     @property
-    def E_star(self) -> float:
-        """Fitted effective modulus E* [Pa]."""
-        return float(self.values[0])
-
-    @property
-    def z_0(self) -> float:
-        """Fitted contact point [m] (d = 0)."""
-        return float(self.values[1])
-
-    @property
     def dgamma(self) -> float:
         """Fitted work of adhesion Delta gamma [J/m^2]."""
         return float(self.values[2])
 
     def table(self) -> str:
         """The parameters with their standard errors, one per line, in SI units."""
-        rows = [f"{'parameter':<10} {'value':>14} {'std. error':>12}  unit"]
-        for name, v, e, u in zip(PARAMETERS, self.values, self.errors, UNITS, strict=True):
-            rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
-        if self.E is not None:
-            rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
+        rows = self._parameter_rows(PARAMETERS, UNITS)
         fit = (f"reduced chi^2 = {self.reduced_chi2:.4g}" if self.weighted else
                f"residuals' std = {np.sqrt(self.reduced_chi2):.4g} N")
         rows.append(f"{fit}, {int(self.used.sum())} points used, {self.n_contact} in contact, "
