@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import os
 import sys
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from hertzmdr.derive.c_codegen import HEADER, REFERENCE, render_header, render_reference
 from hertzmdr.derive.codegen import render_derivations, render_errata, render_module
-from hertzmdr.derive.relation import all_relations
+from hertzmdr.derive.relation import SOURCE, _jobs, all_relations
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -21,18 +23,29 @@ parser = argparse.ArgumentParser(
 )
 parser.add_argument("--check", action="store_true",
                     help="write nothing; exit 1 with a diff if a generated file is stale")
+parser.add_argument("--no-cache", action="store_true",
+                    help="derive every relation afresh, without reading the cache of derived "
+                    "relations (the cache is keyed by the derive sources and SymPy's version; "
+                    "same as HERTZMDR_DERIVE_CACHE=refresh)")
 
 
 def targets() -> dict[Path, str]:
+    """{path: text} of every generated file. The printers run in parallel processes, one per
+    core (HERTZMDR_DERIVE_JOBS), the two modules first: they take longest."""
     relations = all_relations()
-    return {
-        ROOT / "numeric" / "_generated.py": render_module(relations),
-        ROOT / "numeric" / "_generated_mp.py": render_module(relations, "mpmath"),
-        ROOT / "docs" / "derivations.md": render_derivations(relations),
-        ROOT / "docs" / "errata.md": render_errata(relations),
-        ROOT / HEADER: render_header(relations),  # the contact laws for DEM codes, C99
-        ROOT / REFERENCE: render_reference(relations),
-    }
+    jobs = [
+        (ROOT / "numeric" / "_generated.py", render_module, ()),
+        (ROOT / "numeric" / "_generated_mp.py", render_module, ("mpmath",)),
+        (ROOT / "docs" / "errata.md", render_errata, ()),
+        (ROOT / "docs" / "derivations.md", render_derivations, ()),
+        (ROOT / HEADER, render_header, ()),  # the contact laws for DEM codes, C99
+        (ROOT / REFERENCE, render_reference, ()),
+    ]
+    if _jobs() == 1:
+        return {path: fn(relations, *extra) for path, fn, extra in jobs}
+    with ProcessPoolExecutor(max_workers=_jobs()) as pool:
+        futures = {path: pool.submit(fn, relations, *extra) for path, fn, extra in jobs}
+        return {path: futures[path].result() for path, _, _ in jobs}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -41,8 +54,18 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{ROOT} is not a source checkout (no numeric/ and docs/ beside derive/)",
               file=sys.stderr)
         return 2
+    if args.no_cache:
+        os.environ["HERTZMDR_DERIVE_CACHE"] = "refresh"
+    try:
+        texts = targets()
+    except ValueError as exc:  # a bad HERTZMDR_DERIVE_JOBS or HERTZMDR_DERIVE_CACHE
+        if not str(exc).startswith("HERTZMDR_"):
+            raise
+        print(f"python -m hertzmdr.derive: {exc}", file=sys.stderr)
+        return 2
+    print(f"relations: {SOURCE[0] if SOURCE else 'derived'}", file=sys.stderr)
     stale = 0
-    for path, text in targets().items():
+    for path, text in texts.items():
         old = path.read_text() if path.exists() else ""
         if old == text:
             continue

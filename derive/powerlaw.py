@@ -222,18 +222,25 @@ def pressure_centre() -> sp.Expr:
     gam = sp.gamma
     singular = (gam(pc) * gam(pc - pa - pb) / (gam(pc - pa) * gam(pc - pb))
                 * sp.hyperexpand(sp.hyper([pa, pb], [pa + pb - pc + 1], w)))
+    # the regular part: w^(c - a - b) Gamma(c) Gamma(a + b - c)/(Gamma(a) Gamma(b)) times
+    # 2F1(c - a, c - b; c - a - b + 1; w), of which CENTRE_TERMS terms are kept
     a2, b2, c2 = pc - pa, pc - pb, pc - pa - pb + 1
-    regular = (w ** (pc - pa - pb) * gam(pc) * gam(pa + pb - pc) / (gam(pa) * gam(pb))
-               * sum(sp.rf(a2, j) * sp.rf(b2, j) / (sp.rf(c2, j) * sp.factorial(j)) * w**j
-                     for j in range(CENTRE_TERMS)))
+    u = pa + pb - pc
+    assert (pb - u).is_Integer, (pb, u)  # Gamma(u)/Gamma(b) = 1/(u)_(b - u), a rational in n
+    const = gam(pc) / gam(pa) / sp.expand_func(sp.rf(u, pb - u))
+    terms = [sp.expand_func(sp.rf(a2, j) * sp.rf(b2, j) / (sp.rf(c2, j) * sp.factorial(j)))
+             for j in range(CENTRE_TERMS)]
     scale = E_star * n * d / (sp.pi * a)
     base = sp.simplify((p_b / h / scale).subs(r, rho * a))  # rho^(n-1) sqrt(1 - rho^2)
     sing = sp.powsimp(sp.expand_power_base(sp.simplify((base * singular).subs(w, rho**2)),
                                            force=True), force=True)
-    reg = sp.powsimp(sp.expand_power_base((base * regular).subs(rho, sp.sqrt(w)), force=True),
-                     force=True)
-    ser = sp.series(reg, w, 0, CENTRE_TERMS).removeO()
-    coeffs = [sp.factor(sp.simplify(sp.expand_func(ser.coeff(w, j))))  # Gamma(m + 1) = m Gamma(m)
+    # base w^(c - a - b) in w is free of the power of w (sqrt(1 - w) for (5.59)): its series
+    # times the 2F1's terms (a Cauchy product) is the regular part's series
+    pref = sp.powsimp(sp.expand_power_base((base * w ** (pc - pa - pb)).subs(rho, sp.sqrt(w)),
+                                           force=True), force=True)
+    assert not pref.has(n), pref
+    pref = sp.series(pref, w, 0, CENTRE_TERMS).removeO()
+    coeffs = [sp.factor(const * sum(pref.coeff(w, i) * terms[j - i] for i in range(j + 1)))
               for j in range(CENTRE_TERMS)]
     for j, c in enumerate(coeffs):  # the termwise expansion of (1 - r^2/x^2)^(-1/2) in (5.59)
         assert sp.simplify(c - sp.rf(sp.Rational(1, 2), j) / sp.factorial(j)

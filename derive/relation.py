@@ -5,11 +5,14 @@ from __future__ import annotations
 import importlib
 import os
 import pkgutil
+import time
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from functools import cache
 
 import sympy as sp
+
+from hertzmdr.derive import _cache
 
 
 @dataclass(frozen=True)
@@ -96,28 +99,40 @@ def family_modules() -> list[str]:
     return names
 
 
-def _family_relations(fam: str) -> list[Relation]:
+def _family_relations(fam: str) -> tuple[list[Relation], float]:
+    """The family's relations and the CPU seconds they took in this process."""
+    start = time.process_time()
     module = importlib.import_module(f"hertzmdr.derive.{fam}")
-    return list(module.relations())
+    return list(module.relations()), time.process_time() - start
 
 
-@cache
-def all_relations() -> tuple[Relation, ...]:
-    """Every relation of every family, sorted by name; names must be unique.
+def _jobs() -> int:
+    value = os.environ.get("HERTZMDR_DERIVE_JOBS", "")
+    if not value:
+        return os.cpu_count() or 1
+    if not value.isdigit() or int(value) < 1:
+        raise ValueError(f"HERTZMDR_DERIVE_JOBS={value!r}: give a whole number of processes, "
+                         "at least 1")
+    return int(value)
 
-    The families are derived in parallel processes (one per core; HERTZMDR_DERIVE_JOBS=1 for a
-    single process), and the result is cached for the life of the process.
-    """
+
+def _derive_all() -> tuple[Relation, ...]:
     families = family_modules()
-    jobs = int(os.environ.get("HERTZMDR_DERIVE_JOBS", os.cpu_count() or 1))
+    jobs = _jobs()
     if jobs > 1 and len(families) > 1:
+        # the families that took longest last time start first (else the larger sources):
+        # with one process per core, a long family started last would run alone at the end
+        seen = _cache.read_timings()
+        order = sorted(families, key=lambda fam: -seen.get(fam, _source_size(fam) / 1e4))
         with ProcessPoolExecutor(max_workers=min(jobs, len(families))) as pool:
-            derived = list(pool.map(_family_relations, families))
+            futures = {fam: pool.submit(_family_relations, fam) for fam in order}
+            derived = {fam: futures[fam].result() for fam in families}
     else:
-        derived = [_family_relations(fam) for fam in families]
+        derived = {fam: _family_relations(fam) for fam in families}
+    _cache.write_timings({fam: round(sec, 2) for fam, (_, sec) in derived.items()})
     out: dict[str, Relation] = {}
-    for fam, rels in zip(families, derived, strict=True):
-        for rel in rels:
+    for fam in families:
+        for rel in derived[fam][0]:
             rel = Relation(**{**rel.__dict__, "family": fam})
             rel.check()
             if rel.name in out:
@@ -125,3 +140,26 @@ def all_relations() -> tuple[Relation, ...]:
                 raise ValueError(f"relation name {rel.name} defined twice ({first}, {fam})")
             out[rel.name] = rel
     return tuple(out[k] for k in sorted(out))
+
+
+def _source_size(fam: str) -> int:
+    module = importlib.import_module(f"hertzmdr.derive.{fam}")
+    return os.path.getsize(module.__file__)
+
+
+#: where the last :func:`all_relations` of this process came from: "cache" or "derived..."
+SOURCE: list[str] = []
+
+
+@cache
+def all_relations() -> tuple[Relation, ...]:
+    """Every relation of every family, sorted by name; names must be unique.
+
+    The families are derived in parallel processes (one per core; HERTZMDR_DERIVE_JOBS=1 for a
+    single process), and the result is cached for the life of the process and on disk, keyed by
+    the derive package's sources and SymPy's version (:mod:`hertzmdr.derive._cache`;
+    HERTZMDR_DERIVE_CACHE=0 derives afresh).
+    """
+    relations, how = _cache.cached(_derive_all)
+    SOURCE[:] = [how]
+    return relations
