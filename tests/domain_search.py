@@ -338,9 +338,14 @@ def _powerlaw_rows() -> list[Row]:
         a = mp.mpf(float(powerlaw.contact_radius(float(d), float(c_n), float(n))))
         if r <= a:
             return d - c_n * r**n
-        # (5.60) for g = d (x/a)^n, by quadrature in x (the rounded a that the function uses)
-        pts = [mp.mpf(0)] + [a * (1 - mp.mpf(2) ** -k) for k in range(1, 50)] + [a]
-        f = lambda x: (1 - (x / a) ** n) / mp.sqrt((r - x) * (r + x))  # noqa: E731
+        # (5.60) for g = d (x/a)^n, by quadrature (the rounded a that the function uses), with
+        # x = r sin(phi_a - w), phi_a = asin(a/r): dx/sqrt(r^2 - x^2) = -dw takes out the
+        # endpoint singularity; geometric breakpoints towards w = 0 resolve the layer where
+        # (x/a)^n falls from 1 (width ~1/n away from the edge, ~1/sqrt(n) at r -> a)
+        phi_a = mp.asin(a / r)
+        f = lambda w: 1 - (r * mp.sin(phi_a - w) / a) ** n  # noqa: E731
+        k = min(60, int(mp.log(n + 2, 2)) + 6)
+        pts = [mp.mpf(0)] + [phi_a * mp.mpf(2) ** -j for j in range(k, 0, -1)] + [phi_a]
         return 2 * d / mp.pi * mp.quad(f, pts)
 
     dcn = {"d": P(1e-15, 1e3), "a": P(1e-9, 1e3), "n": N}
