@@ -53,8 +53,11 @@ class Rep:
 
     def seg_index(self, u):
         """The segment holding each radius u [m]."""
-        return np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0,
-                       len(self.segments) - 1)
+        if len(self.segments) == 1:
+            return np.zeros(np.shape(u), int)
+        # (np.minimum/np.maximum: np.clip on integers takes a slow path)
+        return np.minimum(np.maximum(np.searchsorted(self.edges, u, side="right") - 1, 0),
+                          len(self.segments) - 1)
 
     def derivs(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """f'(u) and f''(u), one segment lookup for both."""

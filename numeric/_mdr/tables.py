@@ -235,8 +235,8 @@ def G(rep: Rep, x) -> np.ndarray:
         if not sel.any():
             continue
         v = seg.var(x[sel])
-        j = np.clip(np.searchsorted(seg.nodes[:seg.built], v, side="right") - 1, 0,
-                    seg.built - 1)
+        j = np.minimum(np.maximum(np.searchsorted(seg.nodes[:seg.built], v, side="right") - 1,
+                                  0), seg.built - 1)
         half = (v - seg.nodes[j]) / 2
         vv = (seg.nodes[j] + half)[..., None] + half[..., None] * t
         Gs = seg.G(vv)
