@@ -57,6 +57,9 @@ def verification_section() -> str:
          "::test_pressure_large_n_by_quadrature"),
         ("numerical MDR of samples (smooth, kinked, noisy)", "the closed forms and 30-digit "
          "quadrature of (5.59); the error estimate bounds the error", "tests/test_mdr.py"),
+        ("the splines as piecewise polynomials (Taylor coefficients per knot interval, what "
+         "the engine evaluates)", "scipy's B-spline evaluation (f, f', f'')",
+         "tests/test_mdr_engine.py"),
         ("`mdr_force` (5.57) from the integral of g", "the pressure of (5.59), by quadrature, "
          "integrated over the disc at 30 digits",
          "tests/test_mdr.py::test_mdr_force_by_the_pressure"),

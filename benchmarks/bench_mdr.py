@@ -420,25 +420,36 @@ def _issue18(speed):
         "from (5.57) with integral g at the table node below a (the quadrature's value) plus "
         "an exact Gauss integral of the spline to a, and the bound made as before (coarse vs "
         "fine, the envelope of the differences around a); the tables are computed only as "
-        "far as the contact radius needs and grown with it; the quadrature's far pieces in "
-        "place (one pass fewer over the kernel matrix).\n\n")
+        "far as the contact radius needs and grown with it; the profile's and the tables' "
+        "splines are evaluated as piecewise polynomials (Taylor coefficients per knot "
+        "interval, Horner's rule: about a fifth of a B-spline evaluation's cost, "
+        "`numeric/_mdr/ppoly.py`), the table nodes planned without NumPy's per-call cost, "
+        "and the far pieces' kernel matrix summed in blocks that stay in cache.\n\n")
     if not (ok_first and ok_later):
         out += (
             "What bounds it: (1) the first depth computes the tables of both representations "
-            "(fine and coarse, the error bound needs both) by quadrature of (5.52) at ~100 + "
-            "~40 (fine) and ~100 (coarse) nodes up to the contact radius: each node sums the "
-            "Abel kernel over every spline piece below it (6 and 4 Gauss points a piece), a "
-            "dense O(nodes x N) sum, about half of the first depth, with the splines' "
-            "derivatives on those Gauss points; (2) the pressure with its bound (the larger "
-            "part of a later depth) is two Abel quadratures of (5.59) on the tables, fine and "
-            "coarse, at 6 and 4 Gauss points a panel, panels at 16 nodes and graded towards "
-            "the kernel's singularity, plus the integral of the tables' difference: tens of "
-            "thousands of spline evaluations for 201 radii. Why it stays: the bound "
-            "(`rel_error`, tests/test_mdr_bounds.py) needs the second representation, and the "
-            "pressure's accuracy figures (tests/test_mdr.py, this page) rest on the present "
-            "panels. What would lower it: the spline pieces' moments against the kernel in "
-            "closed form (as numeric/_abel does) for the far pieces, and an Abel operator on "
-            "the tables' own piecewise polynomials for the pressure.\n\n")
+            "(fine and coarse: the bound needs both) by quadrature of (5.52) at ~130 (fine) "
+            "and ~100 (coarse) nodes up to the contact radius: each node sums the Abel kernel "
+            "over every spline piece below it (6 and 4 Gauss points a piece), a dense "
+            "O(nodes x N) sum, the largest part, besides the two profile splines themselves "
+            "(from_samples solves two banded systems) and the tables' quintic splines, refitted "
+            "as a table grows towards the contact radius. (2) A later depth is the solve on the "
+            "tables (the Newton's iterations on two representations and the bound's envelope: "
+            "NumPy calls on arrays of a few elements, their per-call cost) and, the larger "
+            "part, the pressure with its bound: three Abel quadratures of (5.59) at 201 radii "
+            "(fine, coarse, and the integral of |q - q_coarse|), ~110 Gauss points a radius. "
+            "Closed forms were tried and measured, and left: (5.59) of the tables' own "
+            "piecewise polynomials by parts against the kernel's repeated antiderivatives "
+            "(exact, to 1e-13 of a 30-digit quadrature; one acosh and one square root per "
+            "radius and knot below a) took 3.1 ms CPU where the quadrature on the piecewise "
+            "polynomials took 2.2 ms (one interleaved run on the loaded machine): NumPy's inverse "
+            "hyperbolic and trigonometric functions cost about ten times a square root, so one "
+            "of them per knot costs as much as the Gauss points it replaces; the same holds "
+            "for the far pieces of (5.52) (an arcsine per node and knot against six square "
+            "roots and "
+            "multiply-adds). Why it stays: the bound (`rel_error`, tests/test_mdr_bounds.py) "
+            "needs the second representation, and the accuracy figures (tests/test_mdr.py, "
+            "this page) rest on the present nodes and Gauss points.\n\n")
     return out
 
 

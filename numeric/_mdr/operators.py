@@ -53,22 +53,30 @@ def abel(rep: Rep, r, a: float, E_star: float, m: int, other: Rep | None = None)
             break
         top = min(seg.hi, a)
         # the segment that holds r: x = r + w^2, dx / sqrt(x^2 - r^2) = 2 dw / sqrt(x + r)
-        sel = np.flatnonzero(idx == i)
-        if len(sel):
+        sel_all = np.flatnonzero(idx == i)
+        # grade towards w = 0 down to the scale of the nearest singularity: the kernel's at
+        # w^2 = -2r, and past a kink q's sqrt(x - lo) at w^2 = lo - r; lev levels a radius
+        # (30 at r = 0). The radii at 30 levels apart from the others, each group with only
+        # as many grading columns as its deepest radius (the rest would be empty panels)
+        rr = r[sel_all]
+        sig = np.sqrt(2 * rr)
+        if seg.in_t:
+            sig = np.minimum(sig, np.sqrt(rr - seg.lo))
+        with np.errstate(divide="ignore"):
+            lev_all = np.clip(np.ceil(np.log2(np.sqrt(top - rr) / np.maximum(
+                sig, 1e-300 * np.sqrt(top - rr)))) + 2, 3, 30)
+        for group in (lev_all < 30, lev_all >= 30):
+            sel, lev = sel_all[group], lev_all[group]
+            if not len(sel):
+                continue
             rr = r[sel]
             W = np.sqrt(top - rr)
             xk = _subsample(seg.lo + seg.nodes**2 if seg.in_t else seg.nodes, 16)
             with np.errstate(invalid="ignore"):
                 wk = np.sqrt(np.clip(xk[None, :] - rr[:, None], 0, None))
-            # grade towards w = 0 down to the scale of the nearest singularity: the
-            # kernel's at w^2 = -2r, and past a kink q's sqrt(x - lo) at w^2 = lo - r
-            sig = np.sqrt(2 * rr)
-            if seg.in_t:
-                sig = np.minimum(sig, np.sqrt(rr - seg.lo))
-            with np.errstate(divide="ignore"):
-                lev = np.clip(np.ceil(np.log2(W / np.maximum(sig, 1e-300 * W))) + 2, 3, 30)
-            grade = graded(np.zeros(len(rr)), W)
-            grade[np.arange(30)[None, :] >= lev[:, None]] = 0.0
+            ncol = int(lev.max())
+            grade = graded(np.zeros(len(rr)), W)[:, :ncol]
+            grade[np.arange(ncol)[None, :] >= lev[:, None]] = 0.0
             wn, ww = panels(np.zeros(len(rr)), W, np.concatenate([wk, grade], axis=1), m)
             live = ww > 0
             rl = np.broadcast_to(rr[:, None], wn.shape)[live]

@@ -12,6 +12,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from hertzmdr.numeric._mdr.ppoly import Piecewise
+
 if TYPE_CHECKING:  # scipy is imported when the first representation is built
     from scipy.interpolate import BSpline
 
@@ -40,26 +42,37 @@ class Rep:
     # (piece edges, nodes u, weights * f'(u), weights * (u f')'(u))
     ugrid: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = field(
         default=None, repr=False)
+    _pp: list[Piecewise] | None = field(default=None, repr=False)  # the segments' polynomials
+
+    def polys(self) -> list[Piecewise]:
+        """The segments' splines as piecewise polynomials (``ppoly``; made on first use and
+        shared with the copies of ``with_quadrature``, the splines being the same)."""
+        if self._pp is None:
+            self._pp = [Piecewise.from_bspline(spl) for spl in self.segments]
+        return self._pp
 
     def seg_index(self, u):
         """The segment holding each radius u [m]."""
-        return np.clip(np.searchsorted(self.edges, u, side="right") - 1, 0,
-                       len(self.segments) - 1)
+        if len(self.segments) == 1:
+            return np.zeros(np.shape(u), int)
+        # (np.minimum/np.maximum: np.clip on integers takes a slow path)
+        return np.minimum(np.maximum(np.searchsorted(self.edges, u, side="right") - 1, 0),
+                          len(self.segments) - 1)
 
     def derivs(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """f'(u) and f''(u), one segment lookup for both."""
         u = np.asarray(u, float)
+        pps = self.polys()
+        if len(pps) == 1:
+            i, h = pps[0].locate(u)
+            return pps[0].at(i, h, 1), pps[0].at(i, h, 2)
         f1, f2 = np.zeros(u.shape), np.zeros(u.shape)
-        if len(self.segments) == 1:
-            spl = self.segments[0]
-            return spl(u, nu=1), (spl(u, nu=2) if self.k > 1 else f2)
         idx = self.seg_index(u)
-        for i, spl in enumerate(self.segments):
-            sel = idx == i
+        for j, pp in enumerate(pps):
+            sel = idx == j
             if sel.any():
-                f1[sel] = spl(u[sel], nu=1)
-                if self.k > 1:
-                    f2[sel] = spl(u[sel], nu=2)
+                i, h = pp.locate(u[sel])
+                f1[sel], f2[sel] = pp.at(i, h, 1), pp.at(i, h, 2)
         return f1, f2
 
     def fprime(self, u):

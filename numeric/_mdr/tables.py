@@ -11,15 +11,13 @@ a g or a displacement), grown when a later call asks for more, kept on the repre
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-if TYPE_CHECKING:
-    from scipy.interpolate import BSpline
-
 from hertzmdr.numeric._mdr import kinks, quadrature
+from hertzmdr.numeric._mdr.ppoly import Piecewise
 from hertzmdr.numeric._mdr.spline import Rep
 from hertzmdr.numeric._quadrature import gauss
 
@@ -41,16 +39,19 @@ def _thin(v, step, rel):
     """A subset of the sorted positive v: each kept point at least min(step, rel * v) from the
     previous kept one (all of them where the spacing of v is finer than that). Greedy from
     the first point; v - 0.999 min(step, rel v) increases with v, so the next kept point is
-    found by bisection."""
+    found by bisection (``bisect`` on lists: a few hundred scalar searches, where NumPy's
+    per-call cost would dominate)."""
     v = np.asarray(v, float)
     if not len(v):
         return v
-    y = v - 0.999 * np.minimum(step, rel * v)
+    y = (v - 0.999 * np.minimum(step, rel * v)).tolist()
+    vl = v.tolist()
+    n = len(vl)
     keep = [0]
+    i = 0
     while True:
-        i = int(np.searchsorted(y, v[keep[-1]], side="left"))
-        i = max(i, keep[-1] + 1)
-        if i >= len(v):
+        i = max(bisect_left(y, vl[i]), i + 1)
+        if i >= n:
             break
         keep.append(i)
     return v[keep]
@@ -88,9 +89,9 @@ class Seg:
     nodes: np.ndarray  # all the planned nodes, in the table variable
     xv: np.ndarray  # the same as radii [m]
     vals: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))  # G_s, q, I
-    spl: BSpline | None = None  # quintic through the built nodes, columns G_s, q, I
-    G: BSpline | None = None  # its column G_s alone
-    q: BSpline | None = None  # its column q alone
+    spl: Piecewise | None = None  # quintic through the built nodes, columns G_s, q, I
+    G: Piecewise | None = None  # its column G_s alone
+    q: Piecewise | None = None  # its column q alone
 
     @property
     def built(self) -> int:
@@ -120,10 +121,11 @@ class Seg:
         # off) has G_s as its derivative: smooth in the table variable as well
         new = np.column_stack([gg - kinks.terms(rep, xv, 0), q, GG - kinks.primitive(rep, xv)])
         self.vals = np.concatenate([self.vals, new])
-        self.spl = make_interp_spline(self.nodes[:n], self.vals, k=min(5, n - 1))
+        # as piecewise polynomials (``ppoly``: evaluated faster than the BSpline)
+        self.spl = Piecewise.from_bspline(
+            make_interp_spline(self.nodes[:n], self.vals, k=min(5, n - 1)))
         # the columns G_s and q alone, on the same knots (for the callers that need one)
-        self.G, self.q = (type(self.spl).construct_fast(self.spl.t, self.spl.c[:, c].copy(),
-                                                        self.spl.k) for c in (0, 1))
+        self.G, self.q = self.spl.column(0), self.spl.column(1)
 
 
 def _plan(rep: Rep) -> list[Seg]:
@@ -233,8 +235,8 @@ def G(rep: Rep, x) -> np.ndarray:
         if not sel.any():
             continue
         v = seg.var(x[sel])
-        j = np.clip(np.searchsorted(seg.nodes[:seg.built], v, side="right") - 1, 0,
-                    seg.built - 1)
+        j = np.minimum(np.maximum(np.searchsorted(seg.nodes[:seg.built], v, side="right") - 1,
+                                  0), seg.built - 1)
         half = (v - seg.nodes[j]) / 2
         vv = (seg.nodes[j] + half)[..., None] + half[..., None] * t
         Gs = seg.G(vv)
