@@ -65,6 +65,12 @@ CONTACT_SIGNIFICANCE = 5.0
 MODULUS_SIGNIFICANCE = 3.0
 #: most Newton steps for the exact sphere's lam (a bisection step each at worst; 5-7 suffice)
 LAM_MAX_STEPS = 80
+#: Levenberg-Marquardt stops when a step would lower sum(r^2) by less than this fraction of it:
+#: the step left is then below sqrt(FTOL N) standard errors of the parameters (a step of k
+#: standard errors lowers sum(r^2) by k^2 s^2, and sum(r^2) = (N - 4) s^2), 4.5e-4 of them for
+#: N = 2000 points; a noise-free curve, whose sum(r^2) falls to rounding, still converges to
+#: the last digits (xtol)
+FTOL = 1e-10
 #: sigma(z_0) above this fraction of the deepest indentation: the contact point is poorly
 #: determined (the modulus then inherits its uncertainty through their correlation)
 Z0_POOR = 0.1
@@ -95,9 +101,10 @@ class _Tip(ABC):
         tip's force per unit E*, since F = E* dF/dE* + F_0 + s_0 z_p (asserted in
         derive/fit.py)."""
 
-    def _unit(self, z, z0):
+    def _unit(self, z, z0, state=None):
         """(dF/dE*, dF/dz_0 at E* = 1) at one contact point; dF/dz_0 is proportional to E*
-        (asserted in derive/fit.py), so the fit evaluates the tip once per contact point."""
+        (asserted in derive/fit.py), so the fit evaluates the tip once per contact point.
+        ``state``: a dict one fit owns across its evaluations (the exact sphere's warm start)."""
         return self.derivatives(1.0, z, z0)
 
     #: whether :meth:`_unit` is a table (a sampled tip): the fit then ends on :meth:`_exact`
@@ -120,7 +127,7 @@ class _Tip(ABC):
 _EPS = float(np.finfo(float).eps)
 
 
-def lam_from_depth(d, R):
+def lam_from_depth(d, R, start=None):
     """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
     (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
 
@@ -128,6 +135,9 @@ def lam_from_depth(d, R):
     bound max(sqrt(d/R), d/R) of numeric/sphere.py's bisection and inside its bracket: a step
     that leaves the bracket is replaced by a bisection step, so the iteration cannot diverge,
     and it converges quadratically (5-7 steps to one ulp, against ~53 bisection steps).
+    ``start`` (d's shape, optional): first iterates, e.g. the roots at nearby depths (a fit's
+    previous contact point); clipped into the bracket, so any values are safe, and close ones
+    leave 2-3 steps.
     """
     d = np.asarray(d, float)
     touch = d > 0
@@ -136,7 +146,7 @@ def lam_from_depth(d, R):
     delta = dd / R
     lo = np.maximum(np.sqrt(delta), delta)
     hi = np.maximum((delta + np.sqrt(delta * (delta + 4))) / 2, lo)
-    lam = lo
+    lam = lo if start is None else np.clip(np.asarray(start, float)[touch], lo, hi)
     for _ in range(LAM_MAX_STEPS):
         f = gen.sphere_lam_depth(R, lam) - dd
         lo = np.where(f < 0, lam, lo)
@@ -187,8 +197,8 @@ class ExactSphere(_Tip):
     def __post_init__(self):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
-    def _lam(self, z, z0):
-        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R)
+    def _lam(self, z, z0, start=None):
+        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start)
 
     def force(self, E_star, z, z0, F0, s0):
         return gen.fit_sphere_force(E_star, self.R, self._lam(z, z0), z, F0, s0)
@@ -207,6 +217,19 @@ class ExactSphere(_Tip):
 
     def basis(self, z, z0):
         return self._dE(self._lam(z, z0))
+
+    def _unit(self, z, z0, state=None):
+        """As :meth:`_Tip._unit`; ``state`` (a dict one fit owns) keeps the last lam of the
+        points z, a sorted curve's tail, to start Newton's iteration at the next z_0 from."""
+        start = None
+        if state is not None and "lam" in state:
+            prev = state["lam"]  # the previous tail's lam: align the two tails at their end
+            start = (prev[prev.size - z.size:] if prev.size >= z.size
+                     else np.r_[np.zeros(z.size - prev.size), prev])
+        lam = self._lam(z, z0, start)
+        if state is not None:
+            state["lam"] = lam
+        return self._dE(lam), gen.fit_sphere_force_dz0(1.0, self.R, lam)
 
     def ratios(self, d_max):
         lam = lam_from_depth(np.float64(d_max), self.R)
@@ -509,7 +532,7 @@ class SampledTip(_Tip):
     def basis(self, z, z0):
         return self._tabled(np.asarray(z, float) - z0)[0]
 
-    def _unit(self, z, z0):  # Levenberg-Marquardt's model: the table
+    def _unit(self, z, z0, state=None):  # Levenberg-Marquardt's model: the table
         phi, k = self._tabled(np.asarray(z, float) - z0)
         return phi, -k
 
@@ -852,7 +875,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if p0 is None:
         _no_contact("no contact point makes the force rise with a positive modulus")
 
-    cache = {}
+    cache, state = {}, {}
     zeros = np.zeros(z.size)
 
     def unit(z0):  # the tip's shape and its z_0 slope, once per contact point
@@ -863,7 +886,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
             k = int(np.searchsorted(z, z0, side="right"))
             g, h = zeros.copy(), zeros.copy()
             if k < z.size:
-                g[k:], h[k:] = tip._unit(z[k:], z0)
+                g[k:], h[k:] = tip._unit(z[k:], z0, state)
             cache[z0] = (g, h)
         return cache[z0]
 
@@ -886,7 +909,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
         # MINPACK's lmder through scipy's leastsq: the same Levenberg-Marquardt as
         # least_squares(method="lm"), without its per-call wrappers (~1 ms of a 5 ms fit)
         p, _, info, _, _ = leastsq(residuals, p0, Dfun=jacobian_rows, col_deriv=True,
-                                   full_output=True, xtol=1e-15, ftol=1e-15, gtol=1e-15,
+                                   full_output=True, xtol=1e-15, ftol=FTOL, gtol=1e-15,
                                    maxfev=2000, diag=1 / scale)
     res = residuals(p)
     model_error = None
