@@ -1,4 +1,5 @@
-"""Fit an adhesive (JKR) retract curve F(z_p) for E*, the contact point and the work of adhesion.
+"""Fit an adhesive retract curve F(z_p) for E*, the contact point and the work of adhesion: the
+paraboloid (JKR) or the cone.
 
 The model (generated from :func:`hertzmdr.derive.fit.jkr_model`, itself from the MDR's adhesive
 paraboloid in :mod:`hertzmdr.derive.adhesion`) is parametric in the contact radius a:
@@ -31,6 +32,12 @@ after it with the JKR model. A point of the contact part whose depth at the fitt
 lies below d_dc (past the jump-off, where no equilibrium exists) is excluded with a warning and
 the fit repeated. Without a jump in the data (no visible adhesion, or the retract recorded
 only in contact) a point is in contact where d >= d_dc and on the baseline elsewhere.
+
+The cone (theta [rad] between its surface and the plane) is the same fit on the cone's
+adhesive relations (:func:`hertzmdr.derive.fit.adhesive_cone_model`, from the MDR's adhesive
+cone: d(a) = (pi/2) a tan(theta) - Delta l, ``fit_adhesive_cone_*``): its branch stable under
+depth control is again a > a_dc (``adhesion_cone_pull_off_radius_dc``), and every step below
+runs on a :class:`_Family` of the tip's generated relations.
 
 Method: at a fixed kappa = rho_g/sqrt(E*) the model is E* times a shape of (z - z_0) (asserted
 in derive/fit.py), so a scan over (z_0, kappa) solves (E*, F_0, s_0) by linear least squares
@@ -75,7 +82,7 @@ JUMP_SIGNIFICANCE = 8.0
 #: ... and this many times the largest of the 2 steps on either side of it (the smooth curve's
 #: own steps, steepest next to the vertical tangent at d_dc, stay below)
 JUMP_NEIGHBOURS = 4.0
-#: a fitted Delta gamma below this fraction of its scale (pi R Delta gamma = the force range)
+#: a fitted Delta gamma below this fraction of its scale (its pull-off force = the force range)
 #: is compared with the fit on the bound Delta gamma = 0
 NEAR_BOUND = 1e-3
 #: refits after excluding points past the jump-off
@@ -446,10 +453,10 @@ def _check_tip(tip):
                          "two only (docs/fitting.md)")
 
 
-def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=None, z0=None,
-              sigma=None) -> AdhesiveFitResult:
-    """Fit an adhesive retract curve F(z) with the JKR paraboloid, a contact point, the work of
-    adhesion and a linear baseline.
+def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone, *, nu=None, tip_modulus=None,
+              tip_nu=None, z0=None, sigma=None) -> AdhesiveFitResult:
+    """Fit an adhesive retract curve F(z) with the JKR paraboloid or the adhesive cone, a
+    contact point, the work of adhesion and a linear baseline.
 
     Parameters
     ----------
@@ -457,8 +464,8 @@ def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=N
         Positions of the tip's base [m] (increasing into the sample, any order) and the force on
         the tip [N] (positive in compression, negative while adhesion pulls), as
         :func:`hertzmdr.numeric.fit.fit_curve`.
-    tip : hertzmdr.numeric.fit.Paraboloid
-        The tip (radius of curvature R [m]).
+    tip : hertzmdr.numeric.fit.Paraboloid or hertzmdr.numeric.fit.Cone
+        The tip (radius of curvature R [m], or the cone's angle theta [rad]).
     nu, tip_modulus, tip_nu, z0, sigma
         As :func:`hertzmdr.numeric.fit.fit_curve` (z0 [m]: a guess of the contact point d = 0,
         added to the start scan; sigma [N]: the noise's standard deviation).
