@@ -72,6 +72,12 @@ MIN_POINTS = 7
 A_MAX_STEPS = 80
 #: trial contact points and trial kappa of the start scan, then of its refinement
 N_SCAN_Z0, N_SCAN_KAPPA, N_REFINE = 32, 12, 8
+#: refinements of the start scan, each between the best trial's neighbours of the last grid
+#: (the cone's steep jump-off makes its least squares narrow in (z_0, kappa): one round left
+#: starts Levenberg-Marquardt could not recover from on curves of 100-300 points)
+REFINE_ROUNDS = 3
+#: local minima of the coarse (z_0, kappa) grid refined, the lowest first
+START_CANDIDATES = 3
 #: points of the curve the start scans use at most (evenly spread, the deepest ones kept)
 SCAN_POINTS = 128
 #: the trial kappa give jump-off depths |d_dc| between these fractions of the curve's span
@@ -349,25 +355,52 @@ def _start(fam, z, F, w, layout, z0_guess):
     if z0_guess is not None:
         z0s = np.append(z0s, z0_guess)
     kappas = _kappas(fam, span)
-    best = None
 
-    def scan(z0s, kappas):
-        nonlocal best
-        for kap in kappas:
+    def scan(z0s, kappas, best):
+        """The best (params, rss, kappa) of the grid and of ``best``; and the grid's rss."""
+        table = np.full((kappas.size, z0s.size), np.inf)
+        for j, kap in enumerate(kappas):
             params, rss = _fit._linear_scan(_ScanTip(fam, layout, kap), zs, Fs, ws, z0s)
-            rss = np.where(params[:, 0] > 0, rss, np.inf)
+            rss = np.where((params[:, 0] > 0) & np.isfinite(rss), rss, np.inf)
+            table[j] = rss
             k = int(np.argmin(rss))
             if np.isfinite(rss[k]) and (best is None or rss[k] < best[1]):
                 best = (params[k], rss[k], kap)
+        return best, table
 
-    scan(z0s, kappas)
+    best, table = scan(z0s, kappas, None)
     if best is None:
         return None
-    i = int(np.argmin(np.abs(kappas - best[2])))
-    k_lo, k_hi = kappas[max(i - 1, 0)], kappas[min(i + 1, kappas.size - 1)]
-    dz = (hi - lo) / (N_SCAN_Z0 - 1)
-    scan(np.linspace(best[0][1] - dz, best[0][1] + dz, N_REFINE),
-         np.linspace(k_lo, k_hi, N_REFINE))
+    # refine around each of the START_CANDIDATES lowest local minima of the coarse grid (the
+    # cone's steep jump-off makes the valley of the truth narrow: its nearest grid point can
+    # lie above another basin's minimum), each REFINE_ROUNDS times between the best trial's
+    # neighbours; the best of all is the start
+    padded = np.pad(table, 1, constant_values=np.inf)
+    local = np.isfinite(table)
+    for dj in (-1, 0, 1):
+        for dk in (-1, 0, 1):
+            if dj or dk:
+                local &= table <= padded[1 + dj:1 + dj + table.shape[0],
+                                         1 + dk:1 + dk + table.shape[1]]
+    cand = np.argwhere(local)
+    cand = cand[np.argsort(table[local])][:START_CANDIDATES]
+    overall = best
+    for j, k in cand:
+        best = (None, table[j, k], kappas[j])
+        zc, kc = z0s[k], kappas
+        dz = (hi - lo) / (N_SCAN_Z0 - 1)
+        for _ in range(REFINE_ROUNDS):  # each round: a grid between the best one's neighbours
+            i = int(np.argmin(np.abs(kc - best[2])))
+            k_lo, k_hi = kc[max(i - 1, 0)], kc[min(i + 1, kc.size - 1)]
+            kc = np.linspace(k_lo, k_hi, N_REFINE)
+            best, _ = scan(np.linspace(zc - dz, zc + dz, N_REFINE), kc, best)
+            if best[0] is None:
+                break
+            zc = best[0][1]
+            dz = 2 * dz / (N_REFINE - 1)
+        if best[0] is not None and best[1] < overall[1]:
+            overall = best
+    best = overall
     E, z0, F0, s0 = best[0]
     return np.array([E, z0, best[2] ** 2 * E, F0, s0])  # Delta gamma = kappa^2 E*
 

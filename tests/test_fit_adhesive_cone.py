@@ -31,6 +31,8 @@ from hertzmdr.numeric import fit as hfit
 from hertzmdr.numeric import fit_adhesive as fa
 from hertzmdr.numeric.cli import main
 
+from oracle import n_points
+
 DPS = 30
 THETA = 0.3  # rad: a blunt AFM cone
 E_TRUE = 2.0e6  # Pa
@@ -257,6 +259,29 @@ def test_noise_recovery_within_errors():
     assert np.all(np.abs(res.values - TRUTH) <= 4 * res.errors), (res.values, res.errors)
     # chi^2/(N - 5) has a standard deviation of sqrt(2/(N - 5)) = 0.07 at N = 400
     assert abs(res.reduced_chi2 - 1) < 0.3
+
+
+@pytest.mark.sweep
+def test_coverage_of_standard_errors():
+    """The truth within one reported standard error in ~68.3 % of noisy curves, per parameter.
+
+    Binomial(m, 0.683): standard deviation sqrt(0.683 0.317/m) (0.060 at m = 60, 0.015 at
+    m = 1000); the tolerance of 3.5 of them makes a false failure a 5e-4 event per parameter.
+    Noise 1 % of the depth-controlled pull-off force, 200 points (the same curve per seed, by
+    the forward numeric/adhesion.py, new noise each).
+    """
+    m = n_points(1000, 60)
+    z, F = forward_curve(n=200)
+    c = adhesion.AdhesiveContact(adhesion.Cone(theta=THETA), E_star=E_TRUE, dgamma=DG_TRUE)
+    noise = 0.01 * abs(c.pull_off("depth").force)
+    inside = np.zeros(5)
+    for seed in range(m):
+        Fn = F + np.random.default_rng(seed).normal(0.0, noise, z.size)
+        res = fa.fit_curve(z, Fn, TIP, sigma=noise)
+        inside += np.abs(res.values - TRUTH) <= res.errors
+    frac = inside / m
+    tol = 3.5 * math.sqrt(0.6827 * 0.3173 / m)
+    assert np.all(np.abs(frac - 0.6827) <= tol), (frac, tol)
 
 
 def test_non_adhesive_cone_curve_gives_zero_work():
