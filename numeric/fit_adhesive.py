@@ -73,10 +73,11 @@ A_MAX_STEPS = 80
 #: trial contact points and trial kappa of the start scan, then of its refinement
 N_SCAN_Z0, N_SCAN_KAPPA, N_REFINE = 32, 12, 8
 #: refinements of the start scan, each between the best trial's neighbours of the last grid
-#: (the cone's steep jump-off makes its least squares narrow in (z_0, kappa): one round left
-#: starts Levenberg-Marquardt could not recover from on curves of 100-300 points)
-REFINE_ROUNDS = 3
-#: local minima of the coarse (z_0, kappa) grid refined, the lowest first
+REFINE_ROUNDS = 1
+#: local minima of the coarse (z_0, kappa) grid refined, the lowest first (the cone's steep
+#: jump-off makes the valley of the truth narrow in (z_0, kappa): its nearest grid point can
+#: lie above another basin's minimum, and refining the lowest point only left starts that
+#: Levenberg-Marquardt could not recover from on noise-free curves of 100-300 points)
 START_CANDIDATES = 3
 #: points of the curve the start scans use at most (evenly spread, the deepest ones kept)
 SCAN_POINTS = 128
@@ -371,10 +372,8 @@ def _start(fam, z, F, w, layout, z0_guess):
     best, table = scan(z0s, kappas, None)
     if best is None:
         return None
-    # refine around each of the START_CANDIDATES lowest local minima of the coarse grid (the
-    # cone's steep jump-off makes the valley of the truth narrow: its nearest grid point can
-    # lie above another basin's minimum), each REFINE_ROUNDS times between the best trial's
-    # neighbours; the best of all is the start
+    # refine around each of the START_CANDIDATES lowest local minima of the coarse grid, each
+    # REFINE_ROUNDS times between the best trial's neighbours; the best of all is the start
     padded = np.pad(table, 1, constant_values=np.inf)
     local = np.isfinite(table)
     for dj in (-1, 0, 1):
