@@ -260,40 +260,41 @@ def relations() -> list[Relation]:
 # The adhesive (JKR) fit: a retract curve of a paraboloid, parametric in the contact radius a
 # ---------------------------------------------------------------------------------------------
 JKR_TEST = "tests/test_fit_jkr.py"
+CONE_TEST = "tests/test_fit_adhesive_cone.py"
 rho_g = symbol("rho_g")
 
 
-@cache
-def jkr_model() -> dict[str, sp.Expr]:
-    """The JKR fit model in (E*, z_0, Delta gamma, F_0, s_0) at the contact radius a, and its
-    Jacobian, written in rho_g = sqrt(Delta gamma).
-
-    Starting point: :func:`hertzmdr.derive.adhesion.jkr`'s d(a) and F(a) (the MDR's adhesive
-    paraboloid, (5.55) and (5.57) with the critical elongation), not retyped.
+def _adhesive_model(family: dict[str, sp.Expr], name: str) -> dict[str, sp.Expr]:
+    """An adhesive fit model in (E*, z_0, Delta gamma, F_0, s_0) at the contact radius a, and its
+    Jacobian, written in rho_g = sqrt(Delta gamma), from an adhesive family's d(a) and F(a)
+    (:func:`hertzmdr.derive.adhesion.family`: (5.55), (5.57) with the critical elongation
+    Delta l = sqrt(2 pi a Delta gamma/E*)).
 
     Implicit differentiation: the measured position fixes d(a(p), p) = z_p - z_0 for every
     parameter p, so da/dp = -(dd/dp + [p = z_0])/(dd/da) and dF/dp = dF/dp|_a + dF/da da/dp.
     SymPy does it on an undefined a(E*, z_0, Delta gamma). dd/da = 0 at the depth-controlled
     pull-off a_dc: dF/dE* and dF/dz_0 are singular there (F(d) has a vertical tangent at the
-    jump-off). dF/dDelta gamma is finite as Delta gamma -> 0 (-pi R: the sqrt(Delta gamma)
-    terms of dF/da da/dDelta gamma and dF/dDelta gamma|_a cancel; asserted), once the common
-    factor sqrt(Delta gamma) is cancelled, which the form in rho_g does.
+    jump-off). dF/dDelta gamma is finite as Delta gamma -> 0: -2 pi a/g'(a), g' = dd/da without
+    adhesion (asserted; -pi R for the paraboloid), since the sqrt(Delta gamma) terms of
+    dF/da da/dDelta gamma and dF/dDelta gamma|_a cancel once the common factor sqrt(Delta gamma)
+    is cancelled, which the form in rho_g does.
     """
-    j = adhesion.jkr()
     dg = adhesion.dgamma
     A = sp.Function("A")(E_star, z_0, dg)
-    eq = j["d"].subs(a, A) - (z_p - z_0)  # the measured position fixes the depth
+    eq = family["d"].subs(a, A) - (z_p - z_0)  # the measured position fixes the depth
     to_rho = {dg: rho_g**2}
-    out = {"d": sp.simplify(j["d"].subs(to_rho)),
-           "F": sp.simplify(j["F"].subs(to_rho)) + F_0 + s_0 * z_p,
-           "d_da": sp.simplify(sp.diff(j["d"], a).subs(to_rho))}
+    out = {"d": sp.simplify(family["d"].subs(to_rho)),
+           "F": sp.simplify(family["F"].subs(to_rho)) + F_0 + s_0 * z_p,
+           "d_da": sp.simplify(sp.diff(family["d"], a).subs(to_rho))}
     for key, p in (("dE", E_star), ("dz0", z_0), ("ddgamma", dg)):
         dA = sp.Derivative(A, p)
         (slope,) = sp.solve(sp.diff(eq, p), dA)
-        dF = sp.diff(j["F"].subs(a, A), p).subs(dA, slope).subs(A, a)
+        dF = sp.diff(family["F"].subs(a, A), p).subs(dA, slope).subs(A, a)
         out[key] = sp.simplify(sp.factor(sp.simplify(dF.subs(to_rho))))
-    if sp.simplify(out["ddgamma"].subs(rho_g, 0) + sp.pi * R) != 0:
-        raise AssertionError(f"dF/dDelta gamma at Delta gamma = 0 is not -pi R: {out['ddgamma']}")
+    limit = -2 * sp.pi * a / out["d_da"].subs(rho_g, 0)
+    if sp.simplify(out["ddgamma"].subs(rho_g, 0) - limit) != 0:
+        raise AssertionError(f"dF/dDelta gamma of the {name} at Delta gamma = 0 is not "
+                             f"-2 pi a/g'(a) = {limit}: {out['ddgamma']}")
     # F = E* f(a; kappa) and d = d(a; kappa) with kappa = rho_g/sqrt(E*): at a fixed kappa the
     # model is linear in E* (what lets the start scan solve E*, F_0, s_0 by linear least squares)
     kap = sp.Symbol("kappa", positive=True)
@@ -301,39 +302,76 @@ def jkr_model() -> dict[str, sp.Expr]:
     scaled = {rho_g: kap * sp.sqrt(E_star)}
     if sp.simplify(force.subs(scaled) - E_star * force.subs(scaled).subs(E_star, 1)) != 0 \
             or sp.simplify(out["d"].subs(scaled) - out["d"].subs(scaled).subs(E_star, 1)) != 0:
-        raise AssertionError("the JKR model is not E* f(a; rho_g/sqrt(E*))")
+        raise AssertionError(f"the adhesive {name} model is not E* f(a; rho_g/sqrt(E*))")
+    return out
+
+
+@cache
+def jkr_model() -> dict[str, sp.Expr]:
+    """The JKR fit model (the paraboloid) and its Jacobian (:func:`_adhesive_model`).
+
+    Starting point: :func:`hertzmdr.derive.adhesion.jkr`'s d(a) and F(a) (the MDR's adhesive
+    paraboloid, (5.55) and (5.57) with the critical elongation), not retyped. dF/dDelta gamma
+    is -pi R at Delta gamma = 0 (asserted).
+    """
+    out = _adhesive_model(adhesion.jkr(), "paraboloid")
+    if sp.simplify(out["ddgamma"].subs(rho_g, 0) + sp.pi * R) != 0:
+        raise AssertionError(f"dF/dDelta gamma at Delta gamma = 0 is not -pi R: {out['ddgamma']}")
+    return out
+
+
+@cache
+def adhesive_cone_model() -> dict[str, sp.Expr]:
+    """The adhesive cone's fit model and its Jacobian (:func:`_adhesive_model`).
+
+    Starting point: :func:`hertzmdr.derive.adhesion.cone`'s d(a) = (pi/2) a tan(theta) - Delta l
+    and F(a) (the MDR's adhesive cone, (5.55) and (5.57) with the critical elongation), not
+    retyped. dF/dDelta gamma is -4 a/tan(theta) at Delta gamma = 0 (asserted).
+    """
+    out = _adhesive_model(adhesion.cone(), "cone")
+    if sp.simplify(out["ddgamma"].subs(rho_g, 0) + 4 * a / sp.tan(cone.theta)) != 0:
+        raise AssertionError("dF/dDelta gamma of the cone at Delta gamma = 0 is not "
+                             f"-4 a/tan(theta): {out['ddgamma']}")
     return out
 
 
 def jkr_relations() -> list[Relation]:
-    m = jkr_model()
-    geo = (E_star, R, a, rho_g)
-    src = "(5.55), (5.57), JKR"
+    return (_adhesive_relations("jkr", jkr_model(), R, "a paraboloid", "(5.55), (5.57), JKR",
+                                "jkr_depth", "jkr_force_from_radius", JKR_TEST)
+            + _adhesive_relations("adhesive_cone", adhesive_cone_model(), cone.theta,
+                                  "a cone", "(5.55), (5.57), adhesive cone",
+                                  "adhesion_cone_depth", "adhesion_cone_force_from_radius",
+                                  CONE_TEST))
+
+
+def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test):
+    geo = (E_star, shape, a, rho_g)
     how = "implicit differentiation at d(a) = z_p - z_0 of"
     return [
-        Relation("fit_jkr_depth", f"{src}, fit model", m["d"], geo,
-                 "indentation depth d [m] of a paraboloid in JKR contact of radius a, "
-                 "Delta gamma = rho_g^2", "jkr_depth at Delta gamma = rho_g^2",
-                 f"{JKR_TEST}::test_jkr_model_by_mpmath_parametric"),
-        Relation("fit_jkr_depth_da", f"{src}, fit model", m["d_da"], geo,
-                 "derivative dd/da [1] of the JKR depth: Newton's slope for a at a depth "
-                 "(0 at the depth-controlled pull-off)", "jkr_depth differentiated in a",
-                 f"{JKR_TEST}::test_jkr_radius_by_mpmath"),
-        Relation("fit_jkr_force", f"{src}, fit model", m["F"], (*geo, z_p, F_0, s_0),
-                 "force F [N] on a paraboloid in JKR contact of radius a at the position z_p, "
-                 "plus the baseline F_0 + s_0 z_p", "jkr_force_from_radius at Delta gamma = "
-                 "rho_g^2", f"{JKR_TEST}::test_jkr_model_by_mpmath_parametric"),
-        Relation("fit_jkr_force_dE", f"{src}, fit model", m["dE"], geo,
-                 "derivative dF/dE* [m^2] of the JKR fit model at a fixed position",
-                 f"{how} jkr_force_from_radius in E*",
-                 f"{JKR_TEST}::test_jkr_jacobian_by_mpmath_derivative"),
-        Relation("fit_jkr_force_dz0", f"{src}, fit model", m["dz0"], geo,
-                 "derivative dF/dz_0 [N/m] of the JKR fit model at a fixed position "
-                 "(-dF/dd: infinite at the depth-controlled pull-off)",
-                 f"{how} jkr_force_from_radius in z_0",
-                 f"{JKR_TEST}::test_jkr_jacobian_by_mpmath_derivative"),
-        Relation("fit_jkr_force_ddgamma", f"{src}, fit model", m["ddgamma"], geo,
-                 "derivative dF/dDelta gamma [m] of the JKR fit model at a fixed position "
-                 "(-pi R at Delta gamma = 0)", f"{how} jkr_force_from_radius in Delta gamma",
-                 f"{JKR_TEST}::test_jkr_jacobian_by_mpmath_derivative"),
+        Relation(f"fit_{prefix}_depth", f"{src}, fit model", m["d"], geo,
+                 f"indentation depth d [m] of {label} in adhesive contact of radius a, "
+                 "Delta gamma = rho_g^2", f"{depth_name} at Delta gamma = rho_g^2",
+                 f"{test}::test_{prefix}_model_by_mpmath_parametric"),
+        Relation(f"fit_{prefix}_depth_da", f"{src}, fit model", m["d_da"], geo,
+                 f"derivative dd/da [1] of the adhesive depth of {label}: Newton's slope for a "
+                 "at a depth (0 at the depth-controlled pull-off)",
+                 f"{depth_name} differentiated in a", f"{test}::test_{prefix}_radius_by_mpmath"),
+        Relation(f"fit_{prefix}_force", f"{src}, fit model", m["F"], (*geo, z_p, F_0, s_0),
+                 f"force F [N] on {label} in adhesive contact of radius a at the position "
+                 f"z_p, plus the baseline F_0 + s_0 z_p", f"{force_name} at Delta gamma = "
+                 "rho_g^2", f"{test}::test_{prefix}_model_by_mpmath_parametric"),
+        Relation(f"fit_{prefix}_force_dE", f"{src}, fit model", m["dE"], geo,
+                 f"derivative dF/dE* [m^2] of the adhesive fit model of {label} at a fixed "
+                 "position", f"{how} {force_name} in E*",
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+        Relation(f"fit_{prefix}_force_dz0", f"{src}, fit model", m["dz0"], geo,
+                 f"derivative dF/dz_0 [N/m] of the adhesive fit model of {label} at a fixed "
+                 "position (-dF/dd: infinite at the depth-controlled pull-off)",
+                 f"{how} {force_name} in z_0",
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+        Relation(f"fit_{prefix}_force_ddgamma", f"{src}, fit model", m["ddgamma"], geo,
+                 f"derivative dF/dDelta gamma [m] of the adhesive fit model of {label} at a "
+                 "fixed position (-2 pi a/g'(a) at Delta gamma = 0)",
+                 f"{how} {force_name} in Delta gamma",
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
     ]

@@ -141,6 +141,12 @@ __all__ = [
     'ellipse_stress_w1',
     'ellipse_stress_w1_a',
     'ellipse_stress_w1_b',
+    'fit_adhesive_cone_depth',
+    'fit_adhesive_cone_depth_da',
+    'fit_adhesive_cone_force',
+    'fit_adhesive_cone_force_dE',
+    'fit_adhesive_cone_force_ddgamma',
+    'fit_adhesive_cone_force_dz0',
     'fit_cone_force',
     'fit_cone_force_dE',
     'fit_cone_force_dz0',
@@ -505,6 +511,12 @@ RELATIONS = (
     ('ellipse_stress_w1', '(5.31)', 'ellipse_stress', 'Piecewise((-a**2/2 - b_e**2/2 + x**2/2 + y**2/2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)/2, a**2 + b_e**2 - x**2 - y**2 <= 0), ((-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)), True))', ''),
     ('ellipse_stress_w1_a', '(5.31)', 'ellipse_stress', 'x**2/2 + y**2/2 + (a - b_e)*(a + b_e)/2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)/2', ''),
     ('ellipse_stress_w1_b', '(5.31)', 'ellipse_stress', 'Piecewise((-a**2/2 + b_e**2/2 + x**2/2 + y**2/2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)/2, -a**2 + b_e**2 + x**2 + y**2 >= 0), (2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)), True))', ''),
+    ('fit_adhesive_cone_depth', '(5.55), (5.57), adhesive cone, fit model', 'fit', 'pi*a*tan(theta)/2 - sqrt(2)*sqrt(pi)*sqrt(a)*rho_g/sqrt(E_star)', ''),
+    ('fit_adhesive_cone_depth_da', '(5.55), (5.57), adhesive cone, fit model', 'fit', 'pi*tan(theta)/2 - sqrt(2)*sqrt(pi)*rho_g/(2*sqrt(E_star)*sqrt(a))', ''),
+    ('fit_adhesive_cone_force', '(5.55), (5.57), adhesive cone, fit model', 'fit', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*rho_g + pi*E_star*a**2*tan(theta)/2 + F_0 + s_0*z_p', ''),
+    ('fit_adhesive_cone_force_dE', '(5.55), (5.57), adhesive cone, fit model', 'fit', '(pi**2*E_star**(5/2)*a**(5/2)*tan(theta)**2 + 16*pi*E_star**(3/2)*a**(3/2)*rho_g**2 - 5*sqrt(2)*pi**(3/2)*E_star**2*a**2*rho_g*tan(theta))/(2*(pi*E_star**(5/2)*sqrt(a)*tan(theta) - sqrt(2)*sqrt(pi)*E_star**2*rho_g))', ''),
+    ('fit_adhesive_cone_force_ddgamma', '(5.55), (5.57), adhesive cone, fit model', 'fit', '4*pi*E_star*a**(3/2)/(sqrt(2)*sqrt(pi)*sqrt(E_star)*rho_g - pi*E_star*sqrt(a)*tan(theta))', ''),
+    ('fit_adhesive_cone_force_dz0', '(5.55), (5.57), adhesive cone, fit model', 'fit', '2*(-pi*E_star**(3/2)*a**(3/2)*tan(theta) + 3*sqrt(2)*sqrt(pi)*E_star*a*rho_g)/(pi*sqrt(E_star)*sqrt(a)*tan(theta) - sqrt(2)*sqrt(pi)*rho_g)', ''),
     ('fit_cone_force', '(5.40), fit model', 'fit', '2*E_star*Max(0, -z_0 + z_p)**2/(pi*tan(theta)) + F_0 + s_0*z_p', ''),
     ('fit_cone_force_dE', '(5.40), fit model', 'fit', '2*Max(0, -z_0 + z_p)**2/(pi*tan(theta))', ''),
     ('fit_cone_force_dz0', '(5.40), fit model', 'fit', '-4*E_star*Heaviside(-z_0 + z_p, 0)*Max(0, -z_0 + z_p)/(pi*tan(theta))', ''),
@@ -4429,6 +4441,187 @@ def ellipse_stress_w1_b(a, b_e, x, y):
     return numpy.select([numpy.greater_equal(-a**2 + b_e**2 + x**2 + y**2, 0),True], [-1/2*a**2 + (1/2)*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
 
 
+def fit_adhesive_cone_depth(E_star, theta, a, rho_g):
+    """Indentation depth d [m] of a cone in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: adhesion_cone_depth at
+    Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(theta) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_cone_depth(E_star, theta, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*numpy.pi*a*numpy.tan(theta) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*rho_g/numpy.sqrt(E_star)
+
+
+def fit_adhesive_cone_depth_da(E_star, theta, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of a cone: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: adhesion_cone_depth
+    differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(theta) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_cone_depth_da(E_star, theta, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*numpy.pi*numpy.tan(theta) - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g/(numpy.sqrt(E_star)*numpy.sqrt(a))
+
+
+def fit_adhesive_cone_force(E_star, theta, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on a cone in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from:
+    adhesion_cone_force_from_radius at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    if (type(E_star) is float and type(theta) is float and type(a) is float and
+            type(rho_g) is float and type(z_p) is float and type(F_0) is float and
+            type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_cone_force(E_star, theta, a, rho_g, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*rho_g + (1/2)*numpy.pi*E_star*a**2*numpy.tan(theta) + F_0 + s_0*z_p
+
+
+def fit_adhesive_cone_force_dE(E_star, theta, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of a cone at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_cone_force_from_radius in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(theta) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_cone_force_dE(E_star, theta, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*(numpy.pi**2*E_star**(5/2)*a**(5/2)*numpy.tan(theta)**2 + 16*numpy.pi*E_star**(3/2)*a**(3/2)*rho_g**2 - 5*numpy.sqrt(2)*numpy.pi**(3/2)*E_star**2*a**2*rho_g*numpy.tan(theta))/(numpy.pi*E_star**(5/2)*numpy.sqrt(a)*numpy.tan(theta) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*rho_g)
+
+
+def fit_adhesive_cone_force_ddgamma(E_star, theta, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of a cone at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_cone_force_from_radius in Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(theta) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_cone_force_ddgamma(E_star, theta, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 4*numpy.pi*E_star*a**(3/2)/(numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*rho_g - numpy.pi*E_star*numpy.sqrt(a)*numpy.tan(theta))
+
+
+def fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of a cone at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_cone_force_from_radius in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(theta) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(-numpy.pi*E_star**(3/2)*a**(3/2)*numpy.tan(theta) + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a*rho_g)/(numpy.pi*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.tan(theta) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g)
+
+
 def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
     """Force F [N] on a rigid cone at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
 
@@ -4616,7 +4809,7 @@ def fit_hertz_force_dz0(E_star, R, z_p, z_0):
 
 
 def fit_jkr_depth(E_star, R, a, rho_g):
-    """Indentation depth d [m] of a paraboloid in JKR contact of radius a, Delta gamma = rho_g^2.
+    """Indentation depth d [m] of a paraboloid in adhesive contact of radius a, Delta gamma = rho_g^2.
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth at Delta gamma =
     rho_g^2.
@@ -4645,7 +4838,7 @@ def fit_jkr_depth(E_star, R, a, rho_g):
 
 
 def fit_jkr_depth_da(E_star, R, a, rho_g):
-    """Derivative dd/da [1] of the JKR depth: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+    """Derivative dd/da [1] of the adhesive depth of a paraboloid: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth differentiated in a.
 
@@ -4673,7 +4866,7 @@ def fit_jkr_depth_da(E_star, R, a, rho_g):
 
 
 def fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
-    """Force F [N] on a paraboloid in JKR contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+    """Force F [N] on a paraboloid in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_force_from_radius at Delta
     gamma = rho_g^2.
@@ -4709,7 +4902,7 @@ def fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
 
 
 def fit_jkr_force_dE(E_star, R, a, rho_g):
-    """Derivative dF/dE* [m^2] of the JKR fit model at a fixed position.
+    """Derivative dF/dE* [m^2] of the adhesive fit model of a paraboloid at a fixed position.
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
     = z_p - z_0 of jkr_force_from_radius in E*.
@@ -4738,7 +4931,7 @@ def fit_jkr_force_dE(E_star, R, a, rho_g):
 
 
 def fit_jkr_force_ddgamma(E_star, R, a, rho_g):
-    """Derivative dF/dDelta gamma [m] of the JKR fit model at a fixed position (-pi R at Delta gamma = 0).
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of a paraboloid at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
     = z_p - z_0 of jkr_force_from_radius in Delta gamma.
@@ -4767,7 +4960,7 @@ def fit_jkr_force_ddgamma(E_star, R, a, rho_g):
 
 
 def fit_jkr_force_dz0(E_star, R, a, rho_g):
-    """Derivative dF/dz_0 [N/m] of the JKR fit model at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of a paraboloid at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
     = z_p - z_0 of jkr_force_from_radius in z_0.
@@ -13239,6 +13432,36 @@ def _math_ellipse_stress_w1_a(a, b_e, x, y):
 def _math_ellipse_stress_w1_b(a, b_e, x, y):
     """``ellipse_stress_w1_b`` for Python floats (the math module); raises where it does."""
     return ((-1/2*(a*a) + (1/2)*(b_e*b_e) + (1/2)*(x*x) + (1/2)*(y*y) + (1/2)*math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y))))) if (-(a*a) + (b_e*b_e) + (x*x) + (y*y) >= 0) else (2*(y*y)*(a - b_e)*(a + b_e)/((a*a) - (b_e*b_e) - (x*x) - (y*y) + math.sqrt(4*(x*x)*(y*y) + (((a*a) - (b_e*b_e) - (x*x) + (y*y))*((a*a) - (b_e*b_e) - (x*x) + (y*y)))))))
+
+
+def _math_fit_adhesive_cone_depth(E_star, theta, a, rho_g):
+    """``fit_adhesive_cone_depth`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pi*a*math.tan(theta) - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*rho_g/math.sqrt(E_star)
+
+
+def _math_fit_adhesive_cone_depth_da(E_star, theta, a, rho_g):
+    """``fit_adhesive_cone_depth_da`` for Python floats (the math module); raises where it does."""
+    return (1/2)*math.pi*math.tan(theta) - 1/2*math.sqrt(2)*math.sqrt(math.pi)*rho_g/(math.sqrt(E_star)*math.sqrt(a))
+
+
+def _math_fit_adhesive_cone_force(E_star, theta, a, rho_g, z_p, F_0, s_0):
+    """``fit_adhesive_cone_force`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*rho_g + (1/2)*math.pi*E_star*(a*a)*math.tan(theta) + F_0 + s_0*z_p
+
+
+def _math_fit_adhesive_cone_force_dE(E_star, theta, a, rho_g):
+    """``fit_adhesive_cone_force_dE`` for Python floats (the math module); raises where it does."""
+    return (1/2)*((math.pi*math.pi)*math.pow(E_star, 5/2)*math.pow(a, 5/2)*(math.tan(theta)*math.tan(theta)) + 16*math.pi*math.pow(E_star, 3/2)*math.pow(a, 3/2)*(rho_g*rho_g) - 5*math.sqrt(2)*math.pow(math.pi, 3/2)*(E_star*E_star)*(a*a)*rho_g*math.tan(theta))/(math.pi*math.pow(E_star, 5/2)*math.sqrt(a)*math.tan(theta) - math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*rho_g)
+
+
+def _math_fit_adhesive_cone_force_ddgamma(E_star, theta, a, rho_g):
+    """``fit_adhesive_cone_force_ddgamma`` for Python floats (the math module); raises where it does."""
+    return 4*math.pi*E_star*math.pow(a, 3/2)/(math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*rho_g - math.pi*E_star*math.sqrt(a)*math.tan(theta))
+
+
+def _math_fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g):
+    """``fit_adhesive_cone_force_dz0`` for Python floats (the math module); raises where it does."""
+    return 2*(-math.pi*math.pow(E_star, 3/2)*math.pow(a, 3/2)*math.tan(theta) + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*a*rho_g)/(math.pi*math.sqrt(E_star)*math.sqrt(a)*math.tan(theta) - math.sqrt(2)*math.sqrt(math.pi)*rho_g)
 
 
 def _math_fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):

@@ -138,6 +138,12 @@ __all__ = [
     'ellipse_stress_w1',
     'ellipse_stress_w1_a',
     'ellipse_stress_w1_b',
+    'fit_adhesive_cone_depth',
+    'fit_adhesive_cone_depth_da',
+    'fit_adhesive_cone_force',
+    'fit_adhesive_cone_force_dE',
+    'fit_adhesive_cone_force_ddgamma',
+    'fit_adhesive_cone_force_dz0',
     'fit_cone_force',
     'fit_cone_force_dE',
     'fit_cone_force_dz0',
@@ -3413,6 +3419,150 @@ def ellipse_stress_w1_b(a, b_e, x, y):
     return ((-mpmath.mpf(1)/mpmath.mpf(2)*a**2 + (mpmath.mpf(1)/mpmath.mpf(2))*b_e**2 + (mpmath.mpf(1)/mpmath.mpf(2))*x**2 + (mpmath.mpf(1)/mpmath.mpf(2))*y**2 + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)) if (-a**2 + b_e**2 + x**2 + y**2 >= 0) else (2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + mpmath.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))))
 
 
+def fit_adhesive_cone_depth(E_star, theta, a, rho_g):
+    """Indentation depth d [m] of a cone in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: adhesion_cone_depth at
+    Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*a*mpmath.tan(theta) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*rho_g/mpmath.sqrt(E_star)
+
+
+def fit_adhesive_cone_depth_da(E_star, theta, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of a cone: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: adhesion_cone_depth
+    differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*mpmath.tan(theta) - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g/(mpmath.sqrt(E_star)*mpmath.sqrt(a))
+
+
+def fit_adhesive_cone_force(E_star, theta, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on a cone in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from:
+    adhesion_cone_force_from_radius at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.pi*E_star*a**2*mpmath.tan(theta) + F_0 + s_0*z_p
+
+
+def fit_adhesive_cone_force_dE(E_star, theta, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of a cone at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_cone_force_from_radius in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*(mpmath.pi**2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(mpmath.mpf(5)/mpmath.mpf(2))*mpmath.tan(theta)**2 + 16*mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g**2 - 5*mpmath.sqrt(2)*mpmath.pi**(mpmath.mpf(3)/mpmath.mpf(2))*E_star**2*a**2*rho_g*mpmath.tan(theta))/(mpmath.pi*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*mpmath.sqrt(a)*mpmath.tan(theta) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*rho_g)
+
+
+def fit_adhesive_cone_force_ddgamma(E_star, theta, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of a cone at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_cone_force_from_radius in Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 4*mpmath.pi*E_star*a**(mpmath.mpf(3)/mpmath.mpf(2))/(mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*rho_g - mpmath.pi*E_star*mpmath.sqrt(a)*mpmath.tan(theta))
+
+
+def fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of a cone at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive cone, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_cone_force_from_radius in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_cone.py::test_adhesive_cone_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(-mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.tan(theta) + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a*rho_g)/(mpmath.pi*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.tan(theta) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g)
+
+
 def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
     """Force F [N] on a rigid cone at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
 
@@ -3554,7 +3704,7 @@ def fit_hertz_force_dz0(E_star, R, z_p, z_0):
 
 
 def fit_jkr_depth(E_star, R, a, rho_g):
-    """Indentation depth d [m] of a paraboloid in JKR contact of radius a, Delta gamma = rho_g^2.
+    """Indentation depth d [m] of a paraboloid in adhesive contact of radius a, Delta gamma = rho_g^2.
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth at Delta gamma =
     rho_g^2.
@@ -3577,7 +3727,7 @@ def fit_jkr_depth(E_star, R, a, rho_g):
 
 
 def fit_jkr_depth_da(E_star, R, a, rho_g):
-    """Derivative dd/da [1] of the JKR depth: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+    """Derivative dd/da [1] of the adhesive depth of a paraboloid: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_depth differentiated in a.
 
@@ -3599,7 +3749,7 @@ def fit_jkr_depth_da(E_star, R, a, rho_g):
 
 
 def fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
-    """Force F [N] on a paraboloid in JKR contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+    """Force F [N] on a paraboloid in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: jkr_force_from_radius at Delta
     gamma = rho_g^2.
@@ -3628,7 +3778,7 @@ def fit_jkr_force(E_star, R, a, rho_g, z_p, F_0, s_0):
 
 
 def fit_jkr_force_dE(E_star, R, a, rho_g):
-    """Derivative dF/dE* [m^2] of the JKR fit model at a fixed position.
+    """Derivative dF/dE* [m^2] of the adhesive fit model of a paraboloid at a fixed position.
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
     = z_p - z_0 of jkr_force_from_radius in E*.
@@ -3651,7 +3801,7 @@ def fit_jkr_force_dE(E_star, R, a, rho_g):
 
 
 def fit_jkr_force_ddgamma(E_star, R, a, rho_g):
-    """Derivative dF/dDelta gamma [m] of the JKR fit model at a fixed position (-pi R at Delta gamma = 0).
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of a paraboloid at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
     = z_p - z_0 of jkr_force_from_radius in Delta gamma.
@@ -3674,7 +3824,7 @@ def fit_jkr_force_ddgamma(E_star, R, a, rho_g):
 
 
 def fit_jkr_force_dz0(E_star, R, a, rho_g):
-    """Derivative dF/dz_0 [N/m] of the JKR fit model at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of a paraboloid at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
 
     Chapter: (5.55), (5.57), JKR, fit model. Derived from: implicit differentiation at d(a)
     = z_p - z_0 of jkr_force_from_radius in z_0.

@@ -13,7 +13,7 @@ where d <= 0); F is linear in F_0 and s_0.
 
 Method: the model is linear in (E*, F_0, s_0) at a fixed z_0, so a scan of trial contact points
 over the curve, each solved by linear least squares, gives a start that needs no guess from the
-user; :func:`scipy.optimize.least_squares` (Levenberg-Marquardt, MINPACK) then refines all four
+user; :func:`scipy.optimize.leastsq` (Levenberg-Marquardt, MINPACK) then refines all four
 parameters with the generated Jacobian. The standard errors are the square roots of the diagonal
 of (J^T J)^-1 s^2 at the solution, s^2 = sum(r^2)/(N - 4) the residual variance (of the weighted
 residuals when ``sigma`` is given): the linearised covariance, which is what the coverage test
@@ -33,7 +33,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares
+from scipy.optimize import leastsq
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, between, poisson, positive
@@ -52,9 +52,9 @@ MIN_POINTS = 6
 #: fewest points in contact (d > 0) for the tip's two parameters (E*, z_0) to be determined
 MIN_CONTACT_POINTS = 3
 #: trial contact points of the start scan, spread evenly over the curve
-N_SCAN = 64
+N_SCAN = 32
 #: points of the curve the start scans use at most (evenly spread, the deepest ones kept)
-SCAN_POINTS = 256
+SCAN_POINTS = 128
 #: trial contact points of the second scan, between the best first one's neighbours
 N_REFINE = 16
 #: a contact is detected when the tip's force at the deepest point exceeds this many standard
@@ -65,6 +65,12 @@ CONTACT_SIGNIFICANCE = 5.0
 MODULUS_SIGNIFICANCE = 3.0
 #: most Newton steps for the exact sphere's lam (a bisection step each at worst; 5-7 suffice)
 LAM_MAX_STEPS = 80
+#: Levenberg-Marquardt stops when a step would lower sum(r^2) by less than this fraction of it:
+#: the step left is then below sqrt(FTOL N) standard errors of the parameters (a step of k
+#: standard errors lowers sum(r^2) by k^2 s^2, and sum(r^2) = (N - 4) s^2), 4.5e-4 of them for
+#: N = 2000 points; a noise-free curve, whose sum(r^2) falls to rounding, still converges to
+#: the last digits (xtol)
+FTOL = 1e-10
 #: sigma(z_0) above this fraction of the deepest indentation: the contact point is poorly
 #: determined (the modulus then inherits its uncertainty through their correlation)
 Z0_POOR = 0.1
@@ -95,9 +101,10 @@ class _Tip(ABC):
         tip's force per unit E*, since F = E* dF/dE* + F_0 + s_0 z_p (asserted in
         derive/fit.py)."""
 
-    def _unit(self, z, z0):
+    def _unit(self, z, z0, state=None):
         """(dF/dE*, dF/dz_0 at E* = 1) at one contact point; dF/dz_0 is proportional to E*
-        (asserted in derive/fit.py), so the fit evaluates the tip once per contact point."""
+        (asserted in derive/fit.py), so the fit evaluates the tip once per contact point.
+        ``state``: a dict one fit owns across its evaluations (the exact sphere's warm start)."""
         return self.derivatives(1.0, z, z0)
 
     #: whether :meth:`_unit` is a table (a sampled tip): the fit then ends on :meth:`_exact`
@@ -120,7 +127,7 @@ class _Tip(ABC):
 _EPS = float(np.finfo(float).eps)
 
 
-def lam_from_depth(d, R):
+def lam_from_depth(d, R, start=None):
     """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
     (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
 
@@ -128,6 +135,9 @@ def lam_from_depth(d, R):
     bound max(sqrt(d/R), d/R) of numeric/sphere.py's bisection and inside its bracket: a step
     that leaves the bracket is replaced by a bisection step, so the iteration cannot diverge,
     and it converges quadratically (5-7 steps to one ulp, against ~53 bisection steps).
+    ``start`` (d's shape, optional): first iterates, e.g. the roots at nearby depths (a fit's
+    previous contact point); clipped into the bracket, so any values are safe, and close ones
+    leave 2-3 steps.
     """
     d = np.asarray(d, float)
     touch = d > 0
@@ -136,7 +146,7 @@ def lam_from_depth(d, R):
     delta = dd / R
     lo = np.maximum(np.sqrt(delta), delta)
     hi = np.maximum((delta + np.sqrt(delta * (delta + 4))) / 2, lo)
-    lam = lo
+    lam = lo if start is None else np.clip(np.asarray(start, float)[touch], lo, hi)
     for _ in range(LAM_MAX_STEPS):
         f = gen.sphere_lam_depth(R, lam) - dd
         lo = np.where(f < 0, lam, lo)
@@ -187,8 +197,8 @@ class ExactSphere(_Tip):
     def __post_init__(self):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
-    def _lam(self, z, z0):
-        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R)
+    def _lam(self, z, z0, start=None):
+        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start)
 
     def force(self, E_star, z, z0, F0, s0):
         return gen.fit_sphere_force(E_star, self.R, self._lam(z, z0), z, F0, s0)
@@ -207,6 +217,19 @@ class ExactSphere(_Tip):
 
     def basis(self, z, z0):
         return self._dE(self._lam(z, z0))
+
+    def _unit(self, z, z0, state=None):
+        """As :meth:`_Tip._unit`; ``state`` (a dict one fit owns) keeps the last lam of the
+        points z, a sorted curve's tail, to start Newton's iteration at the next z_0 from."""
+        start = None
+        if state is not None and "lam" in state:
+            prev = state["lam"]  # the previous tail's lam: align the two tails at their end
+            start = (prev[prev.size - z.size:] if prev.size >= z.size
+                     else np.r_[np.zeros(z.size - prev.size), prev])
+        lam = self._lam(z, z0, start)
+        if state is not None:
+            state["lam"] = lam
+        return self._dE(lam), gen.fit_sphere_force_dz0(1.0, self.R, lam)
 
     def ratios(self, d_max):
         lam = lam_from_depth(np.float64(d_max), self.R)
@@ -509,7 +532,7 @@ class SampledTip(_Tip):
     def basis(self, z, z0):
         return self._tabled(np.asarray(z, float) - z0)[0]
 
-    def _unit(self, z, z0):  # Levenberg-Marquardt's model: the table
+    def _unit(self, z, z0, state=None):  # Levenberg-Marquardt's model: the table
         phi, k = self._tabled(np.asarray(z, float) - z0)
         return phi, -k
 
@@ -770,10 +793,15 @@ def _polish(tip, z, F, w, p):
 
 
 def _covariance(J):
-    """(J^T J)^-1 by the SVD of the column-scaled J, and whether J is of full rank."""
+    """(J^T J)^-1 by the SVD of the column-scaled J, and whether J is of full rank.
+
+    The SVD of the small triangular factor R of J = QR (its singular values are J's): the
+    same (J^T J)^-1 = V S^-2 V^T as the SVD of J, at a fraction of its cost for a tall J.
+    """
     norms = np.linalg.norm(J, axis=0)
     norms = np.where(norms > 0, norms, 1.0)
-    _, s, vt = np.linalg.svd(J / norms, full_matrices=False)
+    r = np.linalg.qr(J / norms, mode="r")
+    _, s, vt = np.linalg.svd(r)
     full = s[-1] > s[0] * 1e-12
     s_inv = np.where(s > s[0] * 1e-12, 1 / s, 0.0)
     cov = (vt.T * s_inv**2) @ vt
@@ -847,29 +875,43 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if p0 is None:
         _no_contact("no contact point makes the force rise with a positive modulus")
 
-    cache = {}
+    cache, state = {}, {}
+    zeros = np.zeros(z.size)
 
     def unit(z0):  # the tip's shape and its z_0 slope, once per contact point
         if z0 not in cache:
             cache.clear()
-            cache[z0] = tip._unit(z, z0)
+            # z is sorted: the points in contact (z > z_0) are its tail, and the tip is
+            # evaluated there only (0 before contact: d = max(0, z - z_0))
+            k = int(np.searchsorted(z, z0, side="right"))
+            g, h = zeros.copy(), zeros.copy()
+            if k < z.size:
+                g[k:], h[k:] = tip._unit(z[k:], z0, state)
+            cache[z0] = (g, h)
         return cache[z0]
 
     def residuals(p):
         g, _ = unit(p[1])
         return (p[0] * g + p[2] + p[3] * z - F) / w  # F = E* dF/dE* + F_0 + s_0 z_p
 
-    def jacobian(p):
+    ones_w, z_w = 1 / w, z / w
+
+    def jacobian_rows(p):  # the Jacobian's transpose (4 x N), MINPACK's col_deriv layout
         g, h = unit(p[1])
-        return np.column_stack([g, p[0] * h, np.ones_like(z), z]) / w[:, None]
+        return np.stack([g / w, p[0] * h / w, ones_w, z_w])
+
+    def jacobian(p):
+        return jacobian_rows(p).T
 
     scale = np.array([abs(p0[0]), np.ptp(z), max(np.ptp(F), np.abs(F).max()),
                       max(np.ptp(F), np.abs(F).max()) / np.ptp(z)])
     with np.errstate(invalid="ignore"):  # numpy.select evaluates both branches of a Piecewise
-        sol = least_squares(residuals, p0, jac=jacobian, method="lm", x_scale=scale,
-                            xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
-    p = sol.x
-    res = sol.fun
+        # MINPACK's lmder through scipy's leastsq: the same Levenberg-Marquardt as
+        # least_squares(method="lm"), without its per-call wrappers (~1 ms of a 5 ms fit)
+        p, _, info, _, _ = leastsq(residuals, p0, Dfun=jacobian_rows, col_deriv=True,
+                                   full_output=True, xtol=1e-15, ftol=FTOL, gtol=1e-15,
+                                   maxfev=2000, diag=1 / scale)
+    res = residuals(p)
     model_error = None
     if tip.tabulated:  # Levenberg-Marquardt ran on the tip's table: finish on the exact MDR
         p, res, model_error, exact = _polish(tip, z, F, w, p)

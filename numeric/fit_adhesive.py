@@ -1,4 +1,5 @@
-"""Fit an adhesive (JKR) retract curve F(z_p) for E*, the contact point and the work of adhesion.
+"""Fit an adhesive retract curve F(z_p) for E*, the contact point and the work of adhesion: the
+paraboloid (JKR) or the cone.
 
 The model (generated from :func:`hertzmdr.derive.fit.jkr_model`, itself from the MDR's adhesive
 paraboloid in :mod:`hertzmdr.derive.adhesion`) is parametric in the contact radius a:
@@ -31,6 +32,12 @@ after it with the JKR model. A point of the contact part whose depth at the fitt
 lies below d_dc (past the jump-off, where no equilibrium exists) is excluded with a warning and
 the fit repeated. Without a jump in the data (no visible adhesion, or the retract recorded
 only in contact) a point is in contact where d >= d_dc and on the baseline elsewhere.
+
+The cone (theta [rad] between its surface and the plane) is the same fit on the cone's
+adhesive relations (:func:`hertzmdr.derive.fit.adhesive_cone_model`, from the MDR's adhesive
+cone: d(a) = (pi/2) a tan(theta) - Delta l, ``fit_adhesive_cone_*``): its branch stable under
+depth control is again a > a_dc (``adhesion_cone_pull_off_radius_dc``), and every step below
+runs on a :class:`_Family` of the tip's generated relations.
 
 Method: at a fixed kappa = rho_g/sqrt(E*) the model is E* times a shape of (z - z_0) (asserted
 in derive/fit.py), so a scan over (z_0, kappa) solves (E*, F_0, s_0) by linear least squares
@@ -65,6 +72,13 @@ MIN_POINTS = 7
 A_MAX_STEPS = 80
 #: trial contact points and trial kappa of the start scan, then of its refinement
 N_SCAN_Z0, N_SCAN_KAPPA, N_REFINE = 32, 12, 8
+#: refinements of the start scan, each between the best trial's neighbours of the last grid
+REFINE_ROUNDS = 1
+#: local minima of the coarse (z_0, kappa) grid refined, the lowest first (the cone's steep
+#: jump-off makes the valley of the truth narrow in (z_0, kappa): its nearest grid point can
+#: lie above another basin's minimum, and refining the lowest point only left starts that
+#: Levenberg-Marquardt could not recover from on noise-free curves of 100-300 points)
+START_CANDIDATES = 3
 #: points of the curve the start scans use at most (evenly spread, the deepest ones kept)
 SCAN_POINTS = 128
 #: the trial kappa give jump-off depths |d_dc| between these fractions of the curve's span
@@ -75,7 +89,7 @@ JUMP_SIGNIFICANCE = 8.0
 #: ... and this many times the largest of the 2 steps on either side of it (the smooth curve's
 #: own steps, steepest next to the vertical tangent at d_dc, stay below)
 JUMP_NEIGHBOURS = 4.0
-#: a fitted Delta gamma below this fraction of its scale (pi R Delta gamma = the force range)
+#: a fitted Delta gamma below this fraction of its scale (its pull-off force = the force range)
 #: is compared with the fit on the bound Delta gamma = 0
 NEAR_BOUND = 1e-3
 #: refits after excluding points past the jump-off
@@ -84,37 +98,110 @@ MAX_EXCLUDE_ROUNDS = 4
 _EPS = float(np.finfo(float).eps)
 
 
-def _jump_off_radius(E_star, R, rho):
+@dataclass(frozen=True)
+class _Family:
+    """One adhesive tip's generated relations (derive/fit.py), all at the tip's geometry
+    ``shape`` (R [m] of the paraboloid, theta [rad] of the cone): the depth d(E*, a, rho), its
+    slope dd/da, the force F(E*, a, rho) and its three derivatives at a fixed position, the
+    depth-controlled pull-off radius a_dc(E*, Delta gamma) and force F_dc(E*, Delta gamma), and
+    the contact radius without adhesion a(d) (a start for Newton's iteration)."""
+
+    name: str
+    shape: float
+    depth: object
+    depth_da: object
+    force: object
+    dE: object
+    dz0: object
+    ddgamma: object
+    a_dc: object
+    F_dc: object
+    a_plain: object
+    #: a length of the geometry [m]: the floor of a's bracket (R; 1 m for the cone, scale-free)
+    length: float
+
+    def ratios(self, a_max: float) -> dict[str, float]:
+        """The chapter's limit ratios at the largest contact radius a_max [m]."""
+        if self.name == "paraboloid":
+            return {"a/R": a_max / self.shape}
+        return {"tan(theta)": float(np.tan(self.shape))}
+
+
+def _family(tip) -> _Family:
+    """The adhesive relations of a Paraboloid (JKR) or a Cone tip of numeric/fit.py."""
+    if isinstance(tip, _fit.Paraboloid):
+        R = tip.R
+        return _Family(
+            "paraboloid", R,
+            lambda E, a, rho: gen.fit_jkr_depth(E, R, a, rho),
+            lambda E, a, rho: gen.fit_jkr_depth_da(E, R, a, rho),
+            lambda E, a, rho: gen.fit_jkr_force(E, R, a, rho, 0.0, 0.0, 0.0),
+            lambda E, a, rho: gen.fit_jkr_force_dE(E, R, a, rho),
+            lambda E, a, rho: gen.fit_jkr_force_dz0(E, R, a, rho),
+            lambda E, a, rho: gen.fit_jkr_force_ddgamma(E, R, a, rho),
+            lambda E, dg: gen.jkr_pull_off_radius_dc(E, dg, R),
+            lambda E, dg: gen.jkr_pull_off_force_dc(E, dg, R),
+            lambda d: gen.hertz_contact_radius(R, d), R)
+    th = tip.theta
+    return _Family(
+        "cone", th,
+        lambda E, a, rho: gen.fit_adhesive_cone_depth(E, th, a, rho),
+        lambda E, a, rho: gen.fit_adhesive_cone_depth_da(E, th, a, rho),
+        lambda E, a, rho: gen.fit_adhesive_cone_force(E, th, a, rho, 0.0, 0.0, 0.0),
+        lambda E, a, rho: gen.fit_adhesive_cone_force_dE(E, th, a, rho),
+        lambda E, a, rho: gen.fit_adhesive_cone_force_dz0(E, th, a, rho),
+        lambda E, a, rho: gen.fit_adhesive_cone_force_ddgamma(E, th, a, rho),
+        lambda E, dg: gen.adhesion_cone_pull_off_radius_dc(E, dg, th),
+        lambda E, dg: gen.adhesion_cone_pull_off_force_dc(E, dg, th),
+        lambda d: gen.cone_contact_radius(d, th), 1.0)
+
+
+def _jump_off_radius(E_star, fam, rho):
     """(a_dc [m], d_dc [m]): the depth-controlled pull-off; (0, 0) for rho <= 0 (no adhesion)."""
     if not rho > 0:
         return 0.0, 0.0
-    a_c = float(gen.jkr_pull_off_radius_dc(E_star, rho * rho, R))
-    return a_c, float(gen.fit_jkr_depth(E_star, R, a_c, rho))
+    a_c = float(fam.a_dc(E_star, rho * rho))
+    return a_c, float(fam.depth(E_star, a_c, rho))
+
+
+def _dgamma_scale(fam, E_star, force):
+    """Delta gamma [J/m^2] whose depth-controlled pull-off force is ``force`` [N] at E* [Pa]:
+    interpolated in log-log on a grid of the generated F_dc (a power of Delta gamma)."""
+    grid = np.logspace(-15, 8, 120)
+    Fc = np.abs(fam.F_dc(E_star, grid))
+    return float(np.exp(np.interp(np.log(force), np.log(Fc), np.log(grid))))
 
 
 def contact_radius(d, R, E_star, rho):
-    """Contact radius a [m] on the branch stable under depth control (dd/da > 0) at the depths
-    d [m] (vectorized); NaN where there is no such state (d < d_dc, past the jump-off; d <= 0
-    without adhesion). R [m], E* [Pa] > 0; rho = sqrt(Delta gamma) [(J/m^2)^(1/2)] >= 0.
+    """Contact radius a [m] of the JKR paraboloid of radius R [m] on the branch stable under
+    depth control (dd/da > 0) at the depths d [m] (vectorized); NaN where there is no such
+    state (d < d_dc, past the jump-off; d <= 0 without adhesion). E* [Pa] > 0;
+    rho = sqrt(Delta gamma) [(J/m^2)^(1/2)] >= 0. (:func:`_contact_radius` for any family.)"""
+    return _contact_radius(d, _family(_fit.Paraboloid(R=R)), E_star, rho)
 
-    Newton's method on phi(a) = sqrt(d(a) - d_dc) - sqrt(d - d_dc), d(a) = ``fit_jkr_depth``,
-    phi' = ``fit_jkr_depth_da``/(2 sqrt(d(a) - d_dc)): at the fold a_dc, d(a) - d_dc grows as
-    (a - a_dc)^2, so Newton on d(a) itself slows to one bit per step there, while phi is about
-    linear in a from the fold (sqrt(d''/2) (a - a_dc)) to deep contact (a/sqrt(R)): 4-6 steps
-    everywhere. The steps stay inside the bracket [a_dc, a_hi] (d(a_hi) >= d, found by
-    doubling), a step out of it is a bisection step, so the iteration cannot diverge. Near the
-    fold a is determined only to ~sqrt(eps) of a by the data (d is flat in a there), whatever
-    the method.
+
+def _contact_radius(d, fam, E_star, rho):
+    """Contact radius a [m] of the family ``fam`` on the branch stable under depth control
+    (dd/da > 0) at the depths d [m]; NaN where there is no such state.
+
+    Newton's method on phi(a) = sqrt(d(a) - d_dc) - sqrt(d - d_dc), d(a) = ``fit_jkr_depth``
+    (``fit_adhesive_cone_depth``), phi' = dd/da/(2 sqrt(d(a) - d_dc)): at the fold a_dc,
+    d(a) - d_dc grows as (a - a_dc)^2, so Newton on d(a) itself slows to one bit per step
+    there, while phi is about linear in a from the fold (sqrt(d''/2) (a - a_dc)) to deep
+    contact (a/sqrt(R) for the paraboloid; sqrt(a) for the cone, still 4-8 steps). The steps
+    stay inside the bracket [a_dc, a_hi] (d(a_hi) >= d, found by doubling), a step out of it is
+    a bisection step, so the iteration cannot diverge. Near the fold a is determined only to
+    ~sqrt(eps) of a by the data (d is flat in a there), whatever the method.
     """
     d = np.asarray(d, float)
-    a_c, d_c = _jump_off_radius(E_star, R, rho)
+    a_c, d_c = _jump_off_radius(E_star, fam, rho)
     out = np.full(d.shape, np.nan)
     on = d >= d_c if rho > 0 else d > 0
     dd = d[on]
-    hi = np.maximum(np.sqrt(R * np.maximum(dd, 0.0)), a_c)
-    hi = np.where(hi > 0, hi, np.maximum(a_c, R * _EPS))
+    hi = np.maximum(fam.a_plain(np.maximum(dd, 0.0)), a_c)
+    hi = np.where(hi > 0, hi, np.maximum(a_c, fam.length * _EPS))
     for _ in range(200):  # double until above the root: d(hi) >= d
-        low = gen.fit_jkr_depth(E_star, R, hi, rho) < dd
+        low = fam.depth(E_star, hi, rho) < dd
         if not low.any():
             break
         hi = np.where(low, 2 * hi, hi)
@@ -124,7 +211,7 @@ def contact_radius(d, R, E_star, rho):
     idx = np.arange(dd.size)  # the points still iterating
     for _ in range(A_MAX_STEPS):
         ai, lo_i, hi_i, t_i, d_i = a[idx], lo[idx], hi[idx], target[idx], dd[idx]
-        depth = gen.fit_jkr_depth(E_star, R, ai, rho)
+        depth = fam.depth(E_star, ai, rho)
         D = np.maximum(depth - d_c, 0.0)
         f = np.sqrt(D) - t_i
         # f at the rounding of d(a) - d_dc (4 ulp of each term): a is as good as the data
@@ -134,7 +221,7 @@ def contact_radius(d, R, E_star, rho):
         lo_i = np.where(f < 0, ai, lo_i)
         hi_i = np.where(f > 0, ai, hi_i)
         with np.errstate(divide="ignore", invalid="ignore"):
-            new = ai - f * 2 * np.sqrt(D) / gen.fit_jkr_depth_da(E_star, R, ai, rho)
+            new = ai - f * 2 * np.sqrt(D) / fam.depth_da(E_star, ai, rho)
         new = np.where(np.isfinite(new) & (new >= lo_i) & (new <= hi_i), new,
                        0.5 * (lo_i + hi_i))
         new = np.where(going, new, ai)
@@ -176,29 +263,29 @@ def _find_jump_off(z, F):
     return float(z[k + 1]), step
 
 
-def _tip_state(d, side, split, R, E_star, rho):
+def _tip_state(d, side, split, fam, E_star, rho):
     """(a [m]: NaN off contact, past: bool, the tip's force [N] without baseline) at the depths
     d [m] (any shape). ``side``: the points after the data's jump-off (all when ``split`` is
     False). Past the jump-off (side, d < d_dc, with a split) the force is clamped at F(a_dc),
     the value the iterations use before such points are excluded."""
     if not E_star > 0:  # a trial step of the optimizer to E* <= 0: no contact (no state)
         return np.full(np.shape(d), np.nan), np.zeros(np.shape(d), bool), np.zeros(np.shape(d))
-    a = np.where(side, contact_radius(d, R, E_star, rho), np.nan)
-    a_c, d_c = _jump_off_radius(E_star, R, rho)
+    a = np.where(side, _contact_radius(d, fam, E_star, rho), np.nan)
+    a_c, d_c = _jump_off_radius(E_star, fam, rho)
     past = side & (d < d_c) if split else np.zeros(np.shape(d), bool)
     force = np.zeros(np.shape(d))
     on = np.isfinite(a)
-    force[on] = gen.fit_jkr_force(E_star, R, a[on], rho, 0.0, 0.0, 0.0)
+    force[on] = fam.force(E_star, a[on], rho)
     if past.any():
-        force[past] = float(gen.fit_jkr_force(E_star, R, a_c, rho, 0.0, 0.0, 0.0))
+        force[past] = float(fam.force(E_star, a_c, rho))
     return a, past, force
 
 
 class _Model:
     """The JKR model of a layout at one (E*, z_0, rho): a, the tip's force, the derivatives."""
 
-    def __init__(self, R, z, layout):
-        self.R, self.z, self.layout = R, z, layout
+    def __init__(self, fam, z, layout):
+        self.fam, self.z, self.layout = fam, z, layout
         self.split = bool(np.isfinite(layout.z_split))
         self.side = z >= layout.z_split
         self._key, self._val = None, None
@@ -209,7 +296,7 @@ class _Model:
         if key != self._key:
             self._key = key
             rho = np.sqrt(max(dgamma, 0.0))
-            self._val = _tip_state(self.z - z0, self.side, self.split, self.R, E_star, rho)
+            self._val = _tip_state(self.z - z0, self.side, self.split, self.fam, E_star, rho)
         return self._val
 
     def tip_force(self, E_star, z0, dgamma):
@@ -225,9 +312,9 @@ class _Model:
         if on.any():
             ao = a[on]
             with np.errstate(divide="ignore", invalid="ignore"):  # dd/da = 0 exactly at a_dc
-                J[on, 0] = gen.fit_jkr_force_dE(E_star, self.R, ao, rho)
-                J[on, 1] = gen.fit_jkr_force_dz0(E_star, self.R, ao, rho)
-                J[on, 2] = gen.fit_jkr_force_ddgamma(E_star, self.R, ao, rho)
+                J[on, 0] = self.fam.dE(E_star, ao, rho)
+                J[on, 1] = self.fam.dz0(E_star, ao, rho)
+                J[on, 2] = self.fam.ddgamma(E_star, ao, rho)
         return np.where(np.isfinite(J), J, 0.0)
 
 
@@ -235,27 +322,27 @@ class _ScanTip:
     """Adapter for :func:`hertzmdr.numeric.fit._linear_scan`: the model's shape F/E* at one
     kappa = rho/sqrt(E*) (E* = 1) for all trial contact points at once."""
 
-    def __init__(self, R, layout, kappa):
-        self.R, self.layout, self.kappa = R, layout, kappa
+    def __init__(self, fam, layout, kappa):
+        self.fam, self.layout, self.kappa = fam, layout, kappa
 
     def basis(self, z, z0):
         d = z - z0
         side = np.broadcast_to(z >= self.layout.z_split, d.shape)
         split = bool(np.isfinite(self.layout.z_split))
-        return _tip_state(d, side, split, self.R, 1.0, self.kappa)[2]
+        return _tip_state(d, side, split, self.fam, 1.0, self.kappa)[2]
 
 
-def _kappas(R, span):
+def _kappas(fam, span):
     """Trial kappa [m^(1/2)]: 0 and N_SCAN_KAPPA values whose jump-off depths |d_dc| spread
     log-evenly over KAPPA_SPAN of the curve's span (d_dc from the generated relations)."""
     grid = np.logspace(-12, 4, 400)
-    depth = -gen.fit_jkr_depth(1.0, R, gen.jkr_pull_off_radius_dc(1.0, grid**2, R), grid)
+    depth = -fam.depth(1.0, fam.a_dc(1.0, grid**2), grid)
     lo, hi = KAPPA_SPAN[0] * span, KAPPA_SPAN[1] * span
     target = np.geomspace(lo, hi, N_SCAN_KAPPA)
     return np.r_[0.0, np.interp(np.log(target), np.log(depth), grid)]
 
 
-def _start(R, z, F, w, layout, z0_guess):
+def _start(fam, z, F, w, layout, z0_guess):
     """The best (E*, z_0, Delta gamma, F_0, s_0) of a scan over trial (z_0, kappa), each solved for
     (E*, F_0, s_0) by linear least squares; then a finer scan around the best."""
     zs, Fs, ws = z[layout.keep], F[layout.keep], w[layout.keep]
@@ -268,42 +355,70 @@ def _start(R, z, F, w, layout, z0_guess):
     z0s = np.linspace(lo, hi, N_SCAN_Z0)
     if z0_guess is not None:
         z0s = np.append(z0s, z0_guess)
-    kappas = _kappas(R, span)
-    best = None
+    kappas = _kappas(fam, span)
 
-    def scan(z0s, kappas):
-        nonlocal best
-        for kap in kappas:
-            params, rss = _fit._linear_scan(_ScanTip(R, layout, kap), zs, Fs, ws, z0s)
-            rss = np.where(params[:, 0] > 0, rss, np.inf)
+    def scan(z0s, kappas, best):
+        """The best (params, rss, kappa) of the grid and of ``best``; and the grid's rss."""
+        table = np.full((kappas.size, z0s.size), np.inf)
+        for j, kap in enumerate(kappas):
+            params, rss = _fit._linear_scan(_ScanTip(fam, layout, kap), zs, Fs, ws, z0s)
+            rss = np.where((params[:, 0] > 0) & np.isfinite(rss), rss, np.inf)
+            table[j] = rss
             k = int(np.argmin(rss))
             if np.isfinite(rss[k]) and (best is None or rss[k] < best[1]):
                 best = (params[k], rss[k], kap)
+        return best, table
 
-    scan(z0s, kappas)
+    best, table = scan(z0s, kappas, None)
     if best is None:
         return None
-    i = int(np.argmin(np.abs(kappas - best[2])))
-    k_lo, k_hi = kappas[max(i - 1, 0)], kappas[min(i + 1, kappas.size - 1)]
-    dz = (hi - lo) / (N_SCAN_Z0 - 1)
-    scan(np.linspace(best[0][1] - dz, best[0][1] + dz, N_REFINE),
-         np.linspace(k_lo, k_hi, N_REFINE))
+    # refine around each of the START_CANDIDATES lowest local minima of the coarse grid, each
+    # REFINE_ROUNDS times between the best trial's neighbours; the best of all is the start
+    padded = np.pad(table, 1, constant_values=np.inf)
+    local = np.isfinite(table)
+    for dj in (-1, 0, 1):
+        for dk in (-1, 0, 1):
+            if dj or dk:
+                local &= table <= padded[1 + dj:1 + dj + table.shape[0],
+                                         1 + dk:1 + dk + table.shape[1]]
+    cand = np.argwhere(local)
+    cand = cand[np.argsort(table[local])][:START_CANDIDATES]
+    overall = best
+    for j, k in cand:
+        best = (None, table[j, k], kappas[j])
+        zc, kc = z0s[k], kappas
+        dz = (hi - lo) / (N_SCAN_Z0 - 1)
+        for _ in range(REFINE_ROUNDS):  # each round: a grid between the best one's neighbours
+            i = int(np.argmin(np.abs(kc - best[2])))
+            k_lo, k_hi = kc[max(i - 1, 0)], kc[min(i + 1, kc.size - 1)]
+            kc = np.linspace(k_lo, k_hi, N_REFINE)
+            best, _ = scan(np.linspace(zc - dz, zc + dz, N_REFINE), kc, best)
+            if best[0] is None:
+                break
+            zc = best[0][1]
+            dz = 2 * dz / (N_REFINE - 1)
+        if best[0] is not None and best[1] < overall[1]:
+            overall = best
+    best = overall
     E, z0, F0, s0 = best[0]
     return np.array([E, z0, best[2] ** 2 * E, F0, s0])  # Delta gamma = kappa^2 E*
 
 
 @dataclass(frozen=True)
 class JKRTip:
-    """The tip of an adhesive fit: the paraboloid of radius R [m] in JKR contact."""
+    """The tip of an adhesive fit: the paraboloid of radius R [m] in JKR contact, or the cone
+    of angle theta [rad] in adhesive contact (``paraboloid`` is then the Cone)."""
 
-    paraboloid: _fit.Paraboloid
+    paraboloid: _fit.Paraboloid | _fit.Cone
 
     @property
     def R(self) -> float:
-        """Radius of curvature [m]."""
+        """Radius of curvature [m] (the paraboloid's)."""
         return self.paraboloid.R
 
     def describe(self) -> str:
+        if isinstance(self.paraboloid, _fit.Cone):
+            return f"cone, adhesive (MDR), theta = {self.paraboloid.theta:.6g} rad"
         return f"paraboloid, adhesive (JKR), R = {self.R:.6g} m"
 
 
@@ -363,16 +478,17 @@ class AdhesiveFitResult(_fit._Fitted):
 
 
 def _check_tip(tip):
-    if not isinstance(tip, _fit.Paraboloid):
+    if not isinstance(tip, _fit.Paraboloid | _fit.Cone):
         raise ValueError(f"tip = {tip!r} has no adhesive fit model; valid: a Paraboloid "
-                         "(hertzmdr.numeric.fit.Paraboloid, the scene's `sphere` body): the JKR "
-                         "fit is written for the paraboloid only (docs/fitting.md)")
+                         "(hertzmdr.numeric.fit.Paraboloid, the scene's `sphere` body) or a "
+                         "Cone (the scene's `cone` body): the adhesive fit is written for these "
+                         "two only (docs/fitting.md)")
 
 
-def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=None, z0=None,
-              sigma=None) -> AdhesiveFitResult:
-    """Fit an adhesive retract curve F(z) with the JKR paraboloid, a contact point, the work of
-    adhesion and a linear baseline.
+def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone, *, nu=None, tip_modulus=None,
+              tip_nu=None, z0=None, sigma=None) -> AdhesiveFitResult:
+    """Fit an adhesive retract curve F(z) with the JKR paraboloid or the adhesive cone, a
+    contact point, the work of adhesion and a linear baseline.
 
     Parameters
     ----------
@@ -380,8 +496,8 @@ def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=N
         Positions of the tip's base [m] (increasing into the sample, any order) and the force on
         the tip [N] (positive in compression, negative while adhesion pulls), as
         :func:`hertzmdr.numeric.fit.fit_curve`.
-    tip : hertzmdr.numeric.fit.Paraboloid
-        The tip (radius of curvature R [m]).
+    tip : hertzmdr.numeric.fit.Paraboloid or hertzmdr.numeric.fit.Cone
+        The tip (radius of curvature R [m], or the cone's angle theta [rad]).
     nu, tip_modulus, tip_nu, z0, sigma
         As :func:`hertzmdr.numeric.fit.fit_curve` (z0 [m]: a guess of the contact point d = 0,
         added to the start scan; sigma [N]: the noise's standard deviation).
@@ -398,7 +514,7 @@ def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=N
         For invalid input, naming it, its value and the valid range.
     """
     _check_tip(tip)
-    R = tip.R
+    fam = _family(tip)
     z, F, w = _fit._curve(z, F, sigma)
     if z.size < MIN_POINTS:
         raise ValueError(f"the curve has {z.size} points; at least {MIN_POINTS} are needed "
@@ -408,15 +524,16 @@ def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=N
     jump = _find_jump_off(z, F)
     z_split = -np.inf if jump is None else jump[0]
     layout = _Layout(z_split, np.ones(z.size, bool))
-    p0 = _start(R, z, F, w, layout, z0)
+    p0 = _start(fam, z, F, w, layout, z0)
     if p0 is None:
         _fit._no_contact("no contact point makes the force rise with a positive modulus")
 
     excluded = 0
     for _ in range(MAX_EXCLUDE_ROUNDS):
-        sol, model = _lm(R, z, F, w, layout, p0)
-        if sol.x[2] < NEAR_BOUND * max(abs(p0[2]), float(np.ptp(F)) / (np.pi * R)):
-            sol0, model0 = _lm(R, z, F, w, layout, p0, no_adhesion=True)
+        sol, model = _lm(fam, z, F, w, layout, p0)
+        if sol.x[2] < NEAR_BOUND * max(abs(p0[2]), _dgamma_scale(fam, abs(p0[0]),
+                                                                  float(np.ptp(F)))):
+            sol0, model0 = _lm(fam, z, F, w, layout, p0, no_adhesion=True)
             if sol0.cost <= sol.cost:
                 sol, model = sol0, model0
         p = sol.x
@@ -475,14 +592,14 @@ def fit_curve(z, F, tip: _fit.Paraboloid, *, nu=None, tip_modulus=None, tip_nu=N
         warn.append(f"the work of adhesion is poorly determined: Delta gamma = {dgamma:.3g} "
                     f"± {err[2]:.3g} J/m^2")
     warn += [w_["message"] for w_ in _fit.check_assumptions(
-        {"a/R": float(np.nanmax(a[contact])) / R})]
+        fam.ratios(float(np.nanmax(a[contact]))))]
     if not full:
         warn.append("the Jacobian is singular: the parameters are not all determined by the "
                     "curve (their errors are not meaningful)")
     jump_off = None
     if rho > 0:
-        a_c, d_c = _jump_off_radius(E_s, R, rho)
-        jump_off = (d_c, float(gen.fit_jkr_force(E_s, R, a_c, rho, 0.0, 0.0, 0.0)), a_c)
+        a_c, d_c = _jump_off_radius(E_s, fam, rho)
+        jump_off = (d_c, float(fam.force(E_s, a_c, rho)), a_c)
         if jump is not None:  # the data's jump against the model's: a soft cantilever jumps
             first = float(d[z >= z_split][0])  # earlier, never later
             if first < d_c - 1e-9 * abs(d_c):
@@ -503,13 +620,13 @@ def _jac(model, z, w, keep, p):
     return J[keep]
 
 
-def _lm(R, z, F, w, layout, p0, *, no_adhesion=False):
+def _lm(fam, z, F, w, layout, p0, *, no_adhesion=False):
     """Least squares on the kept points, Delta gamma >= 0, with the generated Jacobian
     (Levenberg-Marquardt; 'trf' with the bound when it ends below 0); or, with
     ``no_adhesion``, Levenberg-Marquardt at Delta gamma = 0 fixed (the Hertz model: 'trf'
     approaches a bound only geometrically, so a curve without adhesion is refitted on the bound
     itself)."""
-    model = _Model(R, z, layout)
+    model = _Model(fam, z, layout)
     keep = layout.keep
     cols = [0, 1, 3, 4] if no_adhesion else [0, 1, 2, 3, 4]
 
@@ -527,8 +644,9 @@ def _lm(R, z, F, w, layout, p0, *, no_adhesion=False):
 
     Fs = max(float(np.ptp(F)), float(np.abs(F).max()))
     span = float(np.ptp(z))
-    # Delta gamma's scale: the value whose pull-off force pi R Delta gamma is the force range
-    scale = np.array([abs(p0[0]), span, max(abs(p0[2]), Fs / (np.pi * R)), Fs, Fs / span])
+    # Delta gamma's scale: the value whose pull-off force is the force range
+    scale = np.array([abs(p0[0]), span, max(abs(p0[2]), _dgamma_scale(fam, abs(p0[0]), Fs)),
+                      Fs, Fs / span])
     tol = {"xtol": 1e-15, "ftol": 1e-15, "gtol": 1e-15, "max_nfev": 2000}
     if no_adhesion:
         sol = least_squares(residuals, p0[cols], jac=jacobian, method="lm",

@@ -41,11 +41,11 @@ TIP_SHAPES = {
 
 def _sampled_tip(p):
     """A measured tip of a scene's ``profile`` body (samples r, f [m], inline or from a file;
-    the spline degree the scene's numerical MDR uses)."""
+    the spline degree the scene's numerical MDR uses; its ``breakpoints``, the kinks)."""
     from hertzmdr.numeric.scene.shapes import SHAPES
 
     r, f, k = SHAPES["profile"].samples(p)
-    return fit.SampledTip.from_samples(r, f, k=k)
+    return fit.SampledTip.from_samples(r, f, k=k, breakpoints=SHAPES["profile"].breakpoints(p))
 
 
 def _pyramid_tip(p) -> fit.Pyramid:

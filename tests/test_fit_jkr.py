@@ -294,7 +294,7 @@ def test_no_contact_and_wrong_tip_are_one_clear_error():
     with pytest.raises(hfit.NoContactError, match="no contact in the curve"):
         fit_curve(z, F, TIP)
     with pytest.raises(ValueError, match="has no adhesive fit model; valid: a Paraboloid"):
-        fit_curve(z, F, hfit.Cone(theta=0.1))
+        fit_curve(z, F, hfit.FlatPunch(a=1e-6))  # the cone has one: test_fit_adhesive_cone
     with pytest.raises(ValueError, match="at least 7 are needed"):
         fit_curve(z[:6], F[:6], TIP)
 
@@ -341,10 +341,10 @@ def test_cli_fits_the_example(tmp_path, capsys):
 
 
 def test_cli_adhesion_errors(tmp_path, capsys):
-    cone = tmp_path / "cone.toml"
-    cone.write_text(EXAMPLE_SCENE.read_text().replace('shape = "sphere"\nradius = "2 um"',
-                                                      'shape = "cone"\nangle = "0.2 rad"'))
-    assert main(["fit", str(EXAMPLE_CURVE), "--scene", str(cone), "--adhesion"]) == 2
+    punch = tmp_path / "punch.toml"  # (the cone has an adhesive fit: test_fit_adhesive_cone)
+    punch.write_text(EXAMPLE_SCENE.read_text().replace('shape = "sphere"\nradius = "2 um"',
+                                                       'shape = "flat_punch"\nradius = "2 um"'))
+    assert main(["fit", str(EXAMPLE_CURVE), "--scene", str(punch), "--adhesion"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "no adhesive fit model" in err[0], err
     flat = tmp_path / "flat.csv"

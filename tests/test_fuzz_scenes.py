@@ -173,6 +173,12 @@ def shaped_body(draw, shapes=SHAPES):
         else:
             r = [i * 1e-7 for i in range(12)]
             b["r"], b["f"] = r, [x * x / 2e-4 for x in r]
+        # a kink's radius: a sample (in m or in another unit), none, or not a sample, the end
+        # of the samples, a repeat, not a list
+        bps = draw(st.sampled_from([None, [], ["50 nm"], [5e-7], ["0.3 um", "300 nm"],
+                                    ["55 nm"], ["190 nm"], "50 nm"]))
+        if bps is not None:
+            b["breakpoints"] = bps
     elif shape == "polygon_punch":
         b["vertices"] = draw(st.sampled_from([
             [["0 mm", "0 mm"], ["1 mm", "0 mm"], ["0.5 mm", "0.8 mm"]],

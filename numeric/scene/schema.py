@@ -453,6 +453,10 @@ class _Reader:
             if not isinstance(value, list) or len(value) < 2:
                 self.fail(key, "must be a list of at least two values")
             return [self.quantity(v, "length", f"{key}[{j}]") for j, v in enumerate(value)]
+        if kind == "lengths":  # a list of any length, e.g. a profile's breakpoints
+            if not isinstance(value, list):
+                self.fail(key, f"must be a list of lengths [...], got {value!r}")
+            return [self.quantity(v, "length", f"{key}[{j}]") for j, v in enumerate(value)]
         if kind == "path":
             if not isinstance(value, str):
                 self.fail(key, "must be a file name (a string)")

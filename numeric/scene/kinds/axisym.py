@@ -493,7 +493,8 @@ def build_numerical(setup: Setup) -> NumericalMDR:
     body = _profiled(setup)
     r, f, k = SHAPES[body.shape].samples(body.params)
     try:
-        prof = mdr.Profile.from_samples(r, f, k=k)
+        prof = mdr.Profile.from_samples(r, f, k=k,
+                                        breakpoints=SHAPES[body.shape].breakpoints(body.params))
     except ValueError as exc:
         setup.fail(f"body ({body.name})", f"profile samples: {exc}")
     return NumericalMDR(setup.materials, setup.interface, setup.rtol, prof,

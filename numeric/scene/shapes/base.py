@@ -23,8 +23,8 @@ from typing import ClassVar, NoReturn
 Fail = Callable[[str, str], NoReturn]
 
 #: how a key's value is read (schema.py): a quantity with this dimension, or a structure
-VALUE_KINDS = ("length", "angle", "number", "length_pair", "length_list", "path", "points",
-               "count", "length_unit", "integer", "name")
+VALUE_KINDS = ("length", "angle", "number", "length_pair", "length_list", "lengths", "path",
+               "points", "count", "length_unit", "integer", "name")
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,10 @@ class Profile(Shape):
             Key("file", "path", required=False,
                 doc='or file = "tip.csv" (two columns r, f, relative to the scene file)'),
             Key("unit", "length_unit", required=False,
-                doc='with file: the unit of both columns, e.g. unit = "nm" (default "m")'))
+                doc='with file: the unit of both columns, e.g. unit = "nm" (default "m")'),
+            Key("breakpoints", "lengths", required=False,
+                doc='radii of the tip\'s kinks, each one of the samples r, e.g. breakpoints = '
+                    '["1 um"] (m): the spline is not continued across them'))
     kinds = ("numerical_mdr",)
 
     def check(self, p, fail, base_dir):
@@ -44,6 +47,42 @@ class Profile(Shape):
             fail(f"f[{drop}]", f"the profile decreases there (f = {float(f[drop])} m after "
                  f"{float(f[drop - 1]) + 0.0} m, at r = {float(r[drop])} m): the MDR of "
                  "section 5.6 takes a tip that rises from its apex, f non-decreasing in r")
+
+        if "breakpoints" in p:
+            p["breakpoints"] = self._breakpoints(p["breakpoints"], r, fail)
+
+    @staticmethod
+    def _breakpoints(bps, r, fail):
+        """Each breakpoint as the sample r_i it names (to 1e-9 of the largest r: a value with
+        another unit than the samples' differs from them by rounding), strictly inside
+        (0, r_max) and each once: the numerical MDR's spline ends and restarts there."""
+        out = []
+        for j, b in enumerate(bps):
+            i = min(range(len(r)), key=lambda i: abs(r[i] - b))
+            if not 0 < i < len(r) - 1 or abs(r[i] - b) > 1e-9 * r[-1]:
+                inner = f"r[1] = {r[1]:.6g} m ... r[{len(r) - 2}] = {r[-2]:.6g} m"
+                fail(f"breakpoints[{j}]", f"{b:.6g} m is not one of the samples inside the "
+                     f"profile; valid: a sample radius strictly between 0 and r_max = "
+                     f"{r[-1]:.6g} m ({inner}; nearest: r[{i}] = {r[i]:.6g} m)")
+            if r[i] in out:
+                fail(f"breakpoints[{j}]", f"{b:.6g} m is given twice (as r[{i}] = {r[i]:.6g} m); "
+                     "valid: each kink once")
+            out.append(r[i])
+        idx = sorted(r.index(b) for b in out)
+        ends = [0, *idx, len(r) - 1]
+        short = next((j for j in range(len(ends) - 1) if ends[j + 1] - ends[j] < 2), None)
+        if short is not None:
+            fail("breakpoints", f"{[float(f'{b:.6g}') for b in sorted(out)]} m leave one sample "
+                 f"interval between r = {r[ends[short]]:.6g} m and {r[ends[short + 1]]:.6g} m; "
+                 "valid: at least two intervals (three samples) in every piece between 0, the "
+                 "breakpoints and r_max (the numerical MDR's error bound compares a piece's "
+                 "samples with a coarser set of them)")
+        return sorted(out)
+
+    @staticmethod
+    def breakpoints(p):
+        """The radii [m] of the profile's kinks (samples, sorted): none unless given."""
+        return tuple(p.get("breakpoints", ()))
 
     def samples(self, p):
         """The profile's samples r, f [m] and the spline degree the numerical MDR uses."""
