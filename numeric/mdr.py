@@ -320,6 +320,15 @@ class Profile:
         if np.any((bp <= 0) | (bp >= r[-1])) or not np.all(np.isin(bp, r)):
             raise ValueError(f"breakpoints {list(bp)} must be samples strictly inside "
                              f"(0, {r[-1]})")
+        ends = np.concatenate([[0], np.searchsorted(r, bp), [len(r) - 1]])
+        short = np.flatnonzero(np.diff(ends) < 2)
+        if short.size:  # its coarse representation would be its fine one: no error bound
+            j = short[0]
+            raise ValueError(f"breakpoints {list(bp)} leave one sample interval between "
+                             f"r = {r[ends[j]]:.6g} and {r[ends[j + 1]]:.6g}; valid: at least "
+                             "two intervals (three samples) in every piece between 0, the "
+                             "breakpoints and r[-1] (the error bound compares a piece's samples "
+                             "with every other one of them)")
         if not np.isin(k, (1, 3, 5)):
             raise ValueError(f"k = {k} is out of range; valid: 1, 3, 5")
         return cls(Samples(r, f - f[0], bp, k, smoothing), float(r[-1]), f"{len(r)} samples")

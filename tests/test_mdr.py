@@ -265,6 +265,13 @@ def test_bad_input_is_named():
         prof.solve(depth=1.0, E_star=E)
     with pytest.raises(ValueError, match="exactly one of"):
         prof.solve(E_star=E)
+    # a piece of one sample interval has no coarser representation, so no error bound (its
+    # rel_error had been 5e-3 for a true error of 0.45): refused, at either end
+    r = np.linspace(0.0, 1.0, 11)
+    for b in (r[1], r[9]):
+        with pytest.raises(ValueError, match=r"breakpoints \[.*\] leave one sample interval"):
+            nmdr.Profile.from_samples(r, r**2, breakpoints=[b])
+    nmdr.Profile.from_samples(r, r**2, breakpoints=[r[2]])  # two intervals: accepted
 
 
 # -- profiles with a kink: f' jumps by s at r = b -------------------------------------------
