@@ -275,6 +275,7 @@ __all__ = [
     'line_stress_von_mises_c_tau',
     'masing_unloading_force',
     'mdr_force',
+    'mdr_kink_G',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -639,6 +640,7 @@ RELATIONS = (
     ('line_stress_von_mises_c_tau', '(5.50), plane strain', 'line_stress', 'sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)', ''),
     ('masing_unloading_force', "Masing's rule, derived from the springs", 'tangential', 'F_amp - 2*F_half', ''),
     ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
+    ('mdr_kink_G', '(5.57)', 'kink', '2*b*slope_jump*x*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b))) - b*slope_jump*sqrt(-b + x)*sqrt(b + x)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
@@ -7931,6 +7933,35 @@ def mdr_force(E_star, a, d, g_integral):
     return 2*E_star*(a*d - g_integral)
 
 
+def mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57).
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Printed in a stable form: acosh of an argument near 1 loses digits as x -> b (as in
+    mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of
+    the integral of g it is added to.
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_kink_G(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return b*slope_jump*(2*x*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(-b + x)/numpy.sqrt(b)) - numpy.sqrt(-b + x)*numpy.sqrt(b + x))
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -11668,6 +11699,31 @@ def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
     return numpy.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
+def textbook_mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57), in the derived (textbook) form; use mdr_kink_G: acosh of an argument near 1 loses digits as x -> b (as in mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of the integral of g it is added to.
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_mdr_kink_G(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*b*slope_jump*x*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b)) - b*slope_jump*numpy.sqrt(-b + x)*numpy.sqrt(b + x)
+
+
 def textbook_mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b, in the derived (textbook) form; use mdr_kink_g: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
 
@@ -13939,6 +13995,16 @@ def _math_masing_unloading_force(F_amp, F_half):
 def _math_mdr_force(E_star, a, d, g_integral):
     """``mdr_force`` for Python floats (the math module); raises where it does."""
     return 2*E_star*(a*d - g_integral)
+
+
+def _math_mdr_kink_G(b, slope_jump, x):
+    """``mdr_kink_G`` for Python floats (the math module); raises where it does."""
+    return b*slope_jump*(2*x*math.asinh((1/2)*math.sqrt(2)*math.sqrt(-b + x)/math.sqrt(b)) - math.sqrt(-b + x)*math.sqrt(b + x))
+
+
+def _math_textbook_mdr_kink_G(b, slope_jump, x):
+    """``textbook_mdr_kink_G`` for Python floats (the math module); raises where it does."""
+    return 2*b*slope_jump*x*math.acosh((1/2)*math.sqrt(2)*math.sqrt(b + x)/math.sqrt(b)) - b*slope_jump*math.sqrt(-b + x)*math.sqrt(b + x)
 
 
 def _math_mdr_kink_g(b, slope_jump, x):

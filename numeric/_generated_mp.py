@@ -272,6 +272,7 @@ __all__ = [
     'line_stress_von_mises_c_tau',
     'masing_unloading_force',
     'mdr_force',
+    'mdr_kink_G',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -6241,6 +6242,30 @@ def mdr_force(E_star, a, d, g_integral):
     return 2*E_star*(a*d - g_integral)
 
 
+def mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57).
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Printed in a stable form: acosh of an argument near 1 loses digits as x -> b (as in
+    mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of
+    the integral of g it is added to.
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return b*slope_jump*(2*x*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(-b + x)/mpmath.sqrt(b)) - mpmath.sqrt(-b + x)*mpmath.sqrt(b + x))
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -9319,6 +9344,26 @@ def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
         shear stress component tau_xz [Pa]
     """
     return mpmath.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
+
+
+def textbook_mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57), in the derived (textbook) form; use mdr_kink_G: acosh of an argument near 1 loses digits as x -> b (as in mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of the integral of g it is added to.
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return 2*b*slope_jump*x*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b)) - b*slope_jump*mpmath.sqrt(-b + x)*mpmath.sqrt(b + x)
 
 
 def textbook_mdr_kink_g(b, slope_jump, x):
