@@ -99,6 +99,7 @@ __all__ = [
     'cone_pressure',
     'cone_stiffness',
     'contact_mean_pressure',
+    'coulomb_sliding_force',
     'disc_mean_pressure',
     'disc_pressure',
     'ellipse_area',
@@ -347,6 +348,7 @@ __all__ = [
     'tangential_cone_energy',
     'tangential_cone_force',
     'tangential_cone_stick_radius',
+    'tangential_cone_traction_stick',
     'tangential_modulus',
     'tangential_powerlaw_displacement',
     'tangential_powerlaw_energy',
@@ -360,6 +362,8 @@ __all__ = [
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
+    'tangential_traction_slip',
+    'tangential_traction_stick',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -464,6 +468,7 @@ RELATIONS = (
     ('cone_pressure', '(5.39)', 'cone', 'E_star*tan(theta)*acosh(2*d/(pi*r*tan(theta)))/2', "the print has a spurious minus sign: the pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it"),
     ('cone_stiffness', 'Problem 5', 'cone', '4*E_star*d/(pi*tan(theta))', ''),
     ('contact_mean_pressure', '(5.17)', 'contact', 'F/A', ''),
+    ('coulomb_sliding_force', "Coulomb's law, from the springs (not in the chapter)", 'tangential', 'F*mu_f', ''),
     ('disc_mean_pressure', '(5.17)', 'contact', 'F/(pi*a**2)', ''),
     ('disc_pressure', '(5.9), (5.15), Problem 6', 'contact', 'p0*(1 - r**2/a**2)**n_p', ''),
     ('ellipse_area', '(5.29), exact', 'ellipse', '2*pi*R1*d*t_ba*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
@@ -712,6 +717,7 @@ RELATIONS = (
     ('tangential_cone_energy', 'MDR tangential, cone (not in the chapter)', 'tangential', '4*sqrt(F)*sqrt(mu_f)*(sqrt(F)*sqrt(mu_f) - sqrt(F*mu_f - F_amp))**3/(3*G_star*a)', ''),
     ('tangential_cone_force', 'MDR tangential, cone (not in the chapter)', 'tangential', '2*G_star*u_x*(pi*E_star*a*mu_f - G_star*u_x/tan(theta))/(pi*E_star*mu_f)', ''),
     ('tangential_cone_stick_radius', 'MDR tangential, cone (not in the chapter)', 'tangential', 'a - 2*G_star*u_x/(pi*E_star*mu_f*tan(theta))', ''),
+    ('tangential_cone_traction_stick', 'MDR tangential, cone (not in the chapter)', 'tangential', 'mu_f*(E_star*log((a + sqrt(a**2 - r**2))/r)*tan(theta)/2 - E_star*log((c + sqrt(c**2 - r**2))/r)*tan(theta)/2)', ''),
     ('tangential_modulus', 'MDR tangential springs (not in the chapter)', 'tangential', '-4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))', ''),
     ('tangential_powerlaw_displacement', 'MDR tangential, power law (not in the chapter)', 'tangential', 'F*mu_f*(1 - (1 - F_x/(F*mu_f))**(n/(n + 1)))*(n + 1)/(2*G_star*a*n)', ''),
     ('tangential_powerlaw_energy', 'MDR tangential, power law (not in the chapter)', 'tangential', '2*F**2*mu_f**2*(-2*c_a**n*n**2 - 3*c_a**n*n - c_a**n + 2*c_a**(n + 1)*n**2 + 3*c_a**(n + 1)*n + c_a**(n + 1) - c_a**(2*n + 1)*n - c_a**(2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))', ''),
@@ -725,6 +731,8 @@ RELATIONS = (
     ('tangential_slide_onset', 'MDR tangential springs (not in the chapter)', 'tangential', 'E_star*d*mu_f/G_star', ''),
     ('tangential_stiffness', 'MDR tangential springs (not in the chapter)', 'tangential', '2*G_star*a', ''),
     ('tangential_stiffness_ratio', 'MDR tangential springs (not in the chapter)', 'tangential', '2*(nu - 1)/(nu - 2)', ''),
+    ('tangential_traction_slip', 'MDR tangential (Ciavarella-Jaeger, found)', 'tangential', 'mu_f*p_a', ''),
+    ('tangential_traction_stick', 'MDR tangential (Ciavarella-Jaeger, found)', 'tangential', 'mu_f*(p_a - p_c)', ''),
     ('uniform_pressure_displacement', 'Problem 6', 'pressures', '4*a*p0*elliptic_e(r**2/a**2)/(pi*E_star)', ''),
     ('uniform_pressure_displacement_centre', 'Problem 6', 'pressures', '2*a*p0/E_star', ''),
     ('uniform_pressure_displacement_edge', 'Problem 6', 'pressures', '4*a*p0/(pi*E_star)', ''),
@@ -3195,6 +3203,30 @@ def contact_mean_pressure(A, F):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return F/A
+
+
+def coulomb_sliding_force(mu_f, F):
+    """Tangential force mu F [N] of full sliding under the normal force F (Coulomb's limit).
+
+    Chapter: Coulomb's law, from the springs (not in the chapter). Derived from: the spring
+    sum at c = 0 over the normal force (5.57).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_sliding_force_is_the_spring_sum_at_full_slip``.
+
+    Parameters
+    ----------
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F : float or ndarray
+        normal force [N]
+    """
+    if type(mu_f) is float and type(F) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_coulomb_sliding_force(mu_f, F)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return F*mu_f
 
 
 def disc_mean_pressure(F, a):
@@ -9924,6 +9956,44 @@ def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     return a - 2*G_star*u_x/(numpy.pi*E_star*mu_f*numpy.tan(theta))
 
 
+def tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Printed in a stable form: the two pressures are each log-infinite on the axis (inf - inf
+    = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)),
+    written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c ->
+    a.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r) is float and type(a) is float and type(c) is float and type(theta) is float
+            and type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*E_star*mu_f*numpy.tan(theta)*numpy.log1p((a - c)*((a + c)/(numpy.sqrt(a - r)*numpy.sqrt(a + r) + numpy.sqrt(c - r)*numpy.sqrt(c + r)) + 1)/(c + numpy.sqrt(c - r)*numpy.sqrt(c + r)))
+
+
 def tangential_modulus(G1, nu1, G2, nu2):
     """Tangential effective modulus G* [Pa] of two elastic bodies.
 
@@ -10331,6 +10401,56 @@ def tangential_stiffness_ratio(nu):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*(nu - 1)/(nu - 2)
+
+
+def tangential_traction_slip(mu_f, p_a):
+    """Tangential traction q [Pa] in the slip zone: mu p(r; a) of the pressure p_a [Pa].
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the sliding
+    springs' line load mu q_z.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    p_a : float or ndarray
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    """
+    if type(mu_f) is float and type(p_a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_traction_slip(mu_f, p_a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return mu_f*p_a
+
+
+def tangential_traction_stick(mu_f, p_a, p_c):
+    """Tangential traction q [Pa] in the stick zone r < c: mu (p(r; a) - p(r; c)) of the pressures p_a, p_c [Pa] of the profile at contact radii a and c.
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the stuck
+    springs' line load mu (q_z(x; a) - q_z(x; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    p_a : float or ndarray
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    p_c : float or ndarray
+        contact pressure p(r; c) of the same profile at contact radius c (the stick radius) [Pa]
+    """
+    if type(mu_f) is float and type(p_a) is float and type(p_c) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_traction_stick(mu_f, p_a, p_c)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return mu_f*(p_a - p_c)
 
 
 def uniform_pressure_displacement(E_star, a, p0, r):
@@ -12377,6 +12497,39 @@ def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
     return (4/3)*numpy.sqrt(F)*numpy.sqrt(mu_f)*(numpy.sqrt(F)*numpy.sqrt(mu_f) - numpy.sqrt(F*mu_f - F_amp))**3/(G_star*a)
 
 
+def textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0, in the derived (textbook) form; use tangential_cone_traction_stick: the two pressures are each log-infinite on the axis (inf - inf = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)), written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c -> a.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r) is float and type(a) is float and type(c) is float and type(theta) is float
+            and type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return mu_f*((1/2)*E_star*numpy.log((a + numpy.sqrt(a**2 - r**2))/r)*numpy.tan(theta) - 1/2*E_star*numpy.log((c + numpy.sqrt(c**2 - r**2))/r)*numpy.tan(theta))
+
+
 def textbook_tangential_modulus(G1, nu1, G2, nu2):
     """Tangential effective modulus G* [Pa] of two elastic bodies, in the derived (textbook) form; use tangential_modulus: a rigid body (G = inf) is G/(2 - nu) -> 0 instead of inf/inf.
 
@@ -13185,6 +13338,11 @@ def _math_cone_stiffness(E_star, d, theta):
 def _math_contact_mean_pressure(A, F):
     """``contact_mean_pressure`` for Python floats (the math module); raises where it does."""
     return F/A
+
+
+def _math_coulomb_sliding_force(mu_f, F):
+    """``coulomb_sliding_force`` for Python floats (the math module); raises where it does."""
+    return F*mu_f
 
 
 def _math_disc_mean_pressure(F, a):
@@ -14432,6 +14590,16 @@ def _math_tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     return a - 2*G_star*u_x/(math.pi*E_star*mu_f*math.tan(theta))
 
 
+def _math_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """``tangential_cone_traction_stick`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*mu_f*math.tan(theta)*math.log1p((a - c)*((a + c)/(math.sqrt(a - r)*math.sqrt(a + r) + math.sqrt(c - r)*math.sqrt(c + r)) + 1)/(c + math.sqrt(c - r)*math.sqrt(c + r)))
+
+
+def _math_textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """``textbook_tangential_cone_traction_stick`` for Python floats (the math module); raises where it does."""
+    return mu_f*((1/2)*E_star*math.log((a + math.sqrt((a*a) - (r*r)))/r)*math.tan(theta) - 1/2*E_star*math.log((c + math.sqrt((c*c) - (r*r)))/r)*math.tan(theta))
+
+
 def _math_tangential_modulus(G1, nu1, G2, nu2):
     """``tangential_modulus`` for Python floats (the math module); raises where it does."""
     return 1/((1/4)*(2 - nu2)/G2 + (1/4)*(2 - nu1)/G1)
@@ -14520,6 +14688,16 @@ def _math_tangential_stiffness(G_star, a):
 def _math_tangential_stiffness_ratio(nu):
     """``tangential_stiffness_ratio`` for Python floats (the math module); raises where it does."""
     return 2*(nu - 1)/(nu - 2)
+
+
+def _math_tangential_traction_slip(mu_f, p_a):
+    """``tangential_traction_slip`` for Python floats (the math module); raises where it does."""
+    return mu_f*p_a
+
+
+def _math_tangential_traction_stick(mu_f, p_a, p_c):
+    """``tangential_traction_stick`` for Python floats (the math module); raises where it does."""
+    return mu_f*(p_a - p_c)
 
 
 def _math_uniform_pressure_displacement_centre(E_star, a, p0):

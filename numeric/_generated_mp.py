@@ -96,6 +96,7 @@ __all__ = [
     'cone_pressure',
     'cone_stiffness',
     'contact_mean_pressure',
+    'coulomb_sliding_force',
     'disc_mean_pressure',
     'disc_pressure',
     'ellipse_area',
@@ -344,6 +345,7 @@ __all__ = [
     'tangential_cone_energy',
     'tangential_cone_force',
     'tangential_cone_stick_radius',
+    'tangential_cone_traction_stick',
     'tangential_modulus',
     'tangential_powerlaw_displacement',
     'tangential_powerlaw_energy',
@@ -357,6 +359,8 @@ __all__ = [
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
+    'tangential_traction_slip',
+    'tangential_traction_stick',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -2345,6 +2349,25 @@ def contact_mean_pressure(A, F):
         normal force [N]
     """
     return F/A
+
+
+def coulomb_sliding_force(mu_f, F):
+    """Tangential force mu F [N] of full sliding under the normal force F (Coulomb's limit).
+
+    Chapter: Coulomb's law, from the springs (not in the chapter). Derived from: the spring
+    sum at c = 0 over the normal force (5.57).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_sliding_force_is_the_spring_sum_at_full_slip``.
+
+    Parameters
+    ----------
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F : mpmath.mpf
+        normal force [N]
+    """
+    return F*mu_f
 
 
 def disc_mean_pressure(F, a):
@@ -7876,6 +7899,38 @@ def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     return a - 2*G_star*u_x/(mpmath.pi*E_star*mu_f*mpmath.tan(theta))
 
 
+def tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Printed in a stable form: the two pressures are each log-infinite on the axis (inf - inf
+    = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)),
+    written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c ->
+    a.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mu_f*mpmath.tan(theta)*mpmath.log1p((a - c)*((a + c)/(mpmath.sqrt(a - r)*mpmath.sqrt(a + r) + mpmath.sqrt(c - r)*mpmath.sqrt(c + r)) + 1)/(c + mpmath.sqrt(c - r)*mpmath.sqrt(c + r)))
+
+
 def tangential_modulus(G1, nu1, G2, nu2):
     """Tangential effective modulus G* [Pa] of two elastic bodies.
 
@@ -8206,6 +8261,46 @@ def tangential_stiffness_ratio(nu):
         Poisson's ratio [1]
     """
     return 2*(nu - 1)/(nu - 2)
+
+
+def tangential_traction_slip(mu_f, p_a):
+    """Tangential traction q [Pa] in the slip zone: mu p(r; a) of the pressure p_a [Pa].
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the sliding
+    springs' line load mu q_z.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    p_a : mpmath.mpf
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    """
+    return mu_f*p_a
+
+
+def tangential_traction_stick(mu_f, p_a, p_c):
+    """Tangential traction q [Pa] in the stick zone r < c: mu (p(r; a) - p(r; c)) of the pressures p_a, p_c [Pa] of the profile at contact radii a and c.
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the stuck
+    springs' line load mu (q_z(x; a) - q_z(x; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    p_a : mpmath.mpf
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    p_c : mpmath.mpf
+        contact pressure p(r; c) of the same profile at contact radius c (the stick radius) [Pa]
+    """
+    return mu_f*(p_a - p_c)
 
 
 def uniform_pressure_displacement(E_star, a, p0, r):
@@ -9887,6 +9982,33 @@ def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
         amplitude F_x* of an oscillating tangential force [N]
     """
     return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.sqrt(F)*mpmath.sqrt(mu_f)*(mpmath.sqrt(F)*mpmath.sqrt(mu_f) - mpmath.sqrt(F*mu_f - F_amp))**3/(G_star*a)
+
+
+def textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0, in the derived (textbook) form; use tangential_cone_traction_stick: the two pressures are each log-infinite on the axis (inf - inf = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)), written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c -> a.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return mu_f*((mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.log((a + mpmath.sqrt(a**2 - r**2))/r)*mpmath.tan(theta) - mpmath.mpf(1)/mpmath.mpf(2)*E_star*mpmath.log((c + mpmath.sqrt(c**2 - r**2))/r)*mpmath.tan(theta))
 
 
 def textbook_tangential_modulus(G1, nu1, G2, nu2):
