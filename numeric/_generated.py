@@ -71,6 +71,7 @@ __all__ = [
     'boussinesq_sigma_yy',
     'boussinesq_sigma_yz',
     'boussinesq_sigma_zz',
+    'boussinesq_surface_prefactor',
     'boussinesq_surface_ux',
     'boussinesq_surface_uy',
     'boussinesq_surface_uz',
@@ -217,6 +218,7 @@ __all__ = [
     'hertz_stiffness',
     'impact_contact_time',
     'impact_contact_time_density',
+    'impact_length_scale',
     'impact_max_contact_radius',
     'impact_max_contact_radius_density',
     'impact_max_depth',
@@ -307,6 +309,7 @@ __all__ = [
     'powerlaw_pressure_small_n',
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
+    'powerlaw_punch_mean_pressure',
     'powerlaw_punch_pressure',
     'punch_depth_from_force',
     'punch_pressure_displacement',
@@ -440,6 +443,7 @@ RELATIONS = (
     ('boussinesq_sigma_yy', '(5.42)', 'boussinesq', 'F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*z*(x**2 + y**2 + z**2)**2 - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) + 3*z**5 + 6*z**4*sqrt(x**2 + y**2 + z**2) - 6*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*z*(x**2 + y**2 + z**2)**2 + (x**2 + y**2 + z**2)**(5/2))/(2*pi*(z + sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))', ''),
     ('boussinesq_sigma_yz', '(5.45)', 'boussinesq', '-3*F*y*z**2/(2*pi*(x**2 + y**2 + z**2)**(5/2))', 'the sign: with the force F acting in +z (into the body, z > 0 in the body) the derivation gives tau_yz = -3 F y z^2/(2 pi R^5); the print has +3 F y z^2/(2 pi R^5), which together with the printed (5.43) violates the equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0'),
     ('boussinesq_sigma_zz', '(5.43)', 'boussinesq', '-3*F*z**3/(2*pi*(x**2 + y**2 + z**2)**(5/2))', ''),
+    ('boussinesq_surface_prefactor', '(5.7)', 'boussinesq', '1/(pi*E_star)', ''),
     ('boussinesq_surface_ux', '(5.4)', 'boussinesq', 'F*x*(nu + 1)*(2*nu - 1)/(2*pi*E*(x**2 + y**2))', ''),
     ('boussinesq_surface_uy', '(5.5)', 'boussinesq', 'F*y*(nu + 1)*(2*nu - 1)/(2*pi*E*(x**2 + y**2))', ''),
     ('boussinesq_surface_uz', '(5.6)', 'boussinesq', '-F*(nu - 1)*(nu + 1)/(pi*E*sqrt(x**2 + y**2))', ''),
@@ -586,6 +590,7 @@ RELATIONS = (
     ('hertz_stiffness', 'Problem 5', 'hertz', '2*E_star*sqrt(R)*sqrt(d)', ''),
     ('impact_contact_time', 'Problem 3', 'impact', '30**(2/5)*sqrt(pi)*m**(2/5)*gamma(2/5)/(5*E_star**(2/5)*R**(1/5)*v0**(1/5)*gamma(9/10))', ''),
     ('impact_contact_time_density', 'Problem 3, m = 4/3 pi R^3 rho', 'impact', '2*2**(1/5)*5**(2/5)*pi**(9/10)*R*rho**(2/5)*gamma(2/5)/(5*E_star**(2/5)*v0**(1/5)*gamma(9/10))', ''),
+    ('impact_length_scale', '(5.23), nondimensionalized', 'impact', 'm**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))', ''),
     ('impact_max_contact_radius', 'Problem 4', 'impact', '30**(1/5)*R**(2/5)*m**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
     ('impact_max_contact_radius_density', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '2**(3/5)*5**(1/5)*pi**(1/5)*R*rho**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
     ('impact_max_depth', 'Problem 3', 'impact', '30**(2/5)*m**(2/5)*v0**(4/5)/(4*E_star**(2/5)*R**(1/5))', ''),
@@ -676,6 +681,7 @@ RELATIONS = (
     ('powerlaw_pressure_small_n', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*r**(n - 1)*hyper((1/2, n/2 + 1/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a*a**n)', ''),
     ('powerlaw_punch_displacement_outside', 'Problem 7(a)', 'powerlaw', '2*d*asin(a/r)/pi', ''),
     ('powerlaw_punch_force', 'Problem 7(a)', 'powerlaw', '2*E_star*a*d', ''),
+    ('powerlaw_punch_mean_pressure', 'Problem 7(a)', 'powerlaw', '2*E_star*d/(pi*a)', ''),
     ('powerlaw_punch_pressure', 'Problem 7(a)', 'powerlaw', 'E_star*d/(pi*sqrt(a**2 - r**2))', ''),
     ('punch_depth_from_force', '(5.11), inverted', 'contact', 'F/(2*E_star*a)', ''),
     ('punch_pressure_displacement', '(5.10)', 'pressures', 'pi*a*p0/E_star', ''),
@@ -2377,6 +2383,27 @@ def boussinesq_sigma_zz(F, nu, x, y, z):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -3/2*F*z**3/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
+
+
+def boussinesq_surface_prefactor(E_star):
+    """Prefactor 1/(pi E*) [1/Pa] of the surface Green's function: u_z = F/(pi E* rho).
+
+    Chapter: (5.7). Derived from: (5.6) times rho/F with E/(1 - nu^2) = E*.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_prefactor_against_the_point_force``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    if type(E_star) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_surface_prefactor(E_star)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 1/(numpy.pi*E_star)
 
 
 def boussinesq_surface_ux(E, F, nu, x, y):
@@ -6360,6 +6387,34 @@ def impact_contact_time_density(E_star, R, rho, v0):
     return (2/5)*2**(1/5)*5**(2/5)*numpy.pi**(9/10)*R*rho**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*v0**(1/5)*scipy.special.gamma(9/10))
 
 
+def impact_length_scale(E_star, R, m, v0):
+    """Length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s.
+
+    Chapter: (5.23), nondimensionalized. Derived from: m v0^2/x_s = E* sqrt(R) x_s^(3/2).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_length_scale``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_length_scale(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return m**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))
+
+
 def impact_max_contact_radius(E_star, R, m, v0):
     """Maximum contact radius [m] during the impact.
 
@@ -8836,6 +8891,31 @@ def powerlaw_punch_force(E_star, a, d):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*E_star*a*d
+
+
+def powerlaw_punch_mean_pressure(E_star, a, d):
+    """Mean pressure F/(pi a^2) [Pa] of a flat rigid punch of radius a at depth d.
+
+    Chapter: Problem 7(a). Derived from: the punch's force over the contact area.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    if type(E_star) is float and type(a) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_punch_mean_pressure(E_star, a, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*E_star*d/(numpy.pi*a)
 
 
 def powerlaw_punch_pressure(E_star, a, d, r):
@@ -13180,6 +13260,11 @@ def _math_boussinesq_sigma_zz(F, nu, x, y, z):
     return -3/2*F*z**3/(math.pi*math.pow((x*x) + (y*y) + (z*z), 5/2))
 
 
+def _math_boussinesq_surface_prefactor(E_star):
+    """``boussinesq_surface_prefactor`` for Python floats (the math module); raises where it does."""
+    return 1/(math.pi*E_star)
+
+
 def _math_boussinesq_surface_ux(E, F, nu, x, y):
     """``boussinesq_surface_ux`` for Python floats (the math module); raises where it does."""
     return (1/2)*F*x*(nu + 1)*(2*nu - 1)/(math.pi*E*((x*x) + (y*y)))
@@ -13825,6 +13910,11 @@ def _math_impact_contact_time_density(E_star, R, rho, v0):
     return (2/5)*math.pow(2, 1/5)*math.pow(5, 2/5)*math.pow(math.pi, 9/10)*R*math.pow(rho, 2/5)*math.gamma(2/5)/(math.pow(E_star, 2/5)*math.pow(v0, 1/5)*math.gamma(9/10))
 
 
+def _math_impact_length_scale(E_star, R, m, v0):
+    """``impact_length_scale`` for Python floats (the math module); raises where it does."""
+    return math.pow(m, 2/5)*math.pow(v0, 4/5)/(math.pow(E_star, 2/5)*math.pow(R, 1/5))
+
+
 def _math_impact_max_contact_radius(E_star, R, m, v0):
     """``impact_max_contact_radius`` for Python floats (the math module); raises where it does."""
     return (1/2)*math.pow(30, 1/5)*math.pow(R, 2/5)*math.pow(m, 1/5)*math.pow(v0, 2/5)/math.pow(E_star, 1/5)
@@ -14318,6 +14408,11 @@ def _math_powerlaw_punch_displacement_outside(a, d, r):
 def _math_powerlaw_punch_force(E_star, a, d):
     """``powerlaw_punch_force`` for Python floats (the math module); raises where it does."""
     return 2*E_star*a*d
+
+
+def _math_powerlaw_punch_mean_pressure(E_star, a, d):
+    """``powerlaw_punch_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d/(math.pi*a)
 
 
 def _math_powerlaw_punch_pressure(E_star, a, d, r):

@@ -68,6 +68,7 @@ __all__ = [
     'boussinesq_sigma_yy',
     'boussinesq_sigma_yz',
     'boussinesq_sigma_zz',
+    'boussinesq_surface_prefactor',
     'boussinesq_surface_ux',
     'boussinesq_surface_uy',
     'boussinesq_surface_uz',
@@ -214,6 +215,7 @@ __all__ = [
     'hertz_stiffness',
     'impact_contact_time',
     'impact_contact_time_density',
+    'impact_length_scale',
     'impact_max_contact_radius',
     'impact_max_contact_radius_density',
     'impact_max_depth',
@@ -304,6 +306,7 @@ __all__ = [
     'powerlaw_pressure_small_n',
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
+    'powerlaw_punch_mean_pressure',
     'powerlaw_punch_pressure',
     'punch_depth_from_force',
     'punch_pressure_displacement',
@@ -1681,6 +1684,22 @@ def boussinesq_sigma_zz(F, nu, x, y, z):
         depth below the surface [m]
     """
     return -mpmath.mpf(3)/mpmath.mpf(2)*F*z**3/(mpmath.pi*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
+
+
+def boussinesq_surface_prefactor(E_star):
+    """Prefactor 1/(pi E*) [1/Pa] of the surface Green's function: u_z = F/(pi E* rho).
+
+    Chapter: (5.7). Derived from: (5.6) times rho/F with E/(1 - nu^2) = E*.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_prefactor_against_the_point_force``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    return 1/(mpmath.pi*E_star)
 
 
 def boussinesq_surface_ux(E, F, nu, x, y):
@@ -4970,6 +4989,28 @@ def impact_contact_time_density(E_star, R, rho, v0):
     return (mpmath.mpf(2)/mpmath.mpf(5))*2**(mpmath.mpf(1)/mpmath.mpf(5))*5**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(9)/mpmath.mpf(10))*R*rho**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(2)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(1)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(9)/mpmath.mpf(10)))
 
 
+def impact_length_scale(E_star, R, m, v0):
+    """Length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s.
+
+    Chapter: (5.23), nondimensionalized. Derived from: m v0^2/x_s = E* sqrt(R) x_s^(3/2).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_length_scale``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return m**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(4)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5)))
+
+
 def impact_max_contact_radius(E_star, R, m, v0):
     """Maximum contact radius [m] during the impact.
 
@@ -6978,6 +7019,26 @@ def powerlaw_punch_force(E_star, a, d):
         indentation depth [m]
     """
     return 2*E_star*a*d
+
+
+def powerlaw_punch_mean_pressure(E_star, a, d):
+    """Mean pressure F/(pi a^2) [Pa] of a flat rigid punch of radius a at depth d.
+
+    Chapter: Problem 7(a). Derived from: the punch's force over the contact area.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return 2*E_star*d/(mpmath.pi*a)
 
 
 def powerlaw_punch_pressure(E_star, a, d, r):
