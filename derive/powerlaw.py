@@ -342,6 +342,10 @@ def relations() -> list[Relation]:
                  "MDR profile g(x) [m] of the power-law profile f = c_n r^n, x >= 0",
                  "(5.52) for f = c_n r^n", f"{TEST}::test_g_by_quadrature",
                  printed=kappa_n * c_n * x**n),
+        Relation("powerlaw_profile", "Problem 7(d)", c_n * r**n, (c_n, n, r),
+                 "height f(r) = c_n r^n [m] of a power-law profile above its tip (the profile "
+                 "whose g is powerlaw_g)", "the profile put through (5.52)",
+                 "tests/test_tangential.py::test_profiles_against_their_g_by_5_53"),
         Relation("powerlaw_contact_radius", "Problem 7(d)", s["a"], (c_n, d, kappa_n, n),
                  "contact radius a [m] of a power-law indenter at depth d",
                  "(5.55) with g of (5.52)", f"{TEST}::test_against_3d_elasticity",

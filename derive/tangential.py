@@ -214,7 +214,8 @@ def coulomb_limit() -> sp.Expr:
 @cache
 def paraboloid() -> dict[str, sp.Expr]:
     rp = sp.Symbol("r", positive=True)
-    g = mdr.transform(rp**2 / (2 * R), rp)  # (5.52): x^2/R
+    f = rp**2 / (2 * R)
+    g = mdr.transform(f, rp)  # (5.52): x^2/R
     (c_u,) = [s for s in sp.solve(sp.Eq(g.subs(x, c), g.subs(x, a) - SLIP_DEPTH), c)
               if s.could_extract_minus_sign() is False]
     Fx = sp.simplify(spring_force(g, c_u))
@@ -224,20 +225,23 @@ def paraboloid() -> dict[str, sp.Expr]:
               and s.could_extract_minus_sign() is False]
     u_F = sp.simplify(SLIP_DEPTH.subs(u_x, 1) ** -1 * (g.subs(x, a) - g.subs(x, c_F)))
     W = energy_integral(g)
-    return {"g": g, "c_u": c_u, "F_x": Fx, "F_a": F_a, "c_F": c_F, "u_F": u_F, "W": W,
+    return {"f": f.subs(rp, r), "g": g, "c_u": c_u, "F_x": Fx, "F_a": F_a, "c_F": c_F,
+            "u_F": u_F, "W": W,
             "q_stick": sp.simplify(traction_stick(g)), "q_slip": mu_f * mdr.pressure(g)}
 
 
 @cache
 def cone() -> dict[str, sp.Expr]:
     rp = sp.Symbol("r", positive=True)
-    g = mdr.transform(rp * sp.tan(theta), rp)  # (5.52): (pi/2) tan(theta) x
+    f = rp * sp.tan(theta)
+    g = mdr.transform(f, rp)  # (5.52): (pi/2) tan(theta) x
     (c_u,) = sp.solve(sp.Eq(g.subs(x, c), g.subs(x, a) - SLIP_DEPTH), c)
     Fx = sp.simplify(spring_force(g, c_u))
     cj = check_superposition(g, c)
     (c_F,) = [s for s in sp.solve(sp.Eq(cj, F_x), c) if s.could_extract_minus_sign() is False]
     u_F = sp.simplify((g.subs(x, a) - g.subs(x, c_F)) / SLIP_DEPTH.subs(u_x, 1))
-    return {"g": g, "c_u": c_u, "F_x": Fx, "F_a": normal_force_at(g, a), "c_F": c_F,
+    return {"f": f.subs(rp, r), "g": g, "c_u": c_u, "F_x": Fx, "F_a": normal_force_at(g, a),
+            "c_F": c_F,
             "u_F": u_F, "W": energy_integral(g), "q_stick": traction_stick(g)}
 
 
@@ -600,6 +604,13 @@ def relations() -> list[Relation]:
         "series in F_amp of the energy per cycle", f"{TEST}::test_cubic_small_amplitude_law"))
 
     # the profiles' g(x) (5.52) and the onset of sliding, for numeric/tangential.py
+    for name, prof, args, what in (("paraboloid_profile", P, (R, r), "paraboloid"),
+                                   ("cone_profile", C, (theta, r), "cone")):
+        rels.append(Relation(
+            name, "(5.52)", prof["f"], args,
+            f"height f(r) [m] of the {what} above its tip (the profile whose g is {what}_g)",
+            "the profile put through (5.52)",
+            f"{TEST}::test_profiles_against_their_g_by_5_53"))
     rels.append(Relation(
         "paraboloid_g", "(5.52) of f = r^2/(2R)", P["g"], (R, x),
         "MDR profile g(x) [m] of the paraboloid f = r^2/(2R) (the springs' gap; d = g(a))",

@@ -41,6 +41,7 @@ __all__ = [
     'adhesion_powerlaw_pull_off_radius_fc',
     'adhesion_powerlaw_zero_load_radius',
     'adhesion_pressure_edge',
+    'adhesion_punch_cycle_work',
     'adhesion_punch_pull_off_force',
     'adhesion_sphere_g_slope',
     'adhesion_tabor_parameter',
@@ -98,6 +99,7 @@ __all__ = [
     'cone_g',
     'cone_mean_pressure',
     'cone_pressure',
+    'cone_profile',
     'cone_stiffness',
     'contact_mean_pressure',
     'coulomb_sliding_force',
@@ -286,6 +288,7 @@ __all__ = [
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
+    'paraboloid_profile',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_far',
@@ -307,6 +310,7 @@ __all__ = [
     'powerlaw_pressure_n4',
     'powerlaw_pressure_normalized',
     'powerlaw_pressure_small_n',
+    'powerlaw_profile',
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
     'powerlaw_punch_mean_pressure',
@@ -413,6 +417,7 @@ RELATIONS = (
     ('adhesion_powerlaw_pull_off_radius_fc', '(5.57), adhesive', 'adhesion', '(9*pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
     ('adhesion_powerlaw_zero_load_radius', '(5.57), adhesive', 'adhesion', '(2*pi*dgamma*(n**2 + 2*n + 1)/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
     ('adhesion_pressure_edge', '(5.59), adhesive', 'adhesion', '-sqrt(2)*sqrt(E_star)*sqrt(a)*sqrt(dgamma)/(sqrt(pi)*sqrt(a**2 - r**2))', ''),
+    ('adhesion_punch_cycle_work', '(5.57), Kendall', 'adhesion', '2*pi*a**2*dgamma', ''),
     ('adhesion_punch_pull_off_force', '(5.57), Kendall', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)', ''),
     ('adhesion_sphere_g_slope', "(5.52), Sneddon's sphere", 'adhesion', '(R*x + (R**2 - x**2)*atanh(x/R))/(R**2 - x**2)', ''),
     ('adhesion_tabor_parameter', 'Tabor (1977)', 'adhesion', 'R**(1/3)*dgamma**(2/3)/(E_star**(2/3)*z0)', ''),
@@ -470,6 +475,7 @@ RELATIONS = (
     ('cone_g', '(5.52) of f = r tan(theta)', 'tangential', 'pi*x*tan(theta)/2', ''),
     ('cone_mean_pressure', '(5.40)/(pi a^2)', 'cone', 'E_star*tan(theta)/2', ''),
     ('cone_pressure', '(5.39)', 'cone', 'E_star*tan(theta)*acosh(2*d/(pi*r*tan(theta)))/2', "the print has a spurious minus sign: the pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it"),
+    ('cone_profile', '(5.52)', 'tangential', 'r*tan(theta)', ''),
     ('cone_stiffness', 'Problem 5', 'cone', '4*E_star*d/(pi*tan(theta))', ''),
     ('contact_mean_pressure', '(5.17)', 'contact', 'F/A', ''),
     ('coulomb_sliding_force', "Coulomb's law, from the springs (not in the chapter)", 'tangential', 'F*mu_f', ''),
@@ -658,6 +664,7 @@ RELATIONS = (
     ('mindlin_energy', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', '3*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(5*G_star*a)', ''),
     ('mindlin_energy_small', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', 'F_amp**3/(9*F*G_star*a*mu_f)', ''),
     ('paraboloid_g', '(5.52) of f = r^2/(2R)', 'tangential', 'x**2/R', ''),
+    ('paraboloid_profile', '(5.52)', 'tangential', 'r**2/(2*R)', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_far', 'Problem 7(d), (5.60), r >> a', 'powerlaw', '2*a*d*n*(a**2*(a**2*(a**2*(5*n + 5)/(r**2*(112*n + 784)) + (3*n + 3)/(40*n + 200))/r**2 + (n + 1)/(6*n + 18))/r**2 + 1)/(pi*r*(n + 1))', ''),
@@ -679,6 +686,7 @@ RELATIONS = (
     ('powerlaw_pressure_n4', 'Problem 7(d), n = 4', 'powerlaw', '4*E_star*d*sqrt(a**2 - r**2)*(a**2 + 2*r**2)/(3*pi*a**4)', ''),
     ('powerlaw_pressure_normalized', 'Fig. 5.17', 'powerlaw', '(n + 1)*hyper((1, 1 - n/2), (3/2,), Max(0, (1 - r_tilde)*(r_tilde + 1)))*sqrt(Max(0, (1 - r_tilde)*(r_tilde + 1)))/2', ''),
     ('powerlaw_pressure_small_n', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*r**(n - 1)*hyper((1/2, n/2 + 1/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a*a**n)', ''),
+    ('powerlaw_profile', 'Problem 7(d)', 'powerlaw', 'c_n*r**n', ''),
     ('powerlaw_punch_displacement_outside', 'Problem 7(a)', 'powerlaw', '2*d*asin(a/r)/pi', ''),
     ('powerlaw_punch_force', 'Problem 7(a)', 'powerlaw', '2*E_star*a*d', ''),
     ('powerlaw_punch_mean_pressure', 'Problem 7(a)', 'powerlaw', '2*E_star*d/(pi*a)', ''),
@@ -1534,6 +1542,32 @@ def adhesion_pressure_edge(E_star, a, dgamma, r):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a - r)*numpy.sqrt(a + r))
+
+
+def adhesion_punch_cycle_work(E_star, a, dgamma):
+    """Work W [J] done on a flat punch of radius a over an approach-push-retract cycle: dissipated by the jump at pull-off (>= 0).
+
+    Chapter: (5.57), Kendall. Derived from: the closed integral of (5.57) with g = 0 over
+    the cycle.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_punch_cycle_work_is_kendalls``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    if type(E_star) is float and type(a) is float and type(dgamma) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_punch_cycle_work(E_star, a, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*numpy.pi*a**2*dgamma
 
 
 def adhesion_punch_pull_off_force(E_star, a, dgamma):
@@ -3182,6 +3216,29 @@ def cone_pressure(E_star, d, theta, r):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return E_star*numpy.tan(theta)*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(2*d/(numpy.pi*numpy.tan(theta)) - r)/numpy.sqrt(r))
+
+
+def cone_profile(theta, r):
+    """Height f(r) [m] of the cone above its tip (the profile whose g is cone_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(theta) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_profile(theta, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return r*numpy.tan(theta)
 
 
 def cone_stiffness(E_star, d, theta):
@@ -8243,6 +8300,29 @@ def paraboloid_g(R, x):
     return x**2/R
 
 
+def paraboloid_profile(R, r):
+    """Height f(r) [m] of the paraboloid above its tip (the profile whose g is paraboloid_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(R) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_paraboloid_profile(R, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*r**2/R
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -8839,6 +8919,31 @@ def powerlaw_pressure_small_n(E_star, a, d, n, r):
     import scipy.special
 
     return E_star*a**(-n)*d*n*r**(n - 1)*scipy.special.hyp2f1(1/2, (1/2)*n + 1/2, 3/2, functools.reduce(numpy.maximum, [0, (a - r)*(a + r)])/a**2)*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - r)*(a + r)]))/(numpy.pi*a)
+
+
+def powerlaw_profile(c_n, n, r):
+    """Height f(r) = c_n r^n [m] of a power-law profile above its tip (the profile whose g is powerlaw_g).
+
+    Chapter: Problem 7(d). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(c_n) is float and type(n) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_profile(c_n, n, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return c_n*r**n
 
 
 def powerlaw_punch_displacement_outside(a, d, r):
@@ -13075,6 +13180,11 @@ def _math_textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
     return -math.sqrt(2)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma)/(math.sqrt(math.pi)*math.sqrt((a*a) - (r*r)))
 
 
+def _math_adhesion_punch_cycle_work(E_star, a, dgamma):
+    """``adhesion_punch_cycle_work`` for Python floats (the math module); raises where it does."""
+    return 2*math.pi*(a*a)*dgamma
+
+
 def _math_adhesion_punch_pull_off_force(E_star, a, dgamma):
     """``adhesion_punch_pull_off_force`` for Python floats (the math module); raises where it does."""
     return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)
@@ -13413,6 +13523,11 @@ def _math_cone_pressure(E_star, d, theta, r):
 def _math_textbook_cone_pressure(E_star, d, theta, r):
     """``textbook_cone_pressure`` for Python floats (the math module); raises where it does."""
     return (1/2)*E_star*math.tan(theta)*math.acosh(2*d/(math.pi*r*math.tan(theta)))
+
+
+def _math_cone_profile(theta, r):
+    """``cone_profile`` for Python floats (the math module); raises where it does."""
+    return r*math.tan(theta)
 
 
 def _math_cone_stiffness(E_star, d, theta):
@@ -14295,6 +14410,11 @@ def _math_paraboloid_g(R, x):
     return (x*x)/R
 
 
+def _math_paraboloid_profile(R, r):
+    """``paraboloid_profile`` for Python floats (the math module); raises where it does."""
+    return (1/2)*(r*r)/R
+
+
 def _math_powerlaw_contact_radius(c_n, d, kappa_n, n):
     """``powerlaw_contact_radius`` for Python floats (the math module); raises where it does."""
     return math.pow(d/(c_n*kappa_n), 1/n)
@@ -14398,6 +14518,11 @@ def _math_powerlaw_pressure_n3(E_star, a, d, r):
 def _math_powerlaw_pressure_n4(E_star, a, d, r):
     """``powerlaw_pressure_n4`` for Python floats (the math module); raises where it does."""
     return (4/3)*E_star*d*math.sqrt((a*a) - (r*r))*((a*a) + 2*(r*r))/(math.pi*a**4)
+
+
+def _math_powerlaw_profile(c_n, n, r):
+    """``powerlaw_profile`` for Python floats (the math module); raises where it does."""
+    return c_n*math.pow(r, n)
 
 
 def _math_powerlaw_punch_displacement_outside(a, d, r):

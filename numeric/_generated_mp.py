@@ -38,6 +38,7 @@ __all__ = [
     'adhesion_powerlaw_pull_off_radius_fc',
     'adhesion_powerlaw_zero_load_radius',
     'adhesion_pressure_edge',
+    'adhesion_punch_cycle_work',
     'adhesion_punch_pull_off_force',
     'adhesion_sphere_g_slope',
     'adhesion_tabor_parameter',
@@ -95,6 +96,7 @@ __all__ = [
     'cone_g',
     'cone_mean_pressure',
     'cone_pressure',
+    'cone_profile',
     'cone_stiffness',
     'contact_mean_pressure',
     'coulomb_sliding_force',
@@ -283,6 +285,7 @@ __all__ = [
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
+    'paraboloid_profile',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_far',
@@ -304,6 +307,7 @@ __all__ = [
     'powerlaw_pressure_n4',
     'powerlaw_pressure_normalized',
     'powerlaw_pressure_small_n',
+    'powerlaw_profile',
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
     'powerlaw_punch_mean_pressure',
@@ -1001,6 +1005,27 @@ def adhesion_pressure_edge(E_star, a, dgamma, r):
         radial coordinate on the surface [m]
     """
     return -mpmath.sqrt(2)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a - r)*mpmath.sqrt(a + r))
+
+
+def adhesion_punch_cycle_work(E_star, a, dgamma):
+    """Work W [J] done on a flat punch of radius a over an approach-push-retract cycle: dissipated by the jump at pull-off (>= 0).
+
+    Chapter: (5.57), Kendall. Derived from: the closed integral of (5.57) with g = 0 over
+    the cycle.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_punch_cycle_work_is_kendalls``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return 2*mpmath.pi*a**2*dgamma
 
 
 def adhesion_punch_pull_off_force(E_star, a, dgamma):
@@ -2330,6 +2355,24 @@ def cone_pressure(E_star, d, theta, r):
         radial coordinate on the surface [m]
     """
     return E_star*mpmath.tan(theta)*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(2*d/(mpmath.pi*mpmath.tan(theta)) - r)/mpmath.sqrt(r))
+
+
+def cone_profile(theta, r):
+    """Height f(r) [m] of the cone above its tip (the profile whose g is cone_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return r*mpmath.tan(theta)
 
 
 def cone_stiffness(E_star, d, theta):
@@ -6489,6 +6532,24 @@ def paraboloid_g(R, x):
     return x**2/R
 
 
+def paraboloid_profile(R, r):
+    """Height f(r) [m] of the paraboloid above its tip (the profile whose g is paraboloid_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*r**2/R
+
+
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
     """Contact radius a [m] of a power-law indenter at depth d.
 
@@ -6977,6 +7038,26 @@ def powerlaw_pressure_small_n(E_star, a, d, n, r):
         radial coordinate on the surface [m]
     """
     return E_star*a**(-n)*d*n*r**(n - 1)*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), (mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(1)/mpmath.mpf(2)), (mpmath.mpf(3)/mpmath.mpf(2),), max(0, (a - r)*(a + r))/a**2)*mpmath.sqrt(max(0, (a - r)*(a + r)))/(mpmath.pi*a)
+
+
+def powerlaw_profile(c_n, n, r):
+    """Height f(r) = c_n r^n [m] of a power-law profile above its tip (the profile whose g is powerlaw_g).
+
+    Chapter: Problem 7(d). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return c_n*r**n
 
 
 def powerlaw_punch_displacement_outside(a, d, r):

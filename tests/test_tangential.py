@@ -816,3 +816,26 @@ def test_cone_traction_on_and_near_the_axis():
                 assert_close(q, ref, 32 * eps, f"theta {theta}, u/onset {frac}, r = {r}")
             # and the signed traction for u < 0
             assert ct.traction(0.0, -u) == -ct.traction(0.0, u)
+
+
+def test_profiles_against_their_g_by_5_53():
+    """paraboloid_profile, cone_profile and powerlaw_profile are the profiles whose g are
+    paraboloid_g, cone_g and powerlaw_g: f(r) = (2/pi) integral_0^r g(x)/sqrt(r^2 - x^2) dx
+    (5.53) of the generated g, by mpmath at 30 digits (x = r sin(phi) takes out the
+    endpoint): a few ulp of the float64 profile."""
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import powerlaw
+
+    cases = [(gen.paraboloid_profile, (R,), lambda x: gen.paraboloid_g(R, x)),
+             (gen.cone_profile, (0.3,), lambda x: gen.cone_g(0.3, x))]
+    for n, cn in ((2.5, 1e5), (1.5, 50.0), (6.0, 1e20)):
+        kap = float(powerlaw.kappa(n))
+        cases.append((gen.powerlaw_profile, (cn, n),
+                      lambda x, cn=cn, n=n, kap=kap: gen.powerlaw_g(cn, kap, n, x)))
+    for f, args, g in cases:
+        for rr in (1e-6, 3e-5, 1.2e-4):
+            with mp.workdps(30):
+                ref = 2 / mp.pi * mp.quad(lambda ph, rr=rr, g=g: mp.mpf(float(
+                    g(float(rr * mp.sin(ph))))), [0, mp.pi / 2])
+            # the quadrature of the float64 g: its rounding (a few ulp) and kappa_n's
+            assert_close(f(*args, rr), ref, 1e-14, f"{f.__name__}{args} r = {rr}")
