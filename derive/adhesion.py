@@ -202,7 +202,13 @@ def punch() -> dict[str, sp.Expr]:
     dl = critical_elongation()
     xi = sp.Symbol("xi", positive=True)
     F_depth = 2 * E_star * sp.integrate(d + 0 * xi, (xi, 0, a))  # (5.57) with g = 0
-    return {"F_c": sp.simplify(F_depth.subs(d, -dl)), "d_c": -dl}
+    # the work on the contact over an approach-push-retract cycle to a depth d_t > 0: F = 0
+    # until d = 0, F_depth up to d_t and back down to d = -Delta l, then the jump to F = 0
+    d_t, dd = sp.symbols("d_t dd", positive=True)
+    Fd = F_depth.subs(d, dd)
+    W = sp.simplify(sp.integrate(Fd, (dd, 0, d_t)) - sp.integrate(Fd, (dd, -dl, d_t)))
+    assert not W.has(d_t), W
+    return {"F_c": sp.simplify(F_depth.subs(d, -dl)), "d_c": -dl, "W": W}
 
 
 def relations() -> list[Relation]:
@@ -262,6 +268,11 @@ def relations() -> list[Relation]:
                  "pull-off force F_c [N] of a flat punch of radius a (Kendall), negative",
                  "(5.57) with g = 0 at d = -Delta l", f"{TEST}::test_kendall_literature",
                  printed=-sp.sqrt(8 * sp.pi * a**3 * E_star * dgamma)),
+        Relation("adhesion_punch_cycle_work", "(5.57), Kendall", pu["W"], (E_star, a, dgamma),
+                 "work W [J] done on a flat punch of radius a over an approach-push-retract "
+                 "cycle: dissipated by the jump at pull-off (>= 0)",
+                 "the closed integral of (5.57) with g = 0 over the cycle",
+                 f"{TEST}::test_punch_cycle_work_is_kendalls"),
         Relation("jkr_depth", "(5.55), JKR", j["d"], (E_star, R, a, dgamma),
                  "indentation depth d [m] of a paraboloid in JKR contact of radius a",
                  "(5.52) of r^2/(2R), (5.55) with Delta l", f"{TEST}::test_jkr_literature",

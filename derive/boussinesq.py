@@ -122,6 +122,16 @@ def relations() -> list[Relation]:
             f"surface displacement u_{comp} [m] at (x, y, 0) of a point force F in +z at "
             "the origin", "(5.1)-(5.3) at z -> 0",
             f"{TEST}::test_surface_displacement_is_the_limit", printed=printed_surface[i]))
+    # the surface Green's function of one elastic body under a rigid one: u_z rho/F at z = 0
+    # (5.6) with E = E* (1 - nu^2), E* = E/(1 - nu^2) of that body (5.8)
+    E_star = symbol("E_star")
+    prefactor = sp.simplify((surface[2] * rs / F).subs(E, E_star * (1 - nu**2)))
+    assert not prefactor.has(x, y, nu), prefactor
+    rels.append(Relation(
+        "boussinesq_surface_prefactor", "(5.7)", prefactor, (E_star,),
+        "prefactor 1/(pi E*) [1/Pa] of the surface Green's function: u_z = F/(pi E* rho)",
+        "(5.6) times rho/F with E/(1 - nu^2) = E*",
+        f"{TEST}::test_surface_prefactor_against_the_point_force"))
     printed = printed_stresses()
     numbers = {"xx": "(5.41)", "yy": "(5.42)", "zz": "(5.43)", "xy": "(5.44)", "yz": "(5.45)",
                "xz": "(5.46)"}

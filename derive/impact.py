@@ -52,6 +52,14 @@ def solution() -> dict[str, sp.Expr]:
            "a": sp.simplify(s["a"].subs(at_max))}
     out.update({k + "_rho": sp.simplify(v.subs(mass)) for k, v in list(out.items())})
     out["m_rho"] = mass[m]
+    # the integrator's length scale: x = x_s X, t = (x_s/v0) T turn m x'' = -F(x) (5.23) into
+    # X'' = -(4/3) X^(3/2) when m v0^2/x_s = E* sqrt(R) x_s^(3/2)
+    xs = sp.Symbol("x_s", positive=True)
+    balance = sp.Eq(m * v0**2 / xs, E_star * sp.sqrt(R) * xs ** sp.Rational(3, 2))
+    (out["xs"],) = [r for r in sp.solve(balance, xs) if r.is_positive]
+    F_hertz = s["F"].subs(d, xs * x)  # (5.23) at x = x_s X
+    assert sp.simplify(F_hertz.subs(xs, out["xs"]) / (m * v0**2 / out["xs"])
+                       - sp.Rational(4, 3) * x ** sp.Rational(3, 2)) == 0, F_hertz
     return out
 
 
@@ -104,6 +112,11 @@ def relations() -> list[Relation]:
                  s["a_rho"], (E_star, R, rho, v0),
                  "maximum contact radius [m] of a sphere of density rho hitting a wall at v0",
                  "(5.21) at the maximum depth", f"{TEST}::test_impact_by_equation_of_motion"),
+        Relation("impact_length_scale", "(5.23), nondimensionalized", s["xs"],
+                 (E_star, R, m, v0),
+                 "length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which "
+                 "the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s",
+                 "m v0^2/x_s = E* sqrt(R) x_s^(3/2)", f"{TEST}::test_length_scale"),
         Relation("impact_sphere_mass", "Problem 4, m = 4/3 pi R^3 rho", s["m_rho"], (R, rho),
                  "mass m [kg] of a solid sphere of radius R and density rho",
                  "the volume of the sphere times its density",

@@ -41,8 +41,15 @@ def solution() -> dict[str, sp.Expr]:
     gp_sing = strength / sp.sqrt((x - b) * (x + b))
     xx = sp.Symbol("xx", positive=True)
     g_sing = sp.simplify(mdr._integrate(gp_sing.subs(x, xx), (xx, b, x)))
+    # its integral from b (the kink's part of integral_0^a g dx in (5.57)), by parts:
+    # x g_sing(x) - integral_b^x y g_sing'(y) dy, the second in w = y^2 - b^2 (y dy = dw/2)
+    w = sp.Symbol("w", positive=True)
+    gp_w = (strength / sp.sqrt(x**2 - b**2)).subs(x, sp.sqrt(w + b**2))  # gp_sing at y
+    G_sing = x * g_sing - mdr._integrate(gp_w / 2, (w, 0, (x - b) * (x + b)))
+    assert sp.simplify(sp.diff(G_sing, x) - g_sing) == 0, G_sing
+    assert sp.limit(G_sing, x, b, "+") == 0, G_sing
     return {"g": g, "strength": strength, "p": E_star / sp.pi * integral,
-            "gp_sing": gp_sing, "g_sing": g_sing}
+            "gp_sing": gp_sing, "g_sing": g_sing, "G_sing": G_sing}
 
 
 def relations() -> list[Relation]:
@@ -66,5 +73,16 @@ def relations() -> list[Relation]:
                  stable=2 * b * s * sp.asinh(sp.sqrt((x - b) / (2 * b))),
                  stable_why="acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b "
                  "(relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b)))",
+                 domain={x: b / unit_interval()}),
+        Relation("mdr_kink_G", "(5.57)", sol["G_sing"], (b, s, x),
+                 "integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the "
+                 "integral of g in the force (5.57)",
+                 "integral of mdr_kink_g by parts (x g - integral of y g')",
+                 f"{TEST}::test_kink_G_by_quadrature",
+                 stable=b * s * (2 * x * sp.asinh(sp.sqrt((x - b) / (2 * b)))
+                                 - sp.sqrt((x - b) * (x + b))),
+                 stable_why="acosh of an argument near 1 loses digits as x -> b (as in "
+                 "mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is "
+                 "rounding of the integral of g it is added to",
                  domain={x: b / unit_interval()}),
     ]

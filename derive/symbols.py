@@ -122,6 +122,9 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "c_a": ("1", "stick ratio c/a (stick radius over contact radius)"),
     "d_c": ("1", "stick deficit 1 - c/a (c the stick radius, a the contact radius)"),
     "s_x": ("1", "position (x - c)/(a - c) in the slip zone c < x < a, in (0, 1)"),
+    "p_a": ("Pa", "contact pressure p(r; a) of a profile at contact radius a"),
+    "p_c": ("Pa", "contact pressure p(r; c) of the same profile at contact radius c (the stick "
+            "radius)"),
     # fit (issue 17): a regular pyramid as its equivalent cone
     "alpha_p": ("rad", "half-angle of a regular pyramid: between its axis and the mid-line of "
                 "a face"),

@@ -72,6 +72,7 @@ c_a = symbol("c_a")
 d_c = symbol("d_c")
 s_x = symbol("s_x")
 x = mdr.x
+p_a, p_c = symbol("p_a"), symbol("p_c")
 t = unit_interval("t")
 t_c = unit_interval("t_c")
 
@@ -177,11 +178,44 @@ def masing() -> bool:
     return True
 
 
+@cache
+def superposition() -> dict[str, sp.Expr]:
+    """The tangential tractions in the normal pressures (Ciavarella-Jaeger, found per spring).
+
+    A stuck spring (|x| < c) carries G* u_x = mu E* (d - g(c)), by the stick radius's
+    g(c) = d - G* u_x/(mu E*): that is mu (q_z(x; d) - q_z(x; g(c))), the difference of the
+    normal line loads (5.58) at the depths d and g(c) (the second 0 for |x| > c). A sliding
+    spring carries mu q_z(x; d). (5.59) is linear in the line load, so the traction is
+    mu (p(r; a) - p(r; c)) in the stick zone and mu p(r; a) in the slip zone, p(r; c) the
+    pressure of the same profile at contact radius c.
+    """
+    gx, gc, dd = sp.symbols("g_x g_c d_s", positive=True)
+    (u_c,) = sp.solve(sp.Eq(gc, dd - SLIP_DEPTH), u_x)
+    stuck = G_star * u_c
+    assert sp.simplify(stuck - mu_f * (E_star * (dd - gx) - E_star * (gc - gx))) == 0, stuck
+    return {"stick": mu_f * (p_a - p_c), "slip": mu_f * p_a}
+
+
+@cache
+def coulomb_limit() -> sp.Expr:
+    """mu F: the tangential force once every spring slides (c = 0), asserted to be mu F_N(a)
+    for the paraboloid, the cone and the power law (the spring sum against (5.57))."""
+    ratios = set()
+    for prof in (paraboloid(), cone(), powerlaw()):
+        g = prof["g"]
+        full = spring_force(g, sp.S.Zero)
+        ratios.add(sp.simplify(full / normal_force_at(g, a)))
+    (ratio,) = ratios
+    assert ratio == mu_f, ratio
+    return ratio * F
+
+
 # ---------------------------------------------------------------- the profiles
 @cache
 def paraboloid() -> dict[str, sp.Expr]:
     rp = sp.Symbol("r", positive=True)
-    g = mdr.transform(rp**2 / (2 * R), rp)  # (5.52): x^2/R
+    f = rp**2 / (2 * R)
+    g = mdr.transform(f, rp)  # (5.52): x^2/R
     (c_u,) = [s for s in sp.solve(sp.Eq(g.subs(x, c), g.subs(x, a) - SLIP_DEPTH), c)
               if s.could_extract_minus_sign() is False]
     Fx = sp.simplify(spring_force(g, c_u))
@@ -191,20 +225,23 @@ def paraboloid() -> dict[str, sp.Expr]:
               and s.could_extract_minus_sign() is False]
     u_F = sp.simplify(SLIP_DEPTH.subs(u_x, 1) ** -1 * (g.subs(x, a) - g.subs(x, c_F)))
     W = energy_integral(g)
-    return {"g": g, "c_u": c_u, "F_x": Fx, "F_a": F_a, "c_F": c_F, "u_F": u_F, "W": W,
+    return {"f": f.subs(rp, r), "g": g, "c_u": c_u, "F_x": Fx, "F_a": F_a, "c_F": c_F,
+            "u_F": u_F, "W": W,
             "q_stick": sp.simplify(traction_stick(g)), "q_slip": mu_f * mdr.pressure(g)}
 
 
 @cache
 def cone() -> dict[str, sp.Expr]:
     rp = sp.Symbol("r", positive=True)
-    g = mdr.transform(rp * sp.tan(theta), rp)  # (5.52): (pi/2) tan(theta) x
+    f = rp * sp.tan(theta)
+    g = mdr.transform(f, rp)  # (5.52): (pi/2) tan(theta) x
     (c_u,) = sp.solve(sp.Eq(g.subs(x, c), g.subs(x, a) - SLIP_DEPTH), c)
     Fx = sp.simplify(spring_force(g, c_u))
     cj = check_superposition(g, c)
     (c_F,) = [s for s in sp.solve(sp.Eq(cj, F_x), c) if s.could_extract_minus_sign() is False]
     u_F = sp.simplify((g.subs(x, a) - g.subs(x, c_F)) / SLIP_DEPTH.subs(u_x, 1))
-    return {"g": g, "c_u": c_u, "F_x": Fx, "F_a": normal_force_at(g, a), "c_F": c_F,
+    return {"f": f.subs(rp, r), "g": g, "c_u": c_u, "F_x": Fx, "F_a": normal_force_at(g, a),
+            "c_F": c_F,
             "u_F": u_F, "W": energy_integral(g), "q_stick": traction_stick(g)}
 
 
@@ -430,6 +467,43 @@ def relations() -> list[Relation]:
         stable_why="a - c = a x/(1 + sqrt(1 - x)), x = F_amp/(mu F), instead of "
                    "a (1 - sqrt(1 - x))"))
 
+    # the tractions: Coulomb's limit and the stick superposition for every profile, and the
+    # cone's stick-zone traction in a form that is finite on the axis
+    S = superposition()
+    rels.append(Relation(
+        "coulomb_sliding_force", "Coulomb's law, from the springs (not in the chapter)",
+        coulomb_limit(), (mu_f, F),
+        "tangential force mu F [N] of full sliding under the normal force F (Coulomb's limit)",
+        "the spring sum at c = 0 over the normal force (5.57)",
+        f"{TEST}::test_sliding_force_is_the_spring_sum_at_full_slip"))
+    rels.append(Relation(
+        "tangential_traction_slip", "MDR tangential (Ciavarella-Jaeger, found)", S["slip"],
+        (mu_f, p_a),
+        "tangential traction q [Pa] in the slip zone: mu p(r; a) of the pressure p_a [Pa]",
+        "(5.59) of the sliding springs' line load mu q_z",
+        f"{TEST}::test_traction_against_the_line_load_quadrature"))
+    rels.append(Relation(
+        "tangential_traction_stick", "MDR tangential (Ciavarella-Jaeger, found)", S["stick"],
+        (mu_f, p_a, p_c),
+        "tangential traction q [Pa] in the stick zone r < c: mu (p(r; a) - p(r; c)) of the "
+        "pressures p_a, p_c [Pa] of the profile at contact radii a and c",
+        "(5.59) of the stuck springs' line load mu (q_z(x; a) - q_z(x; c))",
+        f"{TEST}::test_traction_against_the_line_load_quadrature"))
+    ra, rc = sp.sqrt((a - r) * (a + r)), sp.sqrt((c - r) * (c + r))
+    rels.append(Relation(
+        "tangential_cone_traction_stick", "MDR tangential, cone (not in the chapter)",
+        C["q_stick"], (r, a, c, theta, E_star, mu_f),
+        "tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: "
+        "mu E* tan(theta)/2 ln(a/c) at r = 0",
+        "(5.59) of the tangential line load: mu (p(r; a) - p(r; c))",
+        f"{TEST}::test_cone_traction_on_and_near_the_axis", domain=dom_r,
+        stable=mu_f * E_star * sp.tan(theta) / 2
+        * log1p((a - c) * (1 + (a + c) / (ra + rc)) / (c + rc)),
+        stable_why="the two pressures are each log-infinite on the axis (inf - inf = NaN at "
+                   "r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)), "
+                   "written log1p of its excess over 1, it is finite at r = 0 and keeps its "
+                   "digits as c -> a"))
+
     # power law
     Pw = powerlaw()
     dom_up = {u_x: t * mu_f * E_star * kappa_n * c_n * a**n / G_star}
@@ -530,6 +604,13 @@ def relations() -> list[Relation]:
         "series in F_amp of the energy per cycle", f"{TEST}::test_cubic_small_amplitude_law"))
 
     # the profiles' g(x) (5.52) and the onset of sliding, for numeric/tangential.py
+    for name, prof, args, what in (("paraboloid_profile", P, (R, r), "paraboloid"),
+                                   ("cone_profile", C, (theta, r), "cone")):
+        rels.append(Relation(
+            name, "(5.52)", prof["f"], args,
+            f"height f(r) [m] of the {what} above its tip (the profile whose g is {what}_g)",
+            "the profile put through (5.52)",
+            f"{TEST}::test_profiles_against_their_g_by_5_53"))
     rels.append(Relation(
         "paraboloid_g", "(5.52) of f = r^2/(2R)", P["g"], (R, x),
         "MDR profile g(x) [m] of the paraboloid f = r^2/(2R) (the springs' gap; d = g(a))",

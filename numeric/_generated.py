@@ -41,6 +41,7 @@ __all__ = [
     'adhesion_powerlaw_pull_off_radius_fc',
     'adhesion_powerlaw_zero_load_radius',
     'adhesion_pressure_edge',
+    'adhesion_punch_cycle_work',
     'adhesion_punch_pull_off_force',
     'adhesion_sphere_g_slope',
     'adhesion_tabor_parameter',
@@ -71,6 +72,7 @@ __all__ = [
     'boussinesq_sigma_yy',
     'boussinesq_sigma_yz',
     'boussinesq_sigma_zz',
+    'boussinesq_surface_prefactor',
     'boussinesq_surface_ux',
     'boussinesq_surface_uy',
     'boussinesq_surface_uz',
@@ -97,8 +99,10 @@ __all__ = [
     'cone_g',
     'cone_mean_pressure',
     'cone_pressure',
+    'cone_profile',
     'cone_stiffness',
     'contact_mean_pressure',
+    'coulomb_sliding_force',
     'disc_mean_pressure',
     'disc_pressure',
     'ellipse_area',
@@ -222,6 +226,7 @@ __all__ = [
     'hertz_stiffness',
     'impact_contact_time',
     'impact_contact_time_density',
+    'impact_length_scale',
     'impact_max_contact_radius',
     'impact_max_contact_radius_density',
     'impact_max_depth',
@@ -281,6 +286,7 @@ __all__ = [
     'line_stress_von_mises_c_tau',
     'masing_unloading_force',
     'mdr_force',
+    'mdr_kink_G',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -288,6 +294,7 @@ __all__ = [
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
+    'paraboloid_profile',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_far',
@@ -309,8 +316,10 @@ __all__ = [
     'powerlaw_pressure_n4',
     'powerlaw_pressure_normalized',
     'powerlaw_pressure_small_n',
+    'powerlaw_profile',
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
+    'powerlaw_punch_mean_pressure',
     'powerlaw_punch_pressure',
     'punch_depth_from_force',
     'punch_pressure_displacement',
@@ -352,6 +361,7 @@ __all__ = [
     'tangential_cone_energy',
     'tangential_cone_force',
     'tangential_cone_stick_radius',
+    'tangential_cone_traction_stick',
     'tangential_modulus',
     'tangential_powerlaw_displacement',
     'tangential_powerlaw_energy',
@@ -365,6 +375,8 @@ __all__ = [
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
+    'tangential_traction_slip',
+    'tangential_traction_stick',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -411,6 +423,7 @@ RELATIONS = (
     ('adhesion_powerlaw_pull_off_radius_fc', '(5.57), adhesive', 'adhesion', '(9*pi*dgamma/(2*E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
     ('adhesion_powerlaw_zero_load_radius', '(5.57), adhesive', 'adhesion', '(2*pi*dgamma*(n**2 + 2*n + 1)/(E_star*c_n**2*kappa_n**2*n**2))**(1/(2*n - 1))', ''),
     ('adhesion_pressure_edge', '(5.59), adhesive', 'adhesion', '-sqrt(2)*sqrt(E_star)*sqrt(a)*sqrt(dgamma)/(sqrt(pi)*sqrt(a**2 - r**2))', ''),
+    ('adhesion_punch_cycle_work', '(5.57), Kendall', 'adhesion', '2*pi*a**2*dgamma', ''),
     ('adhesion_punch_pull_off_force', '(5.57), Kendall', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma)', ''),
     ('adhesion_sphere_g_slope', "(5.52), Sneddon's sphere", 'adhesion', '(R*x + (R**2 - x**2)*atanh(x/R))/(R**2 - x**2)', ''),
     ('adhesion_tabor_parameter', 'Tabor (1977)', 'adhesion', 'R**(1/3)*dgamma**(2/3)/(E_star**(2/3)*z0)', ''),
@@ -441,6 +454,7 @@ RELATIONS = (
     ('boussinesq_sigma_yy', '(5.42)', 'boussinesq', 'F*(2*nu*x**2*z*(x**2 + y**2 + z**2) + 4*nu*x**2*(x**2 + y**2 + z**2)**(3/2) - 2*nu*z*(x**2 + y**2 + z**2)**2 - 2*nu*(x**2 + y**2 + z**2)**(5/2) + 3*x**2*z**3 + 6*x**2*z**2*sqrt(x**2 + y**2 + z**2) + 2*x**2*z*(x**2 + y**2 + z**2) - 2*x**2*(x**2 + y**2 + z**2)**(3/2) + 3*z**5 + 6*z**4*sqrt(x**2 + y**2 + z**2) - 6*z**2*(x**2 + y**2 + z**2)**(3/2) - 2*z*(x**2 + y**2 + z**2)**2 + (x**2 + y**2 + z**2)**(5/2))/(2*pi*(z + sqrt(x**2 + y**2 + z**2))**2*(x**2 + y**2 + z**2)**(5/2))', ''),
     ('boussinesq_sigma_yz', '(5.45)', 'boussinesq', '-3*F*y*z**2/(2*pi*(x**2 + y**2 + z**2)**(5/2))', 'the sign: with the force F acting in +z (into the body, z > 0 in the body) the derivation gives tau_yz = -3 F y z^2/(2 pi R^5); the print has +3 F y z^2/(2 pi R^5), which together with the printed (5.43) violates the equilibrium d(tau_xz)/dx + d(tau_yz)/dy + d(sigma_zz)/dz = 0'),
     ('boussinesq_sigma_zz', '(5.43)', 'boussinesq', '-3*F*z**3/(2*pi*(x**2 + y**2 + z**2)**(5/2))', ''),
+    ('boussinesq_surface_prefactor', '(5.7)', 'boussinesq', '1/(pi*E_star)', ''),
     ('boussinesq_surface_ux', '(5.4)', 'boussinesq', 'F*x*(nu + 1)*(2*nu - 1)/(2*pi*E*(x**2 + y**2))', ''),
     ('boussinesq_surface_uy', '(5.5)', 'boussinesq', 'F*y*(nu + 1)*(2*nu - 1)/(2*pi*E*(x**2 + y**2))', ''),
     ('boussinesq_surface_uz', '(5.6)', 'boussinesq', '-F*(nu - 1)*(nu + 1)/(pi*E*sqrt(x**2 + y**2))', ''),
@@ -467,8 +481,10 @@ RELATIONS = (
     ('cone_g', '(5.52) of f = r tan(theta)', 'tangential', 'pi*x*tan(theta)/2', ''),
     ('cone_mean_pressure', '(5.40)/(pi a^2)', 'cone', 'E_star*tan(theta)/2', ''),
     ('cone_pressure', '(5.39)', 'cone', 'E_star*tan(theta)*acosh(2*d/(pi*r*tan(theta)))/2', "the print has a spurious minus sign: the pressure is positive in compression, p = E* d/(pi a) arccosh(a/r) with E* = E/(1 - nu^2), as (5.9), (5.15) and the chapter's own Problem 7(c) have it"),
+    ('cone_profile', '(5.52)', 'tangential', 'r*tan(theta)', ''),
     ('cone_stiffness', 'Problem 5', 'cone', '4*E_star*d/(pi*tan(theta))', ''),
     ('contact_mean_pressure', '(5.17)', 'contact', 'F/A', ''),
+    ('coulomb_sliding_force', "Coulomb's law, from the springs (not in the chapter)", 'tangential', 'F*mu_f', ''),
     ('disc_mean_pressure', '(5.17)', 'contact', 'F/(pi*a**2)', ''),
     ('disc_pressure', '(5.9), (5.15), Problem 6', 'contact', 'p0*(1 - r**2/a**2)**n_p', ''),
     ('ellipse_area', '(5.29), exact', 'ellipse', '2*pi*R1*d*t_ba*(-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/((1 - t_ba**2)*((-t_ba**2*elliptic_k(1 - t_ba**2) + elliptic_e(1 - t_ba**2))/(1 - t_ba**2) + (-elliptic_e(1 - t_ba**2) + elliptic_k(1 - t_ba**2))/(1 - t_ba**2)))', ''),
@@ -592,6 +608,7 @@ RELATIONS = (
     ('hertz_stiffness', 'Problem 5', 'hertz', '2*E_star*sqrt(R)*sqrt(d)', ''),
     ('impact_contact_time', 'Problem 3', 'impact', '30**(2/5)*sqrt(pi)*m**(2/5)*gamma(2/5)/(5*E_star**(2/5)*R**(1/5)*v0**(1/5)*gamma(9/10))', ''),
     ('impact_contact_time_density', 'Problem 3, m = 4/3 pi R^3 rho', 'impact', '2*2**(1/5)*5**(2/5)*pi**(9/10)*R*rho**(2/5)*gamma(2/5)/(5*E_star**(2/5)*v0**(1/5)*gamma(9/10))', ''),
+    ('impact_length_scale', '(5.23), nondimensionalized', 'impact', 'm**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))', ''),
     ('impact_max_contact_radius', 'Problem 4', 'impact', '30**(1/5)*R**(2/5)*m**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
     ('impact_max_contact_radius_density', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '2**(3/5)*5**(1/5)*pi**(1/5)*R*rho**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
     ('impact_max_depth', 'Problem 3', 'impact', '30**(2/5)*m**(2/5)*v0**(4/5)/(4*E_star**(2/5)*R**(1/5))', ''),
@@ -651,6 +668,7 @@ RELATIONS = (
     ('line_stress_von_mises_c_tau', '(5.50), plane strain', 'line_stress', 'sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)', ''),
     ('masing_unloading_force', "Masing's rule, derived from the springs", 'tangential', 'F_amp - 2*F_half', ''),
     ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
+    ('mdr_kink_G', '(5.57)', 'kink', '2*b*slope_jump*x*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b))) - b*slope_jump*sqrt(-b + x)*sqrt(b + x)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
@@ -658,6 +676,7 @@ RELATIONS = (
     ('mindlin_energy', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', '3*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(5*G_star*a)', ''),
     ('mindlin_energy_small', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', 'F_amp**3/(9*F*G_star*a*mu_f)', ''),
     ('paraboloid_g', '(5.52) of f = r^2/(2R)', 'tangential', 'x**2/R', ''),
+    ('paraboloid_profile', '(5.52)', 'tangential', 'r**2/(2*R)', ''),
     ('powerlaw_contact_radius', 'Problem 7(d)', 'powerlaw', '(d/(c_n*kappa_n))**(1/n)', ''),
     ('powerlaw_depth_from_force', 'Problem 7(d), inverted', 'powerlaw', '(F*(c_n*kappa_n)**(1/n)*(n + 1)/(2*E_star*n))**(n/(n + 1))', ''),
     ('powerlaw_displacement_far', 'Problem 7(d), (5.60), r >> a', 'powerlaw', '2*a*d*n*(a**2*(a**2*(a**2*(5*n + 5)/(r**2*(112*n + 784)) + (3*n + 3)/(40*n + 200))/r**2 + (n + 1)/(6*n + 18))/r**2 + 1)/(pi*r*(n + 1))', ''),
@@ -679,8 +698,10 @@ RELATIONS = (
     ('powerlaw_pressure_n4', 'Problem 7(d), n = 4', 'powerlaw', '4*E_star*d*sqrt(a**2 - r**2)*(a**2 + 2*r**2)/(3*pi*a**4)', ''),
     ('powerlaw_pressure_normalized', 'Fig. 5.17', 'powerlaw', '(n + 1)*hyper((1, 1 - n/2), (3/2,), Max(0, (1 - r_tilde)*(r_tilde + 1)))*sqrt(Max(0, (1 - r_tilde)*(r_tilde + 1)))/2', ''),
     ('powerlaw_pressure_small_n', 'Problem 7(d), (5.59)', 'powerlaw', 'E_star*d*n*r**(n - 1)*hyper((1/2, n/2 + 1/2), (3/2,), Max(0, (a - r)*(a + r))/a**2)*sqrt(Max(0, (a - r)*(a + r)))/(pi*a*a**n)', ''),
+    ('powerlaw_profile', 'Problem 7(d)', 'powerlaw', 'c_n*r**n', ''),
     ('powerlaw_punch_displacement_outside', 'Problem 7(a)', 'powerlaw', '2*d*asin(a/r)/pi', ''),
     ('powerlaw_punch_force', 'Problem 7(a)', 'powerlaw', '2*E_star*a*d', ''),
+    ('powerlaw_punch_mean_pressure', 'Problem 7(a)', 'powerlaw', '2*E_star*d/(pi*a)', ''),
     ('powerlaw_punch_pressure', 'Problem 7(a)', 'powerlaw', 'E_star*d/(pi*sqrt(a**2 - r**2))', ''),
     ('punch_depth_from_force', '(5.11), inverted', 'contact', 'F/(2*E_star*a)', ''),
     ('punch_pressure_displacement', '(5.10)', 'pressures', 'pi*a*p0/E_star', ''),
@@ -722,6 +743,7 @@ RELATIONS = (
     ('tangential_cone_energy', 'MDR tangential, cone (not in the chapter)', 'tangential', '4*sqrt(F)*sqrt(mu_f)*(sqrt(F)*sqrt(mu_f) - sqrt(F*mu_f - F_amp))**3/(3*G_star*a)', ''),
     ('tangential_cone_force', 'MDR tangential, cone (not in the chapter)', 'tangential', '2*G_star*u_x*(pi*E_star*a*mu_f - G_star*u_x/tan(theta))/(pi*E_star*mu_f)', ''),
     ('tangential_cone_stick_radius', 'MDR tangential, cone (not in the chapter)', 'tangential', 'a - 2*G_star*u_x/(pi*E_star*mu_f*tan(theta))', ''),
+    ('tangential_cone_traction_stick', 'MDR tangential, cone (not in the chapter)', 'tangential', 'mu_f*(E_star*log((a + sqrt(a**2 - r**2))/r)*tan(theta)/2 - E_star*log((c + sqrt(c**2 - r**2))/r)*tan(theta)/2)', ''),
     ('tangential_modulus', 'MDR tangential springs (not in the chapter)', 'tangential', '-4*G1*G2/(G1*(nu2 - 2) + G2*(nu1 - 2))', ''),
     ('tangential_powerlaw_displacement', 'MDR tangential, power law (not in the chapter)', 'tangential', 'F*mu_f*(1 - (1 - F_x/(F*mu_f))**(n/(n + 1)))*(n + 1)/(2*G_star*a*n)', ''),
     ('tangential_powerlaw_energy', 'MDR tangential, power law (not in the chapter)', 'tangential', '2*F**2*mu_f**2*(-2*c_a**n*n**2 - 3*c_a**n*n - c_a**n + 2*c_a**(n + 1)*n**2 + 3*c_a**(n + 1)*n + c_a**(n + 1) - c_a**(2*n + 1)*n - c_a**(2*n + 1) + n + 1)/(G_star*a*n*(2*n + 1))', ''),
@@ -735,6 +757,8 @@ RELATIONS = (
     ('tangential_slide_onset', 'MDR tangential springs (not in the chapter)', 'tangential', 'E_star*d*mu_f/G_star', ''),
     ('tangential_stiffness', 'MDR tangential springs (not in the chapter)', 'tangential', '2*G_star*a', ''),
     ('tangential_stiffness_ratio', 'MDR tangential springs (not in the chapter)', 'tangential', '2*(nu - 1)/(nu - 2)', ''),
+    ('tangential_traction_slip', 'MDR tangential (Ciavarella-Jaeger, found)', 'tangential', 'mu_f*p_a', ''),
+    ('tangential_traction_stick', 'MDR tangential (Ciavarella-Jaeger, found)', 'tangential', 'mu_f*(p_a - p_c)', ''),
     ('uniform_pressure_displacement', 'Problem 6', 'pressures', '4*a*p0*elliptic_e(r**2/a**2)/(pi*E_star)', ''),
     ('uniform_pressure_displacement_centre', 'Problem 6', 'pressures', '2*a*p0/E_star', ''),
     ('uniform_pressure_displacement_edge', 'Problem 6', 'pressures', '4*a*p0/(pi*E_star)', ''),
@@ -1530,6 +1554,32 @@ def adhesion_pressure_edge(E_star, a, dgamma, r):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -numpy.sqrt(2)*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.sqrt(dgamma)/(numpy.sqrt(numpy.pi)*numpy.sqrt(a - r)*numpy.sqrt(a + r))
+
+
+def adhesion_punch_cycle_work(E_star, a, dgamma):
+    """Work W [J] done on a flat punch of radius a over an approach-push-retract cycle: dissipated by the jump at pull-off (>= 0).
+
+    Chapter: (5.57), Kendall. Derived from: the closed integral of (5.57) with g = 0 over
+    the cycle.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_punch_cycle_work_is_kendalls``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    dgamma : float or ndarray
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    if type(E_star) is float and type(a) is float and type(dgamma) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_adhesion_punch_cycle_work(E_star, a, dgamma)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*numpy.pi*a**2*dgamma
 
 
 def adhesion_punch_pull_off_force(E_star, a, dgamma):
@@ -2381,6 +2431,27 @@ def boussinesq_sigma_zz(F, nu, x, y, z):
     return -3/2*F*z**3/(numpy.pi*(x**2 + y**2 + z**2)**(5/2))
 
 
+def boussinesq_surface_prefactor(E_star):
+    """Prefactor 1/(pi E*) [1/Pa] of the surface Green's function: u_z = F/(pi E* rho).
+
+    Chapter: (5.7). Derived from: (5.6) times rho/F with E/(1 - nu^2) = E*.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_prefactor_against_the_point_force``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    if type(E_star) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_boussinesq_surface_prefactor(E_star)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 1/(numpy.pi*E_star)
+
+
 def boussinesq_surface_ux(E, F, nu, x, y):
     """Surface displacement u_x [m] at (x, y, 0) of a point force F in +z at the origin.
 
@@ -3159,6 +3230,29 @@ def cone_pressure(E_star, d, theta, r):
     return E_star*numpy.tan(theta)*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(2*d/(numpy.pi*numpy.tan(theta)) - r)/numpy.sqrt(r))
 
 
+def cone_profile(theta, r):
+    """Height f(r) [m] of the cone above its tip (the profile whose g is cone_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(theta) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_cone_profile(theta, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return r*numpy.tan(theta)
+
+
 def cone_stiffness(E_star, d, theta):
     """Differential stiffness dF/dd [N/m] of a rigid cone at depth d.
 
@@ -3205,6 +3299,30 @@ def contact_mean_pressure(A, F):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return F/A
+
+
+def coulomb_sliding_force(mu_f, F):
+    """Tangential force mu F [N] of full sliding under the normal force F (Coulomb's limit).
+
+    Chapter: Coulomb's law, from the springs (not in the chapter). Derived from: the spring
+    sum at c = 0 over the normal force (5.57).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_sliding_force_is_the_spring_sum_at_full_slip``.
+
+    Parameters
+    ----------
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    F : float or ndarray
+        normal force [N]
+    """
+    if type(mu_f) is float and type(F) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_coulomb_sliding_force(mu_f, F)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return F*mu_f
 
 
 def disc_mean_pressure(F, a):
@@ -6519,6 +6637,34 @@ def impact_contact_time_density(E_star, R, rho, v0):
     return (2/5)*2**(1/5)*5**(2/5)*numpy.pi**(9/10)*R*rho**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*v0**(1/5)*scipy.special.gamma(9/10))
 
 
+def impact_length_scale(E_star, R, m, v0):
+    """Length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s.
+
+    Chapter: (5.23), nondimensionalized. Derived from: m v0^2/x_s = E* sqrt(R) x_s^(3/2).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_length_scale``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_length_scale(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return m**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))
+
+
 def impact_max_contact_radius(E_star, R, m, v0):
     """Maximum contact radius [m] during the impact.
 
@@ -8124,6 +8270,35 @@ def mdr_force(E_star, a, d, g_integral):
     return 2*E_star*(a*d - g_integral)
 
 
+def mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57).
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Printed in a stable form: acosh of an argument near 1 loses digits as x -> b (as in
+    mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of
+    the integral of g it is added to.
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_kink_G(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return b*slope_jump*(2*x*numpy.arcsinh((1/2)*numpy.sqrt(2)*numpy.sqrt(-b + x)/numpy.sqrt(b)) - numpy.sqrt(-b + x)*numpy.sqrt(b + x))
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -8316,6 +8491,29 @@ def paraboloid_g(R, x):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return x**2/R
+
+
+def paraboloid_profile(R, r):
+    """Height f(r) [m] of the paraboloid above its tip (the profile whose g is paraboloid_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(R) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_paraboloid_profile(R, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*r**2/R
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -8916,6 +9114,31 @@ def powerlaw_pressure_small_n(E_star, a, d, n, r):
     return E_star*a**(-n)*d*n*r**(n - 1)*scipy.special.hyp2f1(1/2, (1/2)*n + 1/2, 3/2, functools.reduce(numpy.maximum, [0, (a - r)*(a + r)])/a**2)*numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - r)*(a + r)]))/(numpy.pi*a)
 
 
+def powerlaw_profile(c_n, n, r):
+    """Height f(r) = c_n r^n [m] of a power-law profile above its tip (the profile whose g is powerlaw_g).
+
+    Chapter: Problem 7(d). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    """
+    if type(c_n) is float and type(n) is float and type(r) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_profile(c_n, n, r)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return c_n*r**n
+
+
 def powerlaw_punch_displacement_outside(a, d, r):
     """Surface displacement u_z(r) [m] outside a flat punch (r > a).
 
@@ -8966,6 +9189,31 @@ def powerlaw_punch_force(E_star, a, d):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*E_star*a*d
+
+
+def powerlaw_punch_mean_pressure(E_star, a, d):
+    """Mean pressure F/(pi a^2) [Pa] of a flat rigid punch of radius a at depth d.
+
+    Chapter: Problem 7(a). Derived from: the punch's force over the contact area.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : float or ndarray
+        contact radius [m]
+    d : float or ndarray
+        indentation depth [m]
+    """
+    if type(E_star) is float and type(a) is float and type(d) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_powerlaw_punch_mean_pressure(E_star, a, d)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*E_star*d/(numpy.pi*a)
 
 
 def powerlaw_punch_pressure(E_star, a, d, r):
@@ -10086,6 +10334,44 @@ def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     return a - 2*G_star*u_x/(numpy.pi*E_star*mu_f*numpy.tan(theta))
 
 
+def tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Printed in a stable form: the two pressures are each log-infinite on the axis (inf - inf
+    = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)),
+    written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c ->
+    a.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r) is float and type(a) is float and type(c) is float and type(theta) is float
+            and type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (1/2)*E_star*mu_f*numpy.tan(theta)*numpy.log1p((a - c)*((a + c)/(numpy.sqrt(a - r)*numpy.sqrt(a + r) + numpy.sqrt(c - r)*numpy.sqrt(c + r)) + 1)/(c + numpy.sqrt(c - r)*numpy.sqrt(c + r)))
+
+
 def tangential_modulus(G1, nu1, G2, nu2):
     """Tangential effective modulus G* [Pa] of two elastic bodies.
 
@@ -10493,6 +10779,56 @@ def tangential_stiffness_ratio(nu):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*(nu - 1)/(nu - 2)
+
+
+def tangential_traction_slip(mu_f, p_a):
+    """Tangential traction q [Pa] in the slip zone: mu p(r; a) of the pressure p_a [Pa].
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the sliding
+    springs' line load mu q_z.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    p_a : float or ndarray
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    """
+    if type(mu_f) is float and type(p_a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_traction_slip(mu_f, p_a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return mu_f*p_a
+
+
+def tangential_traction_stick(mu_f, p_a, p_c):
+    """Tangential traction q [Pa] in the stick zone r < c: mu (p(r; a) - p(r; c)) of the pressures p_a, p_c [Pa] of the profile at contact radii a and c.
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the stuck
+    springs' line load mu (q_z(x; a) - q_z(x; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    p_a : float or ndarray
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    p_c : float or ndarray
+        contact pressure p(r; c) of the same profile at contact radius c (the stick radius) [Pa]
+    """
+    if type(mu_f) is float and type(p_a) is float and type(p_c) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_traction_stick(mu_f, p_a, p_c)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return mu_f*(p_a - p_c)
 
 
 def uniform_pressure_displacement(E_star, a, p0, r):
@@ -11861,6 +12197,31 @@ def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
     return numpy.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
+def textbook_mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57), in the derived (textbook) form; use mdr_kink_G: acosh of an argument near 1 loses digits as x -> b (as in mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of the integral of g it is added to.
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Parameters
+    ----------
+    b : float or ndarray
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : float or ndarray
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : float or ndarray
+        coordinate [m]
+    """
+    if type(b) is float and type(slope_jump) is float and type(x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_mdr_kink_G(b, slope_jump, x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*b*slope_jump*x*numpy.arccosh((1/2)*numpy.sqrt(2)*numpy.sqrt(b + x)/numpy.sqrt(b)) - b*slope_jump*numpy.sqrt(-b + x)*numpy.sqrt(b + x)
+
+
 def textbook_mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b, in the derived (textbook) form; use mdr_kink_g: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
 
@@ -12514,6 +12875,39 @@ def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
     return (4/3)*numpy.sqrt(F)*numpy.sqrt(mu_f)*(numpy.sqrt(F)*numpy.sqrt(mu_f) - numpy.sqrt(F*mu_f - F_amp))**3/(G_star*a)
 
 
+def textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0, in the derived (textbook) form; use tangential_cone_traction_stick: the two pressures are each log-infinite on the axis (inf - inf = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)), written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c -> a.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    theta : float or ndarray
+        angle between the cone's surface and the plane [rad]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r) is float and type(a) is float and type(c) is float and type(theta) is float
+            and type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return mu_f*((1/2)*E_star*numpy.log((a + numpy.sqrt(a**2 - r**2))/r)*numpy.tan(theta) - 1/2*E_star*numpy.log((c + numpy.sqrt(c**2 - r**2))/r)*numpy.tan(theta))
+
+
 def textbook_tangential_modulus(G1, nu1, G2, nu2):
     """Tangential effective modulus G* [Pa] of two elastic bodies, in the derived (textbook) form; use tangential_modulus: a rigid body (G = inf) is G/(2 - nu) -> 0 instead of inf/inf.
 
@@ -12979,6 +13373,11 @@ def _math_textbook_adhesion_pressure_edge(E_star, a, dgamma, r):
     return -math.sqrt(2)*math.sqrt(E_star)*math.sqrt(a)*math.sqrt(dgamma)/(math.sqrt(math.pi)*math.sqrt((a*a) - (r*r)))
 
 
+def _math_adhesion_punch_cycle_work(E_star, a, dgamma):
+    """``adhesion_punch_cycle_work`` for Python floats (the math module); raises where it does."""
+    return 2*math.pi*(a*a)*dgamma
+
+
 def _math_adhesion_punch_pull_off_force(E_star, a, dgamma):
     """``adhesion_punch_pull_off_force`` for Python floats (the math module); raises where it does."""
     return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*math.sqrt(dgamma)
@@ -13164,6 +13563,11 @@ def _math_boussinesq_sigma_zz(F, nu, x, y, z):
     return -3/2*F*z**3/(math.pi*math.pow((x*x) + (y*y) + (z*z), 5/2))
 
 
+def _math_boussinesq_surface_prefactor(E_star):
+    """``boussinesq_surface_prefactor`` for Python floats (the math module); raises where it does."""
+    return 1/(math.pi*E_star)
+
+
 def _math_boussinesq_surface_ux(E, F, nu, x, y):
     """``boussinesq_surface_ux`` for Python floats (the math module); raises where it does."""
     return (1/2)*F*x*(nu + 1)*(2*nu - 1)/(math.pi*E*((x*x) + (y*y)))
@@ -13314,6 +13718,11 @@ def _math_textbook_cone_pressure(E_star, d, theta, r):
     return (1/2)*E_star*math.tan(theta)*math.acosh(2*d/(math.pi*r*math.tan(theta)))
 
 
+def _math_cone_profile(theta, r):
+    """``cone_profile`` for Python floats (the math module); raises where it does."""
+    return r*math.tan(theta)
+
+
 def _math_cone_stiffness(E_star, d, theta):
     """``cone_stiffness`` for Python floats (the math module); raises where it does."""
     return 4*E_star*d/(math.pi*math.tan(theta))
@@ -13322,6 +13731,11 @@ def _math_cone_stiffness(E_star, d, theta):
 def _math_contact_mean_pressure(A, F):
     """``contact_mean_pressure`` for Python floats (the math module); raises where it does."""
     return F/A
+
+
+def _math_coulomb_sliding_force(mu_f, F):
+    """``coulomb_sliding_force`` for Python floats (the math module); raises where it does."""
+    return F*mu_f
 
 
 def _math_disc_mean_pressure(F, a):
@@ -13834,6 +14248,11 @@ def _math_impact_contact_time_density(E_star, R, rho, v0):
     return (2/5)*math.pow(2, 1/5)*math.pow(5, 2/5)*math.pow(math.pi, 9/10)*R*math.pow(rho, 2/5)*math.gamma(2/5)/(math.pow(E_star, 2/5)*math.pow(v0, 1/5)*math.gamma(9/10))
 
 
+def _math_impact_length_scale(E_star, R, m, v0):
+    """``impact_length_scale`` for Python floats (the math module); raises where it does."""
+    return math.pow(m, 2/5)*math.pow(v0, 4/5)/(math.pow(E_star, 2/5)*math.pow(R, 1/5))
+
+
 def _math_impact_max_contact_radius(E_star, R, m, v0):
     """``impact_max_contact_radius`` for Python floats (the math module); raises where it does."""
     return (1/2)*math.pow(30, 1/5)*math.pow(R, 2/5)*math.pow(m, 1/5)*math.pow(v0, 2/5)/math.pow(E_star, 1/5)
@@ -14164,6 +14583,16 @@ def _math_mdr_force(E_star, a, d, g_integral):
     return 2*E_star*(a*d - g_integral)
 
 
+def _math_mdr_kink_G(b, slope_jump, x):
+    """``mdr_kink_G`` for Python floats (the math module); raises where it does."""
+    return b*slope_jump*(2*x*math.asinh((1/2)*math.sqrt(2)*math.sqrt(-b + x)/math.sqrt(b)) - math.sqrt(-b + x)*math.sqrt(b + x))
+
+
+def _math_textbook_mdr_kink_G(b, slope_jump, x):
+    """``textbook_mdr_kink_G`` for Python floats (the math module); raises where it does."""
+    return 2*b*slope_jump*x*math.acosh((1/2)*math.sqrt(2)*math.sqrt(b + x)/math.sqrt(b)) - b*slope_jump*math.sqrt(-b + x)*math.sqrt(b + x)
+
+
 def _math_mdr_kink_g(b, slope_jump, x):
     """``mdr_kink_g`` for Python floats (the math module); raises where it does."""
     return 2*b*slope_jump*math.asinh((1/2)*math.sqrt(2)*math.sqrt(-b + x)/math.sqrt(b))
@@ -14202,6 +14631,11 @@ def _math_mindlin_energy_small(a, F, G_star, mu_f, F_amp):
 def _math_paraboloid_g(R, x):
     """``paraboloid_g`` for Python floats (the math module); raises where it does."""
     return (x*x)/R
+
+
+def _math_paraboloid_profile(R, r):
+    """``paraboloid_profile`` for Python floats (the math module); raises where it does."""
+    return (1/2)*(r*r)/R
 
 
 def _math_powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -14309,6 +14743,11 @@ def _math_powerlaw_pressure_n4(E_star, a, d, r):
     return (4/3)*E_star*d*math.sqrt((a*a) - (r*r))*((a*a) + 2*(r*r))/(math.pi*a**4)
 
 
+def _math_powerlaw_profile(c_n, n, r):
+    """``powerlaw_profile`` for Python floats (the math module); raises where it does."""
+    return c_n*math.pow(r, n)
+
+
 def _math_powerlaw_punch_displacement_outside(a, d, r):
     """``powerlaw_punch_displacement_outside`` for Python floats (the math module); raises where it does."""
     return 2*d*math.asin(a/r)/math.pi
@@ -14317,6 +14756,11 @@ def _math_powerlaw_punch_displacement_outside(a, d, r):
 def _math_powerlaw_punch_force(E_star, a, d):
     """``powerlaw_punch_force`` for Python floats (the math module); raises where it does."""
     return 2*E_star*a*d
+
+
+def _math_powerlaw_punch_mean_pressure(E_star, a, d):
+    """``powerlaw_punch_mean_pressure`` for Python floats (the math module); raises where it does."""
+    return 2*E_star*d/(math.pi*a)
 
 
 def _math_powerlaw_punch_pressure(E_star, a, d, r):
@@ -14589,6 +15033,16 @@ def _math_tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     return a - 2*G_star*u_x/(math.pi*E_star*mu_f*math.tan(theta))
 
 
+def _math_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """``tangential_cone_traction_stick`` for Python floats (the math module); raises where it does."""
+    return (1/2)*E_star*mu_f*math.tan(theta)*math.log1p((a - c)*((a + c)/(math.sqrt(a - r)*math.sqrt(a + r) + math.sqrt(c - r)*math.sqrt(c + r)) + 1)/(c + math.sqrt(c - r)*math.sqrt(c + r)))
+
+
+def _math_textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """``textbook_tangential_cone_traction_stick`` for Python floats (the math module); raises where it does."""
+    return mu_f*((1/2)*E_star*math.log((a + math.sqrt((a*a) - (r*r)))/r)*math.tan(theta) - 1/2*E_star*math.log((c + math.sqrt((c*c) - (r*r)))/r)*math.tan(theta))
+
+
 def _math_tangential_modulus(G1, nu1, G2, nu2):
     """``tangential_modulus`` for Python floats (the math module); raises where it does."""
     return 1/((1/4)*(2 - nu2)/G2 + (1/4)*(2 - nu1)/G1)
@@ -14677,6 +15131,16 @@ def _math_tangential_stiffness(G_star, a):
 def _math_tangential_stiffness_ratio(nu):
     """``tangential_stiffness_ratio`` for Python floats (the math module); raises where it does."""
     return 2*(nu - 1)/(nu - 2)
+
+
+def _math_tangential_traction_slip(mu_f, p_a):
+    """``tangential_traction_slip`` for Python floats (the math module); raises where it does."""
+    return mu_f*p_a
+
+
+def _math_tangential_traction_stick(mu_f, p_a, p_c):
+    """``tangential_traction_stick`` for Python floats (the math module); raises where it does."""
+    return mu_f*(p_a - p_c)
 
 
 def _math_uniform_pressure_displacement_centre(E_star, a, p0):

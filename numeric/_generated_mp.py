@@ -38,6 +38,7 @@ __all__ = [
     'adhesion_powerlaw_pull_off_radius_fc',
     'adhesion_powerlaw_zero_load_radius',
     'adhesion_pressure_edge',
+    'adhesion_punch_cycle_work',
     'adhesion_punch_pull_off_force',
     'adhesion_sphere_g_slope',
     'adhesion_tabor_parameter',
@@ -68,6 +69,7 @@ __all__ = [
     'boussinesq_sigma_yy',
     'boussinesq_sigma_yz',
     'boussinesq_sigma_zz',
+    'boussinesq_surface_prefactor',
     'boussinesq_surface_ux',
     'boussinesq_surface_uy',
     'boussinesq_surface_uz',
@@ -94,8 +96,10 @@ __all__ = [
     'cone_g',
     'cone_mean_pressure',
     'cone_pressure',
+    'cone_profile',
     'cone_stiffness',
     'contact_mean_pressure',
+    'coulomb_sliding_force',
     'disc_mean_pressure',
     'disc_pressure',
     'ellipse_area',
@@ -219,6 +223,7 @@ __all__ = [
     'hertz_stiffness',
     'impact_contact_time',
     'impact_contact_time_density',
+    'impact_length_scale',
     'impact_max_contact_radius',
     'impact_max_contact_radius_density',
     'impact_max_depth',
@@ -278,6 +283,7 @@ __all__ = [
     'line_stress_von_mises_c_tau',
     'masing_unloading_force',
     'mdr_force',
+    'mdr_kink_G',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
@@ -285,6 +291,7 @@ __all__ = [
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
+    'paraboloid_profile',
     'powerlaw_contact_radius',
     'powerlaw_depth_from_force',
     'powerlaw_displacement_far',
@@ -306,8 +313,10 @@ __all__ = [
     'powerlaw_pressure_n4',
     'powerlaw_pressure_normalized',
     'powerlaw_pressure_small_n',
+    'powerlaw_profile',
     'powerlaw_punch_displacement_outside',
     'powerlaw_punch_force',
+    'powerlaw_punch_mean_pressure',
     'powerlaw_punch_pressure',
     'punch_depth_from_force',
     'punch_pressure_displacement',
@@ -349,6 +358,7 @@ __all__ = [
     'tangential_cone_energy',
     'tangential_cone_force',
     'tangential_cone_stick_radius',
+    'tangential_cone_traction_stick',
     'tangential_modulus',
     'tangential_powerlaw_displacement',
     'tangential_powerlaw_energy',
@@ -362,6 +372,8 @@ __all__ = [
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
+    'tangential_traction_slip',
+    'tangential_traction_stick',
     'uniform_pressure_displacement',
     'uniform_pressure_displacement_centre',
     'uniform_pressure_displacement_edge',
@@ -999,6 +1011,27 @@ def adhesion_pressure_edge(E_star, a, dgamma, r):
         radial coordinate on the surface [m]
     """
     return -mpmath.sqrt(2)*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.sqrt(dgamma)/(mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a - r)*mpmath.sqrt(a + r))
+
+
+def adhesion_punch_cycle_work(E_star, a, dgamma):
+    """Work W [J] done on a flat punch of radius a over an approach-push-retract cycle: dissipated by the jump at pull-off (>= 0).
+
+    Chapter: (5.57), Kendall. Derived from: the closed integral of (5.57) with g = 0 over
+    the cycle.
+
+    Derivation: ``hertzmdr.derive.adhesion``. Verified by
+    ``tests/test_adhesion.py::test_punch_cycle_work_is_kendalls``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    dgamma : mpmath.mpf
+        work of adhesion Delta gamma (energy per unit area to separate) [J/m^2]
+    """
+    return 2*mpmath.pi*a**2*dgamma
 
 
 def adhesion_punch_pull_off_force(E_star, a, dgamma):
@@ -1684,6 +1717,22 @@ def boussinesq_sigma_zz(F, nu, x, y, z):
     return -mpmath.mpf(3)/mpmath.mpf(2)*F*z**3/(mpmath.pi*(x**2 + y**2 + z**2)**(mpmath.mpf(5)/mpmath.mpf(2)))
 
 
+def boussinesq_surface_prefactor(E_star):
+    """Prefactor 1/(pi E*) [1/Pa] of the surface Green's function: u_z = F/(pi E* rho).
+
+    Chapter: (5.7). Derived from: (5.6) times rho/F with E/(1 - nu^2) = E*.
+
+    Derivation: ``hertzmdr.derive.boussinesq``. Verified by
+    ``tests/test_boussinesq.py::test_surface_prefactor_against_the_point_force``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    """
+    return 1/(mpmath.pi*E_star)
+
+
 def boussinesq_surface_ux(E, F, nu, x, y):
     """Surface displacement u_x [m] at (x, y, 0) of a point force F in +z at the origin.
 
@@ -2314,6 +2363,24 @@ def cone_pressure(E_star, d, theta, r):
     return E_star*mpmath.tan(theta)*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(2*d/(mpmath.pi*mpmath.tan(theta)) - r)/mpmath.sqrt(r))
 
 
+def cone_profile(theta, r):
+    """Height f(r) [m] of the cone above its tip (the profile whose g is cone_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return r*mpmath.tan(theta)
+
+
 def cone_stiffness(E_star, d, theta):
     """Differential stiffness dF/dd [N/m] of a rigid cone at depth d.
 
@@ -2350,6 +2417,25 @@ def contact_mean_pressure(A, F):
         normal force [N]
     """
     return F/A
+
+
+def coulomb_sliding_force(mu_f, F):
+    """Tangential force mu F [N] of full sliding under the normal force F (Coulomb's limit).
+
+    Chapter: Coulomb's law, from the springs (not in the chapter). Derived from: the spring
+    sum at c = 0 over the normal force (5.57).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_sliding_force_is_the_spring_sum_at_full_slip``.
+
+    Parameters
+    ----------
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    F : mpmath.mpf
+        normal force [N]
+    """
+    return F*mu_f
 
 
 def disc_mean_pressure(F, a):
@@ -5096,6 +5182,28 @@ def impact_contact_time_density(E_star, R, rho, v0):
     return (mpmath.mpf(2)/mpmath.mpf(5))*2**(mpmath.mpf(1)/mpmath.mpf(5))*5**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(9)/mpmath.mpf(10))*R*rho**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(2)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(1)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(9)/mpmath.mpf(10)))
 
 
+def impact_length_scale(E_star, R, m, v0):
+    """Length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s.
+
+    Chapter: (5.23), nondimensionalized. Derived from: m v0^2/x_s = E* sqrt(R) x_s^(3/2).
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_length_scale``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return m**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(4)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5)))
+
+
 def impact_max_contact_radius(E_star, R, m, v0):
     """Maximum contact radius [m] during the impact.
 
@@ -6391,6 +6499,30 @@ def mdr_force(E_star, a, d, g_integral):
     return 2*E_star*(a*d - g_integral)
 
 
+def mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57).
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Printed in a stable form: acosh of an argument near 1 loses digits as x -> b (as in
+    mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of
+    the integral of g it is added to.
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return b*slope_jump*(2*x*mpmath.asinh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(-b + x)/mpmath.sqrt(b)) - mpmath.sqrt(-b + x)*mpmath.sqrt(b + x))
+
+
 def mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b.
 
@@ -6548,6 +6680,24 @@ def paraboloid_g(R, x):
         coordinate [m]
     """
     return x**2/R
+
+
+def paraboloid_profile(R, r):
+    """Height f(r) [m] of the paraboloid above its tip (the profile whose g is paraboloid_g).
+
+    Chapter: (5.52). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*r**2/R
 
 
 def powerlaw_contact_radius(c_n, d, kappa_n, n):
@@ -7040,6 +7190,26 @@ def powerlaw_pressure_small_n(E_star, a, d, n, r):
     return E_star*a**(-n)*d*n*r**(n - 1)*mpmath.hyper((mpmath.mpf(1)/mpmath.mpf(2), (mpmath.mpf(1)/mpmath.mpf(2))*n + mpmath.mpf(1)/mpmath.mpf(2)), (mpmath.mpf(3)/mpmath.mpf(2),), max(0, (a - r)*(a + r))/a**2)*mpmath.sqrt(max(0, (a - r)*(a + r)))/(mpmath.pi*a)
 
 
+def powerlaw_profile(c_n, n, r):
+    """Height f(r) = c_n r^n [m] of a power-law profile above its tip (the profile whose g is powerlaw_g).
+
+    Chapter: Problem 7(d). Derived from: the profile put through (5.52).
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_tangential.py::test_profiles_against_their_g_by_5_53``.
+
+    Parameters
+    ----------
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    """
+    return c_n*r**n
+
+
 def powerlaw_punch_displacement_outside(a, d, r):
     """Surface displacement u_z(r) [m] outside a flat punch (r > a).
 
@@ -7080,6 +7250,26 @@ def powerlaw_punch_force(E_star, a, d):
         indentation depth [m]
     """
     return 2*E_star*a*d
+
+
+def powerlaw_punch_mean_pressure(E_star, a, d):
+    """Mean pressure F/(pi a^2) [Pa] of a flat rigid punch of radius a at depth d.
+
+    Chapter: Problem 7(a). Derived from: the punch's force over the contact area.
+
+    Derivation: ``hertzmdr.derive.powerlaw``. Verified by
+    ``tests/test_powerlaw.py::test_punch``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    a : mpmath.mpf
+        contact radius [m]
+    d : mpmath.mpf
+        indentation depth [m]
+    """
+    return 2*E_star*d/(mpmath.pi*a)
 
 
 def powerlaw_punch_pressure(E_star, a, d, r):
@@ -8001,6 +8191,38 @@ def tangential_cone_stick_radius(a, theta, E_star, G_star, mu_f, u_x):
     return a - 2*G_star*u_x/(mpmath.pi*E_star*mu_f*mpmath.tan(theta))
 
 
+def tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Printed in a stable form: the two pressures are each log-infinite on the axis (inf - inf
+    = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)),
+    written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c ->
+    a.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return (mpmath.mpf(1)/mpmath.mpf(2))*E_star*mu_f*mpmath.tan(theta)*mpmath.log1p((a - c)*((a + c)/(mpmath.sqrt(a - r)*mpmath.sqrt(a + r) + mpmath.sqrt(c - r)*mpmath.sqrt(c + r)) + 1)/(c + mpmath.sqrt(c - r)*mpmath.sqrt(c + r)))
+
+
 def tangential_modulus(G1, nu1, G2, nu2):
     """Tangential effective modulus G* [Pa] of two elastic bodies.
 
@@ -8331,6 +8553,46 @@ def tangential_stiffness_ratio(nu):
         Poisson's ratio [1]
     """
     return 2*(nu - 1)/(nu - 2)
+
+
+def tangential_traction_slip(mu_f, p_a):
+    """Tangential traction q [Pa] in the slip zone: mu p(r; a) of the pressure p_a [Pa].
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the sliding
+    springs' line load mu q_z.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    p_a : mpmath.mpf
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    """
+    return mu_f*p_a
+
+
+def tangential_traction_stick(mu_f, p_a, p_c):
+    """Tangential traction q [Pa] in the stick zone r < c: mu (p(r; a) - p(r; c)) of the pressures p_a, p_c [Pa] of the profile at contact radii a and c.
+
+    Chapter: MDR tangential (Ciavarella-Jaeger, found). Derived from: (5.59) of the stuck
+    springs' line load mu (q_z(x; a) - q_z(x; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_traction_against_the_line_load_quadrature``.
+
+    Parameters
+    ----------
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    p_a : mpmath.mpf
+        contact pressure p(r; a) of a profile at contact radius a [Pa]
+    p_c : mpmath.mpf
+        contact pressure p(r; c) of the same profile at contact radius c (the stick radius) [Pa]
+    """
+    return mu_f*(p_a - p_c)
 
 
 def uniform_pressure_displacement(E_star, a, p0, r):
@@ -9471,6 +9733,26 @@ def textbook_line_stress_von_mises(nu, sigma_xx, sigma_zz, tau_xz):
     return mpmath.sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)
 
 
+def textbook_mdr_kink_G(b, slope_jump, x):
+    """Integral from b to x > b [m^2] of mdr_kink_g: the kink's part of the integral of g in the force (5.57), in the derived (textbook) form; use mdr_kink_G: acosh of an argument near 1 loses digits as x -> b (as in mdr_kink_g); the two terms still cancel to a relative (x - b)/b, which is rounding of the integral of g it is added to.
+
+    Chapter: (5.57). Derived from: integral of mdr_kink_g by parts (x g - integral of y g').
+
+    Derivation: ``hertzmdr.derive.kink``. Verified by
+    ``tests/test_kink.py::test_kink_G_by_quadrature``.
+
+    Parameters
+    ----------
+    b : mpmath.mpf
+        radius of the flat (worn) tip of a flattened paraboloid (Problem 8); the radius of a kink of the profile (derive/kink.py) [m]
+    slope_jump : mpmath.mpf
+        jump f'(b+) - f'(b-) of the profile's slope at a kink r = b [1]
+    x : mpmath.mpf
+        coordinate [m]
+    """
+    return 2*b*slope_jump*x*mpmath.acosh((mpmath.mpf(1)/mpmath.mpf(2))*mpmath.sqrt(2)*mpmath.sqrt(b + x)/mpmath.sqrt(b)) - b*slope_jump*mpmath.sqrt(-b + x)*mpmath.sqrt(b + x)
+
+
 def textbook_mdr_kink_g(b, slope_jump, x):
     """Integral from b to x > b [m] of the branch-point term of g' at a kink r = b, in the derived (textbook) form; use mdr_kink_g: acosh of an argument 1 + (x - b)/(4b) loses digits as x -> b (relative eps b/(x - b)); it is written 2 asinh(sqrt((x - b)/(2b))).
 
@@ -9992,6 +10274,33 @@ def textbook_tangential_cone_energy(a, F, G_star, mu_f, F_amp):
         amplitude F_x* of an oscillating tangential force [N]
     """
     return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.sqrt(F)*mpmath.sqrt(mu_f)*(mpmath.sqrt(F)*mpmath.sqrt(mu_f) - mpmath.sqrt(F*mu_f - F_amp))**3/(G_star*a)
+
+
+def textbook_tangential_cone_traction_stick(r, a, c, theta, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone r < c of a cone, finite on the axis: mu E* tan(theta)/2 ln(a/c) at r = 0, in the derived (textbook) form; use tangential_cone_traction_stick: the two pressures are each log-infinite on the axis (inf - inf = NaN at r = 0); as one logarithm of (a + sqrt(a^2 - r^2))/(c + sqrt(c^2 - r^2)), written log1p of its excess over 1, it is finite at r = 0 and keeps its digits as c -> a.
+
+    Chapter: MDR tangential, cone (not in the chapter). Derived from: (5.59) of the
+    tangential line load: mu (p(r; a) - p(r; c)).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_cone_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    theta : mpmath.mpf
+        angle between the cone's surface and the plane [rad]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return mu_f*((mpmath.mpf(1)/mpmath.mpf(2))*E_star*mpmath.log((a + mpmath.sqrt(a**2 - r**2))/r)*mpmath.tan(theta) - mpmath.mpf(1)/mpmath.mpf(2)*E_star*mpmath.log((c + mpmath.sqrt(c**2 - r**2))/r)*mpmath.tan(theta))
 
 
 def textbook_tangential_modulus(G1, nu1, G2, nu2):

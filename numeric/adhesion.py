@@ -197,7 +197,7 @@ class Paraboloid(Shape):
         return _hertz.force(self.g(a), self.R, E_star)  # d = g(a) (5.55)
 
     def height(self, r):
-        return r**2 / (2 * self.R)
+        return gen.paraboloid_profile(self.R, r)
 
     def pressure0(self, r, a, E_star):
         return _hertz.pressure(r, self.g(a), self.R, E_star)
@@ -242,7 +242,7 @@ class Cone(Shape):
         return _cone.force(_cone.depth(a, self.theta), self.theta, E_star)
 
     def height(self, r):
-        return r * np.tan(self.theta)
+        return gen.cone_profile(self.theta, r)
 
     def pressure0(self, r, a, E_star):
         return _cone.pressure(r, _cone.depth(a, self.theta), self.theta, E_star)
@@ -301,7 +301,7 @@ class PowerLaw(Shape):
         return _powerlaw.force_from_radius(a, self.g(a), self.n, E_star)
 
     def height(self, r):
-        return self.c_n * r**self.n
+        return gen.powerlaw_profile(self.c_n, self.n, r)
 
     def pressure0(self, r, a, E_star):
         return _powerlaw.pressure(r, self.g(a), self.c_n, self.n, E_star)
@@ -1168,5 +1168,5 @@ class AdhesiveContact:
         aa[n:3 * n] = a
         loading = np.arange(points) < 2 * n
         jumps = [Jump("pull-off", (d_c, F_c, a), (d_c, 0.0, 0.0))] if self.dgamma else []
-        W = k * d_c**2 / 2  # minus the integral of k d dd from d_c to 0 on the retract
+        W = float(gen.adhesion_punch_cycle_work(self.E_star, a, self.dgamma))  # closed F dd
         return Cycle(d, F, aa, loading, jumps, W, 8 * _EPS * W, control)

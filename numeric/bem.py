@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, nonnegative, positive
 
 __all__ = ["influence_kernel", "HalfSpace", "BEMResult", "solve", "punch_stiffness",
@@ -62,7 +63,7 @@ def influence_kernel(x, y, dx, dy, E_star):
     hx, hy = dx / 2, dy / 2
     total = (_love_primitive(x + hx, y + hy) - _love_primitive(x + hx, y - hy)
              - _love_primitive(x - hx, y + hy) + _love_primitive(x - hx, y - hy))
-    return total / (np.pi * E_star)  # (5.7)
+    return total * gen.boussinesq_surface_prefactor(E_star)  # (5.7)
 
 
 class HalfSpace:
@@ -94,7 +95,8 @@ class HalfSpace:
         X = (np.arange(nx + 2) - 0.5) * self.dx
         Y = (np.arange(ny + 2) - 0.5) * self.dy
         F = _love_primitive(X[:, None], Y[None, :])
-        Kq = (F[1:, 1:] - F[1:, :-1] - F[:-1, 1:] + F[:-1, :-1]) / (np.pi * self.E_star)
+        Kq = ((F[1:, 1:] - F[1:, :-1] - F[:-1, 1:] + F[:-1, :-1])
+              * gen.boussinesq_surface_prefactor(self.E_star))  # (5.7)
         # circulant embedding of the Toeplitz kernel on a (2nx, 2ny) grid: offsets 0..nx-1,
         # then -nx..-1 (the offset nx is never used by the linear convolution); the kernel is
         # even, so the embedding is too and its transform is real

@@ -14,8 +14,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import positive
 
@@ -58,7 +56,7 @@ def integrate(v0, R, E_star, m, *, rtol: float = 1e-10) -> Motion:
                    (("v0", v0), ("R", R), ("E_star", E_star), ("m", m)))
     if not 1e-13 <= rtol <= 1e-3:
         raise ValueError(f"rtol = {rtol!r} is out of range; valid: 1e-13 <= rtol <= 1e-3")
-    xs = (m * v0**2 / (E * np.sqrt(R))) ** 0.4
+    xs = float(gen.impact_length_scale(E, R, m, v0))  # X'' = -(4/3) X^(3/2) in these units
     ts = xs / v0
     fs = m * xs / ts**2  # force scale
 

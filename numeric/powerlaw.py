@@ -348,13 +348,14 @@ def pressure_normalized(r_tilde, n):
         Exponent, > 0, may be inf (flat punch: 1/(2 sqrt(1 - r_tilde^2))).
     """
     rt, n = np.broadcast_arrays(nonnegative("r_tilde", r_tilde), positive("n", n, allow_inf=True))
-    # p/p_mean = p(r) pi a^2/F for a = 1, d = 1, E* = 1: F from (5.57) (the punch's for n = inf)
+    # p/p_mean for a = 1, d = 1, E* = 1: p_mean = F/(pi a^2) from (5.57) (the punch's for
+    # n = inf)
     nn = np.where(np.isinf(n), 1.0, n)
-    F = np.where(np.isinf(n), gen.powerlaw_punch_force(1.0, 1.0, 1.0),
-                 gen.powerlaw_force_from_radius(1.0, 1.0, 1.0, nn))
+    p_mean = np.where(np.isinf(n), gen.powerlaw_punch_mean_pressure(1.0, 1.0, 1.0),
+                      gen.powerlaw_mean_pressure(1.0, 1.0, 1.0, nn))
     c = np.where(np.isinf(n), 1.0, 1.0 / kappa(nn))  # a = 1 at d = 1
     p = pressure(rt, 1.0, c, n, 1.0)
-    return result(p * np.pi / F)
+    return result(p / p_mean)
 
 
 @representable

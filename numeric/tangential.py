@@ -37,7 +37,7 @@ from hertzmdr.numeric import cone as _cone
 from hertzmdr.numeric import powerlaw as _powerlaw
 from hertzmdr.numeric._validate import as_float, nonnegative, poisson, positive, result, scalar_path
 
-__all__ = ["effective_modulus", "shear_modulus", "stiffness_ratio", "stiffness",
+__all__ = ["effective_modulus", "shear_modulus", "stiffness_ratio", "stiffness", "sliding_force",
            "Paraboloid", "Cone", "PowerLaw", "FlatPunch", "PROFILES", "Contact",
            "history", "History", "GAUSS_NODES", "ENERGY_QUADRATURE_BELOW"]
 
@@ -110,6 +110,20 @@ def stiffness(a, G_star):
         Tangential effective modulus [Pa], > 0.
     """
     return result(gen.tangential_stiffness(positive("G_star", G_star), nonnegative("a", a)))
+
+
+@scalar_path
+def sliding_force(mu, F_N):
+    """Coulomb's limit mu F_N [N]: the tangential force once every spring slides.
+
+    Parameters
+    ----------
+    mu : float or array_like
+        Coefficient of friction, >= 0.
+    F_N : float or array_like
+        Normal force [N], >= 0.
+    """
+    return result(gen.coulomb_sliding_force(nonnegative("mu", mu), nonnegative("F_N", F_N)))
 
 
 # ------------------------------------------------------------------------------ profiles
@@ -188,11 +202,13 @@ class Cone:
         return gen.tangential_powerlaw_stick_radius_from_force(a, 1.0, F, mu, F_x)
 
     def traction(self, r, c, a, E_star, G_star, mu, u):
-        d = _cone.depth(a, self.theta)
-        slip = mu * _cone.pressure(r, d, self.theta, E_star)
-        inner = mu * _cone.pressure(np.minimum(r, c), _cone.depth(c, self.theta), self.theta,
-                                    E_star)
-        return slip - np.where(r < c, inner, 0.0), slip
+        p_a = _cone.pressure(r, _cone.depth(a, self.theta), self.theta, E_star)
+        slip = gen.tangential_traction_slip(mu, p_a)  # Coulomb: the sliding springs
+        # mu (p(r; a) - p(r; c)) as one log1p: finite on the axis, ln(a/c) there; c = 0 (all
+        # slide) gives inf, and the caller takes the slip value there (r < c is empty)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            stick = gen.tangential_cone_traction_stick(r, a, c, self.theta, E_star, mu)
+        return stick, slip
 
     def energy(self, F_amp, F, a, G_star, mu):
         return gen.tangential_cone_energy(a, F, G_star, mu, F_amp)
@@ -241,9 +257,10 @@ class PowerLaw:
         return gen.tangential_powerlaw_stick_radius_from_force(a, self.n, F, mu, F_x)
 
     def traction(self, r, c, a, E_star, G_star, mu, u):
-        slip = mu * _powerlaw.pressure(r, self.g(a), self.c_n, self.n, E_star)
-        inner = mu * _powerlaw.pressure(np.minimum(r, c), self.g(c), self.c_n, self.n, E_star)
-        return slip - np.where(r < c, inner, 0.0), slip
+        p_a = _powerlaw.pressure(r, self.g(a), self.c_n, self.n, E_star)
+        p_c = _powerlaw.pressure(np.minimum(r, c), self.g(c), self.c_n, self.n, E_star)
+        stick = gen.tangential_traction_stick(mu, p_a, p_c)  # the stick superposition
+        return stick, gen.tangential_traction_slip(mu, p_a)  # Coulomb: the sliding springs
 
     def energy(self, F_amp, F, a, G_star, mu):
         n = self.n
@@ -355,7 +372,7 @@ class Contact:
     @property
     def sliding_force(self) -> float:
         """mu F_N [N]: the tangential force of full sliding (Coulomb)."""
-        return self.mu * self.normal_force
+        return float(gen.coulomb_sliding_force(self.mu, self.normal_force))
 
     @property
     def slide_onset(self) -> float:
@@ -643,7 +660,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
         else:
             d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
         qz = E_star * np.maximum(d - gv, 0.0)  # (5.58)
-        cap = mu * qz
+        cap = gen.coulomb_sliding_force(mu, qz)  # Coulomb's limit of each spring
         wcap = w * cap
         # springs that lost contact or normal load release their shear by sliding
         g_rel = np.minimum(np.maximum(f, -cap), cap)

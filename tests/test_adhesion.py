@@ -686,3 +686,17 @@ def test_punch_cycle_path(control):
         c.cycle(to, control, pts, start=d_c / 2)
     with pytest.raises(ValueError, match=r"^start = nan"):
         c.cycle(to, control, pts, start=float("nan"))
+
+
+def test_punch_cycle_work_is_kendalls():
+    """The work over a flat punch's approach-push-retract cycle (adhesion_punch_cycle_work,
+    and Cycle.work of AdhesiveContact.cycle) against Kendall's pull-off typed here at 30
+    digits: the retract branch F = k d, k = 2 E* a, ends at F_c = -sqrt(8 pi a^3 E* Delta
+    gamma) and jumps to 0, so W = F_c^2/(2 k): a few ulp."""
+    for E, R, dg in CASES:
+        with mp.workdps(DPS):
+            Fc2 = 8 * mp.pi * mp.mpf(R) ** 3 * E * dg
+            ref = Fc2 / (2 * 2 * E * mp.mpf(R))
+        assert_close(gen.adhesion_punch_cycle_work(E, R, dg), ref, 8e-16, f"E {E} a {R}")
+        cyc = ad.AdhesiveContact(ad.FlatPunch(R), E, dg).cycle(to=1e-9, control="depth")
+        assert_close(cyc.hysteresis, ref, 8e-16, f"cycle E {E} a {R}")

@@ -112,3 +112,20 @@ def test_displacement_generated_equals_given():
             with mp.workdps(30):
                 ref = f(mp.mpf(2e11), mp.mpf(10.0), mp.mpf(0.3), mp.mpf(x), mp.mpf(y), mp.mpf(z))
             assert abs(fn(2e11, 10.0, 0.3, x, y, z) / float(ref) - 1) < 1e-14
+
+
+def test_surface_prefactor_against_the_point_force():
+    """boussinesq_surface_prefactor is 1/(pi E*): u_z rho/F on the surface of one body
+    (E, nu) under a point force, by the Landau-Lifshitz displacement typed here at 30 digits
+    (u_z = F (1 + nu)/(2 pi E) (2 (1 - nu)/rho + z^2/rho^3), z -> 0), with E* = E/(1 - nu^2):
+    a few ulp (two roundings)."""
+    from hertzmdr.numeric import _generated as gen
+
+    for Ev, nuv in ((210e9, 0.3), (1e3, 0.49), (5e12, -0.5), (1.0, 0.0)):
+        with mp.workdps(30):
+            Em, num, rho, Fm = mp.mpf(Ev), mp.mpf(nuv), mp.mpf("0.37"), mp.mpf(2)
+            uz = Fm * (1 + num) / (2 * mp.pi * Em) * (2 * (1 - num) / rho)
+            ref = uz * rho / Fm
+            E_star = float(Em / (1 - num**2))
+        got = gen.boussinesq_surface_prefactor(E_star)
+        assert abs(mp.mpf(got) / ref - 1) < 4 * 2.0**-52, (Ev, nuv, got, ref)

@@ -270,3 +270,20 @@ def test_motion_integrator_at_any_scale(E, R, m, v0):
 
 def test_motion_names_each_input_in_its_error():
     assert_inputs_named(motion.integrate, dict(v0=2.0, R=0.02, E_star=3e10, m=0.5))
+
+
+def test_length_scale():
+    """impact_length_scale x_s makes the equation of motion X'' = -(4/3) X^(3/2): checked as
+    the scale at which the Hertz force (5.23), typed here, at x = x_s equals (4/3) m v0^2/x_s,
+    at 30 digits; and the maximal depth in it is the literature's (15/16)^(2/5) x_s
+    (Problem 3)."""
+    for E, R, m, v0 in ((1e11, 0.01, 0.03, 1.0), (1e6, 1e-6, 1e-12, 1e-3), (5e9, 2.0, 70.0, 30.0)):
+        xs = gen.impact_length_scale(E, R, m, v0)
+        with mp.workdps(30):
+            x = mp.mpf(xs)
+            F = mp.mpf(4) / 3 * E * mp.sqrt(R) * x ** mp.mpf(1.5)
+            # x_s's rounding (four powers of 1 ulp, three products: <= 7 eps) enters the
+            # ratio, proportional to x_s^(5/2), 2.5-fold
+            assert abs(F / (mp.mpf(4) / 3 * m * mp.mpf(v0) ** 2 / x) - 1) < 18 * 2.0**-52
+            x0 = (mp.mpf(15) / 16 * m * mp.mpf(v0) ** 2 / (E * mp.sqrt(R))) ** mp.mpf(0.4)
+            assert abs(x0 / ((mp.mpf(15) / 16) ** mp.mpf(0.4) * x) - 1) < 8 * 2.0**-52

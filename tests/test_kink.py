@@ -101,3 +101,21 @@ def test_worn_pressure_contains_the_kink_term():
     rest = [gen.worn_pressure(E, R, A, B, rr) - gen.mdr_kink_pressure(E, A, B, rr, B / R)
             for rr in near]
     assert abs(rest[0] - rest[1]) < 1e-6 * abs(rest[0])
+
+
+def test_kink_G_by_quadrature():
+    """mdr_kink_G against integral_b^x of b s acosh(t/b) (the kink's term of g) by 30-digit
+    quadrature (t = b + u^2 puts the sqrt onset at u = 0 into a smooth integrand), from x at
+    the kink to far out. Error model: the two terms of the closed form (each ~ b s
+    sqrt(2 b (x - b))) cancel to ~ (x - b)^(3/2): relative 16 eps (1 + b/(x - b))."""
+    s = -0.7
+    eps = 2.0**-52
+    for ratio in (1 + 1e-10, 1 + 1e-6, 1.001, 1.3, 2.0, 1e3, 1e6):
+        xx = B * ratio
+        with mp.workdps(30):
+            bm, xm = mp.mpf(B), mp.mpf(xx)
+            ref = mp.quad(lambda u, bm=bm: 2 * u * bm * s * mp.acosh(1 + u * u / bm),
+                          [0, mp.sqrt(xm - bm)])
+            tol = 16 * eps * (1 + float(bm / (xm - bm)))
+        assert_close(gen.mdr_kink_G(B, s, xx), ref, tol, f"x/b = {ratio}")
+    assert gen.mdr_kink_G(B, s, B) == 0  # at the kink itself

@@ -234,6 +234,9 @@ def test_punch():
         assert_close(gen.powerlaw_punch_displacement_outside(aa, dd, 1.0), u_out, TOL_FLOAT, "u")
         F = force_axisymmetric(lambda rr: E * dd / (mp.pi * mp.sqrt(aa**2 - rr**2)), aa)
         assert_close(gen.powerlaw_punch_force(E, aa, dd), F, TOL_FLOAT, "F")
+        # the mean pressure: the kernel-route force over the area
+        assert_close(gen.powerlaw_punch_mean_pressure(E, aa, dd), F / (mp.pi * mp.mpf(aa) ** 2),
+                     TOL_FLOAT, "p_mean")
         assert_close(gen.powerlaw_punch_pressure(E, aa, dd, 0.2),
                      p_gap(mp.mpf(aa) ** 2 - mp.mpf(0.2) ** 2), TOL_FLOAT, "p")
     # n -> inf with a fixed: F -> 2 E* a d at rate 1/n, and p -> the punch pressure

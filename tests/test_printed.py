@@ -104,6 +104,29 @@ def _equal_in_atanh(rel, x, y):
     return True
 
 
+def _equal_in_logs(rel, x, y):
+    """Sums of logarithms (log1p(z) as log(1 + z)) with commensurate coefficients: equal when
+    the product of their arguments raised to the coefficients' ratios is 1 as an algebraic
+    function (:func:`_algebraic_zero`); the arguments are positive on the domain (the 50-digit
+    check catches a branch)."""
+    e = _in_domain(rel, x - y).replace(log1p, lambda z: sp.log(1 + z))
+    terms = sp.Add.make_args(sp.expand(e))
+    parts = []
+    for term in terms:
+        logs = [f for f in sp.Mul.make_args(term) if isinstance(f, sp.log)]
+        if len(logs) != 1:
+            return False
+        parts.append((sp.simplify(term / logs[0]), logs[0].args[0]))
+    k0 = parts[0][0]
+    prod = sp.S.One
+    for k, arg in parts:
+        m = sp.simplify(k / k0)
+        if not m.is_Rational:
+            return False
+        prod *= arg**m
+    return _algebraic_zero(sp.together(prod) - 1)
+
+
 def _equal(rel, x, y):
     x, y = _exact(x), _exact(y)
     if sp.simplify(sp.hyperexpand(_in_domain(rel, x - y))) == 0:
@@ -150,6 +173,9 @@ def _equal(rel, x, y):
             return e.replace(is_power, as_power)
 
         return sp.simplify(sp.expand_trig(powers(x) - powers(y))) == 0
+    if x.has(log1p) and y.has(sp.log) and not x.has(sp.exp, expm1) and (
+            _equal_in_logs(rel, x, y)):
+        return True
     if x.has(log1p) or y.has(log1p):
         # exp(k log1p(-q)) against (1 - q)^k: simplify does not know 1 - q > 0. Both sides
         # are positive on the domain (the 50-digit check below catches a sign), so compare

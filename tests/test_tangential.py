@@ -706,3 +706,136 @@ def test_dissimilar_poisson_ratios():
     h = tg.history(tg.Paraboloid(R), E_star=Es, G_star=Gs, mu=MU, x_max=1.2 * a,
                    normal_force=[F_N, F_N], F_x=[0.0, Fx], n_grid=1000)
     assert abs(h.u_x[-1] - float(delta)) <= h.u_x_error
+
+
+def _g_mp(prof):
+    """g(x) and g'(x) of a closed-form profile at 30 digits: (5.52) of c_n r^n is
+    kappa_n c_n x^n, kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2) (the cone n = 1,
+    c_n = tan(theta); the paraboloid n = 2, c_n = 1/(2R))."""
+    if isinstance(prof, tg.Cone):
+        n, cn = mp.mpf(1), mp.tan(mp.mpf(prof.theta))
+    elif isinstance(prof, tg.Paraboloid):
+        n, cn = mp.mpf(2), 1 / (2 * mp.mpf(prof.R))
+    else:
+        n, cn = mp.mpf(prof.n), mp.mpf(prof.c_n)
+    kap = mp.sqrt(mp.pi) * mp.gamma(n / 2 + 1) / mp.gamma(n / 2 + mp.mpf(1) / 2)
+    return (lambda x: kap * cn * x**n), (lambda x: n * kap * cn * x ** (n - 1))
+
+
+def _traction_mp(prof, a, mu, u, r):
+    """(5.59) of the springs' tangential line load, at 30 digits: q_x = mu E* (d - g(x)) for
+    the sliding springs |x| > c, constant for the stuck ones, so q_x' = -mu E* g'(x) on
+    (c, a) and q(r) = (mu E*/pi) integral_max(r, c)^a g'(x)/sqrt(x^2 - r^2) dx, c from
+    g(c) = g(a) - G* u/(mu E*) (u = None: all slide, c = 0). x = r + w^2 takes out the
+    1/sqrt at x = r (r > c)."""
+    g, gp = _g_mp(prof)
+    a, r = mp.mpf(a), mp.mpf(r)
+    c = mp.mpf(0)
+    if u is not None:
+        s = G_STAR * mp.mpf(u) / (mu * E_STAR)
+        c = mp.findroot(lambda cc: g(cc) - (g(a) - s), (0, a), solver="anderson")
+    if r < c:
+        val = mp.quad(lambda x: gp(x) / mp.sqrt((x - r) * (x + r)), [c, a])
+    else:
+        val = mp.quad(lambda w: 2 * gp(r + w * w) / mp.sqrt(2 * r + w * w),
+                      [0, mp.sqrt(a - r)])
+    return mu * E_STAR / mp.pi * val, c
+
+
+def test_sliding_force_is_the_spring_sum_at_full_slip():
+    """Coulomb's limit (tg.sliding_force, Contact.sliding_force, the force beyond the onset)
+    against the springs all sliding, 2 mu E* integral_0^a (g(a) - g(x)) dx by mpmath at 30
+    digits: a few ulp (the normal force's own rounding, ~1e-15, and one product)."""
+    a = 1.2e-4
+    for prof in (tg.Paraboloid(R), tg.Cone(0.3), tg.PowerLaw(1e5, 2.5), tg.PowerLaw(50.0, 1.5)):
+        g, _ = _g_mp(prof)
+        for mu in (MU, 1e-3, 1.7):
+            ct = tg.Contact(prof, a, E_STAR, G_STAR, mu)
+            with mp.workdps(30):
+                ref = 2 * mu * E_STAR * mp.quad(lambda x, g=g: g(mp.mpf(a)) - g(x), [0, a])
+            assert_close(ct.sliding_force, ref, 2e-15, f"{prof} mu = {mu}")
+            assert_close(tg.sliding_force(mu, ct.normal_force), ref, 2e-15, f"{prof}")
+            assert ct.force(2 * ct.slide_onset) == ct.sliding_force
+    assert tg.sliding_force(0.0, 5.0) == 0 and np.all(tg.sliding_force(0.5, [2.0, 4.0]) ==
+                                                       [1.0, 2.0])
+    with pytest.raises(ValueError, match="mu"):
+        tg.sliding_force(-0.1, 1.0)
+
+
+def test_traction_against_the_line_load_quadrature():
+    """Contact.traction of the cone and power laws (stick superposition and Coulomb's slip
+    traction) against (5.59) of the springs' line load by mpmath at 30 digits, in the stick
+    and the slip zone, at three displacements. Error model: each pressure is good to a few
+    ulp (1e-15 relative, numeric/powerlaw.py), and the stick form mu (p_a - p_c) loses the
+    ratio p_a/(p_a - p_c) of it; near the rim a - r carries the rounding of a and r; the
+    reference's c is found independently (findroot)."""
+    a = 1.2e-4
+    for prof in (tg.Cone(0.3), tg.PowerLaw(1e5, 2.5), tg.PowerLaw(50.0, 1.5),
+                 tg.PowerLaw(30.0, 3.0)):
+        ct = tg.Contact(prof, a, E_STAR, G_STAR, MU)
+        g, _ = _g_mp(prof)
+        for frac in (0.05, 0.5, 0.95):
+            u = frac * ct.slide_onset
+            c = float(ct.stick_radius(u))
+            for r in (0.2 * c, 0.7 * c, 0.99 * c, c + 0.3 * (a - c), c + 0.9 * (a - c)):
+                with mp.workdps(30):
+                    ref, _ = _traction_mp(prof, a, MU, u, r)
+                    # the slip traction at r: the cancellation's scale in the stick zone
+                    p_a, _ = _traction_mp(prof, a, MU, None, r)
+                # near the rim the pressure's a (recomputed from d = g(a)) and r carry
+                # rounding eps a into a - r: relative eps a/(a - r) for p ~ sqrt(a - r)
+                tol = 8e-15 * float(abs(p_a / ref)) + 4e-15 + 8 * 2.0**-52 * a / (a - r)
+                assert_close(ct.traction(r, u), ref, tol, f"{prof} u/onset = {frac}, r = {r}")
+
+
+def test_cone_traction_on_and_near_the_axis():
+    """The cone's stick-zone traction at r = 0, 1e-300 and 1e-8 c (it was NaN on the axis:
+    the difference of two pressures each log-infinite there) against (5.59) of the line load
+    by mpmath at 30 digits; on the axis the limit mu E* tan(theta)/2 ln(a/c). Also for c -> a
+    (u = 1e-6 of the onset). Error model: the log1p form takes ~10 roundings, each eps
+    relative, into an argument of condition <= 1: 32 eps."""
+    a, eps = 1.2e-4, np.finfo(float).eps
+    for theta in (0.3, 1e-3, 1.4):
+        prof = tg.Cone(theta)
+        ct = tg.Contact(prof, a, E_STAR, G_STAR, MU)
+        for frac in (1e-6, 0.3, 0.999):
+            u = frac * ct.slide_onset
+            c = float(ct.stick_radius(u))
+            for r in (0.0, 1e-300, 1e-8 * c):
+                q = ct.traction(r, u)
+                assert np.isfinite(q), (theta, frac, r, q)
+                with mp.workdps(30):
+                    cm, am, rm = mp.mpf(c), mp.mpf(a), mp.mpf(r)
+                    # the line load's (5.59) with the numeric c (the traction's input)
+                    ref = (MU * E_STAR / mp.pi * mp.pi / 2 * mp.tan(mp.mpf(theta))
+                           * mp.quad(lambda x, rm=rm: 1 / mp.sqrt((x - rm) * (x + rm)),
+                                     [cm, am]))
+                    if r == 0:
+                        assert abs(ref / (MU * E_STAR * mp.tan(mp.mpf(theta)) / 2
+                                          * mp.log(am / cm)) - 1) < mp.mpf(10) ** -25
+                assert_close(q, ref, 32 * eps, f"theta {theta}, u/onset {frac}, r = {r}")
+            # and the signed traction for u < 0
+            assert ct.traction(0.0, -u) == -ct.traction(0.0, u)
+
+
+def test_profiles_against_their_g_by_5_53():
+    """paraboloid_profile, cone_profile and powerlaw_profile are the profiles whose g are
+    paraboloid_g, cone_g and powerlaw_g: f(r) = (2/pi) integral_0^r g(x)/sqrt(r^2 - x^2) dx
+    (5.53) of the generated g, by mpmath at 30 digits (x = r sin(phi) takes out the
+    endpoint): a few ulp of the float64 profile."""
+    from hertzmdr.numeric import _generated as gen
+    from hertzmdr.numeric import powerlaw
+
+    cases = [(gen.paraboloid_profile, (R,), lambda x: gen.paraboloid_g(R, x)),
+             (gen.cone_profile, (0.3,), lambda x: gen.cone_g(0.3, x))]
+    for n, cn in ((2.5, 1e5), (1.5, 50.0), (6.0, 1e20)):
+        kap = float(powerlaw.kappa(n))
+        cases.append((gen.powerlaw_profile, (cn, n),
+                      lambda x, cn=cn, n=n, kap=kap: gen.powerlaw_g(cn, kap, n, x)))
+    for f, args, g in cases:
+        for rr in (1e-6, 3e-5, 1.2e-4):
+            with mp.workdps(30):
+                ref = 2 / mp.pi * mp.quad(lambda ph, rr=rr, g=g: mp.mpf(float(
+                    g(float(rr * mp.sin(ph))))), [0, mp.pi / 2])
+            # the quadrature of the float64 g: its rounding (a few ulp) and kappa_n's
+            assert_close(f(*args, rr), ref, 1e-14, f"{f.__name__}{args} r = {rr}")

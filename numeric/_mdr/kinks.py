@@ -3,7 +3,8 @@
 At a kink b_j (a segment edge; every knot of a linear spline) f' jumps by s_j, and g' has the
 branch point b_j s_j / sqrt(x^2 - b_j^2) (x > b_j). Its terms in g (5.52), g' and p (5.59) are
 the generated ``mdr_kink_g``, ``mdr_kink_gprime`` and ``mdr_kink_pressure``
-(derive/kink.py); the rest of g' is smooth and left to the quadrature and the tables.
+(derive/kink.py), with ``mdr_kink_G`` the integral of the term of g (5.57); the rest of g' is
+smooth and left to the quadrature and the tables.
 """
 
 from __future__ import annotations
@@ -49,19 +50,16 @@ def terms(rep: Rep, x: np.ndarray, nu: int) -> np.ndarray:
 
 
 def primitive(rep: Rep, x: np.ndarray) -> np.ndarray:
-    """sum_j of integral_(b_j)^x of the kink terms of g [m^2] at x [m] (x > b_j), by parts:
-    integral_b^x g_j = x g_j(x) - integral_b^x y g_j'(y) dy, and y g_j' = y b s / sqrt(y^2 -
-    b^2) integrates to b s sqrt(x^2 - b^2) = (x - b)(x + b) g_j'(x) (both terms of the
-    difference go like (x - b)^(1/2): it loses digits relative to them as x -> b, not
-    relative to the integral of g, which it is added to)."""
+    """sum_j of integral_(b_j)^x of the kink terms of g [m^2] at x [m] (x > b_j): the
+    generated ``mdr_kink_G`` (its two terms go like (x - b)^(1/2) and cancel to (x - b)^(3/2):
+    it loses digits relative to them as x -> b, not relative to the integral of g, which it
+    is added to)."""
     b, s = jumps(rep)
     out = np.zeros(x.shape)
     for bj, sj in zip(b, s, strict=True):
         sel = x > bj
         if sel.any():
-            xs = x[sel]
-            out[sel] += (xs * gen.mdr_kink_g(bj, sj, xs)  # (5.52)
-                         - (xs - bj) * (xs + bj) * gen.mdr_kink_gprime(bj, sj, xs))
+            out[sel] += gen.mdr_kink_G(bj, sj, x[sel])  # (5.57)
     return out
 
 

@@ -180,7 +180,7 @@ class TangentialEffects:
               "u_x" if h.control == "displacement" else "F_x": tang}
         H = self._springs(spec, "load.history", h.lines, g=g, x_max=x_max, **kw)
         return TangentialState(None, "history", None, None, 0, Springs(H, True),
-                               sliding=mu * float(H.normal_force[-1]),
+                               sliding=float(tg.sliding_force(mu, H.normal_force[-1])),
                                stiffness=float(tg.stiffness(float(H.contact_radius[-1]),
                                                             self.materials.G_star)))
 
@@ -192,7 +192,8 @@ class TangentialEffects:
         d = self.last(st)
         a = self.a_at(d)
         F_N = float(np.max(st.force))
-        base = dict(sliding=mu * F_N, stiffness=float(tg.stiffness(a, self.materials.G_star)),
+        mu_F = float(tg.sliding_force(mu, F_N))  # Coulomb's limit
+        base = dict(sliding=mu_F, stiffness=float(tg.stiffness(a, self.materials.G_star)),
                     rel=float(st.rel_error))
         tl = spec.load.tangential
         if tl is None:
@@ -208,17 +209,18 @@ class TangentialEffects:
         else:
             path = np.array([0.0, tl.value])
             key, at, cyc = f"load.tangential.{tl.kind}", 1, None
-        if tl.kind != "displacement" and tl.value > mu * F_N * (1 + 1e-12):
+        if tl.kind != "displacement" and tl.value > mu_F * (1 + 1e-12):
             from hertzmdr.numeric.scene.schema import SceneError
 
             raise SceneError(spec.source, key, f"{tl.value!r} N exceeds the sliding force mu F "
-                             f"= {mu * F_N!r} N (mu = {mu}); valid: <= mu F")
+                             f"= {mu_F!r} N (mu = {mu}); valid: <= mu F")
         if tl.kind != "displacement":
             # the grids' mu F (fine and half) may lie a little below the state's: an amplitude
             # within that grid error of mu F is clipped to the smaller (full sliding)
-            lim = mu * min(float(self._springs(spec, key, g=g, x_max=x_max, depth=[d], u_x=[0.0],
-                                               estimate_error=False, half=half).normal_force[0])
-                           for half in (False, True))
+            lim = float(tg.sliding_force(mu, min(
+                float(self._springs(spec, key, g=g, x_max=x_max, depth=[d], u_x=[0.0],
+                                    estimate_error=False, half=half).normal_force[0])
+                for half in (False, True))))
             path = np.clip(path, -lim, lim)
         kw = {"u_x" if tl.kind == "displacement" else "F_x": path}
         H = self._springs(spec, key, g=g, x_max=x_max, depth=np.full(path.size, d), **kw)
@@ -249,9 +251,11 @@ class TangentialEffects:
     def effect_sliding_force(self, ts: TangentialState) -> Value:
         sp = ts.springs
         if sp is not None and sp.history:
+            from hertzmdr.numeric import tangential as tg
+
             H = sp.run
-            mu = self.interface.friction
-            return Value(mu * H.normal_force, f"Coulomb: mu F of every state ({SPRINGS})",
+            mu_F = tg.sliding_force(self.interface.friction, H.normal_force)
+            return Value(mu_F, f"Coulomb: mu F of every state ({SPRINGS})",
                          _rel(H.normal_force_error, H.normal_force))
         return Value(ts.sliding, "Coulomb: mu F", ts.rel)
 
