@@ -1046,8 +1046,9 @@ def check_von_mises_field(case, route, eff, name, ds):
     refs = [route.axis(z[i], max(ds), case.nu) for i in k]
     tol = stress_tol(case, eff)
     close_field([sv[i, j] for i in k], [abs(s[0] - s[1]) for s in refs], tol, name)
-    if case.key not in ("hertz_sphere", "power_law"):
-        return  # the ring route costs 10 s a point; one Hertz and one superposed kind run it
+    if case.key != "hertz_sphere" and not (FULL and case.key == "power_law"):
+        return  # the ring route costs 10-40 s a point: Hertz in every run, a superposed kind
+        # (the power law) with HERTZMDR_SWEEP=full
     a = float(route.radius(max(ds)))
     jx = int(np.argmin(np.abs(x - a / 2)))
     iz = int(np.argmin(np.abs(z - a / 2)))
