@@ -127,33 +127,34 @@ class _Family:
         return {"tan(theta)": float(np.tan(self.shape))}
 
 
+def _generated_family(name, shape, fit, pull_off, a_plain, length) -> _Family:
+    """The _Family of the generated fit_<fit>_* relations and <pull_off>_pull_off_*_dc at the
+    geometry ``shape``; ``a_plain``(d) is the contact radius without adhesion."""
+    def at_shape(fn, baseline=False):
+        if baseline:  # the force without its baseline F_0 + s_0 z_p
+            return lambda E, a, rho: fn(E, shape, a, rho, 0.0, 0.0, 0.0)
+        return lambda E, a, rho: fn(E, shape, a, rho)
+
+    rel = {k: getattr(gen, f"fit_{fit}_{k}")
+           for k in ("depth", "depth_da", "force", "force_dE", "force_dz0", "force_ddgamma")}
+    radius_dc = getattr(gen, f"{pull_off}_pull_off_radius_dc")
+    force_dc = getattr(gen, f"{pull_off}_pull_off_force_dc")
+    return _Family(name, shape, at_shape(rel["depth"]), at_shape(rel["depth_da"]),
+                   at_shape(rel["force"], baseline=True), at_shape(rel["force_dE"]),
+                   at_shape(rel["force_dz0"]), at_shape(rel["force_ddgamma"]),
+                   lambda E, dg: radius_dc(E, dg, shape), lambda E, dg: force_dc(E, dg, shape),
+                   a_plain, length)
+
+
 def _family(tip) -> _Family:
     """The adhesive relations of a Paraboloid (JKR) or a Cone tip of numeric/fit.py."""
     if isinstance(tip, _fit.Paraboloid):
         R = tip.R
-        return _Family(
-            "paraboloid", R,
-            lambda E, a, rho: gen.fit_jkr_depth(E, R, a, rho),
-            lambda E, a, rho: gen.fit_jkr_depth_da(E, R, a, rho),
-            lambda E, a, rho: gen.fit_jkr_force(E, R, a, rho, 0.0, 0.0, 0.0),
-            lambda E, a, rho: gen.fit_jkr_force_dE(E, R, a, rho),
-            lambda E, a, rho: gen.fit_jkr_force_dz0(E, R, a, rho),
-            lambda E, a, rho: gen.fit_jkr_force_ddgamma(E, R, a, rho),
-            lambda E, dg: gen.jkr_pull_off_radius_dc(E, dg, R),
-            lambda E, dg: gen.jkr_pull_off_force_dc(E, dg, R),
-            lambda d: gen.hertz_contact_radius(R, d), R)
+        return _generated_family("paraboloid", R, "jkr", "jkr",
+                                 lambda d: gen.hertz_contact_radius(R, d), R)
     th = tip.theta
-    return _Family(
-        "cone", th,
-        lambda E, a, rho: gen.fit_adhesive_cone_depth(E, th, a, rho),
-        lambda E, a, rho: gen.fit_adhesive_cone_depth_da(E, th, a, rho),
-        lambda E, a, rho: gen.fit_adhesive_cone_force(E, th, a, rho, 0.0, 0.0, 0.0),
-        lambda E, a, rho: gen.fit_adhesive_cone_force_dE(E, th, a, rho),
-        lambda E, a, rho: gen.fit_adhesive_cone_force_dz0(E, th, a, rho),
-        lambda E, a, rho: gen.fit_adhesive_cone_force_ddgamma(E, th, a, rho),
-        lambda E, dg: gen.adhesion_cone_pull_off_radius_dc(E, dg, th),
-        lambda E, dg: gen.adhesion_cone_pull_off_force_dc(E, dg, th),
-        lambda d: gen.cone_contact_radius(d, th), 1.0)
+    return _generated_family("cone", th, "adhesive_cone", "adhesion_cone",
+                             lambda d: gen.cone_contact_radius(d, th), 1.0)
 
 
 def _jump_off_radius(E_star, fam, rho):

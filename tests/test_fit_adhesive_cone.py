@@ -24,6 +24,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion
@@ -218,20 +219,9 @@ def test_adhesive_cone_jacobian_by_mpmath_derivative():
 
 # --- fits ------------------------------------------------------------------------------------
 def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0):
-    """A retract curve on a uniform grid of positions by the forward numeric/adhesion.py
-    (AdhesiveContact of a Cone under depth control): contact to the jump-off, then the
-    baseline."""
-    E, z0, dg, F0, s0 = truth
-    c = adhesion.AdhesiveContact(adhesion.Cone(theta=THETA), E_star=E, dgamma=dg)
-    d_dc = c.pull_off("depth").depth
-    z = np.linspace(z0 + 2.5 * d_dc, z0 + 150e-9, n)
-    d = z - z0
-    F = F0 + s0 * z
-    on = d >= d_dc
-    F[on] += c.equilibrium(depth=d[on])[2]
-    if noise:
-        F = F + np.random.default_rng(seed).normal(0.0, noise, n)
-    return z, F
+    """A retract curve by the forward numeric/adhesion.py (AdhesiveContact of a Cone under
+    depth control): test_fit_jkr's set-up with the cone."""
+    return jkr_forward_curve(n, truth, noise, seed, shape=adhesion.Cone(theta=THETA))
 
 
 def test_noise_free_recovery():

@@ -182,12 +182,13 @@ def mp_curve(n_contact=300, n_free=60, truth=TRUTH):
         return np.array([float(v) for v in zs]), np.array([float(v) for v in Fs])
 
 
-def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0):
+def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0, shape=None):
     """A retract curve on a uniform grid of positions by the forward numeric/adhesion.py
-    (AdhesiveContact.equilibrium under depth control): contact down to the jump-off, then the
-    baseline."""
+    (AdhesiveContact.equilibrium under depth control) of ``shape`` (default: the paraboloid of
+    radius R_TIP): contact down to the jump-off, then the baseline."""
     E, z0, dg, F0, s0 = truth
-    c = adhesion.AdhesiveContact(adhesion.Paraboloid(R=R_TIP), E_star=E, dgamma=dg)
+    shape = adhesion.Paraboloid(R=R_TIP) if shape is None else shape
+    c = adhesion.AdhesiveContact(shape, E_star=E, dgamma=dg)
     d_dc = c.pull_off("depth").depth
     z = np.linspace(z0 + 2.5 * d_dc, z0 + 150e-9, n)
     d = z - z0
