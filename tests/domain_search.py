@@ -198,14 +198,14 @@ def check(row: Row, args: dict) -> str | None:
     return None
 
 
-def cases(row: Row, n: int, seed: int = 0):
-    """Corners of the box (up to 64), n log-uniform points, and the boundary neighbours of
-    every point (``near``)."""
+def cases(row: Row, n: int, seed: int = 0, corners: bool = True):
+    """Corners of the box (up to 64; none with ``corners=False``), n log-uniform points, and
+    the boundary neighbours of every point (``near``)."""
     rng = np.random.default_rng(seed)
     names = list(row.params)
     pts = []
     ends = [row.params[k].ends() for k in names]
-    for i in range(min(64, math.prod(len(e) for e in ends))):
+    for i in range(min(64, math.prod(len(e) for e in ends)) if corners else 0):
         pt, j = {}, i
         for k, e in zip(names, ends, strict=True):
             pt[k] = e[j % len(e)]
@@ -223,15 +223,17 @@ def cases(row: Row, n: int, seed: int = 0):
             yield from row.near(pt)
 
 
-def run(rows: list[Row], n: int, seed: int = 0, keep: int = 3) -> tuple[list[str], dict]:
-    """Run the search; the failures (the first ``keep`` per row) and the counts."""
+def run(rows: list[Row], n: int, seed: int = 0, keep: int = 3,
+        corners: bool = True) -> tuple[list[str], dict]:
+    """Run the search; the failures (the first ``keep`` per row) and the counts. With
+    ``corners=False`` only the random points (and their neighbours) are searched."""
     failures: list[str] = []
     counts = {"functions": len(rows), "parameters": sum(len(r.params) for r in rows),
               "cases": 0}
     t0 = time.perf_counter()
     for row in rows:
         bad = 0
-        for pt in cases(row, max(2, n // row.cost), seed):
+        for pt in cases(row, max(2, n // row.cost), seed, corners):
             counts["cases"] += 1
             msg = check(row, pt)
             if msg is not None:

@@ -117,7 +117,9 @@ def test_documented_domain(row):
 @pytest.mark.sweep
 @pytest.mark.parametrize("row", SEARCH_ROWS, ids=[r.name for r in SEARCH_ROWS])
 def test_documented_domain_sweep(row):
-    failures, _ = domain_search.run([row], n_points(full=400, ci=8), seed=1)
+    # the corners are test_documented_domain's (the same box each time): here only random
+    # points, another seed (for the costly rows, corners and their edges were ~90 % of the work)
+    failures, _ = domain_search.run([row], n_points(full=400, ci=8), seed=1, corners=False)
     assert not failures, "\n".join(failures)
 
 
