@@ -49,16 +49,20 @@ def directory() -> Path:
 
 
 def key() -> str:
-    """SHA-256 of the derive package's sources and the versions that shape its output."""
+    """SHA-256 of the derive package's sources and the versions that shape its output (and
+    the arithmetic under SymPy and mpmath: gmpy2's integers when installed, Python's if not;
+    a pickle of one need not load under the other)."""
     import mpmath
     import sympy
+    from mpmath.libmp import BACKEND
+    from sympy.external.gmpy import GROUND_TYPES
 
     h = hashlib.sha256()
     for path in sorted(Path(__file__).parent.rglob("*.py")):
         h.update(path.relative_to(Path(__file__).parent).as_posix().encode() + b"\0")
         h.update(path.read_bytes() + b"\0")
     h.update(f"sympy {sympy.__version__} mpmath {mpmath.__version__} "
-             f"python {sys.version_info[:2]}".encode())
+             f"python {sys.version_info[:2]} ground {GROUND_TYPES} backend {BACKEND}".encode())
     return h.hexdigest()[:20]
 
 
