@@ -25,10 +25,12 @@ check: $(STAMP)
 	$(PY) -m hertzmdr.derive --check
 
 # the suite runs the --check itself (tests/test_generated.py); on as many workers as CI has
-# cores (pytest-xdist; `make test WORKERS=0` runs it in one process)
+# cores (pytest-xdist; `make test WORKERS=0` runs it in one process). loadgroup: the tests of
+# a file that share one costly module fixture (the benchmarks' quick run, the regenerated
+# files) are marked xdist_group and run on one worker, so the fixture is built once
 WORKERS ?= 2
 test: lint
-	$(PY) -m pytest -q -n $(WORKERS)
+	$(PY) -m pytest -q -n $(WORKERS) --dist loadgroup
 
 accuracy: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(VENV)/bin/hertzmdr accuracy --out docs/accuracy.md

@@ -13,6 +13,9 @@ from hertzmdr.derive.__main__ import ROOT
 
 from oracle import FULL
 
+#: with `make test` (--dist loadgroup): the fresh-process regeneration is built once, on one worker
+pytestmark = pytest.mark.xdist_group("generated")
+
 #: the files ``python -m hertzmdr.derive`` writes, relative to the source tree
 GENERATED = ["numeric/_generated.py", "numeric/_generated_mp.py", "docs/derivations.md",
              "docs/errata.md", "numeric/c/hertzmdr_laws.h", "docs/c_laws_reference.md"]
