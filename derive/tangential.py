@@ -138,6 +138,27 @@ def normal_line_load() -> dict[str, sp.Expr]:
     return {"q_z": qz, "d": depth}
 
 
+q_x = symbol("q_x")
+w_x = symbol("w_x")
+
+
+@cache
+def tangential_line_load() -> dict[str, sp.Expr]:
+    """q_x = G* w: the tangential spring at x, of stiffness G* dx (the direction average of
+    the Cerruti compliance, :func:`effective_modulus`), sheared elastically by w; and the
+    shear w = q_x/G* that carries the line load q_x (what a sliding spring gives up).
+
+    Asserted: every spring stuck at w = u_x, summed over -a < x < a, is the tangential force
+    of :func:`spring_force` at c = a (no slip).
+    """
+    qx = G_star * w_x
+    (shear,) = sp.solve(sp.Eq(q_x, qx), w_x)
+    xi = sp.Symbol("xi", positive=True)
+    summed = 2 * sp.integrate(qx.subs(w_x, u_x), (xi, 0, a))
+    assert sp.expand(summed - spring_force(sp.S.Zero, a)) == 0, summed  # any g: c = a
+    return {"q_x": qx, "w": shear}
+
+
 def spring_force(g: sp.Expr, c_expr: sp.Expr) -> sp.Expr:
     """F_x = 2 [G* u_x c + mu E* integral_c^a (d - g(x)) dx] with d = g(a) (5.55)."""
     xi = sp.Symbol("xi", positive=True)
@@ -706,6 +727,21 @@ def relations() -> list[Relation]:
         "depth d [m] at which the MDR spring with gap g(x) carries the line load q_z",
         "q_z = E* (d - g(x)) solved for d",
         f"{TEST}::test_normal_line_load_against_the_normal_force"))
+
+    T = tangential_line_load()
+    rels.append(Relation(
+        "mdr_tangential_line_load", "MDR tangential springs (not in the chapter)", T["q_x"],
+        (G_star, w_x),
+        "tangential line load q_x [N/m] of the MDR spring sheared elastically by w",
+        "the tangential spring stiffness G* per unit length times its shear w",
+        f"{TEST}::test_tangential_line_load_against_the_stiffness"))
+    rels.append(Relation(
+        "mdr_tangential_spring_shear", "MDR tangential springs (not in the chapter)", T["w"],
+        (G_star, q_x),
+        "elastic shear w [m] of the MDR spring that carries the tangential line load q_x "
+        "(the slip that a spring's excess over Coulomb's limit gives up)",
+        "q_x = G* w solved for w",
+        f"{TEST}::test_tangential_line_load_against_the_stiffness"))
 
     # the profiles' g(x) (5.52) and the onset of sliding, for numeric/tangential.py
     for name, prof, args, what in (("paraboloid_profile", P, (R, r), "paraboloid"),

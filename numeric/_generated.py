@@ -295,6 +295,8 @@ __all__ = [
     'mdr_kink_pressure',
     'mdr_normal_line_load',
     'mdr_stiffness',
+    'mdr_tangential_line_load',
+    'mdr_tangential_spring_shear',
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
@@ -682,6 +684,8 @@ RELATIONS = (
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
     ('mdr_normal_line_load', '(5.58)', 'tangential', 'E_star*(d - g_x)', ''),
     ('mdr_stiffness', '(5.12), Problem 5', 'contact', '2*E_star*a', ''),
+    ('mdr_tangential_line_load', 'MDR tangential springs (not in the chapter)', 'tangential', 'G_star*w_x', ''),
+    ('mdr_tangential_spring_shear', 'MDR tangential springs (not in the chapter)', 'tangential', 'q_x/G_star', ''),
     ('mindlin_energy', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', '3*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(5*G_star*a)', ''),
     ('mindlin_energy_small', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', 'F_amp**3/(9*F*G_star*a*mu_f)', ''),
     ('paraboloid_g', '(5.52) of f = r^2/(2R)', 'tangential', 'x**2/R', ''),
@@ -8521,6 +8525,54 @@ def mdr_stiffness(E_star, a):
     return 2*E_star*a
 
 
+def mdr_tangential_line_load(G_star, w_x):
+    """Tangential line load q_x [N/m] of the MDR spring sheared elastically by w.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: the tangential
+    spring stiffness G* per unit length times its shear w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    w_x : float or ndarray
+        elastic shear displacement of an MDR tangential spring [m]
+    """
+    if type(G_star) is float and type(w_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_tangential_line_load(G_star, w_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return G_star*w_x
+
+
+def mdr_tangential_spring_shear(G_star, q_x):
+    """Elastic shear w [m] of the MDR spring that carries the tangential line load q_x (the slip that a spring's excess over Coulomb's limit gives up).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: q_x = G* w solved
+    for w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    q_x : float or ndarray
+        tangential line load of the MDR springs, force per unit length [N/m]
+    """
+    if type(G_star) is float and type(q_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_tangential_spring_shear(G_star, q_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return q_x/G_star
+
+
 def mindlin_energy(a, F, G_star, mu_f, F_amp):
     """Energy W [J] dissipated per cycle of a tangential force oscillating with amplitude F_amp at constant normal force F (paraboloid).
 
@@ -14787,6 +14839,16 @@ def _math_mdr_normal_line_load(E_star, d, g_x):
 def _math_mdr_stiffness(E_star, a):
     """``mdr_stiffness`` for Python floats (the math module); raises where it does."""
     return 2*E_star*a
+
+
+def _math_mdr_tangential_line_load(G_star, w_x):
+    """``mdr_tangential_line_load`` for Python floats (the math module); raises where it does."""
+    return G_star*w_x
+
+
+def _math_mdr_tangential_spring_shear(G_star, q_x):
+    """``mdr_tangential_spring_shear`` for Python floats (the math module); raises where it does."""
+    return q_x/G_star
 
 
 def _math_mindlin_energy(a, F, G_star, mu_f, F_amp):

@@ -292,6 +292,8 @@ __all__ = [
     'mdr_kink_pressure',
     'mdr_normal_line_load',
     'mdr_stiffness',
+    'mdr_tangential_line_load',
+    'mdr_tangential_spring_shear',
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
@@ -6698,6 +6700,44 @@ def mdr_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def mdr_tangential_line_load(G_star, w_x):
+    """Tangential line load q_x [N/m] of the MDR spring sheared elastically by w.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: the tangential
+    spring stiffness G* per unit length times its shear w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    w_x : mpmath.mpf
+        elastic shear displacement of an MDR tangential spring [m]
+    """
+    return G_star*w_x
+
+
+def mdr_tangential_spring_shear(G_star, q_x):
+    """Elastic shear w [m] of the MDR spring that carries the tangential line load q_x (the slip that a spring's excess over Coulomb's limit gives up).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: q_x = G* w solved
+    for w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    q_x : mpmath.mpf
+        tangential line load of the MDR springs, force per unit length [N/m]
+    """
+    return q_x/G_star
 
 
 def mindlin_energy(a, F, G_star, mu_f, F_amp):

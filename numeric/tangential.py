@@ -638,7 +638,7 @@ def _depth_of_force(F, table, E_star, step, x_max):
 def _solve_shift(f, cap, w, m, G_star, target, total, step):
     """Displacement increment D with sum_i w_i clip(f_i + G* m_i D, -cap_i, cap_i) = target."""
     live = (cap > 0) & (m > 0)
-    k = G_star * m[live]
+    k = gen.mdr_tangential_line_load(G_star, m[live])  # each spring's q_x per unit D
     lo = (-cap[live] - f[live]) / k
     hi = (cap[live] - f[live]) / k
     if target >= total:
@@ -687,7 +687,7 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
         wcap = w * cap
         # springs that lost contact or normal load release their shear by sliding
         g_rel = np.minimum(np.maximum(f, -cap), cap)
-        W_acc += float(wcap @ np.abs(f - g_rel)) / G_star
+        W_acc += float(wcap @ gen.mdr_tangential_spring_shear(G_star, np.abs(f - g_rel)))
         f = g_rel
         total = float(wcap.sum())
         # both loads change linearly within the step: a spring that comes into contact at
@@ -706,9 +706,10 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
                                  f"mu F_N = {total!r} N of that step; valid: |F_x| <= mu F_N")
             D, full = _solve_shift(f, cap, w, m, G_star, F_ctrl[k], total, k) if total > 0 \
                 else (0.0, True)
-        trial = f + G_star * m * D
-        f = np.minimum(np.maximum(trial, -cap), cap)
-        W_acc += float(wcap @ np.abs(trial - f)) / G_star
+        trial = f + gen.mdr_tangential_line_load(G_star, m * D)
+        f = np.minimum(np.maximum(trial, -cap), cap)  # Coulomb: |q_x| <= mu q_z
+        # each sliding spring's slip (its excess shear) times its Coulomb line load
+        W_acc += float(wcap @ gen.mdr_tangential_spring_shear(G_star, np.abs(trial - f)))
         u_prev = u_prev + D
         j = int(np.searchsorted(gv, d, side="left"))  # nodes i < j are in contact (g_i < d)
         slipping = np.abs(f[:j]) >= cap[:j]

@@ -912,3 +912,19 @@ def test_powerlaw_traction_on_and_near_the_axis():
         # all springs slide (c = 0): mu p(0; a), infinite on the axis for n <= 1, never NaN
         q0 = ct.traction(0.0, 2 * ct.slide_onset)
         assert (q0 == np.inf) if n <= 1 else np.isfinite(q0), (n, q0)
+
+
+def test_tangential_line_load_against_the_stiffness():
+    """mdr_tangential_line_load q_x = G* w of the springs all stuck at w = u_x, integrated
+    over the contact -a < x < a by mpmath (30 digits) is the initial stiffness times u_x,
+    2 G* a u_x (typed here; Mindlin's 8 G a/(2 - nu) for one body on a rigid one, the
+    Cerruti average); and mdr_tangential_spring_shear inverts it. Rounding: one product (the
+    quadrature of a constant is exact), one quotient: 2 eps."""
+    for a, u in ((1e-7, 3e-12), (2.5e-4, 1e-8), (1e-2, 4e-6)):
+        with mp.workdps(30):
+            F = mp.quad(lambda x, u=u: gen.mdr_tangential_line_load(G_STAR, u), [-a, a])
+            assert abs(F / (2 * mp.mpf(G_STAR) * a * u) - 1) < 2 * 2.0**-52
+    rng = np.random.default_rng(11)
+    w = 10.0 ** rng.uniform(-15, -3, 50)
+    back = gen.mdr_tangential_spring_shear(G_STAR, gen.mdr_tangential_line_load(G_STAR, w))
+    assert np.all(np.abs(back / w - 1) <= 2 * 2.0**-52)
