@@ -63,6 +63,7 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     "dgamma": ("J/m^2", "work of adhesion Delta gamma (energy per unit area to separate)"),
     "g_a": ("m", "MDR profile g(a) at the contact radius (5.55)"),
     "g_x": ("m", "MDR profile g(x) at the spring's coordinate x (5.52)"),
+    "s_r": ("m", "sqrt(x^2 - r^2), the integration variable of (5.59) beyond x = r"),
     "r_c": ("1", "ratio r/c of the radial coordinate to the stick radius"),
     "q_x": ("N/m", "tangential line load of the MDR springs, force per unit length"),
     "w_x": ("m", "elastic shear displacement of an MDR tangential spring"),

@@ -69,6 +69,7 @@ c_n = symbol("c_n")
 kappa_n = symbol("kappa_n")
 theta = symbol("theta", positive=True)
 r_c = symbol("r_c")
+s_r = symbol("s_r")
 c_a = symbol("c_a")
 d_c = symbol("d_c")
 s_x = symbol("s_x")
@@ -386,6 +387,25 @@ def powerlaw_traction_stick_centre() -> sp.Expr:
     return mu_f * E_star / sp.pi * n * kappa_n * c_n * c ** (n - 1) * total
 
 
+@cache
+def powerlaw_traction_stick_integrand() -> sp.Expr:
+    """The integrand of mu (p(r; a) - p(r; c)) = integral over s of it, s = sqrt(x^2 - r^2)
+    from sqrt(c^2 - r^2) to sqrt(a^2 - r^2) (x from c to a in (5.59)): with x^2 = r^2 + s^2,
+    dx/sqrt(x^2 - r^2) = ds/x, so mu (E*/pi) g'(x)/x = mu (E*/pi) n kappa_n c_n
+    (r^2 + s^2)^((n - 2)/2), smooth on the whole interval even at r = c (no endpoint
+    singularity), and its length sqrt(a^2 - r^2) - sqrt(c^2 - r^2) is computed without
+    cancellation as c -> a: the stick zone's traction near the edge of a nearly stuck
+    contact, where the two pressures cancel."""
+    xi = sp.Symbol("xi", positive=True)
+    gp = sp.diff(kappa_n * c_n * x**n, x).subs(x, xi)
+    xs = sp.sqrt(r**2 + s_r**2)
+    dx_ds = sp.diff(xs, s_r)
+    out = mu_f * E_star / sp.pi * n * kappa_n * c_n * (r**2 + s_r**2) ** ((n - 2) / 2)
+    changed = (mu_f * E_star / sp.pi * gp / sp.sqrt(xi**2 - r**2)).subs(xi, xs) * dx_ds
+    assert sp.simplify(sp.powsimp(changed / out, force=True)) == 1, changed
+    return out
+
+
 def flat_punch_traction() -> sp.Expr:
     """(5.59) of the stuck flat punch's line load q_x = G* u_x on |x| < a, 0 outside.
 
@@ -635,6 +655,15 @@ def relations() -> list[Relation]:
         "dx, its kernel expanded in (r/x)^2 and integrated termwise",
         f"{TEST}::test_powerlaw_traction_on_and_near_the_axis",
         domain={r_c: t / 2, c: a * t_c}))
+    rels.append(Relation(
+        "tangential_powerlaw_traction_stick_integrand",
+        "MDR tangential, power law (not in the chapter), (5.59)",
+        powerlaw_traction_stick_integrand(), (r, s_r, c_n, n, kappa_n, E_star, mu_f),
+        "integrand [Pa/m] of the stick-zone traction of a power-law profile in "
+        "s = sqrt(x^2 - r^2): q(r) = its integral from sqrt(c^2 - r^2) to sqrt(a^2 - r^2), "
+        "smooth there for every r < c",
+        "(5.59) of the stuck springs' line load over c < x < a with x^2 = r^2 + s^2",
+        f"{TEST}::test_powerlaw_traction_on_and_near_the_axis"))
     xFp = F_x / (mu_f * F)
     rels.append(Relation(
         "tangential_powerlaw_stick_radius_from_force",

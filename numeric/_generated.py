@@ -379,6 +379,7 @@ __all__ = [
     'tangential_powerlaw_stick_radius',
     'tangential_powerlaw_stick_radius_from_force',
     'tangential_powerlaw_traction_stick_centre',
+    'tangential_powerlaw_traction_stick_integrand',
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
@@ -768,6 +769,7 @@ RELATIONS = (
     ('tangential_powerlaw_stick_radius', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - G_star*u_x/(E_star*a**n*c_n*kappa_n*mu_f))**(1/n)', ''),
     ('tangential_powerlaw_stick_radius_from_force', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - F_x/(F*mu_f))**(1/(n + 1))', ''),
     ('tangential_powerlaw_traction_stick_centre', 'MDR tangential, power law (not in the chapter), (5.59)', 'tangential', 'E_star*c**(n - 1)*c_n*kappa_n*mu_f*n*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(121683714103007*r_c**2*expm1((n - 55)*log1p((a - c)/c))/(1125899906842624*(n - 55)) + 61989816618513*expm1((n - 53)*log1p((a - c)/c))/(562949953421312*(n - 53))) + 15801325804719*expm1((n - 51)*log1p((a - c)/c))/(140737488355328*(n - 51))) + 8061900920775*expm1((n - 49)*log1p((a - c)/c))/(70368744177664*(n - 49))) + 514589420475*expm1((n - 47)*log1p((a - c)/c))/(4398046511104*(n - 47))) + 263012370465*expm1((n - 45)*log1p((a - c)/c))/(2199023255552*(n - 45))) + 67282234305*expm1((n - 43)*log1p((a - c)/c))/(549755813888*(n - 43))) + 34461632205*expm1((n - 41)*log1p((a - c)/c))/(274877906944*(n - 41))) + 4418157975*expm1((n - 39)*log1p((a - c)/c))/(34359738368*(n - 39))) + 2268783825*expm1((n - 37)*log1p((a - c)/c))/(17179869184*(n - 37))) + 583401555*expm1((n - 35)*log1p((a - c)/c))/(4294967296*(n - 35))) + 300540195*expm1((n - 33)*log1p((a - c)/c))/(2147483648*(n - 33))) + 9694845*expm1((n - 31)*log1p((a - c)/c))/(67108864*(n - 31))) + 5014575*expm1((n - 29)*log1p((a - c)/c))/(33554432*(n - 29))) + 1300075*expm1((n - 27)*log1p((a - c)/c))/(8388608*(n - 27))) + 676039*expm1((n - 25)*log1p((a - c)/c))/(4194304*(n - 25))) + 88179*expm1((n - 23)*log1p((a - c)/c))/(524288*(n - 23))) + 46189*expm1((n - 21)*log1p((a - c)/c))/(262144*(n - 21))) + 12155*expm1((n - 19)*log1p((a - c)/c))/(65536*(n - 19))) + 6435*expm1((n - 17)*log1p((a - c)/c))/(32768*(n - 17))) + 429*expm1((n - 15)*log1p((a - c)/c))/(2048*(n - 15))) + 231*expm1((n - 13)*log1p((a - c)/c))/(1024*(n - 13))) + 63*expm1((n - 11)*log1p((a - c)/c))/(256*(n - 11))) + 35*expm1((n - 9)*log1p((a - c)/c))/(128*(n - 9))) + 5*expm1((n - 7)*log1p((a - c)/c))/(16*(n - 7))) + 3*expm1((n - 5)*log1p((a - c)/c))/(8*(n - 5))) + expm1((n - 3)*log1p((a - c)/c))/(2*(n - 3))) + expm1((n - 1)*log1p((a - c)/c))/(n - 1))/pi', ''),
+    ('tangential_powerlaw_traction_stick_integrand', 'MDR tangential, power law (not in the chapter), (5.59)', 'tangential', 'E_star*c_n*kappa_n*mu_f*n*(r**2 + s_r**2)**(n/2 - 1)/pi', ''),
     ('tangential_slide_onset', 'MDR tangential springs (not in the chapter)', 'tangential', 'E_star*d*mu_f/G_star', ''),
     ('tangential_stiffness', 'MDR tangential springs (not in the chapter)', 'tangential', '2*G_star*a', ''),
     ('tangential_stiffness_ratio', 'MDR tangential springs (not in the chapter)', 'tangential', '2*(nu - 1)/(nu - 2)', ''),
@@ -10914,6 +10916,41 @@ def tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star
     return E_star*c**(n - 1)*c_n*kappa_n*mu_f*n*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*((121683714103007/1125899906842624)*r_c**2*numpy.expm1((n - 55)*numpy.log1p((a - c)/c))/(n - 55) + (61989816618513/562949953421312)*numpy.expm1((n - 53)*numpy.log1p((a - c)/c))/(n - 53)) + (15801325804719/140737488355328)*numpy.expm1((n - 51)*numpy.log1p((a - c)/c))/(n - 51)) + (8061900920775/70368744177664)*numpy.expm1((n - 49)*numpy.log1p((a - c)/c))/(n - 49)) + (514589420475/4398046511104)*numpy.expm1((n - 47)*numpy.log1p((a - c)/c))/(n - 47)) + (263012370465/2199023255552)*numpy.expm1((n - 45)*numpy.log1p((a - c)/c))/(n - 45)) + (67282234305/549755813888)*numpy.expm1((n - 43)*numpy.log1p((a - c)/c))/(n - 43)) + (34461632205/274877906944)*numpy.expm1((n - 41)*numpy.log1p((a - c)/c))/(n - 41)) + (4418157975/34359738368)*numpy.expm1((n - 39)*numpy.log1p((a - c)/c))/(n - 39)) + (2268783825/17179869184)*numpy.expm1((n - 37)*numpy.log1p((a - c)/c))/(n - 37)) + (583401555/4294967296)*numpy.expm1((n - 35)*numpy.log1p((a - c)/c))/(n - 35)) + (300540195/2147483648)*numpy.expm1((n - 33)*numpy.log1p((a - c)/c))/(n - 33)) + (9694845/67108864)*numpy.expm1((n - 31)*numpy.log1p((a - c)/c))/(n - 31)) + (5014575/33554432)*numpy.expm1((n - 29)*numpy.log1p((a - c)/c))/(n - 29)) + (1300075/8388608)*numpy.expm1((n - 27)*numpy.log1p((a - c)/c))/(n - 27)) + (676039/4194304)*numpy.expm1((n - 25)*numpy.log1p((a - c)/c))/(n - 25)) + (88179/524288)*numpy.expm1((n - 23)*numpy.log1p((a - c)/c))/(n - 23)) + (46189/262144)*numpy.expm1((n - 21)*numpy.log1p((a - c)/c))/(n - 21)) + (12155/65536)*numpy.expm1((n - 19)*numpy.log1p((a - c)/c))/(n - 19)) + (6435/32768)*numpy.expm1((n - 17)*numpy.log1p((a - c)/c))/(n - 17)) + (429/2048)*numpy.expm1((n - 15)*numpy.log1p((a - c)/c))/(n - 15)) + (231/1024)*numpy.expm1((n - 13)*numpy.log1p((a - c)/c))/(n - 13)) + (63/256)*numpy.expm1((n - 11)*numpy.log1p((a - c)/c))/(n - 11)) + (35/128)*numpy.expm1((n - 9)*numpy.log1p((a - c)/c))/(n - 9)) + (5/16)*numpy.expm1((n - 7)*numpy.log1p((a - c)/c))/(n - 7)) + (3/8)*numpy.expm1((n - 5)*numpy.log1p((a - c)/c))/(n - 5)) + (1/2)*numpy.expm1((n - 3)*numpy.log1p((a - c)/c))/(n - 3)) + numpy.expm1((n - 1)*numpy.log1p((a - c)/c))/(n - 1))/numpy.pi
 
 
+def tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f):
+    """Integrand [Pa/m] of the stick-zone traction of a power-law profile in s = sqrt(x^2 - r^2): q(r) = its integral from sqrt(c^2 - r^2) to sqrt(a^2 - r^2), smooth there for every r < c.
+
+    Chapter: MDR tangential, power law (not in the chapter), (5.59). Derived from: (5.59) of
+    the stuck springs' line load over c < x < a with x^2 = r^2 + s^2.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_powerlaw_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    s_r : float or ndarray
+        sqrt(x^2 - r^2), the integration variable of (5.59) beyond x = r [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r) is float and type(s_r) is float and type(c_n) is float and type(n) is float
+            and type(kappa_n) is float and type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*c_n*kappa_n*mu_f*n*(r**2 + s_r**2)**((1/2)*n - 1)/numpy.pi
+
+
 def tangential_slide_onset(E_star, G_star, mu_f, d):
     """Tangential displacement u_x [m] at which the last spring (the centre, g(0) = 0) starts to slide, depth d (d = g(a), or the flat punch's depth).
 
@@ -15359,6 +15396,11 @@ def _math_tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
 def _math_tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star, mu_f):
     """``tangential_powerlaw_traction_stick_centre`` for Python floats (the math module); raises where it does."""
     return E_star*math.pow(c, n - 1)*c_n*kappa_n*mu_f*n*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((121683714103007/1125899906842624)*(r_c*r_c)*math.expm1((n - 55)*math.log1p((a - c)/c))/(n - 55) + (61989816618513/562949953421312)*math.expm1((n - 53)*math.log1p((a - c)/c))/(n - 53)) + (15801325804719/140737488355328)*math.expm1((n - 51)*math.log1p((a - c)/c))/(n - 51)) + (8061900920775/70368744177664)*math.expm1((n - 49)*math.log1p((a - c)/c))/(n - 49)) + (514589420475/4398046511104)*math.expm1((n - 47)*math.log1p((a - c)/c))/(n - 47)) + (263012370465/2199023255552)*math.expm1((n - 45)*math.log1p((a - c)/c))/(n - 45)) + (67282234305/549755813888)*math.expm1((n - 43)*math.log1p((a - c)/c))/(n - 43)) + (34461632205/274877906944)*math.expm1((n - 41)*math.log1p((a - c)/c))/(n - 41)) + (4418157975/34359738368)*math.expm1((n - 39)*math.log1p((a - c)/c))/(n - 39)) + (2268783825/17179869184)*math.expm1((n - 37)*math.log1p((a - c)/c))/(n - 37)) + (583401555/4294967296)*math.expm1((n - 35)*math.log1p((a - c)/c))/(n - 35)) + (300540195/2147483648)*math.expm1((n - 33)*math.log1p((a - c)/c))/(n - 33)) + (9694845/67108864)*math.expm1((n - 31)*math.log1p((a - c)/c))/(n - 31)) + (5014575/33554432)*math.expm1((n - 29)*math.log1p((a - c)/c))/(n - 29)) + (1300075/8388608)*math.expm1((n - 27)*math.log1p((a - c)/c))/(n - 27)) + (676039/4194304)*math.expm1((n - 25)*math.log1p((a - c)/c))/(n - 25)) + (88179/524288)*math.expm1((n - 23)*math.log1p((a - c)/c))/(n - 23)) + (46189/262144)*math.expm1((n - 21)*math.log1p((a - c)/c))/(n - 21)) + (12155/65536)*math.expm1((n - 19)*math.log1p((a - c)/c))/(n - 19)) + (6435/32768)*math.expm1((n - 17)*math.log1p((a - c)/c))/(n - 17)) + (429/2048)*math.expm1((n - 15)*math.log1p((a - c)/c))/(n - 15)) + (231/1024)*math.expm1((n - 13)*math.log1p((a - c)/c))/(n - 13)) + (63/256)*math.expm1((n - 11)*math.log1p((a - c)/c))/(n - 11)) + (35/128)*math.expm1((n - 9)*math.log1p((a - c)/c))/(n - 9)) + (5/16)*math.expm1((n - 7)*math.log1p((a - c)/c))/(n - 7)) + (3/8)*math.expm1((n - 5)*math.log1p((a - c)/c))/(n - 5)) + (1/2)*math.expm1((n - 3)*math.log1p((a - c)/c))/(n - 3)) + math.expm1((n - 1)*math.log1p((a - c)/c))/(n - 1))/math.pi
+
+
+def _math_tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f):
+    """``tangential_powerlaw_traction_stick_integrand`` for Python floats (the math module); raises where it does."""
+    return E_star*c_n*kappa_n*mu_f*n*math.pow((r*r) + (s_r*s_r), (1/2)*n - 1)/math.pi
 
 
 def _math_tangential_slide_onset(E_star, G_star, mu_f, d):

@@ -376,6 +376,7 @@ __all__ = [
     'tangential_powerlaw_stick_radius',
     'tangential_powerlaw_stick_radius_from_force',
     'tangential_powerlaw_traction_stick_centre',
+    'tangential_powerlaw_traction_stick_integrand',
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
@@ -8656,6 +8657,35 @@ def tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star
         coefficient of (Coulomb) friction mu [1]
     """
     return E_star*c**(n - 1)*c_n*kappa_n*mu_f*n*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*((mpmath.mpf(121683714103007)/mpmath.mpf(1125899906842624))*r_c**2*mpmath.expm1((n - 55)*mpmath.log1p((a - c)/c))/(n - 55) + (mpmath.mpf(61989816618513)/mpmath.mpf(562949953421312))*mpmath.expm1((n - 53)*mpmath.log1p((a - c)/c))/(n - 53)) + (mpmath.mpf(15801325804719)/mpmath.mpf(140737488355328))*mpmath.expm1((n - 51)*mpmath.log1p((a - c)/c))/(n - 51)) + (mpmath.mpf(8061900920775)/mpmath.mpf(70368744177664))*mpmath.expm1((n - 49)*mpmath.log1p((a - c)/c))/(n - 49)) + (mpmath.mpf(514589420475)/mpmath.mpf(4398046511104))*mpmath.expm1((n - 47)*mpmath.log1p((a - c)/c))/(n - 47)) + (mpmath.mpf(263012370465)/mpmath.mpf(2199023255552))*mpmath.expm1((n - 45)*mpmath.log1p((a - c)/c))/(n - 45)) + (mpmath.mpf(67282234305)/mpmath.mpf(549755813888))*mpmath.expm1((n - 43)*mpmath.log1p((a - c)/c))/(n - 43)) + (mpmath.mpf(34461632205)/mpmath.mpf(274877906944))*mpmath.expm1((n - 41)*mpmath.log1p((a - c)/c))/(n - 41)) + (mpmath.mpf(4418157975)/mpmath.mpf(34359738368))*mpmath.expm1((n - 39)*mpmath.log1p((a - c)/c))/(n - 39)) + (mpmath.mpf(2268783825)/mpmath.mpf(17179869184))*mpmath.expm1((n - 37)*mpmath.log1p((a - c)/c))/(n - 37)) + (mpmath.mpf(583401555)/mpmath.mpf(4294967296))*mpmath.expm1((n - 35)*mpmath.log1p((a - c)/c))/(n - 35)) + (mpmath.mpf(300540195)/mpmath.mpf(2147483648))*mpmath.expm1((n - 33)*mpmath.log1p((a - c)/c))/(n - 33)) + (mpmath.mpf(9694845)/mpmath.mpf(67108864))*mpmath.expm1((n - 31)*mpmath.log1p((a - c)/c))/(n - 31)) + (mpmath.mpf(5014575)/mpmath.mpf(33554432))*mpmath.expm1((n - 29)*mpmath.log1p((a - c)/c))/(n - 29)) + (mpmath.mpf(1300075)/mpmath.mpf(8388608))*mpmath.expm1((n - 27)*mpmath.log1p((a - c)/c))/(n - 27)) + (mpmath.mpf(676039)/mpmath.mpf(4194304))*mpmath.expm1((n - 25)*mpmath.log1p((a - c)/c))/(n - 25)) + (mpmath.mpf(88179)/mpmath.mpf(524288))*mpmath.expm1((n - 23)*mpmath.log1p((a - c)/c))/(n - 23)) + (mpmath.mpf(46189)/mpmath.mpf(262144))*mpmath.expm1((n - 21)*mpmath.log1p((a - c)/c))/(n - 21)) + (mpmath.mpf(12155)/mpmath.mpf(65536))*mpmath.expm1((n - 19)*mpmath.log1p((a - c)/c))/(n - 19)) + (mpmath.mpf(6435)/mpmath.mpf(32768))*mpmath.expm1((n - 17)*mpmath.log1p((a - c)/c))/(n - 17)) + (mpmath.mpf(429)/mpmath.mpf(2048))*mpmath.expm1((n - 15)*mpmath.log1p((a - c)/c))/(n - 15)) + (mpmath.mpf(231)/mpmath.mpf(1024))*mpmath.expm1((n - 13)*mpmath.log1p((a - c)/c))/(n - 13)) + (mpmath.mpf(63)/mpmath.mpf(256))*mpmath.expm1((n - 11)*mpmath.log1p((a - c)/c))/(n - 11)) + (mpmath.mpf(35)/mpmath.mpf(128))*mpmath.expm1((n - 9)*mpmath.log1p((a - c)/c))/(n - 9)) + (mpmath.mpf(5)/mpmath.mpf(16))*mpmath.expm1((n - 7)*mpmath.log1p((a - c)/c))/(n - 7)) + (mpmath.mpf(3)/mpmath.mpf(8))*mpmath.expm1((n - 5)*mpmath.log1p((a - c)/c))/(n - 5)) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.expm1((n - 3)*mpmath.log1p((a - c)/c))/(n - 3)) + mpmath.expm1((n - 1)*mpmath.log1p((a - c)/c))/(n - 1))/mpmath.pi
+
+
+def tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f):
+    """Integrand [Pa/m] of the stick-zone traction of a power-law profile in s = sqrt(x^2 - r^2): q(r) = its integral from sqrt(c^2 - r^2) to sqrt(a^2 - r^2), smooth there for every r < c.
+
+    Chapter: MDR tangential, power law (not in the chapter), (5.59). Derived from: (5.59) of
+    the stuck springs' line load over c < x < a with x^2 = r^2 + s^2.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_powerlaw_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    s_r : mpmath.mpf
+        sqrt(x^2 - r^2), the integration variable of (5.59) beyond x = r [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return E_star*c_n*kappa_n*mu_f*n*(r**2 + s_r**2)**((mpmath.mpf(1)/mpmath.mpf(2))*n - 1)/mpmath.pi
 
 
 def tangential_slide_onset(E_star, G_star, mu_f, d):

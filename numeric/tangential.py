@@ -56,6 +56,9 @@ ENERGY_QUADRATURE_BELOW = 0.25
 #: the power law's stick-zone traction is the series about the axis for r <= this times c
 #: (derive/tangential.py STICK_CENTRE_RADIUS: its terms fall at least 4-fold each there)
 STICK_CENTRE_RADIUS = 0.5
+#: and for c >= this times a (elsewhere beyond c/2) (5.59) over c < x < a by Gauss-Legendre:
+#: there the difference of the two pressures loses 1 - c/a of its digits
+STICK_QUADRATURE_ABOVE = 2 / 3
 
 
 @scalar_path
@@ -266,15 +269,31 @@ class PowerLaw:
         p_c = _powerlaw.pressure(np.minimum(r, c), self.g(c), self.c_n, self.n, E_star)
         with np.errstate(invalid="ignore"):  # inf - inf on the axis for n <= 1: replaced below
             stick = gen.tangential_traction_stick(mu, p_a, p_c)  # the stick superposition
-        if self.n < 3:
-            # near the axis the difference of the two pressures (each infinite on the axis
-            # for n <= 1) as the series of (5.59) over c < x < a: finite, without cancellation
-            r, c = np.broadcast_arrays(r, c)
-            stick = np.array(stick, dtype=float, copy=True)
-            near = (c > 0) & (r <= STICK_CENTRE_RADIUS * c)
-            stick[near] = gen.tangential_powerlaw_traction_stick_centre(
-                r[near] / c[near], a, c[near], self.c_n, self.n, self.kappa, E_star, mu)
+        r, c = np.broadcast_arrays(r, c)
+        stick = np.array(stick, dtype=float, copy=True)
+        near = (c > 0) & (r <= STICK_CENTRE_RADIUS * c) & (self.n < 3)
+        # near the axis the difference of the two pressures (each infinite on the axis for
+        # n <= 1) as the series of (5.59) over c < x < a: finite, without cancellation
+        stick[near] = gen.tangential_powerlaw_traction_stick_centre(
+            r[near] / c[near], a, c[near], self.c_n, self.n, self.kappa, E_star, mu)
+        # a nearly stuck contact (c close to a): the two pressures cancel to 1 - c/a; (5.59)
+        # over c < x < a by Gauss-Legendre in s = sqrt(x^2 - r^2), smooth for every r < c
+        edge = ~near & (c > 0) & (r < c) & (c >= STICK_QUADRATURE_ABOVE * a)
+        stick[edge] = self._stick_by_quadrature(r[edge], c[edge], a, E_star, mu)
         return stick, gen.tangential_traction_slip(mu, p_a)  # Coulomb: the sliding springs
+
+    def _stick_by_quadrature(self, r, c, a, E_star, mu):
+        """(5.59) of the stuck springs' line load over c < x < a at r < c, by GAUSS_NODES
+        Gauss-Legendre nodes in s = sqrt(x^2 - r^2) (its integrand is smooth there, its
+        nearest singularities s = +-i r at least 1.8 half-lengths away for c >= 2a/3)."""
+        s_c = np.sqrt((c - r) * (c + r))
+        s_a = np.sqrt((a - r) * (a + r))
+        half = (a - c) * (a + c) / (s_a + s_c) / 2  # (s_a - s_c)/2 without cancellation
+        z, w = np.polynomial.legendre.leggauss(GAUSS_NODES)
+        s = (s_c + half)[..., None] + half[..., None] * z
+        f = gen.tangential_powerlaw_traction_stick_integrand(
+            r[..., None], s, self.c_n, self.n, self.kappa, E_star, mu)
+        return half * np.sum(w * f, axis=-1)
 
     def energy(self, F_amp, F, a, G_star, mu):
         n = self.n
