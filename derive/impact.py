@@ -57,9 +57,16 @@ def solution() -> dict[str, sp.Expr]:
     xs = sp.Symbol("x_s", positive=True)
     balance = sp.Eq(m * v0**2 / xs, E_star * sp.sqrt(R) * xs ** sp.Rational(3, 2))
     (out["xs"],) = [r for r in sp.solve(balance, xs) if r.is_positive]
+    # the time scale: x'(0) = v0 becomes X'(0) = 1 when t_s = x_s/v0; the force scale turns
+    # m x'' = m (x_s/t_s^2) X'': with both, m x'' = -F(x) reads X'' = -F(x_s X)/F_s
+    ts, fs = sp.symbols("t_s F_s", positive=True)
+    (out["ts"],) = sp.solve(sp.Eq(v0 * ts / xs, 1), ts)
+    out["ts"] = out["ts"].subs(xs, out["xs"])
+    out["fs"] = sp.simplify((m * xs / ts**2).subs(ts, out["ts"]).subs(xs, out["xs"]))
     F_hertz = s["F"].subs(d, xs * x)  # (5.23) at x = x_s X
-    assert sp.simplify(F_hertz.subs(xs, out["xs"]) / (m * v0**2 / out["xs"])
+    assert sp.simplify(F_hertz.subs(xs, out["xs"]) / out["fs"]
                        - sp.Rational(4, 3) * x ** sp.Rational(3, 2)) == 0, F_hertz
+    assert sp.simplify(out["fs"] - m * v0**2 / out["xs"]) == 0, out["fs"]
     return out
 
 
@@ -117,6 +124,16 @@ def relations() -> list[Relation]:
                  "length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which "
                  "the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s",
                  "m v0^2/x_s = E* sqrt(R) x_s^(3/2)", f"{TEST}::test_length_scale"),
+        Relation("impact_time_scale", "(5.23), nondimensionalized", s["ts"],
+                 (E_star, R, m, v0),
+                 "time scale t_s = x_s/v0 [s] of the impact, with which the initial velocity "
+                 "is X'(0) = 1 in X = x/x_s, T = t/t_s",
+                 "x'(0) = v0 in the scaled variables", f"{TEST}::test_time_and_force_scales"),
+        Relation("impact_force_scale", "(5.23), nondimensionalized", s["fs"],
+                 (E_star, R, m, v0),
+                 "force scale F_s = m x_s/t_s^2 [N] of the impact: m x'' = -F(x) (5.23) reads "
+                 "X'' = -F(x_s X)/F_s = -(4/3) X^(3/2)",
+                 "m x'' = (m x_s/t_s^2) X''", f"{TEST}::test_time_and_force_scales"),
         Relation("impact_sphere_mass", "Problem 4, m = 4/3 pi R^3 rho", s["m_rho"], (R, rho),
                  "mass m [kg] of a solid sphere of radius R and density rho",
                  "the volume of the sphere times its density",

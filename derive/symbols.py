@@ -62,6 +62,12 @@ DESCRIPTIONS: dict[str, tuple[str, str]] = {
     # adhesion family (derive/adhesion.py)
     "dgamma": ("J/m^2", "work of adhesion Delta gamma (energy per unit area to separate)"),
     "g_a": ("m", "MDR profile g(a) at the contact radius (5.55)"),
+    "g_x": ("m", "MDR profile g(x) at the spring's coordinate x (5.52)"),
+    "s_r": ("m", "sqrt(x^2 - r^2), the integration variable of (5.59) beyond x = r"),
+    "r_c": ("1", "ratio r/c of the radial coordinate to the stick radius"),
+    "q_x": ("N/m", "tangential line load of the MDR springs, force per unit length"),
+    "w_x": ("m", "elastic shear displacement of an MDR tangential spring"),
+    "q_z": ("N/m", "normal line load of the MDR springs, force per unit length (5.58)"),
     "g_slope": ("1", "slope g'(a) of the MDR profile at the contact radius"),
     "F_load": ("N", "normal force, negative when adhesion pulls (adhesive contact)"),
     "z0": ("m", "range of the adhesive forces (equilibrium distance) of the Tabor parameter"),

@@ -68,6 +68,8 @@ n = symbol("n")
 c_n = symbol("c_n")
 kappa_n = symbol("kappa_n")
 theta = symbol("theta", positive=True)
+r_c = symbol("r_c")
+s_r = symbol("s_r")
 c_a = symbol("c_a")
 d_c = symbol("d_c")
 s_x = symbol("s_x")
@@ -114,6 +116,50 @@ def stiffness_ratio() -> sp.Expr:
 
 
 # ---------------------------------------------------------------- springs of a profile g(x)
+g_x = symbol("g_x")
+q_z = symbol("q_z")
+
+
+@cache
+def normal_line_load() -> dict[str, sp.Expr]:
+    """q_z = E* (d - g(x)) (5.58): the normal spring at x, of stiffness E* dx (5.51), is
+    pressed by d - g(x) once the depth d reaches its gap g(x) (5.55); and the depth that gives
+    a spring the line load q_z, d = g + q_z/E*.
+
+    Asserted: the springs' line load summed over -a < x < a at d = g(a) is the normal force
+    (5.57) of :func:`hertzmdr.derive.mdr.force`, for the paraboloid and the cone.
+    """
+    dd = mdr.d
+    qz = E_star * (dd - g_x)  # spring stiffness E* per unit length times its compression
+    (depth,) = sp.solve(sp.Eq(q_z, qz), dd)
+    xi = sp.Symbol("xi", positive=True)
+    for g in (x**2 / R, sp.pi / 2 * sp.tan(theta) * x):  # (5.52) of r^2/(2R) and r tan(theta)
+        summed = 2 * sp.integrate(qz.subs({g_x: g.subs(x, xi), dd: g.subs(x, a)}), (xi, 0, a))
+        assert sp.simplify(summed - mdr.force(g)) == 0, (g, summed)
+    return {"q_z": qz, "d": depth}
+
+
+q_x = symbol("q_x")
+w_x = symbol("w_x")
+
+
+@cache
+def tangential_line_load() -> dict[str, sp.Expr]:
+    """q_x = G* w: the tangential spring at x, of stiffness G* dx (the direction average of
+    the Cerruti compliance, :func:`effective_modulus`), sheared elastically by w; and the
+    shear w = q_x/G* that carries the line load q_x (what a sliding spring gives up).
+
+    Asserted: every spring stuck at w = u_x, summed over -a < x < a, is the tangential force
+    of :func:`spring_force` at c = a (no slip).
+    """
+    qx = G_star * w_x
+    (shear,) = sp.solve(sp.Eq(q_x, qx), w_x)
+    xi = sp.Symbol("xi", positive=True)
+    summed = 2 * sp.integrate(qx.subs(w_x, u_x), (xi, 0, a))
+    assert sp.expand(summed - spring_force(sp.S.Zero, a)) == 0, summed  # any g: c = a
+    return {"q_x": qx, "w": shear}
+
+
 def spring_force(g: sp.Expr, c_expr: sp.Expr) -> sp.Expr:
     """F_x = 2 [G* u_x c + mu E* integral_c^a (d - g(x)) dx] with d = g(a) (5.55)."""
     xi = sp.Symbol("xi", positive=True)
@@ -285,6 +331,79 @@ def slide_onset() -> sp.Expr:
     Pw = powerlaw()
     assert sp.simplify(Pw["c_u"].subs(u_x, u_on.subs(mdr.d, Pw["g"].subs(x, a)))) == 0
     return u_on
+
+
+#: terms of the power law's stick-zone traction series about the axis, printed; for r <= c/2
+#: the terms fall at least 4-fold each, so the part left out is below (4/3) 4^-K of the sum
+STICK_CENTRE_TERMS = 28
+#: the series is used for r <= STICK_CENTRE_RADIUS c
+STICK_CENTRE_RADIUS = sp.Rational(1, 2)
+
+
+@cache
+def powerlaw_traction_stick_centre() -> sp.Expr:
+    """mu (p(r; a) - p(r; c)) of g = kappa_n c_n x^n for r <= c/2, finite on the axis for n <= 1.
+
+    For r < c, (5.59) with q' = -E* g' (:func:`hertzmdr.derive.mdr.pressure`) integrates over
+    r < x < a and r < x < c: the difference is (E*/pi) integral_c^a g'(x)/sqrt(x^2 - r^2) dx,
+    whose integrand has no singularity (x >= c > r). Each pressure is infinite on the axis for
+    n <= 1 (its singular (r/a)^(n-1) term, see :func:`hertzmdr.derive.powerlaw.pressure_centre`,
+    has the same coefficient d/a^n = kappa_n c_n at a and at c, so it cancels); the difference
+    is finite: at r = 0, mu E* n kappa_n c_n (a^(n-1) - c^(n-1))/(pi (n - 1)), for the cone
+    (n = 1) mu E* tan(theta)/2 ln(a/c).
+
+    Expanded with (1 - r^2/x^2)^(-1/2) = sum_k (1/2)_k/k! (r/x)^(2k) (uniformly convergent on
+    x >= c > r), termwise: integral_c^a x^(m-1) dx = c^m expm1(m ln(a/c))/m, m = n - 1 - 2k.
+    For n < 3 every term is positive (no cancellation, none as c -> a either: expm1), and
+    decreasing by at least (r/c)^2 each: the first STICK_CENTRE_TERMS are kept.
+    """
+    m = sp.Symbol("m", nonzero=True)
+    xi = sp.Symbol("xi", positive=True)
+    # the difference of the two (5.59) integrals for r < c is their integral over (c, a)
+    gp = sp.diff(kappa_n * c_n * x**n, x).subs(x, xi)
+    assert sp.expand(gp * xi - n * kappa_n * c_n * xi**n) == 0, gp
+    # the binomial series of the kernel (1 - s)^(-1/2), s = r^2/x^2: (-1)^k binomial(-1/2, k)
+    coef = [sp.rf(sp.Rational(1, 2), j) / sp.factorial(j) for j in range(STICK_CENTRE_TERMS)]
+    assert all((-1) ** j * sp.binomial(sp.Rational(-1, 2), j) == coef[j]
+               for j in range(STICK_CENTRE_TERMS))
+    # termwise: integral_c^a x^(m-1) dx = c^m expm1(m log(a/c))/m (m != 0), log(a/c) as
+    # log1p((a - c)/c), which keeps its digits as c -> a (equal at 50 digits at random points;
+    # simplify takes half a second for it)
+    term = sp.integrate(xi ** (m - 1), (xi, c, a), conds="none")
+    assert sp.expand(term * m - (a**m - c**m)) == 0, term
+    L = log1p((a - c) / c)
+    plain = c**m * (sp.exp(m * sp.log(1 + (a - c) / c)) - 1) / m
+    for pt in ({a: 3, c: sp.Rational(1, 7), m: sp.Rational(-9, 4)},
+               {a: sp.Rational(5, 4), c: sp.Rational(6, 5), m: sp.Rational(1, 3)}):
+        diff = sp.N((term - plain).subs(pt), 50)
+        assert abs(diff) < sp.Float(10) ** -45 * abs(sp.N(term.subs(pt), 50)), (pt, diff)
+    # r^(2k) c^(n - 1 - 2k) = c^(n-1) r_c^(2k), r_c = r/c <= 1/2; Horner in r_c^2
+    z = r_c**2
+    total = sp.S.Zero
+    for j in reversed(range(STICK_CENTRE_TERMS)):
+        mj = n - 1 - 2 * j
+        total = coef[j] * expm1(mj * L) / mj + (z * total if j < STICK_CENTRE_TERMS - 1
+                                                else 0)
+    return mu_f * E_star / sp.pi * n * kappa_n * c_n * c ** (n - 1) * total
+
+
+@cache
+def powerlaw_traction_stick_integrand() -> sp.Expr:
+    """The integrand of mu (p(r; a) - p(r; c)) = integral over s of it, s = sqrt(x^2 - r^2)
+    from sqrt(c^2 - r^2) to sqrt(a^2 - r^2) (x from c to a in (5.59)): with x^2 = r^2 + s^2,
+    dx/sqrt(x^2 - r^2) = ds/x, so mu (E*/pi) g'(x)/x = mu (E*/pi) n kappa_n c_n
+    (r^2 + s^2)^((n - 2)/2), smooth on the whole interval even at r = c (no endpoint
+    singularity), and its length sqrt(a^2 - r^2) - sqrt(c^2 - r^2) is computed without
+    cancellation as c -> a: the stick zone's traction near the edge of a nearly stuck
+    contact, where the two pressures cancel."""
+    xi = sp.Symbol("xi", positive=True)
+    gp = sp.diff(kappa_n * c_n * x**n, x).subs(x, xi)
+    xs = sp.sqrt(r**2 + s_r**2)
+    dx_ds = sp.diff(xs, s_r)
+    out = mu_f * E_star / sp.pi * n * kappa_n * c_n * (r**2 + s_r**2) ** ((n - 2) / 2)
+    changed = (mu_f * E_star / sp.pi * gp / sp.sqrt(xi**2 - r**2)).subs(xi, xs) * dx_ds
+    assert sp.simplify(sp.powsimp(changed / out, force=True)) == 1, changed
+    return out
 
 
 def flat_punch_traction() -> sp.Expr:
@@ -524,6 +643,27 @@ def relations() -> list[Relation]:
         f"{TEST}::test_closed_forms_against_the_spring_quadrature", domain=dom_up,
         stable=-mu_f * Pw["F_a"] * expm1((n + 1) / n * log1p(-q_over)),
         stable_why="1 - (c/a)^(n+1) cancels as u_x -> 0: -expm1((n+1)/n log1p(-q))"))
+    rels.append(Relation(
+        "tangential_powerlaw_traction_stick_centre",
+        "MDR tangential, power law (not in the chapter), (5.59)",
+        powerlaw_traction_stick_centre(), (r_c, a, c, c_n, n, kappa_n, E_star, mu_f),
+        "tangential traction q(r) [Pa] in the stick zone of a power-law profile near the axis, "
+        f"r = r_c c <= c/2, 0 < n < 3, n != 1 (the cone): finite on the axis, where each of "
+        "the two pressures of mu (p(r; a) - p(r; c)) is infinite for n <= 1; the series to "
+        f"r_c^{2 * STICK_CENTRE_TERMS - 2}, the rest below (4/3) 4^-{STICK_CENTRE_TERMS} of it",
+        "(5.59) of the stuck springs' line load: (E*/pi) integral_c^a g'(x)/sqrt(x^2 - r^2) "
+        "dx, its kernel expanded in (r/x)^2 and integrated termwise",
+        f"{TEST}::test_powerlaw_traction_on_and_near_the_axis",
+        domain={r_c: t / 2, c: a * t_c}))
+    rels.append(Relation(
+        "tangential_powerlaw_traction_stick_integrand",
+        "MDR tangential, power law (not in the chapter), (5.59)",
+        powerlaw_traction_stick_integrand(), (r, s_r, c_n, n, kappa_n, E_star, mu_f),
+        "integrand [Pa/m] of the stick-zone traction of a power-law profile in "
+        "s = sqrt(x^2 - r^2): q(r) = its integral from sqrt(c^2 - r^2) to sqrt(a^2 - r^2), "
+        "smooth there for every r < c",
+        "(5.59) of the stuck springs' line load over c < x < a with x^2 = r^2 + s^2",
+        f"{TEST}::test_powerlaw_traction_on_and_near_the_axis"))
     xFp = F_x / (mu_f * F)
     rels.append(Relation(
         "tangential_powerlaw_stick_radius_from_force",
@@ -602,6 +742,35 @@ def relations() -> list[Relation]:
         small_amplitude(Wp_F), (a, n, F, G_star, mu_f, F_amp),
         "leading term [J] of the energy per cycle of a power-law profile at small amplitude",
         "series in F_amp of the energy per cycle", f"{TEST}::test_cubic_small_amplitude_law"))
+
+    # the springs' normal line load and its inverse, for the history solver
+    N = normal_line_load()
+    rels.append(Relation(
+        "mdr_normal_line_load", "(5.58)", N["q_z"], (E_star, mdr.d, g_x),
+        "normal line load q_z [N/m] of the MDR spring at x with gap g(x) at depth d (in "
+        "contact for d > g(x); pass g(x) capped at d for the springs out of contact)",
+        "the spring stiffness E* per unit length (5.51) times its compression d - g(x) (5.55)",
+        f"{TEST}::test_normal_line_load_against_the_normal_force"))
+    rels.append(Relation(
+        "mdr_depth_of_line_load", "(5.58), inverted", N["d"], (E_star, g_x, q_z),
+        "depth d [m] at which the MDR spring with gap g(x) carries the line load q_z",
+        "q_z = E* (d - g(x)) solved for d",
+        f"{TEST}::test_normal_line_load_against_the_normal_force"))
+
+    T = tangential_line_load()
+    rels.append(Relation(
+        "mdr_tangential_line_load", "MDR tangential springs (not in the chapter)", T["q_x"],
+        (G_star, w_x),
+        "tangential line load q_x [N/m] of the MDR spring sheared elastically by w",
+        "the tangential spring stiffness G* per unit length times its shear w",
+        f"{TEST}::test_tangential_line_load_against_the_stiffness"))
+    rels.append(Relation(
+        "mdr_tangential_spring_shear", "MDR tangential springs (not in the chapter)", T["w"],
+        (G_star, q_x),
+        "elastic shear w [m] of the MDR spring that carries the tangential line load q_x "
+        "(the slip that a spring's excess over Coulomb's limit gives up)",
+        "q_x = G* w solved for w",
+        f"{TEST}::test_tangential_line_load_against_the_stiffness"))
 
     # the profiles' g(x) (5.52) and the onset of sliding, for numeric/tangential.py
     for name, prof, args, what in (("paraboloid_profile", P, (R, r), "paraboloid"),

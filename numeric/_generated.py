@@ -226,6 +226,7 @@ __all__ = [
     'hertz_stiffness',
     'impact_contact_time',
     'impact_contact_time_density',
+    'impact_force_scale',
     'impact_length_scale',
     'impact_max_contact_radius',
     'impact_max_contact_radius_density',
@@ -236,6 +237,7 @@ __all__ = [
     'impact_max_pressure',
     'impact_max_pressure_density',
     'impact_sphere_mass',
+    'impact_time_scale',
     'jkr_contact_radius_from_force',
     'jkr_depth',
     'jkr_force_from_radius',
@@ -285,12 +287,16 @@ __all__ = [
     'line_stress_von_mises',
     'line_stress_von_mises_c_tau',
     'masing_unloading_force',
+    'mdr_depth_of_line_load',
     'mdr_force',
     'mdr_kink_G',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
+    'mdr_normal_line_load',
     'mdr_stiffness',
+    'mdr_tangential_line_load',
+    'mdr_tangential_spring_shear',
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
@@ -372,6 +378,8 @@ __all__ = [
     'tangential_powerlaw_stick_deficit',
     'tangential_powerlaw_stick_radius',
     'tangential_powerlaw_stick_radius_from_force',
+    'tangential_powerlaw_traction_stick_centre',
+    'tangential_powerlaw_traction_stick_integrand',
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
@@ -608,6 +616,7 @@ RELATIONS = (
     ('hertz_stiffness', 'Problem 5', 'hertz', '2*E_star*sqrt(R)*sqrt(d)', ''),
     ('impact_contact_time', 'Problem 3', 'impact', '30**(2/5)*sqrt(pi)*m**(2/5)*gamma(2/5)/(5*E_star**(2/5)*R**(1/5)*v0**(1/5)*gamma(9/10))', ''),
     ('impact_contact_time_density', 'Problem 3, m = 4/3 pi R^3 rho', 'impact', '2*2**(1/5)*5**(2/5)*pi**(9/10)*R*rho**(2/5)*gamma(2/5)/(5*E_star**(2/5)*v0**(1/5)*gamma(9/10))', ''),
+    ('impact_force_scale', '(5.23), nondimensionalized', 'impact', 'E_star**(2/5)*R**(1/5)*m**(3/5)*v0**(6/5)', ''),
     ('impact_length_scale', '(5.23), nondimensionalized', 'impact', 'm**(2/5)*v0**(4/5)/(E_star**(2/5)*R**(1/5))', ''),
     ('impact_max_contact_radius', 'Problem 4', 'impact', '30**(1/5)*R**(2/5)*m**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
     ('impact_max_contact_radius_density', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '2**(3/5)*5**(1/5)*pi**(1/5)*R*rho**(1/5)*v0**(2/5)/(2*E_star**(1/5))', ''),
@@ -618,6 +627,7 @@ RELATIONS = (
     ('impact_max_pressure', 'Problem 4', 'impact', '30**(1/5)*E_star**(4/5)*m**(1/5)*v0**(2/5)/(pi*R**(3/5))', ''),
     ('impact_max_pressure_density', 'Problem 4', 'impact', '2**(3/5)*5**(1/5)*E_star**(4/5)*rho**(1/5)*v0**(2/5)/pi**(4/5)', ''),
     ('impact_sphere_mass', 'Problem 4, m = 4/3 pi R^3 rho', 'impact', '4*pi*R**3*rho/3', ''),
+    ('impact_time_scale', '(5.23), nondimensionalized', 'impact', 'm**(2/5)/(E_star**(2/5)*R**(1/5)*v0**(1/5))', ''),
     ('jkr_contact_radius_from_force', '(5.57), JKR, inverted', 'adhesion', '(sqrt(3)*sqrt(R)*sqrt(2*F_load + 3*pi*R*dgamma) + 3*sqrt(pi)*R*sqrt(dgamma))**(2/3)/(2*E_star**(1/3))', ''),
     ('jkr_depth', '(5.55), JKR', 'adhesion', 'a**2/R - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)', ''),
     ('jkr_force_from_radius', '(5.57), JKR', 'adhesion', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*sqrt(dgamma) + 4*E_star*a**3/(3*R)', ''),
@@ -667,12 +677,16 @@ RELATIONS = (
     ('line_stress_von_mises', '(5.50), plane strain', 'line_stress', 'sqrt(nu**2*(sigma_xx + sigma_zz)**2 - nu*sigma_xx*(sigma_xx + sigma_zz) - nu*sigma_zz*(sigma_xx + sigma_zz) + sigma_xx**2 - sigma_xx*sigma_zz + sigma_zz**2 + 3*tau_xz**2)', ''),
     ('line_stress_von_mises_c_tau', '(5.50), plane strain', 'line_stress', 'sqrt(c_mean**2*(1 - 2*nu)**2 + 3*tau_1**2)', ''),
     ('masing_unloading_force', "Masing's rule, derived from the springs", 'tangential', 'F_amp - 2*F_half', ''),
+    ('mdr_depth_of_line_load', '(5.58), inverted', 'tangential', 'g_x + q_z/E_star', ''),
     ('mdr_force', '(5.57)', 'numerical_mdr', '2*E_star*(a*d - g_integral)', ''),
     ('mdr_kink_G', '(5.57)', 'kink', '2*b*slope_jump*x*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b))) - b*slope_jump*sqrt(-b + x)*sqrt(b + x)', ''),
     ('mdr_kink_g', '(5.52)', 'kink', '2*b*slope_jump*acosh(sqrt(2)*sqrt(b + x)/(2*sqrt(b)))', ''),
     ('mdr_kink_gprime', '(5.52)', 'kink', 'b*slope_jump/(sqrt(-b + x)*sqrt(b + x))', ''),
     ('mdr_kink_pressure', '(5.59)', 'kink', 'E_star*b*slope_jump*elliptic_f(atan2(sqrt(Max(0, (a - Max(b, r))*(a + Max(b, r)))), sqrt(Max(b, r) - Min(b, r))*sqrt(Max(b, r) + Min(b, r))), Min(b, r)**2/Max(b, r)**2)/(pi*Max(b, r))', ''),
+    ('mdr_normal_line_load', '(5.58)', 'tangential', 'E_star*(d - g_x)', ''),
     ('mdr_stiffness', '(5.12), Problem 5', 'contact', '2*E_star*a', ''),
+    ('mdr_tangential_line_load', 'MDR tangential springs (not in the chapter)', 'tangential', 'G_star*w_x', ''),
+    ('mdr_tangential_spring_shear', 'MDR tangential springs (not in the chapter)', 'tangential', 'q_x/G_star', ''),
     ('mindlin_energy', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', '3*(-6*F**(4/3)*mu_f**(4/3)*(F*mu_f - F_amp)**(2/3) + F**(1/3)*F_amp*mu_f**(1/3)*(F*mu_f - F_amp)**(2/3) + 6*F**2*mu_f**2 - 5*F*F_amp*mu_f)/(5*G_star*a)', ''),
     ('mindlin_energy_small', 'Mindlin-Deresiewicz (not in the chapter)', 'tangential', 'F_amp**3/(9*F*G_star*a*mu_f)', ''),
     ('paraboloid_g', '(5.52) of f = r^2/(2R)', 'tangential', 'x**2/R', ''),
@@ -754,6 +768,8 @@ RELATIONS = (
     ('tangential_powerlaw_stick_deficit', 'MDR tangential, power law (not in the chapter)', 'tangential', '1 - (1 - F_amp/(F*mu_f))**(1/(n + 1))', ''),
     ('tangential_powerlaw_stick_radius', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - G_star*u_x/(E_star*a**n*c_n*kappa_n*mu_f))**(1/n)', ''),
     ('tangential_powerlaw_stick_radius_from_force', 'MDR tangential, power law (not in the chapter)', 'tangential', 'a*(1 - F_x/(F*mu_f))**(1/(n + 1))', ''),
+    ('tangential_powerlaw_traction_stick_centre', 'MDR tangential, power law (not in the chapter), (5.59)', 'tangential', 'E_star*c**(n - 1)*c_n*kappa_n*mu_f*n*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(121683714103007*r_c**2*expm1((n - 55)*log1p((a - c)/c))/(1125899906842624*(n - 55)) + 61989816618513*expm1((n - 53)*log1p((a - c)/c))/(562949953421312*(n - 53))) + 15801325804719*expm1((n - 51)*log1p((a - c)/c))/(140737488355328*(n - 51))) + 8061900920775*expm1((n - 49)*log1p((a - c)/c))/(70368744177664*(n - 49))) + 514589420475*expm1((n - 47)*log1p((a - c)/c))/(4398046511104*(n - 47))) + 263012370465*expm1((n - 45)*log1p((a - c)/c))/(2199023255552*(n - 45))) + 67282234305*expm1((n - 43)*log1p((a - c)/c))/(549755813888*(n - 43))) + 34461632205*expm1((n - 41)*log1p((a - c)/c))/(274877906944*(n - 41))) + 4418157975*expm1((n - 39)*log1p((a - c)/c))/(34359738368*(n - 39))) + 2268783825*expm1((n - 37)*log1p((a - c)/c))/(17179869184*(n - 37))) + 583401555*expm1((n - 35)*log1p((a - c)/c))/(4294967296*(n - 35))) + 300540195*expm1((n - 33)*log1p((a - c)/c))/(2147483648*(n - 33))) + 9694845*expm1((n - 31)*log1p((a - c)/c))/(67108864*(n - 31))) + 5014575*expm1((n - 29)*log1p((a - c)/c))/(33554432*(n - 29))) + 1300075*expm1((n - 27)*log1p((a - c)/c))/(8388608*(n - 27))) + 676039*expm1((n - 25)*log1p((a - c)/c))/(4194304*(n - 25))) + 88179*expm1((n - 23)*log1p((a - c)/c))/(524288*(n - 23))) + 46189*expm1((n - 21)*log1p((a - c)/c))/(262144*(n - 21))) + 12155*expm1((n - 19)*log1p((a - c)/c))/(65536*(n - 19))) + 6435*expm1((n - 17)*log1p((a - c)/c))/(32768*(n - 17))) + 429*expm1((n - 15)*log1p((a - c)/c))/(2048*(n - 15))) + 231*expm1((n - 13)*log1p((a - c)/c))/(1024*(n - 13))) + 63*expm1((n - 11)*log1p((a - c)/c))/(256*(n - 11))) + 35*expm1((n - 9)*log1p((a - c)/c))/(128*(n - 9))) + 5*expm1((n - 7)*log1p((a - c)/c))/(16*(n - 7))) + 3*expm1((n - 5)*log1p((a - c)/c))/(8*(n - 5))) + expm1((n - 3)*log1p((a - c)/c))/(2*(n - 3))) + expm1((n - 1)*log1p((a - c)/c))/(n - 1))/pi', ''),
+    ('tangential_powerlaw_traction_stick_integrand', 'MDR tangential, power law (not in the chapter), (5.59)', 'tangential', 'E_star*c_n*kappa_n*mu_f*n*(r**2 + s_r**2)**(n/2 - 1)/pi', ''),
     ('tangential_slide_onset', 'MDR tangential springs (not in the chapter)', 'tangential', 'E_star*d*mu_f/G_star', ''),
     ('tangential_stiffness', 'MDR tangential springs (not in the chapter)', 'tangential', '2*G_star*a', ''),
     ('tangential_stiffness_ratio', 'MDR tangential springs (not in the chapter)', 'tangential', '2*(nu - 1)/(nu - 2)', ''),
@@ -6637,6 +6653,34 @@ def impact_contact_time_density(E_star, R, rho, v0):
     return (2/5)*2**(1/5)*5**(2/5)*numpy.pi**(9/10)*R*rho**(2/5)*scipy.special.gamma(2/5)/(E_star**(2/5)*v0**(1/5)*scipy.special.gamma(9/10))
 
 
+def impact_force_scale(E_star, R, m, v0):
+    """Force scale F_s = m x_s/t_s^2 [N] of the impact: m x'' = -F(x) (5.23) reads X'' = -F(x_s X)/F_s = -(4/3) X^(3/2).
+
+    Chapter: (5.23), nondimensionalized. Derived from: m x'' = (m x_s/t_s^2) X''.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_time_and_force_scales``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_force_scale(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star**(2/5)*R**(1/5)*m**(3/5)*v0**(6/5)
+
+
 def impact_length_scale(E_star, R, m, v0):
     """Length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s.
 
@@ -6908,6 +6952,34 @@ def impact_sphere_mass(R, rho):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return (4/3)*numpy.pi*R**3*rho
+
+
+def impact_time_scale(E_star, R, m, v0):
+    """Time scale t_s = x_s/v0 [s] of the impact, with which the initial velocity is X'(0) = 1 in X = x/x_s, T = t/t_s.
+
+    Chapter: (5.23), nondimensionalized. Derived from: x'(0) = v0 in the scaled variables.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_time_and_force_scales``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : float or ndarray
+        mass [kg]
+    v0 : float or ndarray
+        impact velocity [m/s]
+    """
+    if (type(E_star) is float and type(R) is float and type(m) is float and
+            type(v0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_impact_time_scale(E_star, R, m, v0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return m**(2/5)/(E_star**(2/5)*R**(1/5)*v0**(1/5))
 
 
 def jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
@@ -8242,6 +8314,31 @@ def masing_unloading_force(F_amp, F_half):
     return F_amp - 2*F_half
 
 
+def mdr_depth_of_line_load(E_star, g_x, q_z):
+    """Depth d [m] at which the MDR spring with gap g(x) carries the line load q_z.
+
+    Chapter: (5.58), inverted. Derived from: q_z = E* (d - g(x)) solved for d.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_normal_line_load_against_the_normal_force``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_x : float or ndarray
+        MDR profile g(x) at the spring's coordinate x (5.52) [m]
+    q_z : float or ndarray
+        normal line load of the MDR springs, force per unit length (5.58) [N/m]
+    """
+    if type(E_star) is float and type(g_x) is float and type(q_z) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_depth_of_line_load(E_star, g_x, q_z)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return g_x + q_z/E_star
+
+
 def mdr_force(E_star, a, d, g_integral):
     """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
 
@@ -8381,6 +8478,32 @@ def mdr_kink_pressure(E_star, a, b, r, slope_jump):
     return E_star*b*slope_jump*scipy.special.ellipkinc(numpy.arctan2(numpy.sqrt(functools.reduce(numpy.maximum, [0, (a - functools.reduce(numpy.maximum, [b, r]))*(a + functools.reduce(numpy.maximum, [b, r]))])), numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) - functools.reduce(numpy.minimum, [b, r]))*numpy.sqrt(functools.reduce(numpy.maximum, [b, r]) + functools.reduce(numpy.minimum, [b, r]))), functools.reduce(numpy.minimum, [b, r])**2/functools.reduce(numpy.maximum, [b, r])**2)/(numpy.pi*functools.reduce(numpy.maximum, [b, r]))
 
 
+def mdr_normal_line_load(E_star, d, g_x):
+    """Normal line load q_z [N/m] of the MDR spring at x with gap g(x) at depth d (in contact for d > g(x); pass g(x) capped at d for the springs out of contact).
+
+    Chapter: (5.58). Derived from: the spring stiffness E* per unit length (5.51) times its
+    compression d - g(x) (5.55).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_normal_line_load_against_the_normal_force``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : float or ndarray
+        indentation depth [m]
+    g_x : float or ndarray
+        MDR profile g(x) at the spring's coordinate x (5.52) [m]
+    """
+    if type(E_star) is float and type(d) is float and type(g_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_normal_line_load(E_star, d, g_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*(d - g_x)
+
+
 def mdr_stiffness(E_star, a):
     """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a.
 
@@ -8402,6 +8525,54 @@ def mdr_stiffness(E_star, a):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*E_star*a
+
+
+def mdr_tangential_line_load(G_star, w_x):
+    """Tangential line load q_x [N/m] of the MDR spring sheared elastically by w.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: the tangential
+    spring stiffness G* per unit length times its shear w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    w_x : float or ndarray
+        elastic shear displacement of an MDR tangential spring [m]
+    """
+    if type(G_star) is float and type(w_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_tangential_line_load(G_star, w_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return G_star*w_x
+
+
+def mdr_tangential_spring_shear(G_star, q_x):
+    """Elastic shear w [m] of the MDR spring that carries the tangential line load q_x (the slip that a spring's excess over Coulomb's limit gives up).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: q_x = G* w solved
+    for w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : float or ndarray
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    q_x : float or ndarray
+        tangential line load of the MDR springs, force per unit length [N/m]
+    """
+    if type(G_star) is float and type(q_x) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_mdr_tangential_spring_shear(G_star, q_x)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return q_x/G_star
 
 
 def mindlin_energy(a, F, G_star, mu_f, F_amp):
@@ -10704,6 +10875,80 @@ def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return a*(1 - F_x/(F*mu_f))**((n + 1)**(-1.0))
+
+
+def tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone of a power-law profile near the axis, r = r_c c <= c/2, 0 < n < 3, n != 1 (the cone): finite on the axis, where each of the two pressures of mu (p(r; a) - p(r; c)) is infinite for n <= 1; the series to r_c^54, the rest below (4/3) 4^-28 of it.
+
+    Chapter: MDR tangential, power law (not in the chapter), (5.59). Derived from: (5.59) of
+    the stuck springs' line load: (E*/pi) integral_c^a g'(x)/sqrt(x^2 - r^2) dx, its kernel
+    expanded in (r/x)^2 and integrated termwise.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_powerlaw_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r_c : float or ndarray
+        ratio r/c of the radial coordinate to the stick radius [1]
+    a : float or ndarray
+        contact radius [m]
+    c : float or ndarray
+        radius of the stick zone [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r_c) is float and type(a) is float and type(c) is float and type(c_n) is float
+            and type(n) is float and type(kappa_n) is float and type(E_star) is float and
+            type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*c**(n - 1)*c_n*kappa_n*mu_f*n*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*((121683714103007/1125899906842624)*r_c**2*numpy.expm1((n - 55)*numpy.log1p((a - c)/c))/(n - 55) + (61989816618513/562949953421312)*numpy.expm1((n - 53)*numpy.log1p((a - c)/c))/(n - 53)) + (15801325804719/140737488355328)*numpy.expm1((n - 51)*numpy.log1p((a - c)/c))/(n - 51)) + (8061900920775/70368744177664)*numpy.expm1((n - 49)*numpy.log1p((a - c)/c))/(n - 49)) + (514589420475/4398046511104)*numpy.expm1((n - 47)*numpy.log1p((a - c)/c))/(n - 47)) + (263012370465/2199023255552)*numpy.expm1((n - 45)*numpy.log1p((a - c)/c))/(n - 45)) + (67282234305/549755813888)*numpy.expm1((n - 43)*numpy.log1p((a - c)/c))/(n - 43)) + (34461632205/274877906944)*numpy.expm1((n - 41)*numpy.log1p((a - c)/c))/(n - 41)) + (4418157975/34359738368)*numpy.expm1((n - 39)*numpy.log1p((a - c)/c))/(n - 39)) + (2268783825/17179869184)*numpy.expm1((n - 37)*numpy.log1p((a - c)/c))/(n - 37)) + (583401555/4294967296)*numpy.expm1((n - 35)*numpy.log1p((a - c)/c))/(n - 35)) + (300540195/2147483648)*numpy.expm1((n - 33)*numpy.log1p((a - c)/c))/(n - 33)) + (9694845/67108864)*numpy.expm1((n - 31)*numpy.log1p((a - c)/c))/(n - 31)) + (5014575/33554432)*numpy.expm1((n - 29)*numpy.log1p((a - c)/c))/(n - 29)) + (1300075/8388608)*numpy.expm1((n - 27)*numpy.log1p((a - c)/c))/(n - 27)) + (676039/4194304)*numpy.expm1((n - 25)*numpy.log1p((a - c)/c))/(n - 25)) + (88179/524288)*numpy.expm1((n - 23)*numpy.log1p((a - c)/c))/(n - 23)) + (46189/262144)*numpy.expm1((n - 21)*numpy.log1p((a - c)/c))/(n - 21)) + (12155/65536)*numpy.expm1((n - 19)*numpy.log1p((a - c)/c))/(n - 19)) + (6435/32768)*numpy.expm1((n - 17)*numpy.log1p((a - c)/c))/(n - 17)) + (429/2048)*numpy.expm1((n - 15)*numpy.log1p((a - c)/c))/(n - 15)) + (231/1024)*numpy.expm1((n - 13)*numpy.log1p((a - c)/c))/(n - 13)) + (63/256)*numpy.expm1((n - 11)*numpy.log1p((a - c)/c))/(n - 11)) + (35/128)*numpy.expm1((n - 9)*numpy.log1p((a - c)/c))/(n - 9)) + (5/16)*numpy.expm1((n - 7)*numpy.log1p((a - c)/c))/(n - 7)) + (3/8)*numpy.expm1((n - 5)*numpy.log1p((a - c)/c))/(n - 5)) + (1/2)*numpy.expm1((n - 3)*numpy.log1p((a - c)/c))/(n - 3)) + numpy.expm1((n - 1)*numpy.log1p((a - c)/c))/(n - 1))/numpy.pi
+
+
+def tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f):
+    """Integrand [Pa/m] of the stick-zone traction of a power-law profile in s = sqrt(x^2 - r^2): q(r) = its integral from sqrt(c^2 - r^2) to sqrt(a^2 - r^2), smooth there for every r < c.
+
+    Chapter: MDR tangential, power law (not in the chapter), (5.59). Derived from: (5.59) of
+    the stuck springs' line load over c < x < a with x^2 = r^2 + s^2.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_powerlaw_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : float or ndarray
+        radial coordinate on the surface [m]
+    s_r : float or ndarray
+        sqrt(x^2 - r^2), the integration variable of (5.59) beyond x = r [m]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : float or ndarray
+        coefficient of (Coulomb) friction mu [1]
+    """
+    if (type(r) is float and type(s_r) is float and type(c_n) is float and type(n) is float
+            and type(kappa_n) is float and type(E_star) is float and type(mu_f) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*c_n*kappa_n*mu_f*n*(r**2 + s_r**2)**((1/2)*n - 1)/numpy.pi
 
 
 def tangential_slide_onset(E_star, G_star, mu_f, d):
@@ -14248,6 +14493,11 @@ def _math_impact_contact_time_density(E_star, R, rho, v0):
     return (2/5)*math.pow(2, 1/5)*math.pow(5, 2/5)*math.pow(math.pi, 9/10)*R*math.pow(rho, 2/5)*math.gamma(2/5)/(math.pow(E_star, 2/5)*math.pow(v0, 1/5)*math.gamma(9/10))
 
 
+def _math_impact_force_scale(E_star, R, m, v0):
+    """``impact_force_scale`` for Python floats (the math module); raises where it does."""
+    return math.pow(E_star, 2/5)*math.pow(R, 1/5)*math.pow(m, 3/5)*math.pow(v0, 6/5)
+
+
 def _math_impact_length_scale(E_star, R, m, v0):
     """``impact_length_scale`` for Python floats (the math module); raises where it does."""
     return math.pow(m, 2/5)*math.pow(v0, 4/5)/(math.pow(E_star, 2/5)*math.pow(R, 1/5))
@@ -14296,6 +14546,11 @@ def _math_impact_max_pressure_density(E_star, rho, v0):
 def _math_impact_sphere_mass(R, rho):
     """``impact_sphere_mass`` for Python floats (the math module); raises where it does."""
     return (4/3)*math.pi*R**3*rho
+
+
+def _math_impact_time_scale(E_star, R, m, v0):
+    """``impact_time_scale`` for Python floats (the math module); raises where it does."""
+    return math.pow(m, 2/5)/(math.pow(E_star, 2/5)*math.pow(R, 1/5)*math.pow(v0, 1/5))
 
 
 def _math_jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
@@ -14578,6 +14833,11 @@ def _math_masing_unloading_force(F_amp, F_half):
     return F_amp - 2*F_half
 
 
+def _math_mdr_depth_of_line_load(E_star, g_x, q_z):
+    """``mdr_depth_of_line_load`` for Python floats (the math module); raises where it does."""
+    return g_x + q_z/E_star
+
+
 def _math_mdr_force(E_star, a, d, g_integral):
     """``mdr_force`` for Python floats (the math module); raises where it does."""
     return 2*E_star*(a*d - g_integral)
@@ -14608,9 +14868,24 @@ def _math_mdr_kink_gprime(b, slope_jump, x):
     return b*slope_jump/(math.sqrt(-b + x)*math.sqrt(b + x))
 
 
+def _math_mdr_normal_line_load(E_star, d, g_x):
+    """``mdr_normal_line_load`` for Python floats (the math module); raises where it does."""
+    return E_star*(d - g_x)
+
+
 def _math_mdr_stiffness(E_star, a):
     """``mdr_stiffness`` for Python floats (the math module); raises where it does."""
     return 2*E_star*a
+
+
+def _math_mdr_tangential_line_load(G_star, w_x):
+    """``mdr_tangential_line_load`` for Python floats (the math module); raises where it does."""
+    return G_star*w_x
+
+
+def _math_mdr_tangential_spring_shear(G_star, q_x):
+    """``mdr_tangential_spring_shear`` for Python floats (the math module); raises where it does."""
+    return q_x/G_star
 
 
 def _math_mindlin_energy(a, F, G_star, mu_f, F_amp):
@@ -15116,6 +15391,16 @@ def _math_textbook_tangential_powerlaw_stick_radius(a, c_n, n, kappa_n, E_star, 
 def _math_tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
     """``tangential_powerlaw_stick_radius_from_force`` for Python floats (the math module); raises where it does."""
     return a*math.pow(1 - F_x/(F*mu_f), 1/(n + 1))
+
+
+def _math_tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star, mu_f):
+    """``tangential_powerlaw_traction_stick_centre`` for Python floats (the math module); raises where it does."""
+    return E_star*math.pow(c, n - 1)*c_n*kappa_n*mu_f*n*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((r_c*r_c)*((121683714103007/1125899906842624)*(r_c*r_c)*math.expm1((n - 55)*math.log1p((a - c)/c))/(n - 55) + (61989816618513/562949953421312)*math.expm1((n - 53)*math.log1p((a - c)/c))/(n - 53)) + (15801325804719/140737488355328)*math.expm1((n - 51)*math.log1p((a - c)/c))/(n - 51)) + (8061900920775/70368744177664)*math.expm1((n - 49)*math.log1p((a - c)/c))/(n - 49)) + (514589420475/4398046511104)*math.expm1((n - 47)*math.log1p((a - c)/c))/(n - 47)) + (263012370465/2199023255552)*math.expm1((n - 45)*math.log1p((a - c)/c))/(n - 45)) + (67282234305/549755813888)*math.expm1((n - 43)*math.log1p((a - c)/c))/(n - 43)) + (34461632205/274877906944)*math.expm1((n - 41)*math.log1p((a - c)/c))/(n - 41)) + (4418157975/34359738368)*math.expm1((n - 39)*math.log1p((a - c)/c))/(n - 39)) + (2268783825/17179869184)*math.expm1((n - 37)*math.log1p((a - c)/c))/(n - 37)) + (583401555/4294967296)*math.expm1((n - 35)*math.log1p((a - c)/c))/(n - 35)) + (300540195/2147483648)*math.expm1((n - 33)*math.log1p((a - c)/c))/(n - 33)) + (9694845/67108864)*math.expm1((n - 31)*math.log1p((a - c)/c))/(n - 31)) + (5014575/33554432)*math.expm1((n - 29)*math.log1p((a - c)/c))/(n - 29)) + (1300075/8388608)*math.expm1((n - 27)*math.log1p((a - c)/c))/(n - 27)) + (676039/4194304)*math.expm1((n - 25)*math.log1p((a - c)/c))/(n - 25)) + (88179/524288)*math.expm1((n - 23)*math.log1p((a - c)/c))/(n - 23)) + (46189/262144)*math.expm1((n - 21)*math.log1p((a - c)/c))/(n - 21)) + (12155/65536)*math.expm1((n - 19)*math.log1p((a - c)/c))/(n - 19)) + (6435/32768)*math.expm1((n - 17)*math.log1p((a - c)/c))/(n - 17)) + (429/2048)*math.expm1((n - 15)*math.log1p((a - c)/c))/(n - 15)) + (231/1024)*math.expm1((n - 13)*math.log1p((a - c)/c))/(n - 13)) + (63/256)*math.expm1((n - 11)*math.log1p((a - c)/c))/(n - 11)) + (35/128)*math.expm1((n - 9)*math.log1p((a - c)/c))/(n - 9)) + (5/16)*math.expm1((n - 7)*math.log1p((a - c)/c))/(n - 7)) + (3/8)*math.expm1((n - 5)*math.log1p((a - c)/c))/(n - 5)) + (1/2)*math.expm1((n - 3)*math.log1p((a - c)/c))/(n - 3)) + math.expm1((n - 1)*math.log1p((a - c)/c))/(n - 1))/math.pi
+
+
+def _math_tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f):
+    """``tangential_powerlaw_traction_stick_integrand`` for Python floats (the math module); raises where it does."""
+    return E_star*c_n*kappa_n*mu_f*n*math.pow((r*r) + (s_r*s_r), (1/2)*n - 1)/math.pi
 
 
 def _math_tangential_slide_onset(E_star, G_star, mu_f, d):

@@ -223,6 +223,7 @@ __all__ = [
     'hertz_stiffness',
     'impact_contact_time',
     'impact_contact_time_density',
+    'impact_force_scale',
     'impact_length_scale',
     'impact_max_contact_radius',
     'impact_max_contact_radius_density',
@@ -233,6 +234,7 @@ __all__ = [
     'impact_max_pressure',
     'impact_max_pressure_density',
     'impact_sphere_mass',
+    'impact_time_scale',
     'jkr_contact_radius_from_force',
     'jkr_depth',
     'jkr_force_from_radius',
@@ -282,12 +284,16 @@ __all__ = [
     'line_stress_von_mises',
     'line_stress_von_mises_c_tau',
     'masing_unloading_force',
+    'mdr_depth_of_line_load',
     'mdr_force',
     'mdr_kink_G',
     'mdr_kink_g',
     'mdr_kink_gprime',
     'mdr_kink_pressure',
+    'mdr_normal_line_load',
     'mdr_stiffness',
+    'mdr_tangential_line_load',
+    'mdr_tangential_spring_shear',
     'mindlin_energy',
     'mindlin_energy_small',
     'paraboloid_g',
@@ -369,6 +375,8 @@ __all__ = [
     'tangential_powerlaw_stick_deficit',
     'tangential_powerlaw_stick_radius',
     'tangential_powerlaw_stick_radius_from_force',
+    'tangential_powerlaw_traction_stick_centre',
+    'tangential_powerlaw_traction_stick_integrand',
     'tangential_slide_onset',
     'tangential_stiffness',
     'tangential_stiffness_ratio',
@@ -5182,6 +5190,28 @@ def impact_contact_time_density(E_star, R, rho, v0):
     return (mpmath.mpf(2)/mpmath.mpf(5))*2**(mpmath.mpf(1)/mpmath.mpf(5))*5**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.pi**(mpmath.mpf(9)/mpmath.mpf(10))*R*rho**(mpmath.mpf(2)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(2)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*v0**(mpmath.mpf(1)/mpmath.mpf(5))*mpmath.gamma(mpmath.mpf(9)/mpmath.mpf(10)))
 
 
+def impact_force_scale(E_star, R, m, v0):
+    """Force scale F_s = m x_s/t_s^2 [N] of the impact: m x'' = -F(x) (5.23) reads X'' = -F(x_s X)/F_s = -(4/3) X^(3/2).
+
+    Chapter: (5.23), nondimensionalized. Derived from: m x'' = (m x_s/t_s^2) X''.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_time_and_force_scales``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5))*m**(mpmath.mpf(3)/mpmath.mpf(5))*v0**(mpmath.mpf(6)/mpmath.mpf(5))
+
+
 def impact_length_scale(E_star, R, m, v0):
     """Length scale x_s [m] of the impact: (m v0^2/(E* sqrt(R)))^(2/5), with which the equation of motion reads X'' = -(4/3) X^(3/2) in T = t v0/x_s.
 
@@ -5395,6 +5425,28 @@ def impact_sphere_mass(R, rho):
         density [kg/m^3]
     """
     return (mpmath.mpf(4)/mpmath.mpf(3))*mpmath.pi*R**3*rho
+
+
+def impact_time_scale(E_star, R, m, v0):
+    """Time scale t_s = x_s/v0 [s] of the impact, with which the initial velocity is X'(0) = 1 in X = x/x_s, T = t/t_s.
+
+    Chapter: (5.23), nondimensionalized. Derived from: x'(0) = v0 in the scaled variables.
+
+    Derivation: ``hertzmdr.derive.impact``. Verified by
+    ``tests/test_impact.py::test_time_and_force_scales``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    m : mpmath.mpf
+        mass [kg]
+    v0 : mpmath.mpf
+        impact velocity [m/s]
+    """
+    return m**(mpmath.mpf(2)/mpmath.mpf(5))/(E_star**(mpmath.mpf(2)/mpmath.mpf(5))*R**(mpmath.mpf(1)/mpmath.mpf(5))*v0**(mpmath.mpf(1)/mpmath.mpf(5)))
 
 
 def jkr_contact_radius_from_force(E_star, F_load, R, dgamma):
@@ -6477,6 +6529,26 @@ def masing_unloading_force(F_amp, F_half):
     return F_amp - 2*F_half
 
 
+def mdr_depth_of_line_load(E_star, g_x, q_z):
+    """Depth d [m] at which the MDR spring with gap g(x) carries the line load q_z.
+
+    Chapter: (5.58), inverted. Derived from: q_z = E* (d - g(x)) solved for d.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_normal_line_load_against_the_normal_force``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_x : mpmath.mpf
+        MDR profile g(x) at the spring's coordinate x (5.52) [m]
+    q_z : mpmath.mpf
+        normal line load of the MDR springs, force per unit length (5.58) [N/m]
+    """
+    return g_x + q_z/E_star
+
+
 def mdr_force(E_star, a, d, g_integral):
     """Normal force F [N] of the MDR at the contact radius a and depth d = g(a), from the integral of g over [0, a].
 
@@ -6592,6 +6664,27 @@ def mdr_kink_pressure(E_star, a, b, r, slope_jump):
     return E_star*b*slope_jump*mpmath.ellipf(mpmath.atan2(mpmath.sqrt(max(0, (a - max(b, r))*(a + max(b, r)))), mpmath.sqrt(max(b, r) - min(b, r))*mpmath.sqrt(max(b, r) + min(b, r))), min(b, r)**2/max(b, r)**2)/(mpmath.pi*max(b, r))
 
 
+def mdr_normal_line_load(E_star, d, g_x):
+    """Normal line load q_z [N/m] of the MDR spring at x with gap g(x) at depth d (in contact for d > g(x); pass g(x) capped at d for the springs out of contact).
+
+    Chapter: (5.58). Derived from: the spring stiffness E* per unit length (5.51) times its
+    compression d - g(x) (5.55).
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_normal_line_load_against_the_normal_force``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    d : mpmath.mpf
+        indentation depth [m]
+    g_x : mpmath.mpf
+        MDR profile g(x) at the spring's coordinate x (5.52) [m]
+    """
+    return E_star*(d - g_x)
+
+
 def mdr_stiffness(E_star, a):
     """Differential normal stiffness dF/dd = 2 a E* [N/m] of an axisymmetric contact of radius a.
 
@@ -6608,6 +6701,44 @@ def mdr_stiffness(E_star, a):
         contact radius [m]
     """
     return 2*E_star*a
+
+
+def mdr_tangential_line_load(G_star, w_x):
+    """Tangential line load q_x [N/m] of the MDR spring sheared elastically by w.
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: the tangential
+    spring stiffness G* per unit length times its shear w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    w_x : mpmath.mpf
+        elastic shear displacement of an MDR tangential spring [m]
+    """
+    return G_star*w_x
+
+
+def mdr_tangential_spring_shear(G_star, q_x):
+    """Elastic shear w [m] of the MDR spring that carries the tangential line load q_x (the slip that a spring's excess over Coulomb's limit gives up).
+
+    Chapter: MDR tangential springs (not in the chapter). Derived from: q_x = G* w solved
+    for w.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_tangential_line_load_against_the_stiffness``.
+
+    Parameters
+    ----------
+    G_star : mpmath.mpf
+        tangential effective modulus G*: 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) [Pa]
+    q_x : mpmath.mpf
+        tangential line load of the MDR springs, force per unit length [N/m]
+    """
+    return q_x/G_star
 
 
 def mindlin_energy(a, F, G_star, mu_f, F_amp):
@@ -8494,6 +8625,67 @@ def tangential_powerlaw_stick_radius_from_force(a, n, F, mu_f, F_x):
         tangential force [N]
     """
     return a*(1 - F_x/(F*mu_f))**(1/(n + 1))
+
+
+def tangential_powerlaw_traction_stick_centre(r_c, a, c, c_n, n, kappa_n, E_star, mu_f):
+    """Tangential traction q(r) [Pa] in the stick zone of a power-law profile near the axis, r = r_c c <= c/2, 0 < n < 3, n != 1 (the cone): finite on the axis, where each of the two pressures of mu (p(r; a) - p(r; c)) is infinite for n <= 1; the series to r_c^54, the rest below (4/3) 4^-28 of it.
+
+    Chapter: MDR tangential, power law (not in the chapter), (5.59). Derived from: (5.59) of
+    the stuck springs' line load: (E*/pi) integral_c^a g'(x)/sqrt(x^2 - r^2) dx, its kernel
+    expanded in (r/x)^2 and integrated termwise.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_powerlaw_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r_c : mpmath.mpf
+        ratio r/c of the radial coordinate to the stick radius [1]
+    a : mpmath.mpf
+        contact radius [m]
+    c : mpmath.mpf
+        radius of the stick zone [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return E_star*c**(n - 1)*c_n*kappa_n*mu_f*n*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*(r_c**2*((mpmath.mpf(121683714103007)/mpmath.mpf(1125899906842624))*r_c**2*mpmath.expm1((n - 55)*mpmath.log1p((a - c)/c))/(n - 55) + (mpmath.mpf(61989816618513)/mpmath.mpf(562949953421312))*mpmath.expm1((n - 53)*mpmath.log1p((a - c)/c))/(n - 53)) + (mpmath.mpf(15801325804719)/mpmath.mpf(140737488355328))*mpmath.expm1((n - 51)*mpmath.log1p((a - c)/c))/(n - 51)) + (mpmath.mpf(8061900920775)/mpmath.mpf(70368744177664))*mpmath.expm1((n - 49)*mpmath.log1p((a - c)/c))/(n - 49)) + (mpmath.mpf(514589420475)/mpmath.mpf(4398046511104))*mpmath.expm1((n - 47)*mpmath.log1p((a - c)/c))/(n - 47)) + (mpmath.mpf(263012370465)/mpmath.mpf(2199023255552))*mpmath.expm1((n - 45)*mpmath.log1p((a - c)/c))/(n - 45)) + (mpmath.mpf(67282234305)/mpmath.mpf(549755813888))*mpmath.expm1((n - 43)*mpmath.log1p((a - c)/c))/(n - 43)) + (mpmath.mpf(34461632205)/mpmath.mpf(274877906944))*mpmath.expm1((n - 41)*mpmath.log1p((a - c)/c))/(n - 41)) + (mpmath.mpf(4418157975)/mpmath.mpf(34359738368))*mpmath.expm1((n - 39)*mpmath.log1p((a - c)/c))/(n - 39)) + (mpmath.mpf(2268783825)/mpmath.mpf(17179869184))*mpmath.expm1((n - 37)*mpmath.log1p((a - c)/c))/(n - 37)) + (mpmath.mpf(583401555)/mpmath.mpf(4294967296))*mpmath.expm1((n - 35)*mpmath.log1p((a - c)/c))/(n - 35)) + (mpmath.mpf(300540195)/mpmath.mpf(2147483648))*mpmath.expm1((n - 33)*mpmath.log1p((a - c)/c))/(n - 33)) + (mpmath.mpf(9694845)/mpmath.mpf(67108864))*mpmath.expm1((n - 31)*mpmath.log1p((a - c)/c))/(n - 31)) + (mpmath.mpf(5014575)/mpmath.mpf(33554432))*mpmath.expm1((n - 29)*mpmath.log1p((a - c)/c))/(n - 29)) + (mpmath.mpf(1300075)/mpmath.mpf(8388608))*mpmath.expm1((n - 27)*mpmath.log1p((a - c)/c))/(n - 27)) + (mpmath.mpf(676039)/mpmath.mpf(4194304))*mpmath.expm1((n - 25)*mpmath.log1p((a - c)/c))/(n - 25)) + (mpmath.mpf(88179)/mpmath.mpf(524288))*mpmath.expm1((n - 23)*mpmath.log1p((a - c)/c))/(n - 23)) + (mpmath.mpf(46189)/mpmath.mpf(262144))*mpmath.expm1((n - 21)*mpmath.log1p((a - c)/c))/(n - 21)) + (mpmath.mpf(12155)/mpmath.mpf(65536))*mpmath.expm1((n - 19)*mpmath.log1p((a - c)/c))/(n - 19)) + (mpmath.mpf(6435)/mpmath.mpf(32768))*mpmath.expm1((n - 17)*mpmath.log1p((a - c)/c))/(n - 17)) + (mpmath.mpf(429)/mpmath.mpf(2048))*mpmath.expm1((n - 15)*mpmath.log1p((a - c)/c))/(n - 15)) + (mpmath.mpf(231)/mpmath.mpf(1024))*mpmath.expm1((n - 13)*mpmath.log1p((a - c)/c))/(n - 13)) + (mpmath.mpf(63)/mpmath.mpf(256))*mpmath.expm1((n - 11)*mpmath.log1p((a - c)/c))/(n - 11)) + (mpmath.mpf(35)/mpmath.mpf(128))*mpmath.expm1((n - 9)*mpmath.log1p((a - c)/c))/(n - 9)) + (mpmath.mpf(5)/mpmath.mpf(16))*mpmath.expm1((n - 7)*mpmath.log1p((a - c)/c))/(n - 7)) + (mpmath.mpf(3)/mpmath.mpf(8))*mpmath.expm1((n - 5)*mpmath.log1p((a - c)/c))/(n - 5)) + (mpmath.mpf(1)/mpmath.mpf(2))*mpmath.expm1((n - 3)*mpmath.log1p((a - c)/c))/(n - 3)) + mpmath.expm1((n - 1)*mpmath.log1p((a - c)/c))/(n - 1))/mpmath.pi
+
+
+def tangential_powerlaw_traction_stick_integrand(r, s_r, c_n, n, kappa_n, E_star, mu_f):
+    """Integrand [Pa/m] of the stick-zone traction of a power-law profile in s = sqrt(x^2 - r^2): q(r) = its integral from sqrt(c^2 - r^2) to sqrt(a^2 - r^2), smooth there for every r < c.
+
+    Chapter: MDR tangential, power law (not in the chapter), (5.59). Derived from: (5.59) of
+    the stuck springs' line load over c < x < a with x^2 = r^2 + s^2.
+
+    Derivation: ``hertzmdr.derive.tangential``. Verified by
+    ``tests/test_tangential.py::test_powerlaw_traction_on_and_near_the_axis``.
+
+    Parameters
+    ----------
+    r : mpmath.mpf
+        radial coordinate on the surface [m]
+    s_r : mpmath.mpf
+        sqrt(x^2 - r^2), the integration variable of (5.59) beyond x = r [m]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    mu_f : mpmath.mpf
+        coefficient of (Coulomb) friction mu [1]
+    """
+    return E_star*c_n*kappa_n*mu_f*n*(r**2 + s_r**2)**((mpmath.mpf(1)/mpmath.mpf(2))*n - 1)/mpmath.pi
 
 
 def tangential_slide_onset(E_star, G_star, mu_f, d):

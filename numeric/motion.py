@@ -6,8 +6,9 @@ maximum depth and the contact time without the energy-balance closed forms of
 :mod:`hertzmdr.numeric.impact`, so the two check each other (the scenes report both).
 
 Time and length are scaled by the dimensional analysis of the problem, x_s = (m v0^2 /
-(E* R^(1/2)))^(2/5) and t_s = x_s/v0 (no closed-form constant enters), so the integrator sees
-numbers of order 1 whatever the scales.
+(E* R^(1/2)))^(2/5), t_s = x_s/v0 and F_s = m x_s/t_s^2 (no closed-form constant enters; all
+three derived in hertzmdr.derive.impact), so the integrator sees numbers of order 1 whatever the
+scales.
 """
 
 from __future__ import annotations
@@ -56,9 +57,10 @@ def integrate(v0, R, E_star, m, *, rtol: float = 1e-10) -> Motion:
                    (("v0", v0), ("R", R), ("E_star", E_star), ("m", m)))
     if not 1e-13 <= rtol <= 1e-3:
         raise ValueError(f"rtol = {rtol!r} is out of range; valid: 1e-13 <= rtol <= 1e-3")
-    xs = float(gen.impact_length_scale(E, R, m, v0))  # X'' = -(4/3) X^(3/2) in these units
-    ts = xs / v0
-    fs = m * xs / ts**2  # force scale
+    # X = x/x_s, T = t/t_s, X'' = -F(x_s X)/F_s = -(4/3) X^(3/2), X'(0) = 1 (5.23)
+    xs = float(gen.impact_length_scale(E, R, m, v0))
+    ts = float(gen.impact_time_scale(E, R, m, v0))
+    fs = float(gen.impact_force_scale(E, R, m, v0))
 
     def rhs(_, y):
         x = max(y[0], 0.0) * xs

@@ -53,6 +53,12 @@ ONSET_ULPS = 64
 #: the power law's energy per cycle is integrated (not taken from its closed form, which
 #: cancels like (1 - c/a)^3) where 1 - c/a is below this
 ENERGY_QUADRATURE_BELOW = 0.25
+#: the power law's stick-zone traction is the series about the axis for r <= this times c
+#: (derive/tangential.py STICK_CENTRE_RADIUS: its terms fall at least 4-fold each there)
+STICK_CENTRE_RADIUS = 0.5
+#: and for c >= this times a (elsewhere beyond c/2) (5.59) over c < x < a by Gauss-Legendre:
+#: there the difference of the two pressures loses 1 - c/a of its digits
+STICK_QUADRATURE_ABOVE = 2 / 3
 
 
 @scalar_path
@@ -257,10 +263,37 @@ class PowerLaw:
         return gen.tangential_powerlaw_stick_radius_from_force(a, self.n, F, mu, F_x)
 
     def traction(self, r, c, a, E_star, G_star, mu, u):
+        if self.n == 1:  # the cone f = r tan(theta), tan(theta) = c_1: its own log1p form
+            return Cone(float(np.arctan(self.c_n))).traction(r, c, a, E_star, G_star, mu, u)
         p_a = _powerlaw.pressure(r, self.g(a), self.c_n, self.n, E_star)
         p_c = _powerlaw.pressure(np.minimum(r, c), self.g(c), self.c_n, self.n, E_star)
-        stick = gen.tangential_traction_stick(mu, p_a, p_c)  # the stick superposition
+        with np.errstate(invalid="ignore"):  # inf - inf on the axis for n <= 1: replaced below
+            stick = gen.tangential_traction_stick(mu, p_a, p_c)  # the stick superposition
+        r, c = np.broadcast_arrays(r, c)
+        stick = np.array(stick, dtype=float, copy=True)
+        near = (c > 0) & (r <= STICK_CENTRE_RADIUS * c) & (self.n < 3)
+        # near the axis the difference of the two pressures (each infinite on the axis for
+        # n <= 1) as the series of (5.59) over c < x < a: finite, without cancellation
+        stick[near] = gen.tangential_powerlaw_traction_stick_centre(
+            r[near] / c[near], a, c[near], self.c_n, self.n, self.kappa, E_star, mu)
+        # a nearly stuck contact (c close to a): the two pressures cancel to 1 - c/a; (5.59)
+        # over c < x < a by Gauss-Legendre in s = sqrt(x^2 - r^2), smooth for every r < c
+        edge = ~near & (c > 0) & (r < c) & (c >= STICK_QUADRATURE_ABOVE * a)
+        stick[edge] = self._stick_by_quadrature(r[edge], c[edge], a, E_star, mu)
         return stick, gen.tangential_traction_slip(mu, p_a)  # Coulomb: the sliding springs
+
+    def _stick_by_quadrature(self, r, c, a, E_star, mu):
+        """(5.59) of the stuck springs' line load over c < x < a at r < c, by GAUSS_NODES
+        Gauss-Legendre nodes in s = sqrt(x^2 - r^2) (its integrand is smooth there, its
+        nearest singularities s = +-i r at least 1.8 half-lengths away for c >= 2a/3)."""
+        s_c = np.sqrt((c - r) * (c + r))
+        s_a = np.sqrt((a - r) * (a + r))
+        half = (a - c) * (a + c) / (s_a + s_c) / 2  # (s_a - s_c)/2 without cancellation
+        z, w = np.polynomial.legendre.leggauss(GAUSS_NODES)
+        s = (s_c + half)[..., None] + half[..., None] * z
+        f = gen.tangential_powerlaw_traction_stick_integrand(
+            r[..., None], s, self.c_n, self.n, self.kappa, E_star, mu)
+        return half * np.sum(w * f, axis=-1)
 
     def energy(self, F_amp, F, a, G_star, mu):
         n = self.n
@@ -454,7 +487,14 @@ class Contact:
     def traction(self, r, u_x):
         """Tangential traction q(r) [Pa] (in the direction of u_x) at radii r [m] after the
         monotonic displacement u_x [m]: mu (p(r; a) - p(r; c)) in the stick zone, mu p(r; a)
-        in the slip zone (derived, not assumed: derive/tangential.py), 0 outside."""
+        in the slip zone (derived, not assumed: derive/tangential.py), 0 outside.
+
+        In the stick zone it is finite on the axis for every profile (for the cone and the
+        power law with n < 3 near the axis, r <= c/2, by the series of (5.59) over c < x < a:
+        tangential_powerlaw_traction_stick_centre). Once every spring slides (c = 0) the
+        traction is mu p(r; a), and on the axis that is +inf for the cone and the power law
+        with n <= 1: their pressure is infinite there (a logarithmic or r^(n-1) singularity),
+        reported as inf, not NaN."""
         r = nonnegative("r", r)
         u = as_float("u_x", u_x)
         r, u = np.broadcast_arrays(r, u)
@@ -595,27 +635,29 @@ def _series(name, value, n_steps=None):
 
 def _force_table(gv, w, E_star):
     """The normal force at d = g_k (nodes i <= k in contact) and the running sums that give it:
-    E* sum_i w_i (d - g_i)_+ is piecewise linear in d, exact between nodes."""
+    E* sum_i w_i (d - g_i)_+ is piecewise linear in d, exact between nodes; with W = sum w_i
+    and S = sum w_i g_i it is W times the line load (5.58) of the mean gap S/W."""
     W = np.cumsum(w)
     S = np.cumsum(w * gv)
-    return E_star * (gv * W - S), W, S
+    return W * gen.mdr_normal_line_load(E_star, gv, S / W), W, S
 
 
 def _depth_of_force(F, table, E_star, step, x_max):
-    """d with E* sum_i w_i (d - g_i)_+ = F."""
+    """d with E* sum_i w_i (d - g_i)_+ = F: the depth (5.58) at which the mean gap S/W of the
+    springs in contact carries the mean line load F/W."""
     F_nodes, W, S = table
     k = int(np.searchsorted(F_nodes, F, side="right")) - 1
     if k >= F_nodes.size - 1:
         raise ValueError(f"normal_force[{step}] = {float(F)!r} N needs a contact wider than "
                          "the grid "
                          f"(x_max = {x_max!r} m); valid: a larger x_max")
-    return (F / E_star + S[k]) / W[k]
+    return gen.mdr_depth_of_line_load(E_star, S[k] / W[k], F / W[k])
 
 
 def _solve_shift(f, cap, w, m, G_star, target, total, step):
     """Displacement increment D with sum_i w_i clip(f_i + G* m_i D, -cap_i, cap_i) = target."""
     live = (cap > 0) & (m > 0)
-    k = G_star * m[live]
+    k = gen.mdr_tangential_line_load(G_star, m[live])  # each spring's q_x per unit D
     lo = (-cap[live] - f[live]) / k
     hi = (cap[live] - f[live]) / k
     if target >= total:
@@ -659,12 +701,12 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
                                  "valid: a larger x_max")
         else:
             d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
-        qz = E_star * np.maximum(d - gv, 0.0)  # (5.58)
+        qz = gen.mdr_normal_line_load(E_star, d, np.minimum(gv, d))  # (5.58), 0 for g >= d
         cap = gen.coulomb_sliding_force(mu, qz)  # Coulomb's limit of each spring
         wcap = w * cap
         # springs that lost contact or normal load release their shear by sliding
         g_rel = np.minimum(np.maximum(f, -cap), cap)
-        W_acc += float(wcap @ np.abs(f - g_rel)) / G_star
+        W_acc += float(wcap @ gen.mdr_tangential_spring_shear(G_star, np.abs(f - g_rel)))
         f = g_rel
         total = float(wcap.sum())
         # both loads change linearly within the step: a spring that comes into contact at
@@ -683,9 +725,10 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
                                  f"mu F_N = {total!r} N of that step; valid: |F_x| <= mu F_N")
             D, full = _solve_shift(f, cap, w, m, G_star, F_ctrl[k], total, k) if total > 0 \
                 else (0.0, True)
-        trial = f + G_star * m * D
-        f = np.minimum(np.maximum(trial, -cap), cap)
-        W_acc += float(wcap @ np.abs(trial - f)) / G_star
+        trial = f + gen.mdr_tangential_line_load(G_star, m * D)
+        f = np.minimum(np.maximum(trial, -cap), cap)  # Coulomb: |q_x| <= mu q_z
+        # each sliding spring's slip (its excess shear) times its Coulomb line load
+        W_acc += float(wcap @ gen.mdr_tangential_spring_shear(G_star, np.abs(trial - f)))
         u_prev = u_prev + D
         j = int(np.searchsorted(gv, d, side="left"))  # nodes i < j are in contact (g_i < d)
         slipping = np.abs(f[:j]) >= cap[:j]

@@ -287,3 +287,23 @@ def test_length_scale():
             assert abs(F / (mp.mpf(4) / 3 * m * mp.mpf(v0) ** 2 / x) - 1) < 18 * 2.0**-52
             x0 = (mp.mpf(15) / 16 * m * mp.mpf(v0) ** 2 / (E * mp.sqrt(R))) ** mp.mpf(0.4)
             assert abs(x0 / ((mp.mpf(15) / 16) ** mp.mpf(0.4) * x) - 1) < 8 * 2.0**-52
+
+
+def test_time_and_force_scales():
+    """impact_time_scale t_s and impact_force_scale F_s turn m x'' = -F(x) (5.23), x'(0) = v0
+    into X'' = -(4/3) X^(3/2), X'(0) = 1: checked at 30 digits as v0 t_s/x_s = 1, F_s t_s^2 =
+    m x_s (Newton's law in the scaled variables) and the Hertz force, typed here, at x = x_s
+    equal to (4/3) F_s."""
+    for E, R, m, v0 in ((1e11, 0.01, 0.03, 1.0), (1e6, 1e-6, 1e-12, 1e-3), (5e9, 2.0, 70.0, 30.0),
+                        (2e11, 1e-3, 1e-20, 1e3)):
+        xs = mp.mpf(gen.impact_length_scale(E, R, m, v0))
+        ts = gen.impact_time_scale(E, R, m, v0)
+        fs = gen.impact_force_scale(E, R, m, v0)
+        with mp.workdps(30):
+            t, f = mp.mpf(ts), mp.mpf(fs)
+            # each scale is a few products and powers of the inputs: <= 10 eps of rounding
+            # each, and they enter the ratios to the first or second power
+            assert abs(mp.mpf(v0) * t / xs - 1) < 16 * 2.0**-52
+            assert abs(f * t**2 / (m * xs) - 1) < 32 * 2.0**-52
+            F = mp.mpf(4) / 3 * E * mp.sqrt(R) * xs ** mp.mpf(1.5)
+            assert abs(F / (mp.mpf(4) / 3 * f) - 1) < 32 * 2.0**-52

@@ -12,6 +12,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import hertz
 from hertzmdr.numeric import tangential as tg
 
@@ -839,3 +840,95 @@ def test_profiles_against_their_g_by_5_53():
                     g(float(rr * mp.sin(ph))))), [0, mp.pi / 2])
             # the quadrature of the float64 g: its rounding (a few ulp) and kappa_n's
             assert_close(f(*args, rr), ref, 1e-14, f"{f.__name__}{args} r = {rr}")
+
+
+def test_normal_line_load_against_the_normal_force():
+    """mdr_normal_line_load (5.58) integrated over the contact -a < x < a at d = g(a) is the
+    Hertz force 4/3 E* sqrt(R) d^(3/2) (typed here) for the paraboloid g = x^2/R and the flat
+    punch's 2 E* a d for g = 0 (mpmath's tanh-sinh quadrature at 30 digits of the float
+    function: its rounding, a few eps, is the error); and mdr_depth_of_line_load inverts it."""
+    E, R = 7.3e10, 0.0125
+    for a in (1e-7, 3e-4, 2e-2):
+        d = a * a / R
+        with mp.workdps(30):
+            q = mp.quad(lambda x, d=d: gen.mdr_normal_line_load(E, d, float(x * x) / R), [0, a])
+            hertz = mp.mpf(4) / 3 * E * mp.sqrt(R) * mp.mpf(d) ** 1.5
+            # the integrand's rounding (3 operations, cancelling near the edge x -> a where
+            # the line load -> 0, which weighs little): 8 eps
+            assert abs(2 * q / hertz - 1) < 8 * 2.0**-52
+        punch = 2 * a * gen.mdr_normal_line_load(E, d, 0.0)
+        assert abs(punch / (2 * a * E * d) - 1) < 2 * 2.0**-52
+    rng = np.random.default_rng(5)
+    g = 10.0 ** rng.uniform(-12, 0, 50)
+    d = g * (1 + 10.0 ** rng.uniform(-6, 2, 50))
+    back = gen.mdr_depth_of_line_load(E, g, gen.mdr_normal_line_load(E, d, g))
+    # the rounding of d - g, of the product and quotient by E* (each relative to d - g <= d)
+    # and of the sum g + q_z/E*: <= 4 eps of d
+    assert np.all(np.abs(back / d - 1) < 6 * 2.0**-52)
+
+
+def test_powerlaw_traction_on_and_near_the_axis():
+    """The power law's stick-zone traction at r = 0, 1e-300 and 1e-8 c, and out to the edge of
+    its axis series (c/2), and (for c >= 2a/3, where the two pressures cancel to 1 - c/a)
+    out to the stick edge (0.7 c, 0.99 c, c (1 - 1e-9): Gauss-Legendre in sqrt(x^2 - r^2)),
+    against
+    (5.59) of the line load, mu (E*/pi) n kappa_n c_n integral_c^a x^(n-1)/sqrt(x^2 - r^2) dx,
+    by mpmath at 30 digits (kappa_n from its Gamma functions). For n <= 1 each pressure is
+    infinite on the axis (it was NaN there); the limit on the axis is finite,
+    mu E* n kappa_n c_n (a^(n-1) - c^(n-1))/(pi (n - 1)) (checked). n = 1 is the cone's form.
+    Error model: the series' terms are positive and fall at least 4-fold (for r <= c/2); each
+    takes ~6 roundings, the Horner sum and the prefactor ~8 more, each eps relative: 32 eps
+    (the part of the series left out is below 1e-16 of it); the quadrature's sum of 24
+    positive terms likewise (its truncation error is below 1e-25 there)."""
+    a, eps = 1.2e-4, np.finfo(float).eps
+    for n in (0.2, 0.6, 0.999, 1.0, 1.5, 2.5, 4.0):
+        c_n = 1e-6 / a**n  # a depth of about 1 um at a
+        prof = tg.PowerLaw(c_n, n)
+        ct = tg.Contact(prof, a, E_STAR, G_STAR, MU)
+        with mp.workdps(30):
+            nm = mp.mpf(n)
+            kap = mp.sqrt(mp.pi) * mp.gamma(nm / 2 + 1) / mp.gamma(nm / 2 + mp.mpf(1) / 2)
+            pref = MU * E_STAR / mp.pi * nm * kap * mp.mpf(c_n)
+        for frac in (1e-6, 0.3, 0.999):
+            u = frac * ct.slide_onset
+            c = float(ct.stick_radius(u))
+            edge = (0.7 * c, 0.99 * c, c * (1 - 1e-9)) if c >= 2 * a / 3 else ()
+            for r in (0.0, 1e-300, 1e-8 * c, 0.3 * c, 0.5 * c) + edge:
+                q = ct.traction(r, u)
+                assert np.isfinite(q), (n, frac, r, q)
+                with mp.workdps(30):
+                    cm, am, rm = mp.mpf(c), mp.mpf(a), mp.mpf(r)
+
+                    def line(x, rm=rm, nm=nm):
+                        return x ** (nm - 1) / mp.sqrt((x - rm) * (x + rm))
+
+                    # c/a is as small as 1e-15 (n = 0.2 at 0.999 of the onset): the
+                    # interval split at every decade
+                    cuts = [cm * 10**k for k in range(int(mp.log10(am / cm)) + 1)] + [am]
+                    ref = pref * mp.quad(line, cuts)
+                    if r == 0:
+                        axis = (pref * mp.log(am / cm) if n == 1 else
+                                pref * (am ** (nm - 1) - cm ** (nm - 1)) / (nm - 1))
+                        # the closed form cancels like 1 - c/a >= 1e-7 at 30 digits
+                        assert abs(ref / axis - 1) < mp.mpf(10) ** -21
+                assert_close(q, ref, 32 * eps, f"n {n}, u/onset {frac}, r = {r / c} c")
+            assert ct.traction(0.0, -u) == -ct.traction(0.0, u)
+        # all springs slide (c = 0): mu p(0; a), infinite on the axis for n <= 1, never NaN
+        q0 = ct.traction(0.0, 2 * ct.slide_onset)
+        assert (q0 == np.inf) if n <= 1 else np.isfinite(q0), (n, q0)
+
+
+def test_tangential_line_load_against_the_stiffness():
+    """mdr_tangential_line_load q_x = G* w of the springs all stuck at w = u_x, integrated
+    over the contact -a < x < a by mpmath (30 digits) is the initial stiffness times u_x,
+    2 G* a u_x (typed here; Mindlin's 8 G a/(2 - nu) for one body on a rigid one, the
+    Cerruti average); and mdr_tangential_spring_shear inverts it. Rounding: one product (the
+    quadrature of a constant is exact), one quotient: 2 eps."""
+    for a, u in ((1e-7, 3e-12), (2.5e-4, 1e-8), (1e-2, 4e-6)):
+        with mp.workdps(30):
+            F = mp.quad(lambda x, u=u: gen.mdr_tangential_line_load(G_STAR, u), [-a, a])
+            assert abs(F / (2 * mp.mpf(G_STAR) * a * u) - 1) < 2 * 2.0**-52
+    rng = np.random.default_rng(11)
+    w = 10.0 ** rng.uniform(-15, -3, 50)
+    back = gen.mdr_tangential_spring_shear(G_STAR, gen.mdr_tangential_line_load(G_STAR, w))
+    assert np.all(np.abs(back / w - 1) <= 2 * 2.0**-52)
