@@ -3,7 +3,7 @@
     hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
-    hertzmdr fit RETRACT.csv --scene TIP.toml --adhesion [...]   (JKR or cone: E*, z_0, Delta gamma)
+    hertzmdr fit RETRACT.csv --scene TIP.toml --adhesion [...]  (JKR, cone, exact sphere, power law)
     hertzmdr fit --scene SCENE.toml [...]   (the curve and its settings from the scene's [fit])
     hertzmdr fit MAP --scene TIP.toml [--out DIR [--force]] [--workers N] [--z0 ..] [--sigma ..]
 
@@ -76,7 +76,8 @@ p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a
                    "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
 p_fit.add_argument("--adhesion", action="store_true",
                    help="a curve: fit an adhesive retract curve with the JKR paraboloid or "
-                   "the adhesive cone (a scene's sphere or cone tip; the "
+                   "the adhesive cone, exact sphere or power law (a scene's sphere, cone, "
+                   "exact_sphere or power_law tip; the "
                    "work of adhesion as a fifth parameter; the scene's [interface] "
                    "work_of_adhesion is shown for comparison, never used)")
 p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")

@@ -143,6 +143,36 @@ def test_sphere_lam_by_newton():
             assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, got, ref)
 
 
+def test_sphere_fit_force_by_mpmath():
+    """The fit's exact-sphere force per unit E* (fit_sphere_force_dE; fit_sphere_force is E*
+    times it plus the baseline) against (5.57) in its atanh form, E* ((a^2 + R^2) atanh(a/R)
+    - a R) at a = R tanh(lam), at 30 digits: at the hard points lam -> 0 (the cancellation
+    lam - tanh(lam) ~ lam^3/3 that the printed continued fraction avoids; eight decades), both
+    sides of the split at lam = 1/2, and lam -> inf (a/R -> 1: tanh(lam) = 1 in float64 from
+    lam = 19.1), on the array and the scalar (math module) paths."""
+    R, E, F0, s0, zp = 5e-6, 2e6, 1e-9, 1e-4, 1e-6
+    lam = np.r_[np.logspace(-8, -0.5, 16), np.nextafter(0.5, 0), 0.5, np.nextafter(0.5, 1),
+                np.linspace(0.55, 3.0, 8), 19.0, 40.0]
+    arr = gen.fit_sphere_force_dE(R, lam)
+    force = gen.fit_sphere_force(E, R, lam, zp, F0, s0)
+    # 30 digits and 40 more: a/R = tanh(40) = 1 - 3.6e-35 must not round to 1
+    with mp.workdps(DPS + 40):
+        for v, got, f in zip(lam, arr, force, strict=True):
+            scalar = gen.fit_sphere_force_dE(R, float(v))
+            b = mp.tanh(mp.mpf(v))
+            Rm = mp.mpf(R)
+            a = Rm * b
+            ref = (a**2 + Rm**2) * mp.atanh(b) - a * Rm
+            # 10 eps: the direct form above lam = 1/2 rounds ~eps lam against a force
+            # ~(4/3) lam^3 (1.5 eps/lam^2 <= 6 eps, 3.5 eps measured), the continued fraction
+            # below it a few eps (positive terms only; its truncation is < 1e-18)
+            for g in (got, scalar):
+                assert abs(mp.mpf(g) / ref - 1) <= 10 * np.finfo(float).eps, (v, g, ref)
+            ref_f = mp.mpf(E) * ref + mp.mpf(F0) + mp.mpf(s0) * mp.mpf(zp)
+            # the sum of positive terms adds a few roundings to the force's 10 eps
+            assert abs(mp.mpf(f) / ref_f - 1) <= 14 * np.finfo(float).eps, (v, f, ref_f)
+
+
 @pytest.mark.parametrize("sides", [3, 4, 6])
 def test_pyramid_cone_by_polygon_area(sides):
     """The equivalent cone's cross-section (a disc of radius d/tan(theta)) has the area of the
