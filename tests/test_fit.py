@@ -312,6 +312,76 @@ def test_coverage_of_standard_errors(name):
     assert np.all(np.abs(frac - 0.6827) <= tol), (frac, tol)
 
 
+# --- fixed parameters ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["paraboloid", "exact_sphere"])
+def test_fixed_parameters_noise_free(name):
+    """A fixed contact point and/or baseline at the truth: the free parameters back to 1e-10
+    (the issue's noise-free bound), the fixed ones exactly as given with error 0 and
+    correlation NaN, and the table says "fixed"."""
+    tip = TIPS[name][0]
+    z, F = synthetic(name)
+    truth = np.array([E_TRUE, Z0_TRUE, F0_TRUE, S0_TRUE])
+    for kw, fixed in (({"fixed_z0": Z0_TRUE}, ("z_0",)),
+                      ({"fixed_baseline": (F0_TRUE, S0_TRUE)}, ("F_0", "s_0")),
+                      ({"fixed_z0": Z0_TRUE, "fixed_baseline": (F0_TRUE, S0_TRUE)},
+                       ("z_0", "F_0", "s_0"))):
+        res = fit_curve(z, F, tip, **kw)
+        assert res.fixed == fixed
+        on = np.array([p in fixed for p in ("E_star", "z_0", "F_0", "s_0")])
+        assert np.all(res.values[on] == truth[on]) and np.all(res.errors[on] == 0)
+        assert np.isnan(res.correlation[on]).all()
+        assert res.values[0] == pytest.approx(E_TRUE, rel=1e-10)
+        if "z_0" not in fixed:
+            assert abs(res.values[1] - Z0_TRUE) <= 1e-10 * TIPS[name][2]
+        assert sum(ln.split()[2] == "fixed" for ln in res.table().splitlines()[1:5]) \
+            == len(fixed)
+
+
+def test_fixed_contact_point_is_linear_least_squares():
+    """With z_0 fixed the model is linear in (E*, F_0, s_0): the fit and its covariance are
+    numpy.linalg.lstsq's on the columns (dF/dE*, 1, z) with s^2 (A^T A)^-1, s^2 the residual
+    variance over N - 3 (an independent route: no Levenberg-Marquardt, no SVD of R); with the
+    baseline fixed too, E* alone, over N - 1."""
+    tip = TIPS["exact_sphere"][0]
+    z, F = synthetic("exact_sphere", noise=2e-10, seed=7)
+    z0 = Z0_TRUE + 3e-9  # not the truth: any fixed contact point
+    g = tip.basis(z, z0)
+    for kw, cols in (({}, [g, np.ones_like(z), z]),
+                     ({"fixed_baseline": (F0_TRUE, S0_TRUE)}, [g])):
+        A = np.column_stack(cols)
+        rhs = F - (F0_TRUE + S0_TRUE * z if kw else 0.0)
+        coef, rss, *_ = np.linalg.lstsq(A, rhs, rcond=None)
+        cov = float(rss[0]) / (z.size - A.shape[1]) * np.linalg.inv(A.T @ A)
+        res = fit_curve(z, F, tip, fixed_z0=z0, **kw)
+        free = [0] + ([] if kw else [2, 3])
+        # the same least squares solved two ways: agreement to ~1e-9 of each value (the
+        # conditioning of the columns, ~1e5, times the rounding of sum(r^2)); the errors to 1e-6
+        np.testing.assert_allclose(res.values[free], coef, rtol=1e-8)
+        np.testing.assert_allclose(res.errors[free], np.sqrt(np.diag(cov)), rtol=1e-6)
+        assert res.values[1] == z0 and res.errors[1] == 0
+        assert res.reduced_chi2 == pytest.approx(float(rss[0]) / (z.size - A.shape[1]),
+                                                 rel=1e-8)
+
+
+@pytest.mark.parametrize("kw, message", [
+    ({"fixed_z0": float("nan")}, "fixed_z0"),
+    ({"fixed_z0": [1.0, 2.0]}, "fixed_z0 = .* valid: one finite position"),
+    ({"fixed_baseline": (1.0,)}, "fixed_baseline = .* valid: two finite numbers"),
+    ({"fixed_baseline": (1.0, float("inf"))}, "fixed_baseline = .* valid: two finite"),
+])
+def test_fixed_parameters_bad_input(kw, message):
+    z, F = synthetic("paraboloid")
+    with pytest.raises(ValueError, match=message):
+        fit_curve(z, F, TIPS["paraboloid"][0], **kw)
+
+
+def test_fixed_contact_point_without_contact_is_one_clear_error():
+    z, F = synthetic("paraboloid")
+    with pytest.raises(NoContactError, match="no contact"):
+        fit_curve(z, F, TIPS["paraboloid"][0], fixed_z0=float(z[-1]) + 1.0)
+
+
 def test_no_contact_is_one_clear_error():
     z = np.linspace(0, 1e-6, 200)
     F = F0_TRUE + S0_TRUE * z + np.random.default_rng(1).normal(0, 1e-11, z.size)
