@@ -188,6 +188,12 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
             slope = gen.fit_sphere_depth_dlam(R, lam)  # is then R tanh(lam) exactly
         new = lam - f / slope
         newton = (new >= lo) & (new <= hi)
+        step = np.abs(new - lam)
+        if newton.all():  # the usual case: Newton's steps, the quadratic-convergence stop
+            lam = new
+            if (step <= LAM_NEWTON_STOP * new).all():
+                break
+            continue
         new = np.where(newton, new, 0.5 * (lo + hi))
         step = np.abs(new - lam)
         done = (step <= 2 * _EPS * new) | (newton & (step <= LAM_NEWTON_STOP * new))
