@@ -166,18 +166,20 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
     """
     d = np.asarray(d, float)
     touch = d > 0
-    out = np.zeros(d.shape)
-    dd = d[touch]  # only the points in contact
+    every = bool(touch.all())  # a fit's tail: no copies
+    dd = d if every else d[touch]  # only the points in contact
     delta = dd / R
     lo = np.maximum(np.sqrt(delta), delta)
     hi = np.maximum((delta + np.sqrt(delta * (delta + 4))) / 2, lo)
+    first = None if start is None else np.asarray(start, float)
+    first = first if first is None or every else first[touch]
+    missing = True if first is None else np.isnan(first)
     lam = lo
-    if _table:
+    if _table and np.any(missing):
         x, y = _lam_table()
         lam = np.exp(np.interp(np.log(delta), x, y))
-    if start is not None:
-        first = np.asarray(start, float)[touch]
-        lam = np.where(np.isnan(first), lam, first)
+    if first is not None:
+        lam = np.where(missing, lam, first) if np.any(missing) else first
     lam = np.clip(lam, lo, hi)
     slope = np.ones(dd.shape)
     for _ in range(LAM_MAX_STEPS):
@@ -200,6 +202,9 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
         lam = new
         if done.all():
             break
+    if every:
+        return (lam, slope) if with_slope else lam
+    out = np.zeros(d.shape)
     out[touch] = lam
     if with_slope:
         dl = np.full(d.shape, np.inf)  # no contact: no slope (a shift gives no start there)
@@ -252,8 +257,10 @@ class ExactSphere(_Tip):
     def _dE(self, lam):
         """dF/dE* at lam, evaluated at the points in contact only (0 elsewhere): its 2F1 form
         is the costly part of the sphere's model."""
-        out = np.zeros(lam.shape)
         touch = lam > 0
+        if touch.all():  # a fit's tail
+            return gen.fit_sphere_force_dE(self.R, lam)
+        out = np.zeros(lam.shape)
         out[touch] = gen.fit_sphere_force_dE(self.R, lam[touch])
         return out
 
