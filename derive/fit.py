@@ -396,7 +396,8 @@ def jkr_relations() -> list[Relation]:
                                   "(5.55), (5.57), adhesive exact sphere",
                                   "sphere_depth less Delta l",
                                   "sphere_force_from_radius less 2 E* a Delta l",
-                                  SPHERE_ADH_TEST)
+                                  SPHERE_ADH_TEST,
+                                  domain={a: R * unit_interval("t_a")})  # 0 < a < R
             + _adhesive_relations("adhesive_powerlaw", adhesive_powerlaw_model(),
                                   (powerlaw.c_n, powerlaw.kappa_n, powerlaw.n),
                                   "a power-law tip", "(5.55), (5.57), adhesive power law",
@@ -404,34 +405,36 @@ def jkr_relations() -> list[Relation]:
                                   "adhesion_powerlaw_force_from_radius", POWER_ADH_TEST))
 
 
-def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test):
+def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test,
+                        domain=None):
     geo = (E_star, *shape, a, rho_g)
     how = "implicit differentiation at d(a) = z_p - z_0 of"
     return [
         Relation(f"fit_{prefix}_depth", f"{src}, fit model", m["d"], geo,
                  f"indentation depth d [m] of {label} in adhesive contact of radius a, "
                  "Delta gamma = rho_g^2", f"{depth_name} at Delta gamma = rho_g^2",
-                 f"{test}::test_{prefix}_model_by_mpmath_parametric"),
+                 f"{test}::test_{prefix}_model_by_mpmath_parametric", domain=domain),
         Relation(f"fit_{prefix}_depth_da", f"{src}, fit model", m["d_da"], geo,
                  f"derivative dd/da [1] of the adhesive depth of {label}: Newton's slope for a "
                  "at a depth (0 at the depth-controlled pull-off)",
-                 f"{depth_name} differentiated in a", f"{test}::test_{prefix}_radius_by_mpmath"),
+                 f"{depth_name} differentiated in a", f"{test}::test_{prefix}_radius_by_mpmath",
+                 domain=domain),
         Relation(f"fit_{prefix}_force", f"{src}, fit model", m["F"], (*geo, z_p, F_0, s_0),
                  f"force F [N] on {label} in adhesive contact of radius a at the position "
                  f"z_p, plus the baseline F_0 + s_0 z_p", f"{force_name} at Delta gamma = "
-                 "rho_g^2", f"{test}::test_{prefix}_model_by_mpmath_parametric"),
+                 "rho_g^2", f"{test}::test_{prefix}_model_by_mpmath_parametric", domain=domain),
         Relation(f"fit_{prefix}_force_dE", f"{src}, fit model", m["dE"], geo,
                  f"derivative dF/dE* [m^2] of the adhesive fit model of {label} at a fixed "
                  "position", f"{how} {force_name} in E*",
-                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative", domain=domain),
         Relation(f"fit_{prefix}_force_dz0", f"{src}, fit model", m["dz0"], geo,
                  f"derivative dF/dz_0 [N/m] of the adhesive fit model of {label} at a fixed "
                  "position (-dF/dd: infinite at the depth-controlled pull-off)",
                  f"{how} {force_name} in z_0",
-                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative", domain=domain),
         Relation(f"fit_{prefix}_force_ddgamma", f"{src}, fit model", m["ddgamma"], geo,
                  f"derivative dF/dDelta gamma [m] of the adhesive fit model of {label} at a "
                  "fixed position (-2 pi a/g'(a) at Delta gamma = 0)",
                  f"{how} {force_name} in Delta gamma",
-                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative", domain=domain),
     ]
