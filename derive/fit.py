@@ -32,7 +32,7 @@ from functools import cache
 
 import sympy as sp
 
-from hertzmdr.derive import adhesion, bodies, cone, hertz, powerlaw, sphere
+from hertzmdr.derive import adhesion, bodies, cone, hertz, mdr, powerlaw, sphere
 from hertzmdr.derive.relation import Relation
 from hertzmdr.derive.symbols import E, E_star, R, a, d, nu, symbol, unit_interval
 
@@ -99,12 +99,19 @@ def sphere_model() -> dict[str, sp.Expr]:
     dz0 = sp.simplify(-sp.diff(s["F_lam"], lam) / sp.diff(s["d_lam"], lam))
     if sp.simplify(dz0 + 2 * E_star * s["a_lam"]) != 0:
         raise AssertionError(f"dF/dz_0 of the exact sphere is not -2 E* a: {dz0}")
-    stable = sphere.force_lam_stable() + F_0 + s_0 * z_p
     dE = sp.diff(model, E_star)
     _assert_linear_in_modulus("exact sphere", model, dE, dz0)
+    # the form the fit evaluates (derive/sphere.py's force_lam_fit: a continued fraction for
+    # the cancelling part below lam = 1/2, no 2F1); its branch above is (5.57) itself
+    fast = sphere.force_lam_fit()
+    (pw,) = fast.atoms(sp.Piecewise)
+    if sp.simplify(fast.subs(pw, pw.args[1][0]) - s["F_lam"]) != 0:
+        raise AssertionError(f"the fit's sphere force above lam = 1/2 is not (5.57): {fast}")
+    fit_force = fast + F_0 + s_0 * z_p
     # Newton's step for lam in d = d(lam): dd/dlam, positive for lam > 0
     d_dlam = sp.simplify(sp.diff(s["d_lam"], lam))
-    return {"F": model, "F_stable": stable, "dE": dE, "dz0": dz0, "d_dlam": d_dlam}
+    return {"F": model, "F_fit": fit_force, "dE": dE, "dE_fit": sp.diff(fit_force, E_star),
+            "dz0": dz0, "d_dlam": d_dlam}
 
 
 alpha_p = symbol("alpha_p", positive=True)
@@ -228,21 +235,18 @@ def relations() -> list[Relation]:
     lam = sphere.lam
     lam_dom = {lam: sp.atanh(unit_interval("t_lam"))}  # lam in (0, inf): a/R = t_lam
     rels += [
-        Relation("fit_sphere_force", "(5.57), fit model", sm["F"],
+        Relation("fit_sphere_force", "(5.57), fit model", sm["F_fit"],
                  (E_star, R, lam, z_p, F_0, s_0),
                  "force F [N] on a rigid spherical cap (exact sphere) at the position z_p, "
                  "with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline "
-                 "F_0 + s_0 z_p", "(5.57) at lam = atanh(a/R)", FORCE_TEST,
-                 stable=sm["F_stable"],
-                 stable_why="the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels as "
-                 "lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as "
-                 "sphere_lam_force", domain=lam_dom),
-        Relation("fit_sphere_force_dE", "(5.57), fit model", sm["dE"], (R, lam),
+                 "F_0 + s_0 z_p", "(5.57) at lam = atanh(a/R); below lam = 1/2 its cancelling "
+                 "lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels (truncation "
+                 "< 1e-18 relative; no 2F1, cheap at every point of a fit)",
+                 f"{TEST}::test_sphere_fit_force_by_mpmath", domain=lam_dom),
+        Relation("fit_sphere_force_dE", "(5.57), fit model", sm["dE_fit"], (R, lam),
                  "derivative dF/dE* [m^2] of the fit model of the exact sphere",
-                 "(5.57) differentiated in E*", JAC_TEST,
-                 stable=sp.diff(sm["F_stable"], E_star),
-                 stable_why="as fit_sphere_force: the 2F1 form below lam = 1/2",
-                 domain=lam_dom),
+                 "(5.57) differentiated in E*; below lam = 1/2 as fit_sphere_force",
+                 f"{TEST}::test_sphere_fit_force_by_mpmath", domain=lam_dom),
         Relation("fit_sphere_force_dz0", "(5.55), (5.57), fit model", sm["dz0"],
                  (E_star, R, lam),
                  "derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0)",
@@ -335,43 +339,102 @@ def adhesive_cone_model() -> dict[str, sp.Expr]:
     return out
 
 
+def _adhesive_family(g: sp.Expr) -> dict[str, sp.Expr]:
+    """d(a) and F(a) of the adhesive MDR for the MDR profile g(x) (5.52): steps 4-5 of
+    :mod:`hertzmdr.derive.adhesion` -- the depth less the critical elongation,
+    d(a) = g(a) - Delta l(a) (5.55), and (5.57) at that depth, F = F_0(a) - 2 E* a Delta l
+    (F is linear in d at a fixed a, of slope 2 E* a: the flat punch). For the profiles whose
+    pull-off :func:`hertzmdr.derive.adhesion.family` cannot solve in closed form (the exact
+    sphere); checked against that family's d(a), F(a) on the paraboloid."""
+    dl = adhesion.critical_elongation()
+    return {"d": g.subs(mdr.x, a) - dl, "F": mdr.force(g) - 2 * E_star * a * dl}
+
+
+@cache
+def adhesive_sphere_model() -> dict[str, sp.Expr]:
+    """The adhesive exact sphere's fit model and its Jacobian (:func:`_adhesive_model`).
+
+    Starting point: the cap's MDR profile g(x) = x atanh(x/R) (5.52) of
+    :func:`hertzmdr.derive.sphere.solution`, through :func:`_adhesive_family` (which gives
+    derive/adhesion.py's JKR family back from the paraboloid's g: asserted). dF/dDelta gamma
+    is -2 pi a/g'(a) at Delta gamma = 0, g'(a) = atanh(a/R) + a R/(R^2 - a^2) (asserted in
+    :func:`_adhesive_model`); the depth-controlled pull-off dd/da = 0 has no closed form
+    (atanh and a^(-1/2)): numeric/fit_adhesive.py solves it on ``fit_adhesive_sphere_depth_da``.
+    """
+    rr = sp.Symbol("rr", positive=True)
+    par = _adhesive_family(mdr.transform(rr**2 / (2 * R), rr))
+    jkr = adhesion.jkr()
+    if sp.simplify(par["d"] - jkr["d"]) != 0 or sp.simplify(par["F"] - jkr["F"]) != 0:
+        raise AssertionError("_adhesive_family of the paraboloid is not adhesion.jkr()")
+    return _adhesive_model(_adhesive_family(sphere.solution()["g"]), "exact sphere")
+
+
+@cache
+def adhesive_powerlaw_model() -> dict[str, sp.Expr]:
+    """The adhesive power law's fit model and its Jacobian (:func:`_adhesive_model`).
+
+    Starting point: :func:`hertzmdr.derive.adhesion.power`'s d(a) = kappa_n c_n a^n - Delta l
+    and F(a) (Hess's power law by the MDR), not retyped. dF/dDelta gamma is
+    -2 pi a/(n kappa_n c_n a^(n - 1)) at Delta gamma = 0 (asserted in :func:`_adhesive_model`).
+    """
+    return _adhesive_model(adhesion.power(), "power law")
+
+
+SPHERE_ADH_TEST = "tests/test_fit_adhesive_sphere.py"
+POWER_ADH_TEST = "tests/test_fit_adhesive_powerlaw.py"
+
+
 def jkr_relations() -> list[Relation]:
-    return (_adhesive_relations("jkr", jkr_model(), R, "a paraboloid", "(5.55), (5.57), JKR",
+    return (_adhesive_relations("jkr", jkr_model(), (R,), "a paraboloid", "(5.55), (5.57), JKR",
                                 "jkr_depth", "jkr_force_from_radius", JKR_TEST)
-            + _adhesive_relations("adhesive_cone", adhesive_cone_model(), cone.theta,
+            + _adhesive_relations("adhesive_cone", adhesive_cone_model(), (cone.theta,),
                                   "a cone", "(5.55), (5.57), adhesive cone",
                                   "adhesion_cone_depth", "adhesion_cone_force_from_radius",
-                                  CONE_TEST))
+                                  CONE_TEST)
+            + _adhesive_relations("adhesive_sphere", adhesive_sphere_model(), (R,),
+                                  "an exact sphere (spherical cap)",
+                                  "(5.55), (5.57), adhesive exact sphere",
+                                  "sphere_depth less Delta l",
+                                  "sphere_force_from_radius less 2 E* a Delta l",
+                                  SPHERE_ADH_TEST,
+                                  domain={a: R * unit_interval("t_a")})  # 0 < a < R
+            + _adhesive_relations("adhesive_powerlaw", adhesive_powerlaw_model(),
+                                  (powerlaw.c_n, powerlaw.kappa_n, powerlaw.n),
+                                  "a power-law tip", "(5.55), (5.57), adhesive power law",
+                                  "adhesion_powerlaw_depth",
+                                  "adhesion_powerlaw_force_from_radius", POWER_ADH_TEST))
 
 
-def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test):
-    geo = (E_star, shape, a, rho_g)
+def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test,
+                        domain=None):
+    geo = (E_star, *shape, a, rho_g)
     how = "implicit differentiation at d(a) = z_p - z_0 of"
     return [
         Relation(f"fit_{prefix}_depth", f"{src}, fit model", m["d"], geo,
                  f"indentation depth d [m] of {label} in adhesive contact of radius a, "
                  "Delta gamma = rho_g^2", f"{depth_name} at Delta gamma = rho_g^2",
-                 f"{test}::test_{prefix}_model_by_mpmath_parametric"),
+                 f"{test}::test_{prefix}_model_by_mpmath_parametric", domain=domain),
         Relation(f"fit_{prefix}_depth_da", f"{src}, fit model", m["d_da"], geo,
                  f"derivative dd/da [1] of the adhesive depth of {label}: Newton's slope for a "
                  "at a depth (0 at the depth-controlled pull-off)",
-                 f"{depth_name} differentiated in a", f"{test}::test_{prefix}_radius_by_mpmath"),
+                 f"{depth_name} differentiated in a", f"{test}::test_{prefix}_radius_by_mpmath",
+                 domain=domain),
         Relation(f"fit_{prefix}_force", f"{src}, fit model", m["F"], (*geo, z_p, F_0, s_0),
                  f"force F [N] on {label} in adhesive contact of radius a at the position "
                  f"z_p, plus the baseline F_0 + s_0 z_p", f"{force_name} at Delta gamma = "
-                 "rho_g^2", f"{test}::test_{prefix}_model_by_mpmath_parametric"),
+                 "rho_g^2", f"{test}::test_{prefix}_model_by_mpmath_parametric", domain=domain),
         Relation(f"fit_{prefix}_force_dE", f"{src}, fit model", m["dE"], geo,
                  f"derivative dF/dE* [m^2] of the adhesive fit model of {label} at a fixed "
                  "position", f"{how} {force_name} in E*",
-                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative", domain=domain),
         Relation(f"fit_{prefix}_force_dz0", f"{src}, fit model", m["dz0"], geo,
                  f"derivative dF/dz_0 [N/m] of the adhesive fit model of {label} at a fixed "
                  "position (-dF/dd: infinite at the depth-controlled pull-off)",
                  f"{how} {force_name} in z_0",
-                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative", domain=domain),
         Relation(f"fit_{prefix}_force_ddgamma", f"{src}, fit model", m["ddgamma"], geo,
                  f"derivative dF/dDelta gamma [m] of the adhesive fit model of {label} at a "
                  "fixed position (-2 pi a/g'(a) at Delta gamma = 0)",
                  f"{how} {force_name} in Delta gamma",
-                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative"),
+                 f"{test}::test_{prefix}_jacobian_by_mpmath_derivative", domain=domain),
     ]

@@ -121,6 +121,47 @@ def force_lam_stable() -> sp.Expr:
     return sp.Piecewise((small, lam < HALF), (large, True))
 
 
+#: below this lam the fit's force is written with Lambert's continued fraction for lam - tanh(lam)
+FIT_LAM_SPLIT = HALF
+#: levels of that continued fraction: its truncation error is < 1e-18 of the force on
+#: 0 < lam <= FIT_LAM_SPLIT (asserted by :func:`force_lam_fit`), far below a float64's rounding
+FIT_CF_LEVELS = 7
+
+
+def lam_minus_tanh_cf(levels: int = FIT_CF_LEVELS) -> sp.Expr:
+    """lam - tanh(lam) by Lambert's continued fraction tanh(x) = x/(1 + q),
+    q = x^2/(3 + x^2/(5 + x^2/(7 + ...))), truncated after ``levels`` denominators:
+    lam - tanh(lam) = lam q/(1 + q). Every term is positive: no cancellation, unlike the
+    difference lam - tanh(lam) ~ lam^3/3, which loses the digits of lam^2."""
+    x2 = lam**2
+    den = sp.Integer(2 * levels + 1)
+    for k in range(levels, 1, -1):
+        den = (2 * k - 1) + x2 / den
+    return lam**3 / (den + x2)  # lam q/(1 + q) with q = x2/den: den is evaluated once
+
+
+@cache
+def force_lam_fit() -> sp.Expr:
+    """The force E* R^2 ((1 + b^2) lam - b), b = tanh(lam), as the fit evaluates it: below
+    lam = FIT_LAM_SPLIT the cancelling lam - b by :func:`lam_minus_tanh_cf` (no 2F1: the
+    fit evaluates it at every point of every contact point it tries), above it directly.
+
+    Error model: the direct form's rounding is ~eps lam against a force ~(4/3) lam^3, a
+    relative error ~1.5 eps/lam^2, <= 6 eps above lam = 1/2 (3.5 eps measured); the continued
+    fraction's rounding is a few eps (positive terms only) and its truncation, checked here at
+    40 digits on a grid of (0, FIT_LAM_SPLIT] (the relative truncation error grows with lam:
+    a Pade approximant's error ~ lam^(4 levels + 3)), is below 1e-18.
+    """
+    b = sp.tanh(lam)
+    exact = (1 + b**2) * lam - b
+    small = b**2 * lam + lam_minus_tanh_cf()
+    worst = max(abs(sp.N(((small - exact) / exact).subs(lam, FIT_LAM_SPLIT * sp.Rational(k, 16)),
+                         40)) for k in range(1, 17))
+    if not worst < 1e-18:
+        raise AssertionError(f"the continued fraction's truncation error {worst} is not < 1e-18")
+    return E_star * R**2 * sp.Piecewise((small, lam < FIT_LAM_SPLIT), (exact, True))
+
+
 def pressure_pole_lam_stable() -> sp.Expr:
     """(E*/pi)(R/c) atanh(k/c), c^2 = R^2 - r^2, k^2 = a^2 - r^2, a = R tanh(lam):
     atanh(k/c) = log1p(2k/(c - k))/2 with c - k = (R^2 - a^2)/(c + k) = R^2/(cosh(lam)^2 (c + k)),

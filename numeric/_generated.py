@@ -151,6 +151,18 @@ __all__ = [
     'fit_adhesive_cone_force_dE',
     'fit_adhesive_cone_force_ddgamma',
     'fit_adhesive_cone_force_dz0',
+    'fit_adhesive_powerlaw_depth',
+    'fit_adhesive_powerlaw_depth_da',
+    'fit_adhesive_powerlaw_force',
+    'fit_adhesive_powerlaw_force_dE',
+    'fit_adhesive_powerlaw_force_ddgamma',
+    'fit_adhesive_powerlaw_force_dz0',
+    'fit_adhesive_sphere_depth',
+    'fit_adhesive_sphere_depth_da',
+    'fit_adhesive_sphere_force',
+    'fit_adhesive_sphere_force_dE',
+    'fit_adhesive_sphere_force_ddgamma',
+    'fit_adhesive_sphere_force_dz0',
     'fit_cone_force',
     'fit_cone_force_dE',
     'fit_cone_force_dz0',
@@ -541,6 +553,18 @@ RELATIONS = (
     ('fit_adhesive_cone_force_dE', '(5.55), (5.57), adhesive cone, fit model', 'fit', '(pi**2*E_star**(5/2)*a**(5/2)*tan(theta)**2 + 16*pi*E_star**(3/2)*a**(3/2)*rho_g**2 - 5*sqrt(2)*pi**(3/2)*E_star**2*a**2*rho_g*tan(theta))/(2*(pi*E_star**(5/2)*sqrt(a)*tan(theta) - sqrt(2)*sqrt(pi)*E_star**2*rho_g))', ''),
     ('fit_adhesive_cone_force_ddgamma', '(5.55), (5.57), adhesive cone, fit model', 'fit', '4*pi*E_star*a**(3/2)/(sqrt(2)*sqrt(pi)*sqrt(E_star)*rho_g - pi*E_star*sqrt(a)*tan(theta))', ''),
     ('fit_adhesive_cone_force_dz0', '(5.55), (5.57), adhesive cone, fit model', 'fit', '2*(-pi*E_star**(3/2)*a**(3/2)*tan(theta) + 3*sqrt(2)*sqrt(pi)*E_star*a*rho_g)/(pi*sqrt(E_star)*sqrt(a)*tan(theta) - sqrt(2)*sqrt(pi)*rho_g)', ''),
+    ('fit_adhesive_powerlaw_depth', '(5.55), (5.57), adhesive power law, fit model', 'fit', 'a**n*c_n*kappa_n - sqrt(2)*sqrt(pi)*sqrt(a)*rho_g/sqrt(E_star)', ''),
+    ('fit_adhesive_powerlaw_depth_da', '(5.55), (5.57), adhesive power law, fit model', 'fit', 'a**n*c_n*kappa_n*n/a - sqrt(2)*sqrt(pi)*rho_g/(2*sqrt(E_star)*sqrt(a))', ''),
+    ('fit_adhesive_powerlaw_force', '(5.55), (5.57), adhesive power law, fit model', 'fit', 'F_0 + s_0*z_p + 2*(-sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*n*rho_g - sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*rho_g + E_star*a**(n + 1)*c_n*kappa_n*n)/(n + 1)', ''),
+    ('fit_adhesive_powerlaw_force_dE', '(5.55), (5.57), adhesive power law, fit model', 'fit', '2*(2*E_star**(5/2)*a**(2*n + 3/2)*c_n**2*kappa_n**2*n**2 + 4*pi*E_star**(3/2)*a**(5/2)*n*rho_g**2 + 4*pi*E_star**(3/2)*a**(5/2)*rho_g**2 - 2*sqrt(2)*sqrt(pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n**2*rho_g - 3*sqrt(2)*sqrt(pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n*rho_g)/((n + 1)*(2*E_star**(5/2)*a**(n + 1/2)*c_n*kappa_n*n - sqrt(2)*sqrt(pi)*E_star**2*a*rho_g))', ''),
+    ('fit_adhesive_powerlaw_force_ddgamma', '(5.55), (5.57), adhesive power law, fit model', 'fit', '4*pi*E_star*a**(5/2)/(sqrt(2)*sqrt(pi)*sqrt(E_star)*a*rho_g - 2*E_star*a**(n + 1/2)*c_n*kappa_n*n)', ''),
+    ('fit_adhesive_powerlaw_force_dz0', '(5.55), (5.57), adhesive power law, fit model', 'fit', '2*(-2*E_star**(3/2)*a**(n + 3/2)*c_n*kappa_n*n + 3*sqrt(2)*sqrt(pi)*E_star*a**2*rho_g)/(2*sqrt(E_star)*a**(n + 1/2)*c_n*kappa_n*n - sqrt(2)*sqrt(pi)*a*rho_g)', ''),
+    ('fit_adhesive_sphere_depth', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', 'a*atanh(a/R) - sqrt(2)*sqrt(pi)*sqrt(a)*rho_g/sqrt(E_star)', ''),
+    ('fit_adhesive_sphere_depth_da', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', 'atanh(a/R) + a/(R*(1 - a**2/R**2)) - sqrt(2)*sqrt(pi)*rho_g/(2*sqrt(E_star)*sqrt(a))', ''),
+    ('fit_adhesive_sphere_force', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*rho_g + E_star*(R**2*atanh(a/R) - R*a + a**2*atanh(a/R)) + F_0 + s_0*z_p', ''),
+    ('fit_adhesive_sphere_force_dE', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', '(2*E_star**(5/2)*R**4*sqrt(a)*atanh(a/R)**2 - 2*E_star**(5/2)*R**2*a**(5/2) + 4*E_star**(5/2)*R*a**(7/2)*atanh(a/R) - 2*E_star**(5/2)*a**(9/2)*atanh(a/R)**2 + 8*pi*E_star**(3/2)*R**2*a**(3/2)*rho_g**2 - 8*pi*E_star**(3/2)*a**(7/2)*rho_g**2 - sqrt(2)*sqrt(pi)*E_star**2*R**4*rho_g*atanh(a/R) + sqrt(2)*sqrt(pi)*E_star**2*R**3*a*rho_g - 4*sqrt(2)*sqrt(pi)*E_star**2*R**2*a**2*rho_g*atanh(a/R) - 5*sqrt(2)*sqrt(pi)*E_star**2*R*a**3*rho_g + 5*sqrt(2)*sqrt(pi)*E_star**2*a**4*rho_g*atanh(a/R))/(2*E_star**(5/2)*R**2*sqrt(a)*atanh(a/R) + 2*E_star**(5/2)*R*a**(3/2) - 2*E_star**(5/2)*a**(5/2)*atanh(a/R) - sqrt(2)*sqrt(pi)*E_star**2*R**2*rho_g + sqrt(2)*sqrt(pi)*E_star**2*a**2*rho_g)', ''),
+    ('fit_adhesive_sphere_force_ddgamma', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', '4*pi*E_star*a**(3/2)*(-R**2 + a**2)/(-sqrt(2)*sqrt(pi)*sqrt(E_star)*R**2*rho_g + sqrt(2)*sqrt(pi)*sqrt(E_star)*a**2*rho_g + 2*E_star*R**2*sqrt(a)*atanh(a/R) + 2*E_star*R*a**(3/2) - 2*E_star*a**(5/2)*atanh(a/R))', ''),
+    ('fit_adhesive_sphere_force_dz0', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', '2*(-2*E_star**(3/2)*R**2*a**(3/2)*atanh(a/R) - 2*E_star**(3/2)*R*a**(5/2) + 2*E_star**(3/2)*a**(7/2)*atanh(a/R) + 3*sqrt(2)*sqrt(pi)*E_star*R**2*a*rho_g - 3*sqrt(2)*sqrt(pi)*E_star*a**3*rho_g)/(2*sqrt(E_star)*R**2*sqrt(a)*atanh(a/R) + 2*sqrt(E_star)*R*a**(3/2) - 2*sqrt(E_star)*a**(5/2)*atanh(a/R) - sqrt(2)*sqrt(pi)*R**2*rho_g + sqrt(2)*sqrt(pi)*a**2*rho_g)', ''),
     ('fit_cone_force', '(5.40), fit model', 'fit', '2*E_star*Max(0, -z_0 + z_p)**2/(pi*tan(theta)) + F_0 + s_0*z_p', ''),
     ('fit_cone_force_dE', '(5.40), fit model', 'fit', '2*Max(0, -z_0 + z_p)**2/(pi*tan(theta))', ''),
     ('fit_cone_force_dz0', '(5.40), fit model', 'fit', '-4*E_star*Heaviside(-z_0 + z_p, 0)*Max(0, -z_0 + z_p)/(pi*tan(theta))', ''),
@@ -566,8 +590,8 @@ RELATIONS = (
     ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
     ('fit_sample_modulus_rigid_dE', '(5.8), inverted', 'fit', '1 - nu**2', ''),
     ('fit_sphere_depth_dlam', '(5.55)', 'fit', 'R*(lam/cosh(lam)**2 + tanh(lam))', ''),
-    ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*R**2*(lam*tanh(lam)**2 + lam - tanh(lam)) + F_0 + s_0*z_p', ''),
-    ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'R**2*(lam*tanh(lam)**2 + lam - tanh(lam))', ''),
+    ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*R**2*Piecewise((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + lam*tanh(lam)**2, lam < 1/2), (lam*(tanh(lam)**2 + 1) - tanh(lam), True)) + F_0 + s_0*z_p', ''),
+    ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'R**2*Piecewise((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + lam*tanh(lam)**2, lam < 1/2), (lam*(tanh(lam)**2 + 1) - tanh(lam), True))', ''),
     ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*R*tanh(lam)', ''),
     ('flamant_sigma_xx', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x**2*z/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
@@ -4756,6 +4780,396 @@ def fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g):
     return 2*(-numpy.pi*E_star**(3/2)*a**(3/2)*numpy.tan(theta) + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a*rho_g)/(numpy.pi*numpy.sqrt(E_star)*numpy.sqrt(a)*numpy.tan(theta) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g)
 
 
+def fit_adhesive_powerlaw_depth(E_star, c_n, kappa_n, n, a, rho_g):
+    """Indentation depth d [m] of a power-law tip in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from:
+    adhesion_powerlaw_depth at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_powerlaw_depth(E_star, c_n, kappa_n, n, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return a**n*c_n*kappa_n - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*rho_g/numpy.sqrt(E_star)
+
+
+def fit_adhesive_powerlaw_depth_da(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of a power-law tip: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from:
+    adhesion_powerlaw_depth differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_powerlaw.py::test_adhesive_powerlaw_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_powerlaw_depth_da(E_star, c_n, kappa_n, n, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return a**n*c_n*kappa_n*n/a - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g/(numpy.sqrt(E_star)*numpy.sqrt(a))
+
+
+def fit_adhesive_powerlaw_force(E_star, c_n, kappa_n, n, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on a power-law tip in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from:
+    adhesion_powerlaw_force_from_radius at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(a) is float and type(rho_g) is float and
+            type(z_p) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_powerlaw_force(E_star, c_n, kappa_n, n, a, rho_g, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return F_0 + s_0*z_p + 2*(-numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*n*rho_g - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*rho_g + E_star*a**(n + 1)*c_n*kappa_n*n)/(n + 1)
+
+
+def fit_adhesive_powerlaw_force_dE(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of a power-law tip at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_powerlaw_force_from_radius in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_powerlaw_force_dE(E_star, c_n, kappa_n, n, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(2*E_star**(5/2)*a**(2*n + 3/2)*c_n**2*kappa_n**2*n**2 + 4*numpy.pi*E_star**(3/2)*a**(5/2)*n*rho_g**2 + 4*numpy.pi*E_star**(3/2)*a**(5/2)*rho_g**2 - 2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n**2*rho_g - 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n*rho_g)/((n + 1)*(2*E_star**(5/2)*a**(n + 1/2)*c_n*kappa_n*n - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*a*rho_g))
+
+
+def fit_adhesive_powerlaw_force_ddgamma(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of a power-law tip at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_powerlaw_force_from_radius in Delta
+    gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_powerlaw_force_ddgamma(E_star, c_n, kappa_n, n, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 4*numpy.pi*E_star*a**(5/2)/(numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a*rho_g - 2*E_star*a**(n + 1/2)*c_n*kappa_n*n)
+
+
+def fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of a power-law tip at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_powerlaw_force_from_radius in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : float or ndarray
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : float or ndarray
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : float or ndarray
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(c_n) is float and type(kappa_n) is float and
+            type(n) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(-2*E_star**(3/2)*a**(n + 3/2)*c_n*kappa_n*n + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a**2*rho_g)/(2*numpy.sqrt(E_star)*a**(n + 1/2)*c_n*kappa_n*n - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*a*rho_g)
+
+
+def fit_adhesive_sphere_depth(E_star, R, a, rho_g):
+    """Indentation depth d [m] of an exact sphere (spherical cap) in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: sphere_depth
+    less Delta l at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sphere.py::test_adhesive_sphere_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sphere_depth(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return a*numpy.arctanh(a/R) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*rho_g/numpy.sqrt(E_star)
+
+
+def fit_adhesive_sphere_depth_da(E_star, R, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of an exact sphere (spherical cap): Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: sphere_depth
+    less Delta l differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sphere.py::test_adhesive_sphere_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sphere_depth_da(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return numpy.arctanh(a/R) + a/(R*(1 - a**2/R**2)) - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g/(numpy.sqrt(E_star)*numpy.sqrt(a))
+
+
+def fit_adhesive_sphere_force(E_star, R, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on an exact sphere (spherical cap) in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from:
+    sphere_force_from_radius less 2 E* a Delta l at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sphere.py::test_adhesive_sphere_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float and type(z_p) is float and type(F_0) is float and
+            type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sphere_force(E_star, R, a, rho_g, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*rho_g + E_star*(R**2*numpy.arctanh(a/R) - R*a + a**2*numpy.arctanh(a/R)) + F_0 + s_0*z_p
+
+
+def fit_adhesive_sphere_force_dE(E_star, R, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of an exact sphere (spherical cap) at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of sphere_force_from_radius less 2 E* a Delta l in
+    E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sphere.py::te
+    st_adhesive_sphere_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sphere_force_dE(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (2*E_star**(5/2)*R**4*numpy.sqrt(a)*numpy.arctanh(a/R)**2 - 2*E_star**(5/2)*R**2*a**(5/2) + 4*E_star**(5/2)*R*a**(7/2)*numpy.arctanh(a/R) - 2*E_star**(5/2)*a**(9/2)*numpy.arctanh(a/R)**2 + 8*numpy.pi*E_star**(3/2)*R**2*a**(3/2)*rho_g**2 - 8*numpy.pi*E_star**(3/2)*a**(7/2)*rho_g**2 - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R**4*rho_g*numpy.arctanh(a/R) + numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R**3*a*rho_g - 4*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R**2*a**2*rho_g*numpy.arctanh(a/R) - 5*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R*a**3*rho_g + 5*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*a**4*rho_g*numpy.arctanh(a/R))/(2*E_star**(5/2)*R**2*numpy.sqrt(a)*numpy.arctanh(a/R) + 2*E_star**(5/2)*R*a**(3/2) - 2*E_star**(5/2)*a**(5/2)*numpy.arctanh(a/R) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*R**2*rho_g + numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star**2*a**2*rho_g)
+
+
+def fit_adhesive_sphere_force_ddgamma(E_star, R, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of an exact sphere (spherical cap) at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of sphere_force_from_radius less 2 E* a Delta l in
+    Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sphere.py::te
+    st_adhesive_sphere_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sphere_force_ddgamma(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 4*numpy.pi*E_star*a**(3/2)*(-R**2 + a**2)/(-numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*R**2*rho_g + numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**2*rho_g + 2*E_star*R**2*numpy.sqrt(a)*numpy.arctanh(a/R) + 2*E_star*R*a**(3/2) - 2*E_star*a**(5/2)*numpy.arctanh(a/R))
+
+
+def fit_adhesive_sphere_force_dz0(E_star, R, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of an exact sphere (spherical cap) at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of sphere_force_from_radius less 2 E* a Delta l in
+    z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sphere.py::te
+    st_adhesive_sphere_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(R) is float and type(a) is float and
+            type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sphere_force_dz0(E_star, R, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(-2*E_star**(3/2)*R**2*a**(3/2)*numpy.arctanh(a/R) - 2*E_star**(3/2)*R*a**(5/2) + 2*E_star**(3/2)*a**(7/2)*numpy.arctanh(a/R) + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*R**2*a*rho_g - 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a**3*rho_g)/(2*numpy.sqrt(E_star)*R**2*numpy.sqrt(a)*numpy.arctanh(a/R) + 2*numpy.sqrt(E_star)*R*a**(3/2) - 2*numpy.sqrt(E_star)*a**(5/2)*numpy.arctanh(a/R) - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*R**2*rho_g + numpy.sqrt(2)*numpy.sqrt(numpy.pi)*a**2*rho_g)
+
+
 def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
     """Force F [N] on a rigid cone at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
 
@@ -5496,13 +5910,12 @@ def fit_sphere_depth_dlam(R, lam):
 def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
     """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R); below lam = 1/2
+    its cancelling lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels
+    (truncation < 1e-18 relative; no 2F1, cheap at every point of a fit).
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_model_by_forward_models``.
-
-    Printed in a stable form: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels
-    as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
+    ``tests/test_fit.py::test_sphere_fit_force_by_mpmath``.
 
     Parameters
     ----------
@@ -5519,20 +5932,23 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
     s_0 : float or ndarray
         slope of the force baseline before contact (drift, drag) [N/m]
     """
-    import scipy.special
-
-    return F_0 + s_0*z_p + numpy.select([numpy.less(lam, 1/2),True], [E_star*R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),E_star*R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+    if (type(E_star) is float and type(R) is float and type(lam) is float and
+            type(z_p) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return E_star*R**2*numpy.select([numpy.less(lam, 1/2),True], [lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2,lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)], default=numpy.nan) + F_0 + s_0*z_p
 
 
 def fit_sphere_force_dE(R, lam):
     """Derivative dF/dE* [m^2] of the fit model of the exact sphere.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*; below lam = 1/2
+    as fit_sphere_force.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
-
-    Printed in a stable form: as fit_sphere_force: the 2F1 form below lam = 1/2.
+    ``tests/test_fit.py::test_sphere_fit_force_by_mpmath``.
 
     Parameters
     ----------
@@ -5541,9 +5957,12 @@ def fit_sphere_force_dE(R, lam):
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
-    import scipy.special
-
-    return numpy.select([numpy.less(lam, 1/2),True], [R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+    if type(R) is float and type(lam) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sphere_force_dE(R, lam)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return R**2*numpy.select([numpy.less(lam, 1/2),True], [lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2,lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)], default=numpy.nan)
 
 
 def fit_sphere_force_dz0(E_star, R, lam):
@@ -12100,61 +12519,6 @@ def textbook_ellipse_stiffness(E_star, R1, d, t_ba):
     return numpy.sqrt(2)*numpy.pi*E_star*numpy.sqrt(R1)*numpy.sqrt(d)*numpy.sqrt((-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*scipy.special.ellipk(1 - t_ba**2) + scipy.special.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-scipy.special.ellipe(1 - t_ba**2) + scipy.special.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(3/2)
 
 
-def textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
-    """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p, in the derived (textbook) form; use fit_sphere_force: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
-
-    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
-
-    Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_model_by_forward_models``.
-
-    Parameters
-    ----------
-    E_star : float or ndarray
-        effective modulus E* (5.8), (5.26) [Pa]
-    R : float or ndarray
-        radius of curvature (effective radius (5.27) for two bodies) [m]
-    lam : float or ndarray
-        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
-    z_p : float or ndarray
-        position of the tip's base (piezo), increasing into the sample [m]
-    F_0 : float or ndarray
-        force baseline: the force at z_p = 0 before contact [N]
-    s_0 : float or ndarray
-        slope of the force baseline before contact (drift, drag) [N/m]
-    """
-    if (type(E_star) is float and type(R) is float and type(lam) is float and
-            type(z_p) is float and type(F_0) is float and type(s_0) is float):
-        try:  # the scalar path: Python floats, the math module
-            return _math_textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0)
-        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
-            pass
-    return E_star*R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam)) + F_0 + s_0*z_p
-
-
-def textbook_fit_sphere_force_dE(R, lam):
-    """Derivative dF/dE* [m^2] of the fit model of the exact sphere, in the derived (textbook) form; use fit_sphere_force_dE: as fit_sphere_force: the 2F1 form below lam = 1/2.
-
-    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
-
-    Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
-
-    Parameters
-    ----------
-    R : float or ndarray
-        radius of curvature (effective radius (5.27) for two bodies) [m]
-    lam : float or ndarray
-        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
-    """
-    if type(R) is float and type(lam) is float:
-        try:  # the scalar path: Python floats, the math module
-            return _math_textbook_fit_sphere_force_dE(R, lam)
-        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
-            pass
-    return R**2*(lam*numpy.tanh(lam)**2 + lam - numpy.tanh(lam))
-
-
 def textbook_force_law_ellipse_prefactor(E_star, R1, t_ba):
     """Prefactor K [N/m^n] of the force law F = K d^n of an elliptical contact (R1 >= R2 the principal radii, t_ba = b/a from ellipse_radius_ratio), in the derived (textbook) form; use force_law_ellipse_prefactor: K(m) and E(m) written through (pi/4) 2F1 as in ellipse_force: the K, E form cancels as t -> 1 (the circle).
 
@@ -14123,6 +14487,66 @@ def _math_fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g):
     return 2*(-math.pi*math.pow(E_star, 3/2)*math.pow(a, 3/2)*math.tan(theta) + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*a*rho_g)/(math.pi*math.sqrt(E_star)*math.sqrt(a)*math.tan(theta) - math.sqrt(2)*math.sqrt(math.pi)*rho_g)
 
 
+def _math_fit_adhesive_powerlaw_depth(E_star, c_n, kappa_n, n, a, rho_g):
+    """``fit_adhesive_powerlaw_depth`` for Python floats (the math module); raises where it does."""
+    return math.pow(a, n)*c_n*kappa_n - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*rho_g/math.sqrt(E_star)
+
+
+def _math_fit_adhesive_powerlaw_depth_da(E_star, c_n, kappa_n, n, a, rho_g):
+    """``fit_adhesive_powerlaw_depth_da`` for Python floats (the math module); raises where it does."""
+    return math.pow(a, n)*c_n*kappa_n*n/a - 1/2*math.sqrt(2)*math.sqrt(math.pi)*rho_g/(math.sqrt(E_star)*math.sqrt(a))
+
+
+def _math_fit_adhesive_powerlaw_force(E_star, c_n, kappa_n, n, a, rho_g, z_p, F_0, s_0):
+    """``fit_adhesive_powerlaw_force`` for Python floats (the math module); raises where it does."""
+    return F_0 + s_0*z_p + 2*(-math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*n*rho_g - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*rho_g + E_star*math.pow(a, n + 1)*c_n*kappa_n*n)/(n + 1)
+
+
+def _math_fit_adhesive_powerlaw_force_dE(E_star, c_n, kappa_n, n, a, rho_g):
+    """``fit_adhesive_powerlaw_force_dE`` for Python floats (the math module); raises where it does."""
+    return 2*(2*math.pow(E_star, 5/2)*math.pow(a, 2*n + 3/2)*(c_n*c_n)*(kappa_n*kappa_n)*(n*n) + 4*math.pi*math.pow(E_star, 3/2)*math.pow(a, 5/2)*n*(rho_g*rho_g) + 4*math.pi*math.pow(E_star, 3/2)*math.pow(a, 5/2)*(rho_g*rho_g) - 2*math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*math.pow(a, n + 2)*c_n*kappa_n*(n*n)*rho_g - 3*math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*math.pow(a, n + 2)*c_n*kappa_n*n*rho_g)/((n + 1)*(2*math.pow(E_star, 5/2)*math.pow(a, n + 1/2)*c_n*kappa_n*n - math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*a*rho_g))
+
+
+def _math_fit_adhesive_powerlaw_force_ddgamma(E_star, c_n, kappa_n, n, a, rho_g):
+    """``fit_adhesive_powerlaw_force_ddgamma`` for Python floats (the math module); raises where it does."""
+    return 4*math.pi*E_star*math.pow(a, 5/2)/(math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*a*rho_g - 2*E_star*math.pow(a, n + 1/2)*c_n*kappa_n*n)
+
+
+def _math_fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g):
+    """``fit_adhesive_powerlaw_force_dz0`` for Python floats (the math module); raises where it does."""
+    return 2*(-2*math.pow(E_star, 3/2)*math.pow(a, n + 3/2)*c_n*kappa_n*n + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*(a*a)*rho_g)/(2*math.sqrt(E_star)*math.pow(a, n + 1/2)*c_n*kappa_n*n - math.sqrt(2)*math.sqrt(math.pi)*a*rho_g)
+
+
+def _math_fit_adhesive_sphere_depth(E_star, R, a, rho_g):
+    """``fit_adhesive_sphere_depth`` for Python floats (the math module); raises where it does."""
+    return a*math.atanh(a/R) - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*rho_g/math.sqrt(E_star)
+
+
+def _math_fit_adhesive_sphere_depth_da(E_star, R, a, rho_g):
+    """``fit_adhesive_sphere_depth_da`` for Python floats (the math module); raises where it does."""
+    return math.atanh(a/R) + a/(R*(1 - (a*a)/(R*R))) - 1/2*math.sqrt(2)*math.sqrt(math.pi)*rho_g/(math.sqrt(E_star)*math.sqrt(a))
+
+
+def _math_fit_adhesive_sphere_force(E_star, R, a, rho_g, z_p, F_0, s_0):
+    """``fit_adhesive_sphere_force`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*rho_g + E_star*((R*R)*math.atanh(a/R) - R*a + (a*a)*math.atanh(a/R)) + F_0 + s_0*z_p
+
+
+def _math_fit_adhesive_sphere_force_dE(E_star, R, a, rho_g):
+    """``fit_adhesive_sphere_force_dE`` for Python floats (the math module); raises where it does."""
+    return (2*math.pow(E_star, 5/2)*R**4*math.sqrt(a)*(math.atanh(a/R)*math.atanh(a/R)) - 2*math.pow(E_star, 5/2)*(R*R)*math.pow(a, 5/2) + 4*math.pow(E_star, 5/2)*R*math.pow(a, 7/2)*math.atanh(a/R) - 2*math.pow(E_star, 5/2)*math.pow(a, 9/2)*(math.atanh(a/R)*math.atanh(a/R)) + 8*math.pi*math.pow(E_star, 3/2)*(R*R)*math.pow(a, 3/2)*(rho_g*rho_g) - 8*math.pi*math.pow(E_star, 3/2)*math.pow(a, 7/2)*(rho_g*rho_g) - math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*R**4*rho_g*math.atanh(a/R) + math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*R**3*a*rho_g - 4*math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*(R*R)*(a*a)*rho_g*math.atanh(a/R) - 5*math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*R*a**3*rho_g + 5*math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*a**4*rho_g*math.atanh(a/R))/(2*math.pow(E_star, 5/2)*(R*R)*math.sqrt(a)*math.atanh(a/R) + 2*math.pow(E_star, 5/2)*R*math.pow(a, 3/2) - 2*math.pow(E_star, 5/2)*math.pow(a, 5/2)*math.atanh(a/R) - math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*(R*R)*rho_g + math.sqrt(2)*math.sqrt(math.pi)*(E_star*E_star)*(a*a)*rho_g)
+
+
+def _math_fit_adhesive_sphere_force_ddgamma(E_star, R, a, rho_g):
+    """``fit_adhesive_sphere_force_ddgamma`` for Python floats (the math module); raises where it does."""
+    return 4*math.pi*E_star*math.pow(a, 3/2)*(-(R*R) + (a*a))/(-math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*(R*R)*rho_g + math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*(a*a)*rho_g + 2*E_star*(R*R)*math.sqrt(a)*math.atanh(a/R) + 2*E_star*R*math.pow(a, 3/2) - 2*E_star*math.pow(a, 5/2)*math.atanh(a/R))
+
+
+def _math_fit_adhesive_sphere_force_dz0(E_star, R, a, rho_g):
+    """``fit_adhesive_sphere_force_dz0`` for Python floats (the math module); raises where it does."""
+    return 2*(-2*math.pow(E_star, 3/2)*(R*R)*math.pow(a, 3/2)*math.atanh(a/R) - 2*math.pow(E_star, 3/2)*R*math.pow(a, 5/2) + 2*math.pow(E_star, 3/2)*math.pow(a, 7/2)*math.atanh(a/R) + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*(R*R)*a*rho_g - 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*a**3*rho_g)/(2*math.sqrt(E_star)*(R*R)*math.sqrt(a)*math.atanh(a/R) + 2*math.sqrt(E_star)*R*math.pow(a, 3/2) - 2*math.sqrt(E_star)*math.pow(a, 5/2)*math.atanh(a/R) - math.sqrt(2)*math.sqrt(math.pi)*(R*R)*rho_g + math.sqrt(2)*math.sqrt(math.pi)*(a*a)*rho_g)
+
+
 def _math_fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
     """``fit_cone_force`` for Python floats (the math module); raises where it does."""
     return 2*E_star*(max(0, -z_0 + z_p)*max(0, -z_0 + z_p))/(math.pi*math.tan(theta)) + F_0 + s_0*z_p
@@ -14248,14 +14672,14 @@ def _math_fit_sphere_depth_dlam(R, lam):
     return R*(lam/(math.cosh(lam)*math.cosh(lam)) + math.tanh(lam))
 
 
-def _math_textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
-    """``textbook_fit_sphere_force`` for Python floats (the math module); raises where it does."""
-    return E_star*(R*R)*(lam*(math.tanh(lam)*math.tanh(lam)) + lam - math.tanh(lam)) + F_0 + s_0*z_p
+def _math_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+    """``fit_sphere_force`` for Python floats (the math module); raises where it does."""
+    return E_star*(R*R)*((lam**3/((lam*lam) + (lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((1/15)*(lam*lam) + 13) + 11) + 9) + 7) + 5) + 3) + lam*(math.tanh(lam)*math.tanh(lam))) if (lam < 1/2) else (lam*((math.tanh(lam)*math.tanh(lam)) + 1) - math.tanh(lam))) + F_0 + s_0*z_p
 
 
-def _math_textbook_fit_sphere_force_dE(R, lam):
-    """``textbook_fit_sphere_force_dE`` for Python floats (the math module); raises where it does."""
-    return (R*R)*(lam*(math.tanh(lam)*math.tanh(lam)) + lam - math.tanh(lam))
+def _math_fit_sphere_force_dE(R, lam):
+    """``fit_sphere_force_dE`` for Python floats (the math module); raises where it does."""
+    return (R*R)*((lam**3/((lam*lam) + (lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((1/15)*(lam*lam) + 13) + 11) + 9) + 7) + 5) + 3) + lam*(math.tanh(lam)*math.tanh(lam))) if (lam < 1/2) else (lam*((math.tanh(lam)*math.tanh(lam)) + 1) - math.tanh(lam)))
 
 
 def _math_fit_sphere_force_dz0(E_star, R, lam):

@@ -148,6 +148,18 @@ __all__ = [
     'fit_adhesive_cone_force_dE',
     'fit_adhesive_cone_force_ddgamma',
     'fit_adhesive_cone_force_dz0',
+    'fit_adhesive_powerlaw_depth',
+    'fit_adhesive_powerlaw_depth_da',
+    'fit_adhesive_powerlaw_force',
+    'fit_adhesive_powerlaw_force_dE',
+    'fit_adhesive_powerlaw_force_ddgamma',
+    'fit_adhesive_powerlaw_force_dz0',
+    'fit_adhesive_sphere_depth',
+    'fit_adhesive_sphere_depth_da',
+    'fit_adhesive_sphere_force',
+    'fit_adhesive_sphere_force_dE',
+    'fit_adhesive_sphere_force_ddgamma',
+    'fit_adhesive_sphere_force_dz0',
     'fit_cone_force',
     'fit_cone_force_dE',
     'fit_cone_force_dz0',
@@ -3657,6 +3669,322 @@ def fit_adhesive_cone_force_dz0(E_star, theta, a, rho_g):
     return 2*(-mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.tan(theta) + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a*rho_g)/(mpmath.pi*mpmath.sqrt(E_star)*mpmath.sqrt(a)*mpmath.tan(theta) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g)
 
 
+def fit_adhesive_powerlaw_depth(E_star, c_n, kappa_n, n, a, rho_g):
+    """Indentation depth d [m] of a power-law tip in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from:
+    adhesion_powerlaw_depth at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return a**n*c_n*kappa_n - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*rho_g/mpmath.sqrt(E_star)
+
+
+def fit_adhesive_powerlaw_depth_da(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of a power-law tip: Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from:
+    adhesion_powerlaw_depth differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_powerlaw.py::test_adhesive_powerlaw_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return a**n*c_n*kappa_n*n/a - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g/(mpmath.sqrt(E_star)*mpmath.sqrt(a))
+
+
+def fit_adhesive_powerlaw_force(E_star, c_n, kappa_n, n, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on a power-law tip in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from:
+    adhesion_powerlaw_force_from_radius at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return F_0 + s_0*z_p + 2*(-mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*n*rho_g - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g + E_star*a**(n + 1)*c_n*kappa_n*n)/(n + 1)
+
+
+def fit_adhesive_powerlaw_force_dE(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of a power-law tip at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_powerlaw_force_from_radius in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(2*n + mpmath.mpf(3)/mpmath.mpf(2))*c_n**2*kappa_n**2*n**2 + 4*mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(5)/mpmath.mpf(2))*n*rho_g**2 + 4*mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(5)/mpmath.mpf(2))*rho_g**2 - 2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n**2*rho_g - 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n*rho_g)/((n + 1)*(2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(n + mpmath.mpf(1)/mpmath.mpf(2))*c_n*kappa_n*n - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*a*rho_g))
+
+
+def fit_adhesive_powerlaw_force_ddgamma(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of a power-law tip at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_powerlaw_force_from_radius in Delta
+    gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 4*mpmath.pi*E_star*a**(mpmath.mpf(5)/mpmath.mpf(2))/(mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a*rho_g - 2*E_star*a**(n + mpmath.mpf(1)/mpmath.mpf(2))*c_n*kappa_n*n)
+
+
+def fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of a power-law tip at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive power law, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of adhesion_powerlaw_force_from_radius in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_powerlaw.py::
+    test_adhesive_powerlaw_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    c_n : mpmath.mpf
+        coefficient of the power-law profile f = c_n r^n [m^(1-n)]
+    kappa_n : mpmath.mpf
+        MDR factor of the power-law profile, g = kappa_n c_n |x|^n (Problem 7(d)) [1]
+    n : mpmath.mpf
+        exponent of the power-law profile f = c_n r^n, n > 0 [1]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(-2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(n + mpmath.mpf(3)/mpmath.mpf(2))*c_n*kappa_n*n + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a**2*rho_g)/(2*mpmath.sqrt(E_star)*a**(n + mpmath.mpf(1)/mpmath.mpf(2))*c_n*kappa_n*n - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*a*rho_g)
+
+
+def fit_adhesive_sphere_depth(E_star, R, a, rho_g):
+    """Indentation depth d [m] of an exact sphere (spherical cap) in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: sphere_depth
+    less Delta l at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sphere.py::test_adhesive_sphere_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return a*mpmath.atanh(a/R) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*rho_g/mpmath.sqrt(E_star)
+
+
+def fit_adhesive_sphere_depth_da(E_star, R, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of an exact sphere (spherical cap): Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: sphere_depth
+    less Delta l differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sphere.py::test_adhesive_sphere_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return mpmath.atanh(a/R) + a/(R*(1 - a**2/R**2)) - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g/(mpmath.sqrt(E_star)*mpmath.sqrt(a))
+
+
+def fit_adhesive_sphere_force(E_star, R, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on an exact sphere (spherical cap) in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from:
+    sphere_force_from_radius less 2 E* a Delta l at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sphere.py::test_adhesive_sphere_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g + E_star*(R**2*mpmath.atanh(a/R) - R*a + a**2*mpmath.atanh(a/R)) + F_0 + s_0*z_p
+
+
+def fit_adhesive_sphere_force_dE(E_star, R, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of an exact sphere (spherical cap) at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of sphere_force_from_radius less 2 E* a Delta l in
+    E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sphere.py::te
+    st_adhesive_sphere_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return (2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*R**4*mpmath.sqrt(a)*mpmath.atanh(a/R)**2 - 2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*R**2*a**(mpmath.mpf(5)/mpmath.mpf(2)) + 4*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*R*a**(mpmath.mpf(7)/mpmath.mpf(2))*mpmath.atanh(a/R) - 2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(mpmath.mpf(9)/mpmath.mpf(2))*mpmath.atanh(a/R)**2 + 8*mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*R**2*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g**2 - 8*mpmath.pi*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(7)/mpmath.mpf(2))*rho_g**2 - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R**4*rho_g*mpmath.atanh(a/R) + mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R**3*a*rho_g - 4*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R**2*a**2*rho_g*mpmath.atanh(a/R) - 5*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R*a**3*rho_g + 5*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*a**4*rho_g*mpmath.atanh(a/R))/(2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*R**2*mpmath.sqrt(a)*mpmath.atanh(a/R) + 2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*R*a**(mpmath.mpf(3)/mpmath.mpf(2)) - 2*E_star**(mpmath.mpf(5)/mpmath.mpf(2))*a**(mpmath.mpf(5)/mpmath.mpf(2))*mpmath.atanh(a/R) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*R**2*rho_g + mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star**2*a**2*rho_g)
+
+
+def fit_adhesive_sphere_force_ddgamma(E_star, R, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of an exact sphere (spherical cap) at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of sphere_force_from_radius less 2 E* a Delta l in
+    Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sphere.py::te
+    st_adhesive_sphere_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 4*mpmath.pi*E_star*a**(mpmath.mpf(3)/mpmath.mpf(2))*(-R**2 + a**2)/(-mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*R**2*rho_g + mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**2*rho_g + 2*E_star*R**2*mpmath.sqrt(a)*mpmath.atanh(a/R) + 2*E_star*R*a**(mpmath.mpf(3)/mpmath.mpf(2)) - 2*E_star*a**(mpmath.mpf(5)/mpmath.mpf(2))*mpmath.atanh(a/R))
+
+
+def fit_adhesive_sphere_force_dz0(E_star, R, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of an exact sphere (spherical cap) at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive exact sphere, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of sphere_force_from_radius less 2 E* a Delta l in
+    z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sphere.py::te
+    st_adhesive_sphere_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(-2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*R**2*a**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.atanh(a/R) - 2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*R*a**(mpmath.mpf(5)/mpmath.mpf(2)) + 2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(7)/mpmath.mpf(2))*mpmath.atanh(a/R) + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*R**2*a*rho_g - 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a**3*rho_g)/(2*mpmath.sqrt(E_star)*R**2*mpmath.sqrt(a)*mpmath.atanh(a/R) + 2*mpmath.sqrt(E_star)*R*a**(mpmath.mpf(3)/mpmath.mpf(2)) - 2*mpmath.sqrt(E_star)*a**(mpmath.mpf(5)/mpmath.mpf(2))*mpmath.atanh(a/R) - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*R**2*rho_g + mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*a**2*rho_g)
+
+
 def fit_cone_force(E_star, theta, z_p, z_0, F_0, s_0):
     """Force F [N] on a rigid cone at the position z_p: the tip's force at d = max(0, z_p - z_0) plus the baseline F_0 + s_0 z_p.
 
@@ -4231,13 +4559,12 @@ def fit_sphere_depth_dlam(R, lam):
 def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
     """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R); below lam = 1/2
+    its cancelling lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels
+    (truncation < 1e-18 relative; no 2F1, cheap at every point of a fit).
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_model_by_forward_models``.
-
-    Printed in a stable form: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels
-    as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
+    ``tests/test_fit.py::test_sphere_fit_force_by_mpmath``.
 
     Parameters
     ----------
@@ -4254,18 +4581,17 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
     s_0 : mpmath.mpf
         slope of the force baseline before contact (drift, drag) [N/m]
     """
-    return F_0 + s_0*z_p + ((E_star*R**2*(lam*mpmath.tanh(lam)**2 + (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.tanh(lam)**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), mpmath.tanh(lam)**2))) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (E_star*R**2*(lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))))
+    return E_star*R**2*((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((mpmath.mpf(1)/mpmath.mpf(15))*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*mpmath.tanh(lam)**2) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))) + F_0 + s_0*z_p
 
 
 def fit_sphere_force_dE(R, lam):
     """Derivative dF/dE* [m^2] of the fit model of the exact sphere.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*; below lam = 1/2
+    as fit_sphere_force.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
-
-    Printed in a stable form: as fit_sphere_force: the 2F1 form below lam = 1/2.
+    ``tests/test_fit.py::test_sphere_fit_force_by_mpmath``.
 
     Parameters
     ----------
@@ -4274,7 +4600,7 @@ def fit_sphere_force_dE(R, lam):
     lam : mpmath.mpf
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
     """
-    return ((R**2*(lam*mpmath.tanh(lam)**2 + (mpmath.mpf(1)/mpmath.mpf(3))*mpmath.tanh(lam)**3*mpmath.hyper((1, mpmath.mpf(3)/mpmath.mpf(2)), (mpmath.mpf(5)/mpmath.mpf(2),), mpmath.tanh(lam)**2))) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (R**2*(lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))))
+    return R**2*((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((mpmath.mpf(1)/mpmath.mpf(15))*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*mpmath.tanh(lam)**2) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam)))
 
 
 def fit_sphere_force_dz0(E_star, R, lam):
@@ -9643,50 +9969,6 @@ def textbook_ellipse_stiffness(E_star, R1, d, t_ba):
         axis ratio b/a in (0, 1] of an elliptical contact (a along R1 >= R2) [1]
     """
     return mpmath.sqrt(2)*mpmath.pi*E_star*mpmath.sqrt(R1)*mpmath.sqrt(d)*mpmath.sqrt((-mpmath.ellipe(1 - t_ba**2) + mpmath.ellipk(1 - t_ba**2))/(1 - t_ba**2))/((-t_ba**2*mpmath.ellipk(1 - t_ba**2) + mpmath.ellipe(1 - t_ba**2))/(1 - t_ba**2) + (-mpmath.ellipe(1 - t_ba**2) + mpmath.ellipk(1 - t_ba**2))/(1 - t_ba**2))**(mpmath.mpf(3)/mpmath.mpf(2))
-
-
-def textbook_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
-    """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p, in the derived (textbook) form; use fit_sphere_force: the sphere's force (1 + tanh(lam)^2) lam - tanh(lam) cancels as lam^2 for small lam; below lam = 1/2 it is written with a 2F1, as sphere_lam_force.
-
-    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R).
-
-    Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_model_by_forward_models``.
-
-    Parameters
-    ----------
-    E_star : mpmath.mpf
-        effective modulus E* (5.8), (5.26) [Pa]
-    R : mpmath.mpf
-        radius of curvature (effective radius (5.27) for two bodies) [m]
-    lam : mpmath.mpf
-        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
-    z_p : mpmath.mpf
-        position of the tip's base (piezo), increasing into the sample [m]
-    F_0 : mpmath.mpf
-        force baseline: the force at z_p = 0 before contact [N]
-    s_0 : mpmath.mpf
-        slope of the force baseline before contact (drift, drag) [N/m]
-    """
-    return E_star*R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam)) + F_0 + s_0*z_p
-
-
-def textbook_fit_sphere_force_dE(R, lam):
-    """Derivative dF/dE* [m^2] of the fit model of the exact sphere, in the derived (textbook) form; use fit_sphere_force_dE: as fit_sphere_force: the 2F1 form below lam = 1/2.
-
-    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*.
-
-    Derivation: ``hertzmdr.derive.fit``. Verified by
-    ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
-
-    Parameters
-    ----------
-    R : mpmath.mpf
-        radius of curvature (effective radius (5.27) for two bodies) [m]
-    lam : mpmath.mpf
-        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
-    """
-    return R**2*(lam*mpmath.tanh(lam)**2 + lam - mpmath.tanh(lam))
 
 
 def textbook_force_law_ellipse_prefactor(E_star, R1, t_ba):

@@ -3,7 +3,7 @@
     hertzmdr run [SCENE] [--json | --csv] [--out DIR [--force]]
     hertzmdr effects
     hertzmdr fit CURVE.csv --scene TIP.toml [--out FIG.png [--force]] [--z0 GUESS] [--sigma NOISE]
-    hertzmdr fit RETRACT.csv --scene TIP.toml --adhesion [...]   (JKR or cone: E*, z_0, Delta gamma)
+    hertzmdr fit RETRACT.csv --scene TIP.toml --adhesion [...]  (JKR, cone, exact sphere, power law)
     hertzmdr fit --scene SCENE.toml [...]   (the curve and its settings from the scene's [fit])
     hertzmdr fit MAP --scene TIP.toml [--out DIR [--force]] [--workers N] [--z0 ..] [--sigma ..]
 
@@ -74,9 +74,15 @@ p_fit.add_argument("--workers", type=int, help="a map: worker processes (default
 p_fit.add_argument("--z0", help="a guess of the contact point, with a unit (e.g. \"1.2 um\")")
 p_fit.add_argument("--sigma", help="the force noise's standard deviation, with a unit "
                    "(e.g. \"20 pN\"): weights the residuals; the reduced chi^2 is then ~1")
+p_fit.add_argument("--fix-z0", metavar="Z0", help="hold the contact point fixed at Z0, with a "
+                   "unit (e.g. \"1.3 um\"): only the other parameters are fitted")
+p_fit.add_argument("--fix-baseline", nargs=2, metavar=("F0", "S0"),
+                   help="hold the baseline F_0 + s_0 z fixed, with units (e.g. \"2 nN\" "
+                   "\"0.1 mN/m\"): only E* (and z_0) are fitted")
 p_fit.add_argument("--adhesion", action="store_true",
                    help="a curve: fit an adhesive retract curve with the JKR paraboloid or "
-                   "the adhesive cone (a scene's sphere or cone tip; the "
+                   "the adhesive cone, exact sphere or power law (a scene's sphere, cone, "
+                   "exact_sphere or power_law tip; the "
                    "work of adhesion as a fifth parameter; the scene's [interface] "
                    "work_of_adhesion is shown for comparison, never used)")
 p_acc = sub.add_parser("accuracy", help="measure what accuracy costs in time; write a report")
@@ -287,9 +293,24 @@ def _fit_options(args, table, nu, tip_E, tip_nu) -> dict:
         sigma = table.sigma if args.sigma is None else to_si(args.sigma, "force")
     except UnitError as exc:
         raise UsageError(f"--z0/--sigma: {exc}") from None
+    try:
+        fixed_z0 = (table.fixed_contact_point if args.fix_z0 is None
+                    else to_si(args.fix_z0, "length"))
+        fixed_baseline = (table.fixed_baseline if args.fix_baseline is None else
+                          (to_si(args.fix_baseline[0], "force"),
+                           to_si(args.fix_baseline[1], "force_per_length")))
+    except UnitError as exc:
+        raise UsageError(f"--fix-z0/--fix-baseline: {exc}") from None
     if table.modulus == "E_star":
         nu = tip_E = tip_nu = None
-    return {"nu": nu, "tip_modulus": tip_E, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
+    out = {"nu": nu, "tip_modulus": tip_E, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
+    if fixed_z0 is not None or fixed_baseline is not None:
+        if args.adhesion:
+            raise UsageError("--fix-z0/--fix-baseline (or [fit] fixed_contact_point, "
+                             "fixed_baseline): the adhesive fit fits all five parameters; "
+                             "valid only without --adhesion")
+        out.update(fixed_z0=fixed_z0, fixed_baseline=fixed_baseline)
+    return out
 
 
 def cmd_fit(args) -> int:
@@ -384,7 +405,9 @@ def cmd_fit_batch(args, table) -> int:
                              "'hertzmdr[plot]'") from None
     bar = fit_batch.ProgressBar(sys.stderr) if sys.stderr.isatty() else None
     results = fit_batch.fit_curves(curves, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
-                                   sigma=sigma, workers=args.workers, progress=bar)
+                                   sigma=sigma, fixed_z0=opts.get("fixed_z0"),
+                                   fixed_baseline=opts.get("fixed_baseline"),
+                                   workers=args.workers, progress=bar)
     results += [fit_batch._failed(fit_batch.Curve(name, None, None, np.zeros(0), np.zeros(0)),
                                   msg) for name, msg in unread]
     for r in results:

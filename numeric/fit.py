@@ -31,6 +31,7 @@ from __future__ import annotations
 
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
+from functools import cache
 
 import numpy as np
 from scipy.optimize import leastsq
@@ -127,38 +128,88 @@ class _Tip(ABC):
 _EPS = float(np.finfo(float).eps)
 
 
-def lam_from_depth(d, R, start=None):
+#: Newton's iteration for lam stops after a step below this fraction of lam: the convergence is
+#: quadratic, the next correction at most ~(1e-8)^2/2 of lam (the error after a step is
+#: (f''/(2 f')) e^2 with f = lam tanh(lam) - d/R: e^2/(2 lam) at small lam, less beyond), far
+#: below an ulp; a bisection step must still shrink to 2 ulp
+LAM_NEWTON_STOP = 1e-8
+#: the start table of lam(d/R): nodes in ln(d/R) over [LAM_TABLE_SPAN], linear interpolation of
+#: ln(lam) in ln(d/R) (a smooth function, slope 1/2 to 1): error ~1e-4 relative, after which
+#: two Newton steps end at the last digit
+LAM_TABLE_SPAN = (-30.0, 12.0)
+LAM_TABLE_NODES = 512
+
+
+@cache
+def _lam_table() -> tuple[np.ndarray, np.ndarray]:
+    """(ln(d/R), ln(lam)) at LAM_TABLE_NODES nodes: lam(d/R) does not depend on R, so one
+    table (Newton's method from the bracket's lower bound, once per process) serves every
+    exact sphere."""
+    x = np.linspace(*LAM_TABLE_SPAN, LAM_TABLE_NODES)
+    return x, np.log(lam_from_depth(np.exp(x), 1.0, _table=False))
+
+
+def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
     """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
     (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
 
-    Newton's method with the derived slope dd/dlam (``fit_sphere_depth_dlam``), from the lower
-    bound max(sqrt(d/R), d/R) of numeric/sphere.py's bisection and inside its bracket: a step
-    that leaves the bracket is replaced by a bisection step, so the iteration cannot diverge,
-    and it converges quadratically (5-7 steps to one ulp, against ~53 bisection steps).
-    ``start`` (d's shape, optional): first iterates, e.g. the roots at nearby depths (a fit's
-    previous contact point); clipped into the bracket, so any values are safe, and close ones
-    leave 2-3 steps.
+    Newton's method with the derived slope dd/dlam (``fit_sphere_depth_dlam``) inside the
+    bracket [max(sqrt(d/R), d/R), (d/R + sqrt((d/R)(d/R + 4)))/2] of numeric/sphere.py's
+    bisection: a step that leaves the bracket is replaced by a bisection step, so the iteration
+    cannot diverge, and it converges quadratically; it stops after a Newton step below
+    LAM_NEWTON_STOP of lam (the next one would be below an ulp) or any step below 2 ulp.
+    The first iterate: ``start`` (d's shape, optional; e.g. the roots at nearby depths, a fit's
+    previous contact point; clipped into the bracket, so any values are safe), else (and where
+    ``start`` is NaN) the interpolated table :func:`_lam_table` (~1e-4 relative): 1-2 steps a
+    point. ``with_slope``: also return dd/dlam [m] at the last iterate but one (inf where
+    d <= 0), for the next call's start at shifted depths, lam + shift/(dd/dlam).
     """
     d = np.asarray(d, float)
     touch = d > 0
-    out = np.zeros(d.shape)
-    dd = d[touch]  # only the points in contact
+    every = bool(touch.all())  # a fit's tail: no copies
+    dd = d if every else d[touch]  # only the points in contact
     delta = dd / R
     lo = np.maximum(np.sqrt(delta), delta)
     hi = np.maximum((delta + np.sqrt(delta * (delta + 4))) / 2, lo)
-    lam = lo if start is None else np.clip(np.asarray(start, float)[touch], lo, hi)
+    first = None if start is None else np.asarray(start, float)
+    first = first if first is None or every else first[touch]
+    missing = True if first is None else np.isnan(first)
+    lam = lo
+    if _table and np.any(missing):
+        x, y = _lam_table()
+        lam = np.exp(np.interp(np.log(delta), x, y))
+    if first is not None:
+        lam = np.where(missing, lam, first) if np.any(missing) else first
+    lam = np.clip(lam, lo, hi)
+    slope = np.ones(dd.shape)
     for _ in range(LAM_MAX_STEPS):
         f = gen.sphere_lam_depth(R, lam) - dd
         lo = np.where(f < 0, lam, lo)
         hi = np.where(f > 0, lam, hi)
         with np.errstate(over="ignore"):  # cosh(lam)^2 overflows beyond lam = 355: dd/dlam
-            new = lam - f / gen.fit_sphere_depth_dlam(R, lam)  # is then R tanh(lam) exactly
-        new = np.where((new >= lo) & (new <= hi), new, 0.5 * (lo + hi))
-        done = np.abs(new - lam) <= 2 * _EPS * new
+            slope = gen.fit_sphere_depth_dlam(R, lam)  # is then R tanh(lam) exactly
+        new = lam - f / slope
+        newton = (new >= lo) & (new <= hi)
+        step = np.abs(new - lam)
+        if newton.all():  # the usual case: Newton's steps, the quadratic-convergence stop
+            lam = new
+            if (step <= LAM_NEWTON_STOP * new).all():
+                break
+            continue
+        new = np.where(newton, new, 0.5 * (lo + hi))
+        step = np.abs(new - lam)
+        done = (step <= 2 * _EPS * new) | (newton & (step <= LAM_NEWTON_STOP * new))
         lam = new
         if done.all():
             break
+    if every:
+        return (lam, slope) if with_slope else lam
+    out = np.zeros(d.shape)
     out[touch] = lam
+    if with_slope:
+        dl = np.full(d.shape, np.inf)  # no contact: no slope (a shift gives no start there)
+        dl[touch] = slope
+        return out, dl
     return out
 
 
@@ -206,8 +257,10 @@ class ExactSphere(_Tip):
     def _dE(self, lam):
         """dF/dE* at lam, evaluated at the points in contact only (0 elsewhere): its 2F1 form
         is the costly part of the sphere's model."""
-        out = np.zeros(lam.shape)
         touch = lam > 0
+        if touch.all():  # a fit's tail
+            return gen.fit_sphere_force_dE(self.R, lam)
+        out = np.zeros(lam.shape)
         out[touch] = gen.fit_sphere_force_dE(self.R, lam[touch])
         return out
 
@@ -220,15 +273,19 @@ class ExactSphere(_Tip):
 
     def _unit(self, z, z0, state=None):
         """As :meth:`_Tip._unit`; ``state`` (a dict one fit owns) keeps the last lam of the
-        points z, a sorted curve's tail, to start Newton's iteration at the next z_0 from."""
+        points z (a sorted curve's tail), its slope dd/dlam and z_0, to start Newton's
+        iteration at the next z_0 from: lam + (z_0,old - z_0)/(dd/dlam), first order in the
+        shift of every depth (the points new to the tail start from the table)."""
         start = None
         if state is not None and "lam" in state:
-            prev = state["lam"]  # the previous tail's lam: align the two tails at their end
+            # the previous tail's lam, shifted to the new depths: align the tails at their end
+            prev = state["lam"] + (state["z0"] - z0) / state["slope"]
             start = (prev[prev.size - z.size:] if prev.size >= z.size
-                     else np.r_[np.zeros(z.size - prev.size), prev])
-        lam = self._lam(z, z0, start)
+                     else np.r_[np.full(z.size - prev.size, np.nan), prev])
+        lam, slope = lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start,
+                                    with_slope=True)
         if state is not None:
-            state["lam"] = lam
+            state.update(lam=lam, slope=slope, z0=z0)
         return self._dE(lam), gen.fit_sphere_force_dz0(1.0, self.R, lam)
 
     def ratios(self, d_max):
@@ -565,8 +622,10 @@ class _Fitted:
     def _parameter_rows(self, names, units) -> list[str]:
         """The header, one line per parameter with its standard error, and E when fitted."""
         rows = [f"{'parameter':<10} {'value':>14} {'std. error':>12}  unit"]
+        fixed = getattr(self, "fixed", ())
         for name, v, e, u in zip(names, self.values, self.errors, units, strict=True):
-            rows.append(f"{name:<10} {v:>14.7g} {e:>12.3g}  {u}")
+            err = f"{'fixed':>12}" if name in fixed else f"{e:>12.3g}"
+            rows.append(f"{name:<10} {v:>14.7g} {err}  {u}")
         if self.E is not None:
             rows.append(f"{'E':<10} {self.E:>14.7g} {self.E_error:>12.3g}  Pa")
         return rows
@@ -608,6 +667,9 @@ class FitResult(_Fitted):
         |E* Phi_i| / w_i, A = (J^T J)^-1 J^T the linearised least-squares map of the weighted
         data, eps_i the MDR's ``rel_error`` bound of point i (docs/fitting.md, "Measured
         tips").
+    fixed
+        Names of the parameters held at given values (``fixed_z0``, ``fixed_baseline``): their
+        errors are 0 and their correlations NaN; the covariance is that of the free ones.
     """
 
     tip: _Tip
@@ -626,6 +688,7 @@ class FitResult(_Fitted):
     max_depth: float
     warnings: tuple[str, ...]
     model_error: np.ndarray | None = None
+    fixed: tuple[str, ...] = ()
 
     def table(self) -> str:
         """The parameters with their standard errors, one per line, in SI units."""
@@ -756,7 +819,7 @@ def _jump(z, r, F):
             "biased by it (fit the curve on one side of it)")
 
 
-def _polish(tip, z, F, w, p):
+def _polish(tip, z, F, w, p, free=None):
     """Gauss-Newton steps from p on the exact model of a tabulated tip (:meth:`_Tip._exact`):
     (parameters, weighted residuals, bounds of the parameters' shifts by the model's error,
     the model's (dF/dE*, dF/dz_0 at E* = 1) at the returned z_0).
@@ -772,23 +835,26 @@ def _polish(tip, z, F, w, p):
     propagated linearly: |dp_k| <= sum_i |A_ki| |dF_i|/w_i, A = pinv(J), |dF_i| <= rel_error_i
     E* Phi_i the MDR's bound at point i.
     """
+    free = np.ones(len(p), bool) if free is None else free
     big, last = np.ptp(F) or 1.0, np.inf
-    scale = np.array([abs(p[0]), np.ptp(z), big, big / np.ptp(z)])
+    scale = np.array([abs(p[0]), np.ptp(z), big, big / np.ptp(z)])[free]
     for it in range(POLISH_STEPS + 1):
         g, h, eps = tip._exact(z, p[1])
         r = (p[0] * g + p[2] + p[3] * z - F) / w
-        J = np.column_stack([g, p[0] * h, np.ones_like(z), z]) / w[:, None]
+        J = (np.column_stack([g, p[0] * h, np.ones_like(z), z]) / w[:, None])[:, free]
         norms = np.linalg.norm(J, axis=0)
         norms = np.where(norms > 0, norms, 1.0)
         A = np.linalg.pinv(J / norms) / norms[:, None]
         step = -A @ r
-        sigma = np.sqrt(np.einsum("kn,kn->k", A, A) * (r @ r) / max(z.size - 4, 1))
+        sigma = np.sqrt(np.einsum("kn,kn->k", A, A) * (r @ r) / max(z.size - free.sum(), 1))
         size = float(np.max(np.abs(step) / scale))
         if (it == POLISH_STEPS or size <= POLISH_TOL or size > last / 4
                 or np.all(np.abs(step) <= POLISH_SIGMA * sigma)):
             break  # converged, or at the floor of rounding (the step stopped shrinking)
-        p, last = p + step, size
-    bound = np.abs(A) @ (eps * np.abs(p[0] * g) / w)
+        p, last = p.copy(), size
+        p[free] += step
+    bound = np.zeros(len(p))  # a fixed parameter is not moved by the model's error
+    bound[free] = np.abs(A) @ (eps * np.abs(p[0] * g) / w)
     return p, r, bound, (g, h)
 
 
@@ -828,8 +894,26 @@ def _sample_modulus(E_star, err, nu, tip_modulus, tip_nu):
             float(abs(gen.fit_sample_modulus_dE(E_star, nu, E2, nu2)) * err))
 
 
+def _fixed_values(fixed_z0, fixed_baseline):
+    """(bool mask of the free parameters of PARAMETERS, the fixed values: NaN where free)."""
+    vals = np.full(len(PARAMETERS), np.nan)
+    if fixed_z0 is not None:
+        v = float(np.ravel(as_float("fixed_z0", fixed_z0))[0])
+        if np.size(fixed_z0) != 1 or not np.isfinite(v):
+            raise ValueError(f"fixed_z0 = {fixed_z0!r} is out of range; valid: one finite "
+                             "position [m]")
+        vals[1] = v
+    if fixed_baseline is not None:
+        fb = np.ravel(as_float("fixed_baseline", fixed_baseline))
+        if fb.size != 2 or not np.isfinite(fb).all():
+            raise ValueError(f"fixed_baseline = {fixed_baseline!r} is out of range; valid: two "
+                             "finite numbers (F_0 [N], s_0 [N/m])")
+        vals[2:] = fb
+    return np.isnan(vals), vals
+
+
 def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=None,
-              sigma=None) -> FitResult:
+              sigma=None, fixed_z0=None, fixed_baseline=None) -> FitResult:
     """Fit the force curve F(z) with a tip's force law, a contact point and a linear baseline.
 
     Parameters
@@ -852,6 +936,12 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     sigma : float or array_like, optional
         Standard deviation of the force noise [N] (a number, or one per point): the residuals
         are weighted by 1/sigma and the reduced chi^2 is then about 1 for a good fit.
+    fixed_z0 : float, optional
+        The contact point z_0 [m], held fixed: only the other parameters are fitted.
+    fixed_baseline : (float, float), optional
+        The baseline (F_0 [N], s_0 [N/m]), held fixed: only E* (and z_0) are fitted.
+        With a parameter fixed, the covariance is that of the free parameters (the fixed ones
+        have error 0), the reduced chi^2 is over N minus the free parameters.
 
     Returns
     -------
@@ -871,9 +961,18 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     z, F, w = _curve(z, F, sigma)
     if z0 is not None:
         z0 = float(as_float("z0", z0))
-    p0 = _start(tip, z, F, w, z0)
+    free, fixed_vals = _fixed_values(fixed_z0, fixed_baseline)
+    # a fixed baseline: the start is the scan on the force less it; a fixed contact point:
+    # the linear solve at that one point
+    F_start = F if free[2] else F - fixed_vals[2] - fixed_vals[3] * z
+    if free[1]:
+        p0 = _start(tip, z, F_start, w, z0)
+    else:
+        params, rss = _linear_scan(tip, z, F_start, w, fixed_vals[1:2])
+        p0 = params[0] if np.isfinite(rss[0]) and params[0, 0] > 0 else None
     if p0 is None:
         _no_contact("no contact point makes the force rise with a positive modulus")
+    p0 = np.where(free, p0, fixed_vals)
 
     cache, state = {}, {}
     zeros = np.zeros(z.size)
@@ -890,34 +989,46 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
             cache[z0] = (g, h)
         return cache[z0]
 
-    def residuals(p):
+    def full(q):  # the four parameters from the free ones
+        if free.all():
+            return q
+        p = fixed_vals.copy()
+        p[free] = q
+        return p
+
+    def residuals(q):
+        p = full(q)
         g, _ = unit(p[1])
         return (p[0] * g + p[2] + p[3] * z - F) / w  # F = E* dF/dE* + F_0 + s_0 z_p
 
     ones_w, z_w = 1 / w, z / w
 
-    def jacobian_rows(p):  # the Jacobian's transpose (4 x N), MINPACK's col_deriv layout
+    def jacobian_rows(q):  # the Jacobian's transpose (free x N), MINPACK's col_deriv layout
+        p = full(q)
         g, h = unit(p[1])
-        return np.stack([g / w, p[0] * h / w, ones_w, z_w])
+        rows = np.stack([g / w, p[0] * h / w, ones_w, z_w])
+        return rows if free.all() else rows[free]
 
-    def jacobian(p):
-        return jacobian_rows(p).T
+    def jacobian(p):  # all four columns, at the four parameters
+        g, h = unit(p[1])
+        return np.stack([g / w, p[0] * h / w, ones_w, z_w]).T
 
     scale = np.array([abs(p0[0]), np.ptp(z), max(np.ptp(F), np.abs(F).max()),
                       max(np.ptp(F), np.abs(F).max()) / np.ptp(z)])
     with np.errstate(invalid="ignore"):  # numpy.select evaluates both branches of a Piecewise
         # MINPACK's lmder through scipy's leastsq: the same Levenberg-Marquardt as
         # least_squares(method="lm"), without its per-call wrappers (~1 ms of a 5 ms fit)
-        p, _, info, _, _ = leastsq(residuals, p0, Dfun=jacobian_rows, col_deriv=True,
+        q, _, info, _, _ = leastsq(residuals, p0[free], Dfun=jacobian_rows, col_deriv=True,
                                    full_output=True, xtol=1e-15, ftol=FTOL, gtol=1e-15,
-                                   maxfev=2000, diag=1 / scale)
-    res = residuals(p)
+                                   maxfev=2000, diag=1 / scale[free])
+    p = full(np.atleast_1d(q))
+    res = residuals(p[free])
     model_error = None
     if tip.tabulated:  # Levenberg-Marquardt ran on the tip's table: finish on the exact MDR
-        p, res, model_error, exact = _polish(tip, z, F, w, p)
+        p, res, model_error, exact = _polish(tip, z, F, w, p, free)
         cache.clear()
         cache[p[1]] = exact
-    dof = z.size - len(PARAMETERS)
+    dof = z.size - int(free.sum())
     chi2 = float(res @ res) / dof
     d = z - p[1]
     n_contact = int((d > 0).sum())
@@ -933,8 +1044,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
         _no_contact(f"the tip's force at the deepest point, {tip_force:.3g} N, is below "
                     f"{CONTACT_SIGNIFICANCE:g} standard deviations of the residuals "
                     f"({noise:.3g} N)")
-    cov, full = _covariance(jacobian(p))
-    cov = cov * chi2
+    cov = np.zeros((len(PARAMETERS), len(PARAMETERS)))  # the fixed parameters' rows: 0
+    cov_free, full_rank = _covariance(jacobian(p)[:, free])
+    cov[np.ix_(free, free)] = cov_free * chi2
     err = np.sqrt(np.diag(cov))
     if not p[0] >= MODULUS_SIGNIFICANCE * err[0]:
         _no_contact(f"the fitted E* = {p[0]:.3g} Pa is below {MODULUS_SIGNIFICANCE:g} of its "
@@ -942,7 +1054,7 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = cov / np.outer(err, err)
     warn = [w_["message"] for w_ in check_assumptions(tip.ratios(d_max))]
-    if not full:
+    if not full_rank:
         warn.append("the Jacobian is singular: the parameters are not all determined by the "
                     "curve (their errors are not meaningful)")
     if err[1] > Z0_POOR * d_max:
@@ -960,4 +1072,5 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
                      z=z, F=F, fitted=fitted, residuals=F - fitted, reduced_chi2=chi2,
                      weighted=sigma is not None,
                      n_contact=n_contact, max_depth=d_max, warnings=tuple(warn),
-                     model_error=model_error)
+                     model_error=model_error,
+                     fixed=tuple(n for n, f in zip(PARAMETERS, free, strict=True) if not f))

@@ -1,5 +1,5 @@
 """Fit an adhesive retract curve F(z_p) for E*, the contact point and the work of adhesion: the
-paraboloid (JKR) or the cone.
+paraboloid (JKR), the cone, the exact sphere or the power law.
 
 The model (generated from :func:`hertzmdr.derive.fit.jkr_model`, itself from the MDR's adhesive
 paraboloid in :mod:`hertzmdr.derive.adhesion`) is parametric in the contact radius a:
@@ -37,7 +37,12 @@ The cone (theta [rad] between its surface and the plane) is the same fit on the 
 adhesive relations (:func:`hertzmdr.derive.fit.adhesive_cone_model`, from the MDR's adhesive
 cone: d(a) = (pi/2) a tan(theta) - Delta l, ``fit_adhesive_cone_*``): its branch stable under
 depth control is again a > a_dc (``adhesion_cone_pull_off_radius_dc``), and every step below
-runs on a :class:`_Family` of the tip's generated relations.
+runs on a :class:`_Family` of the tip's generated relations. The exact sphere
+(``fit_adhesive_sphere_*``, from the cap's g(x) = x atanh(x/R) through the adhesive MDR;
+:func:`hertzmdr.derive.fit.adhesive_sphere_model`) and the power law c_n r^n, n > 1/2
+(``fit_adhesive_powerlaw_*``, from :func:`hertzmdr.derive.adhesion.power`) are the same fit
+again; the sphere's a_dc has no closed form and is the root of its generated dd/da
+(:func:`_sphere_pull_off_radius`), and its contact radius stays below R.
 
 Method: at a fixed kappa = rho_g/sqrt(E*) the model is E* times a shape of (z - z_0) (asserted
 in derive/fit.py), so a scan over (z_0, kappa) solves (E*, F_0, s_0) by linear least squares
@@ -52,9 +57,10 @@ residual variance.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
-from scipy.optimize import least_squares
+from scipy.optimize import brentq, least_squares
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import fit as _fit
@@ -101,13 +107,14 @@ _EPS = float(np.finfo(float).eps)
 @dataclass(frozen=True)
 class _Family:
     """One adhesive tip's generated relations (derive/fit.py), all at the tip's geometry
-    ``shape`` (R [m] of the paraboloid, theta [rad] of the cone): the depth d(E*, a, rho), its
-    slope dd/da, the force F(E*, a, rho) and its three derivatives at a fixed position, the
-    depth-controlled pull-off radius a_dc(E*, Delta gamma) and force F_dc(E*, Delta gamma), and
-    the contact radius without adhesion a(d) (a start for Newton's iteration)."""
+    ``shape`` (a tuple: (R [m],) of the paraboloid and the exact sphere, (theta [rad],) of the
+    cone, (c_n, kappa_n, n) of the power law): the depth d(E*, a, rho), its slope dd/da, the
+    force F(E*, a, rho) and its three derivatives at a fixed position, the depth-controlled
+    pull-off radius a_dc(E*, Delta gamma) and force F_dc(E*, Delta gamma), and the contact
+    radius without adhesion a(d) (a start for Newton's iteration)."""
 
     name: str
-    shape: float
+    shape: tuple
     depth: object
     depth_da: object
     force: object
@@ -119,41 +126,116 @@ class _Family:
     a_plain: object
     #: a length of the geometry [m]: the floor of a's bracket (R; 1 m for the cone, scale-free)
     length: float
+    #: the largest contact radius [m] (R of the exact sphere; inf for the others)
+    a_max: float = np.inf
 
     def ratios(self, a_max: float) -> dict[str, float]:
         """The chapter's limit ratios at the largest contact radius a_max [m]."""
-        if self.name == "paraboloid":
-            return {"a/R": a_max / self.shape}
-        return {"tan(theta)": float(np.tan(self.shape))}
+        if self.name in ("paraboloid", "exact sphere"):
+            return {"a/R": a_max / self.shape[0]}
+        if self.name == "power law":  # d/a of the non-adhesive state at a_max
+            return {"d/a": float(self.depth(1.0, a_max, 0.0)) / a_max}
+        return {"tan(theta)": float(np.tan(self.shape[0]))}
 
 
-def _generated_family(name, shape, fit, pull_off, a_plain, length) -> _Family:
-    """The _Family of the generated fit_<fit>_* relations and <pull_off>_pull_off_*_dc at the
-    geometry ``shape``; ``a_plain``(d) is the contact radius without adhesion."""
+def _generated_family(name, shape, fit, pull_off, a_plain, length, a_max=np.inf) -> _Family:
+    """The _Family of the generated fit_<fit>_* relations at the geometry ``shape`` (a tuple of
+    the relations' geometry arguments); ``pull_off``: the prefix of the generated
+    <pull_off>_pull_off_{radius,force}_dc, or a pair of functions (E*, Delta gamma) -> a_dc
+    and -> F_dc; ``a_plain``(d) is the contact radius without adhesion."""
     def at_shape(fn, baseline=False):
         if baseline:  # the force without its baseline F_0 + s_0 z_p
-            return lambda E, a, rho: fn(E, shape, a, rho, 0.0, 0.0, 0.0)
-        return lambda E, a, rho: fn(E, shape, a, rho)
+            return lambda E, a, rho: fn(E, *shape, a, rho, 0.0, 0.0, 0.0)
+        return lambda E, a, rho: fn(E, *shape, a, rho)
 
     rel = {k: getattr(gen, f"fit_{fit}_{k}")
            for k in ("depth", "depth_da", "force", "force_dE", "force_dz0", "force_ddgamma")}
-    radius_dc = getattr(gen, f"{pull_off}_pull_off_radius_dc")
-    force_dc = getattr(gen, f"{pull_off}_pull_off_force_dc")
+    if isinstance(pull_off, str):
+        radius_dc = getattr(gen, f"{pull_off}_pull_off_radius_dc")
+        force_dc = getattr(gen, f"{pull_off}_pull_off_force_dc")
+        a_dc = lambda E, dg: radius_dc(E, dg, *shape)  # noqa: E731
+        F_dc = lambda E, dg: force_dc(E, dg, *shape)  # noqa: E731
+    else:
+        a_dc, F_dc = pull_off
     return _Family(name, shape, at_shape(rel["depth"]), at_shape(rel["depth_da"]),
                    at_shape(rel["force"], baseline=True), at_shape(rel["force_dE"]),
                    at_shape(rel["force_dz0"]), at_shape(rel["force_ddgamma"]),
-                   lambda E, dg: radius_dc(E, dg, shape), lambda E, dg: force_dc(E, dg, shape),
-                   a_plain, length)
+                   a_dc, F_dc, a_plain, length, a_max)
+
+
+def _sphere_pull_off_radius(E_star, dgamma, R):
+    """a_dc [m] of the adhesive exact sphere of radius R [m]: the root of dd/da = 0
+    (``fit_adhesive_sphere_depth_da``; no closed form), vectorized over Delta gamma [J/m^2].
+
+    dd/da = g'(a) - Delta l/(2 a) increases with a (g' increases, Delta l/a ~ a^(-1/2)
+    falls), from -inf at a -> 0 to +inf at a -> R: one root. The cap's g'(a) >= 2a/R, the
+    paraboloid's, so the root lies below the JKR a_dc (``jkr_pull_off_radius_dc``), and below
+    R; bisection in log a from [1e-12, 1] of that bound (1e-16 of a in 64 steps). 0 for
+    Delta gamma <= 0 (no adhesion: no pull-off).
+    """
+    dg = np.asarray(dgamma, float)
+    if dg.ndim == 0:
+        return _sphere_pull_off_radius_one(float(E_star), float(dg), float(R))
+    rho = np.sqrt(np.maximum(dg, 0.0))
+    hi = np.minimum(gen.jkr_pull_off_radius_dc(E_star, np.maximum(dg, 0.0), R),
+                    R * (1 - 2 * _EPS))
+    lo = hi * 1e-12
+    for _ in range(64):
+        mid = np.sqrt(lo * hi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            neg = gen.fit_adhesive_sphere_depth_da(E_star, R, mid, rho) < 0
+        lo, hi = np.where(neg, mid, lo), np.where(neg, hi, mid)
+    out = np.where(dg > 0, np.sqrt(lo * hi), 0.0)
+    return out if out.ndim else float(out)
+
+
+@lru_cache(maxsize=256)
+def _sphere_pull_off_radius_one(E_star, dgamma, R):
+    """:func:`_sphere_pull_off_radius` at one Delta gamma: Brent's method on the same bracket
+    (to 4 ulp of a), remembered (a fit asks for the same (E*, Delta gamma) many times)."""
+    if not dgamma > 0:
+        return 0.0
+    rho = np.sqrt(dgamma)
+    hi = min(float(gen.jkr_pull_off_radius_dc(E_star, dgamma, R)), R * (1 - 2 * _EPS))
+
+    def slope(a):
+        return float(gen.fit_adhesive_sphere_depth_da(E_star, R, a, rho))
+
+    if not slope(hi) > 0:  # the root is the bound itself (to rounding)
+        return hi
+    return float(brentq(slope, hi * 1e-12, hi, xtol=1e-300, rtol=4 * _EPS))
 
 
 def _family(tip) -> _Family:
-    """The adhesive relations of a Paraboloid (JKR) or a Cone tip of numeric/fit.py."""
+    """The adhesive relations of a Paraboloid (JKR), a Cone, an ExactSphere or a PowerLaw tip
+    of numeric/fit.py."""
     if isinstance(tip, _fit.Paraboloid):
         R = tip.R
-        return _generated_family("paraboloid", R, "jkr", "jkr",
+        return _generated_family("paraboloid", (R,), "jkr", "jkr",
                                  lambda d: gen.hertz_contact_radius(R, d), R)
+    if isinstance(tip, _fit.ExactSphere):
+        R = tip.R
+
+        def a_dc(E, dg):
+            return _sphere_pull_off_radius(E, dg, R)
+
+        def F_dc(E, dg):
+            a_c = a_dc(E, dg)
+            return gen.fit_adhesive_sphere_force(E, R, a_c, np.sqrt(np.maximum(dg, 0.0)),
+                                                 0.0, 0.0, 0.0)
+
+        def a_plain(d):
+            return gen.sphere_lam_contact_radius(R, _fit.lam_from_depth(d, R))
+
+        return _generated_family("exact sphere", (R,), "adhesive_sphere", (a_dc, F_dc),
+                                 a_plain, R, a_max=R)
+    if isinstance(tip, _fit.PowerLaw):
+        geo = (tip.c_n, tip.kappa_n, tip.n)
+        return _generated_family(
+            "power law", geo, "adhesive_powerlaw", "adhesion_powerlaw",
+            lambda d: gen.powerlaw_contact_radius(geo[0], d, geo[1], geo[2]), 1.0)
     th = tip.theta
-    return _generated_family("cone", th, "adhesive_cone", "adhesion_cone",
+    return _generated_family("cone", (th,), "adhesive_cone", "adhesion_cone",
                              lambda d: gen.cone_contact_radius(d, th), 1.0)
 
 
@@ -205,7 +287,7 @@ def _contact_radius(d, fam, E_star, rho):
         low = fam.depth(E_star, hi, rho) < dd
         if not low.any():
             break
-        hi = np.where(low, 2 * hi, hi)
+        hi = np.where(low, np.minimum(2 * hi, 0.5 * (hi + fam.a_max)), hi)  # a < a_max
     lo = np.full(dd.shape, a_c)
     target = np.sqrt(dd - d_c)
     a = hi.copy()
@@ -407,19 +489,26 @@ def _start(fam, z, F, w, layout, z0_guess):
 
 @dataclass(frozen=True)
 class JKRTip:
-    """The tip of an adhesive fit: the paraboloid of radius R [m] in JKR contact, or the cone
-    of angle theta [rad] in adhesive contact (``paraboloid`` is then the Cone)."""
+    """The tip of an adhesive fit: the paraboloid of radius R [m] in JKR contact, the cone of
+    angle theta [rad], the exact sphere of radius R [m] or the power law c_n r^n in adhesive
+    contact (``paraboloid`` is then the Cone, the ExactSphere or the PowerLaw)."""
 
-    paraboloid: _fit.Paraboloid | _fit.Cone
+    paraboloid: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.PowerLaw
 
     @property
     def R(self) -> float:
-        """Radius of curvature [m] (the paraboloid's)."""
+        """Radius of curvature [m] (the paraboloid's, the exact sphere's)."""
         return self.paraboloid.R
 
     def describe(self) -> str:
-        if isinstance(self.paraboloid, _fit.Cone):
-            return f"cone, adhesive (MDR), theta = {self.paraboloid.theta:.6g} rad"
+        tip = self.paraboloid
+        if isinstance(tip, _fit.Cone):
+            return f"cone, adhesive (MDR), theta = {tip.theta:.6g} rad"
+        if isinstance(tip, _fit.ExactSphere):
+            return f"exact sphere (spherical cap), adhesive (MDR), R = {tip.R:.6g} m"
+        if isinstance(tip, _fit.PowerLaw):
+            return (f"power law f = c_n r^n, adhesive (MDR), c_n = {tip.c_n:.6g} m^(1-n), "
+                    f"n = {tip.n:.6g}")
         return f"paraboloid, adhesive (JKR), R = {self.R:.6g} m"
 
 
@@ -478,18 +567,28 @@ class AdhesiveFitResult(_fit._Fitted):
         return "\n".join(rows)
 
 
+#: the tips with an adhesive fit model
+ADHESIVE_TIPS = (_fit.Paraboloid, _fit.Cone, _fit.ExactSphere, _fit.PowerLaw)
+
+
 def _check_tip(tip):
-    if not isinstance(tip, _fit.Paraboloid | _fit.Cone):
+    if not isinstance(tip, ADHESIVE_TIPS):
         raise ValueError(f"tip = {tip!r} has no adhesive fit model; valid: a Paraboloid "
-                         "(hertzmdr.numeric.fit.Paraboloid, the scene's `sphere` body) or a "
-                         "Cone (the scene's `cone` body): the adhesive fit is written for these "
-                         "two only (docs/fitting.md)")
+                         "(hertzmdr.numeric.fit.Paraboloid, the scene's `sphere` body), a Cone "
+                         "(`cone`), an ExactSphere (`exact_sphere`) or a PowerLaw (`power_law`) "
+                         "with n > 1/2: the adhesive fit is written for these only "
+                         "(docs/fitting.md)")
+    if isinstance(tip, _fit.PowerLaw) and not tip.n > 0.5:
+        raise ValueError(f"the power law's n = {tip.n!r} has no adhesive pull-off (the adhesive "
+                         "force falls without bound as the contact grows); valid for the "
+                         "adhesive fit: n > 1/2")
 
 
-def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone, *, nu=None, tip_modulus=None,
-              tip_nu=None, z0=None, sigma=None) -> AdhesiveFitResult:
-    """Fit an adhesive retract curve F(z) with the JKR paraboloid or the adhesive cone, a
-    contact point, the work of adhesion and a linear baseline.
+def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.PowerLaw, *,
+              nu=None, tip_modulus=None, tip_nu=None, z0=None,
+              sigma=None) -> AdhesiveFitResult:
+    """Fit an adhesive retract curve F(z) with the JKR paraboloid, or the adhesive cone, exact
+    sphere or power law (the MDR), a contact point, the work of adhesion and a linear baseline.
 
     Parameters
     ----------
@@ -497,8 +596,9 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone, *, nu=None, tip_modulus=No
         Positions of the tip's base [m] (increasing into the sample, any order) and the force on
         the tip [N] (positive in compression, negative while adhesion pulls), as
         :func:`hertzmdr.numeric.fit.fit_curve`.
-    tip : hertzmdr.numeric.fit.Paraboloid or hertzmdr.numeric.fit.Cone
-        The tip (radius of curvature R [m], or the cone's angle theta [rad]).
+    tip : hertzmdr.numeric.fit.Paraboloid, Cone, ExactSphere or PowerLaw
+        The tip (radius of curvature R [m], the cone's angle theta [rad], the cap's radius R
+        [m], or the power law's c_n [m^(1-n)] and n > 1/2).
     nu, tip_modulus, tip_nu, z0, sigma
         As :func:`hertzmdr.numeric.fit.fit_curve` (z0 [m]: a guess of the contact point d = 0,
         added to the start scan; sigma [N]: the noise's standard deviation).

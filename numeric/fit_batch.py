@@ -94,7 +94,8 @@ def _fit_chunk(curves: Sequence[Curve], tip, options: dict) -> list[CurveFit]:
 
 
 def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_nu=None,
-               z0=None, sigma=None, workers: int | None = None,
+               z0=None, sigma=None, fixed_z0=None, fixed_baseline=None,
+               workers: int | None = None,
                progress: Callable[[int, int, int], None] | None = None) -> list[CurveFit]:
     """Fit every curve with the same tip and options, in parallel; one result per curve.
 
@@ -102,8 +103,9 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     ----------
     curves : sequence of Curve
         The curves (positions z [m], forces F [N]).
-    tip, nu, tip_modulus, tip_nu, z0, sigma
-        As :func:`hertzmdr.numeric.fit.fit_curve` (sigma [N] one number for every curve).
+    tip, nu, tip_modulus, tip_nu, z0, sigma, fixed_z0, fixed_baseline
+        As :func:`hertzmdr.numeric.fit.fit_curve` (sigma [N] one number for every curve; a
+        fixed contact point [m] or baseline (F_0 [N], s_0 [N/m]) the same for every curve).
     workers : int, optional
         Worker processes, >= 1 (default: the machine's cores). Batches of fewer than 32
         curves, and ``workers = 1``, run in this process.
@@ -120,7 +122,8 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
         workers = os.cpu_count() or 1
     if not (isinstance(workers, int) and workers >= 1):
         raise ValueError(f"workers = {workers!r} is out of range; valid: an integer >= 1")
-    options = {"nu": nu, "tip_modulus": tip_modulus, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
+    options = {"nu": nu, "tip_modulus": tip_modulus, "tip_nu": tip_nu, "z0": z0, "sigma": sigma,
+               "fixed_z0": fixed_z0, "fixed_baseline": fixed_baseline}
     total = len(curves)
     if total == 0:
         return []

@@ -143,6 +143,36 @@ def test_sphere_lam_by_newton():
             assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, got, ref)
 
 
+def test_sphere_fit_force_by_mpmath():
+    """The fit's exact-sphere force per unit E* (fit_sphere_force_dE; fit_sphere_force is E*
+    times it plus the baseline) against (5.57) in its atanh form, E* ((a^2 + R^2) atanh(a/R)
+    - a R) at a = R tanh(lam), at 30 digits: at the hard points lam -> 0 (the cancellation
+    lam - tanh(lam) ~ lam^3/3 that the printed continued fraction avoids; eight decades), both
+    sides of the split at lam = 1/2, and lam -> inf (a/R -> 1: tanh(lam) = 1 in float64 from
+    lam = 19.1), on the array and the scalar (math module) paths."""
+    R, E, F0, s0, zp = 5e-6, 2e6, 1e-9, 1e-4, 1e-6
+    lam = np.r_[np.logspace(-8, -0.5, 16), np.nextafter(0.5, 0), 0.5, np.nextafter(0.5, 1),
+                np.linspace(0.55, 3.0, 8), 19.0, 40.0]
+    arr = gen.fit_sphere_force_dE(R, lam)
+    force = gen.fit_sphere_force(E, R, lam, zp, F0, s0)
+    # 30 digits and 40 more: a/R = tanh(40) = 1 - 3.6e-35 must not round to 1
+    with mp.workdps(DPS + 40):
+        for v, got, f in zip(lam, arr, force, strict=True):
+            scalar = gen.fit_sphere_force_dE(R, float(v))
+            b = mp.tanh(mp.mpf(v))
+            Rm = mp.mpf(R)
+            a = Rm * b
+            ref = (a**2 + Rm**2) * mp.atanh(b) - a * Rm
+            # 10 eps: the direct form above lam = 1/2 rounds ~eps lam against a force
+            # ~(4/3) lam^3 (1.5 eps/lam^2 <= 6 eps, 3.5 eps measured), the continued fraction
+            # below it a few eps (positive terms only; its truncation is < 1e-18)
+            for g in (got, scalar):
+                assert abs(mp.mpf(g) / ref - 1) <= 10 * np.finfo(float).eps, (v, g, ref)
+            ref_f = mp.mpf(E) * ref + mp.mpf(F0) + mp.mpf(s0) * mp.mpf(zp)
+            # the sum of positive terms adds a few roundings to the force's 10 eps
+            assert abs(mp.mpf(f) / ref_f - 1) <= 14 * np.finfo(float).eps, (v, f, ref_f)
+
+
 @pytest.mark.parametrize("sides", [3, 4, 6])
 def test_pyramid_cone_by_polygon_area(sides):
     """The equivalent cone's cross-section (a disc of radius d/tan(theta)) has the area of the
@@ -280,6 +310,76 @@ def test_coverage_of_standard_errors(name):
     frac = _coverage(name, m, noise)
     tol = 3.5 * math.sqrt(0.6827 * 0.3173 / m)
     assert np.all(np.abs(frac - 0.6827) <= tol), (frac, tol)
+
+
+# --- fixed parameters ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["paraboloid", "exact_sphere"])
+def test_fixed_parameters_noise_free(name):
+    """A fixed contact point and/or baseline at the truth: the free parameters back to 1e-10
+    (the issue's noise-free bound), the fixed ones exactly as given with error 0 and
+    correlation NaN, and the table says "fixed"."""
+    tip = TIPS[name][0]
+    z, F = synthetic(name)
+    truth = np.array([E_TRUE, Z0_TRUE, F0_TRUE, S0_TRUE])
+    for kw, fixed in (({"fixed_z0": Z0_TRUE}, ("z_0",)),
+                      ({"fixed_baseline": (F0_TRUE, S0_TRUE)}, ("F_0", "s_0")),
+                      ({"fixed_z0": Z0_TRUE, "fixed_baseline": (F0_TRUE, S0_TRUE)},
+                       ("z_0", "F_0", "s_0"))):
+        res = fit_curve(z, F, tip, **kw)
+        assert res.fixed == fixed
+        on = np.array([p in fixed for p in ("E_star", "z_0", "F_0", "s_0")])
+        assert np.all(res.values[on] == truth[on]) and np.all(res.errors[on] == 0)
+        assert np.isnan(res.correlation[on]).all()
+        assert res.values[0] == pytest.approx(E_TRUE, rel=1e-10)
+        if "z_0" not in fixed:
+            assert abs(res.values[1] - Z0_TRUE) <= 1e-10 * TIPS[name][2]
+        assert sum(ln.split()[2] == "fixed" for ln in res.table().splitlines()[1:5]) \
+            == len(fixed)
+
+
+def test_fixed_contact_point_is_linear_least_squares():
+    """With z_0 fixed the model is linear in (E*, F_0, s_0): the fit and its covariance are
+    numpy.linalg.lstsq's on the columns (dF/dE*, 1, z) with s^2 (A^T A)^-1, s^2 the residual
+    variance over N - 3 (an independent route: no Levenberg-Marquardt, no SVD of R); with the
+    baseline fixed too, E* alone, over N - 1."""
+    tip = TIPS["exact_sphere"][0]
+    z, F = synthetic("exact_sphere", noise=2e-10, seed=7)
+    z0 = Z0_TRUE + 3e-9  # not the truth: any fixed contact point
+    g = tip.basis(z, z0)
+    for kw, cols in (({}, [g, np.ones_like(z), z]),
+                     ({"fixed_baseline": (F0_TRUE, S0_TRUE)}, [g])):
+        A = np.column_stack(cols)
+        rhs = F - (F0_TRUE + S0_TRUE * z if kw else 0.0)
+        coef, rss, *_ = np.linalg.lstsq(A, rhs, rcond=None)
+        cov = float(rss[0]) / (z.size - A.shape[1]) * np.linalg.inv(A.T @ A)
+        res = fit_curve(z, F, tip, fixed_z0=z0, **kw)
+        free = [0] + ([] if kw else [2, 3])
+        # the same least squares solved two ways: agreement to ~1e-9 of each value (the
+        # conditioning of the columns, ~1e5, times the rounding of sum(r^2)); the errors to 1e-6
+        np.testing.assert_allclose(res.values[free], coef, rtol=1e-8)
+        np.testing.assert_allclose(res.errors[free], np.sqrt(np.diag(cov)), rtol=1e-6)
+        assert res.values[1] == z0 and res.errors[1] == 0
+        assert res.reduced_chi2 == pytest.approx(float(rss[0]) / (z.size - A.shape[1]),
+                                                 rel=1e-8)
+
+
+@pytest.mark.parametrize("kw, message", [
+    ({"fixed_z0": float("nan")}, "fixed_z0"),
+    ({"fixed_z0": [1.0, 2.0]}, "fixed_z0 = .* valid: one finite position"),
+    ({"fixed_baseline": (1.0,)}, "fixed_baseline = .* valid: two finite numbers"),
+    ({"fixed_baseline": (1.0, float("inf"))}, "fixed_baseline = .* valid: two finite"),
+])
+def test_fixed_parameters_bad_input(kw, message):
+    z, F = synthetic("paraboloid")
+    with pytest.raises(ValueError, match=message):
+        fit_curve(z, F, TIPS["paraboloid"][0], **kw)
+
+
+def test_fixed_contact_point_without_contact_is_one_clear_error():
+    z, F = synthetic("paraboloid")
+    with pytest.raises(NoContactError, match="no contact"):
+        fit_curve(z, F, TIPS["paraboloid"][0], fixed_z0=float(z[-1]) + 1.0)
 
 
 def test_no_contact_is_one_clear_error():

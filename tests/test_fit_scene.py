@@ -295,6 +295,47 @@ def test_noise_free_pyramid_curve_by_the_shoelace_route(tmp_path, capsys):
     assert abs(r.E_star / E_star - 1) < 1e-10 and abs(r.z_0 / z0 - 1) < 1e-10
 
 
+def test_fixed_contact_point_and_baseline(tmp_path, capsys):
+    """[fit] fixed_contact_point and fixed_baseline (and --fix-z0, --fix-baseline, which
+    override them) hold those parameters: the table prints them "fixed", at the given values;
+    the fit is fit_curve's with fixed_z0, fixed_baseline; with --adhesion, one line, exit 2."""
+    z, F = fit_io.read_columns(FIT_CURVE, ("height", "force"), (1e-9, 1e-12))
+    (tmp_path / FIT_CURVE.name).write_text(FIT_CURVE.read_text())
+    base = f'curve = "{FIT_CURVE.name}"\ncolumns = ["height", "force"]\nunits = ["nm", "pN"]\n'
+    free = fit.fit_curve(z, F, fit.Pyramid(alpha=EXAMPLE_ALPHA, sides=EXAMPLE_SIDES), nu=0.5)
+    z0, F0, s0 = (float(v) for v in free.values[1:])
+    path = tmp_path / "s.toml"
+    path.write_text(_scene_text(base + f'fixed_contact_point = "{z0!r} m"\n'
+                                f'fixed_baseline = ["{F0!r} N", "{s0!r} N/m"]\n'))
+    rc, out, err = _fit_out(capsys, "--scene", path)
+    assert rc == 0, err
+    rows = {ln.split()[0]: ln.split() for ln in out.splitlines() if ln.split()
+            and ln.split()[0] in ("E_star", "z_0", "F_0", "s_0")}
+    assert rows["z_0"][2] == rows["F_0"][2] == rows["s_0"][2] == "fixed"
+    assert rows["E_star"][2] != "fixed"
+    ref = fit.fit_curve(z, F, fit.Pyramid(alpha=EXAMPLE_ALPHA, sides=EXAMPLE_SIDES), nu=0.5,
+                        fixed_z0=z0, fixed_baseline=(F0, s0))
+    assert float(rows["E_star"][1]) == pytest.approx(ref.E_star, rel=1e-6)  # 7 digits printed
+    # at the free fit's own optimum, E* does not move, and its error is at most the free one's
+    assert ref.E_star == pytest.approx(free.E_star, rel=1e-9)
+    assert ref.errors[0] <= free.errors[0]
+    # the command line overrides the table
+    rc, out2, err = _fit_out(capsys, "--scene", path, "--fix-z0", f"{z0 + 1e-9!r} m")
+    assert rc == 0, err
+    row = next(ln for ln in out2.splitlines() if ln.startswith("z_0 "))
+    assert float(row.split()[1]) == pytest.approx(z0 + 1e-9, rel=1e-6) and "fixed" in row
+    rc, out3, err = _fit_out(capsys, tmp_path / FIT_CURVE.name, "--scene", FIT_SCENE,
+                             "--fix-baseline", "1 nN", "1 nN")
+    assert rc == 2 and err.count("\n") == 1 and "--fix-baseline" in err, err
+    plain = tmp_path / "plain.csv"
+    plain.write_text("z [m], F [N]\n" + "".join(f"{float(a)!r}, {float(b)!r}\n"
+                                                 for a, b in zip(z, F, strict=True)))
+    bare = tmp_path / "bare.toml"
+    bare.write_text(_scene_text(None))
+    rc, _, err = _fit_out(capsys, plain, "--scene", bare, "--fix-z0", "1 um", "--adhesion")
+    assert rc == 2 and err.count("\n") == 1 and "valid only without --adhesion" in err, err
+
+
 GOOD = 'curve = "c.csv"\n'
 
 
@@ -312,6 +353,13 @@ GOOD = 'curve = "c.csv"\n'
     (GOOD + 'depth_range = "1 um"\n', "fit.depth_range", "list of two depths"),
     (GOOD + 'contact_point = "1 s"\n', "fit.contact_point", ""),
     (GOOD + 'sigma = "-1 nN"\n', "fit.sigma", "must be > 0"),
+    (GOOD + 'fixed_contact_point = "1 N"\n', "fit.fixed_contact_point", "a length"),
+    (GOOD + 'fixed_contact_point = "1 um"\ncontact_point = "1 um"\n',
+     "fit.fixed_contact_point", "exclude each other"),
+    (GOOD + 'fixed_baseline = "1 nN"\n', "fit.fixed_baseline", "[F_0, s_0]"),
+    (GOOD + 'fixed_baseline = ["1 nN", "1 nN"]\n', "fit.fixed_baseline[1]",
+     "a force per length"),
+    (GOOD + 'fixed_baseline = ["1 m", "1 N/m"]\n', "fit.fixed_baseline[0]", "a force"),
     ("fit = 3\n", "fit", "must be a table"),
 ])
 def test_bad_fit_keys_are_one_line(tmp_path, capsys, table, key, words):

@@ -29,7 +29,8 @@ class SceneError(ValueError):
 MATERIAL_KEYS = {"E", "nu", "rigid"}
 TOP_KEYS = {"title", "effects", "body", "load", "accuracy", "model", "interface", "fit"}
 #: the keys of a ``[fit]`` table (docs/fitting.md)
-FIT_KEYS = {"curve", "columns", "units", "modulus", "depth_range", "contact_point", "sigma"}
+FIT_KEYS = {"curve", "columns", "units", "modulus", "depth_range", "contact_point", "sigma",
+            "fixed_contact_point", "fixed_baseline"}
 
 
 @dataclass
@@ -117,6 +118,10 @@ class FitSpec:
         A guess of the contact point z_0 [m].
     sigma : float or None
         The force noise's standard deviation [N].
+    fixed_contact_point : float or None
+        The contact point z_0 [m] held fixed (not fitted).
+    fixed_baseline : tuple of float or None
+        The baseline (F_0 [N], s_0 [N/m]) held fixed (not fitted).
     """
 
     curve: Path | None = None
@@ -126,6 +131,8 @@ class FitSpec:
     depth_range: tuple[float, float] | None = None
     contact_point: float | None = None
     sigma: float | None = None
+    fixed_contact_point: float | None = None
+    fixed_baseline: tuple[float, float] | None = None
 
 
 @dataclass
@@ -393,6 +400,21 @@ class _Reader:
                                                  "fit.contact_point")
         if "sigma" in ft:
             out["sigma"] = self.positive(ft["sigma"], "force", "fit.sigma")
+        if "fixed_contact_point" in ft:
+            if "contact_point" in ft:
+                self.fail("fit.fixed_contact_point", "and fit.contact_point (a guess) exclude "
+                          "each other: give one")
+            out["fixed_contact_point"] = self.quantity(ft["fixed_contact_point"], "length",
+                                                       "fit.fixed_contact_point")
+        if "fixed_baseline" in ft:
+            fb = ft["fixed_baseline"]
+            if not isinstance(fb, list) or len(fb) != 2:
+                self.fail("fit.fixed_baseline", "must be a list of the baseline's force at "
+                          "z = 0 and its slope [F_0, s_0], e.g. [\"2 nN\", \"0.1 mN/m\"]; got "
+                          f"{fb!r}")
+            out["fixed_baseline"] = (
+                self.quantity(fb[0], "force", "fit.fixed_baseline[0]"),
+                self.quantity(fb[1], "force_per_length", "fit.fixed_baseline[1]"))
         return FitSpec(**out)
 
     def body(self, b: dict, i: int) -> Body:

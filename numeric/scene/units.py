@@ -21,6 +21,7 @@ DIMENSIONS = {
     "density": ("kg/m^3", "a density"),
     "velocity": ("m/s", "a velocity"),
     "surface_energy": ("J/m^2", "an energy per area (work of adhesion)"),
+    "force_per_length": ("N/m", "a force per length (a force baseline's slope)"),
 }
 
 #: the SI prefixes, largest first: the one table for reading units (:data:`FAST`) and for
