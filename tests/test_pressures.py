@@ -31,9 +31,10 @@ def hertzian(p0, a):
 
 
 # r/a = 0.99 is the closest the default run goes: at 0.999 the outer integrand varies on a
-# scale of 0.05 near phi = pi/2 and the check costs a minute (HERTZMDR_SWEEP=full runs it)
-@pytest.mark.parametrize("r_over_a", ["0", "0.25", "0.7", "0.99"]
-                         + (["0.999"] if FULL else []))
+# scale of 0.05 near phi = pi/2 and the check costs a minute; 0.25 (8 s) repeats what the
+# centre and 0.7 show, that u does not depend on r (HERTZMDR_SWEEP=full runs both)
+@pytest.mark.parametrize("r_over_a", ["0", "0.7", "0.99"]
+                         + (["0.25", "0.999"] if FULL else []))
 def test_punch_displacement_by_kernel(r_over_a):
     E, a, p0 = 2.1e11, 3e-3, 4.5e8
     with mp.workdps(DPS):

@@ -1042,7 +1042,9 @@ def check_von_mises_field(case, route, eff, name, ds):
     assert sv.shape == (len(z), len(x))
     j = int(np.argmin(np.abs(x)))
     assert x[j] == 0
-    k = [i for i in picks(len(z), 6) if z[i] > 0]
+    # six depths of the column, four in CI (both ends and two between; z = 0 left out): the
+    # route's axis stresses of a superposed kind are quadratures, ~3 s a depth for a power law
+    k = [i for i in picks(len(z), 6 if FULL else 4) if z[i] > 0]
     refs = [route.axis(z[i], max(ds), case.nu) for i in k]
     tol = stress_tol(case, eff)
     close_field([sv[i, j] for i in k], [abs(s[0] - s[1]) for s in refs], tol, name)

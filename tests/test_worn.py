@@ -156,7 +156,7 @@ def test_stable_force_at_small_depth():
 
 
 # field points of the 3-D check: (name, r/a or r/b), on the flat, at the kink, on the parabola,
-# at the rim, outside; CI runs the first two and the outside one
+# at the rim, outside; CI runs the first two (inside: d - f(r); outside: the derived form)
 POINTS_3D = (("flat tip", "b", 0.5), ("outside", "a", 2.0), ("parabola", "a", 0.9),
              ("centre", "b", 0.0), ("kink", "b", 1.0), ("rim", "a", 1.0), ("far", "a", 10.0))
 
@@ -177,7 +177,7 @@ def test_against_3d_elasticity():
         def p(rho):
             return gen_mp.worn_pressure(E, Rv, a, b, rho)
 
-        for name, unit, t in POINTS_3D[:n_points(len(POINTS_3D), 3)]:
+        for name, unit, t in POINTS_3D[:n_points(len(POINTS_3D), 2)]:
             rr = t * (a if unit == "a" else b)
             u = uz_rings(p, rr, a, E, splits=(b,))
             if rr > a:
