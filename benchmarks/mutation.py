@@ -52,6 +52,8 @@ RUNS = ROOT / "benchmarks" / "mutation_runs"
 SCENE_NOTES = ROOT / "benchmarks" / "mutation_notes_scene.toml"
 #: folders besides tests/ that the tests read (the example scenes, docs/scenes.md)
 EXTRA = ("examples", "docs")
+#: the oracle memo of a run (tests/oracle.py's memo), in its scratch folder
+MEMO = "oracle_memo.jsonl"
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
 
 # test_stress.py but its 2-D quadrature sweep test_hertz_field_by_superposition (60 s for each
@@ -353,7 +355,9 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
     t = time.perf_counter()
     with open(work / "run.log", "a" if resumed else "w") as log:
         proc = subprocess.run(cmd, cwd=work, stdout=log, stderr=subprocess.STDOUT,
-                              env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1"})
+                              env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1",
+                                   # the oracle memo (tests/oracle.py), this run's only
+                                   "HERTZMDR_ORACLE_MEMO": str(work / MEMO)})
     seconds = time.perf_counter() - t
     if proc.returncode != 0:
         tail = (work / "run.log").read_text()[-2000:]

@@ -19,7 +19,7 @@ from hertzmdr.derive import line_stress as dl
 from hertzmdr.numeric import _generated_mp as gen_mp
 from hertzmdr.numeric import line_stress as ls
 
-from oracle import FULL, WORST
+from oracle import FULL, WORST, memo
 
 X, Z, P = dl.x, sp.Symbol("z_s", positive=True), dl.F_L
 
@@ -73,6 +73,7 @@ def _kernel(comp, deriv=""):
     return sp.lambdify((X, dl.z), k, "mpmath")
 
 
+@memo  # a mutation run's memo (tests/oracle.py): derive/ and mpmath only
 def superposed(comp, x, z, deriv=""):
     """int_-1^1 sqrt(1 - s^2) K(x - s, z) ds (b = 1, p0 = 1): tanh-sinh, split at the strip's
     edges (the pressure's square-root ends) and around the field point (the kernel's peak of
@@ -243,6 +244,7 @@ def test_plane_strain_and_principal_stresses():
 # -- maxima -----------------------------------------------------------------------------------
 
 @cache
+@memo
 def _tau1_root():
     """(z/b, tau_1/p0) at the root of d(tau_1)/dz on the axis: mp.findroot on the 30-digit
     superposition (computed once, shared by the tests below)."""
@@ -255,6 +257,7 @@ def _tau1_root():
 
 
 @cache
+@memo
 def _orthogonal_root():
     """(x/b, z/b, |tau_xz|/p0) at the root of the gradient of tau_xz, x > 0: mp.findroot on the
     30-digit superposition (computed once, shared)."""
@@ -267,6 +270,7 @@ def _orthogonal_root():
 
 
 @cache
+@memo
 def _vm_root(nu_s, start):
     """(z/b, sigma_vM/p0) at the root of d(sigma_vM^2)/dz on the axis, sigma_yy =
     nu (sigma_xx + sigma_zz): mp.findroot on the 30-digit superposition, the kernel
