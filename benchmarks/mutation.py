@@ -561,8 +561,11 @@ def main(argv: list[str] | None = None) -> int:
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
-    text = report(runs, [a for a in argv if a not in ("--report-only", "--resume")], total,
-                  args.report_only)
+    shown = [a for a in argv if a not in ("--report-only", "--resume")]
+    if "--work" in shown:  # a scratch folder is no part of the command that makes the page
+        i = shown.index("--work")
+        del shown[i:i + 2]
+    text = report(runs, shown, total, args.report_only)
     if missing:
         text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)
                  + " yet.\n")
