@@ -127,7 +127,8 @@ _MEMO_SIZE = [-1]  # the file's size when last read
 
 def _code(x):
     """A JSON-able exact form of an argument or value: mpf by its binary digits at full
-    precision, float by its hex, ints and strings as they are, sequences element-wise; None
+    precision, float by its hex, ints and strings as they are, sequences and dicts
+    element-wise; None
     for what has no such form (a callable: that call is not memoized)."""
     if isinstance(x, mp.mpf):
         sign, man, exp, bc = x._mpf_
@@ -140,6 +141,9 @@ def _code(x):
         return ["int", int(x)]
     if isinstance(x, float | np.floating):
         return ["float", float(x).hex()]
+    if isinstance(x, dict):
+        items = _code(list(x.items()))
+        return None if items is None else ["dict", items[1]]
     if isinstance(x, list | tuple):
         items = [_code(v) for v in x]
         return None if any(v is None and w is not None for v, w in zip(items, x, strict=True)) \
@@ -162,6 +166,8 @@ def _decode(c):
     if tag == "float":
         return float.fromhex(c[1])
     items = [_decode(v) for v in c[1]]
+    if tag == "dict":
+        return dict(items)
     return tuple(items) if tag == "tuple" else items
 
 

@@ -213,6 +213,22 @@ def test_spheroidal_coordinates():
     assert np.allclose(lhs, 1, rtol=1e-13)
 
 
+def test_spheroidal_broadcasts_its_inputs():
+    """spheroidal() broadcasts r, z and a together (each of them the one array in turn, and a
+    column of radii against a row of points): the shape of the result, and each value the
+    scalar call's (the same operations on the same numbers: equal to the last bit)."""
+    v = np.array([0.2, 0.5, 1.5])
+    col = np.array([[1.0], [2.0]])
+    for r_, z_, a_, shape in ((v, 0.3, 1.0, (3,)), (0.3, v, 1.0, (3,)), (0.7, 0.3, v, (3,)),
+                              (v, v[::-1], col, (2, 3))):
+        out = stress.spheroidal(r_, z_, a_)
+        r_b, z_b, a_b = np.broadcast_arrays(r_, z_, a_)
+        for k in np.ndindex(*shape):
+            one = stress.spheroidal(float(r_b[k]), float(z_b[k]), float(a_b[k]))
+            for got, want in zip(out, one, strict=True):
+                assert got.shape == shape and got[k] == want, (k, shape)
+
+
 def test_field_on_the_axis_is_the_derived_axis_field():
     """The literature form at eta = 1, chi = 0, xi = z/a is the derived (5.48), (5.49), exactly."""
     s = sp.Symbol("s", positive=True)
