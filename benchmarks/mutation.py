@@ -33,6 +33,12 @@ empty memo (the scratch folder is made anew); ``--resume`` keeps it. Measured on
 line_stress.py (the 177 mutants its first run checked without the memo, checked again with it,
 same tests, same machine, durations from mutmut's ``.meta``): median 9.0 s -> 0.71 s a mutant,
 3135 s -> 139 s in all (the rest is the tests of numeric/ themselves and the fork).
+mutmut's own settings stay as they are: ``forkserver_warmup = "collect"`` (its default) already
+imports the tests, SymPy and the derivations once in the fork server; the time limit of a
+mutant (``timeout_multiplier`` 15 times its tests' time in the stats pass, the pass that fills
+the memo and so the slowest) only gets more generous with the memo; the test lists above leave
+out the sweeps (2-D quadratures, minutes a mutant). What remains a mutant's time is the tests'
+own calls of numeric/ (test_stress's superposed maximum, 10 s of numeric work, is the largest).
 
 Each surviving mutant is printed with its line; a note for it comes from
 benchmarks/mutation_notes.toml (why it cannot be killed), matched by module, original line and

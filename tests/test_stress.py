@@ -384,7 +384,8 @@ def test_superposed_plane_and_its_maxima():
     k = np.unravel_index(int(np.argmax(tau)), tau.shape)
     value, x, z = f.maximum("max_shear")
     assert (x, z) == (f.x[k[1]], f.z[k[0]]) and abs(value - tau[k]) < 1e-12
-    with pytest.raises(ValueError, match="criterion"):
+    with pytest.raises(ValueError, match=r"^criterion = 'tresca'; valid: 'von_mises', "
+                                         r"'max_shear', 'orthogonal_shear'$"):
         f.maximum("tresca")
     with pytest.raises(ValueError, match="n = 1"):
         stress.superposed_plane(hp, 1.0, 0.3, n=1)
@@ -621,7 +622,8 @@ def test_superposed_maximum_of_the_orthogonal_shear_within_its_bound():
     bound) under the Hertz pressure (a = 2 mm, p0 = 1 GPa) on a 5-point grid: the orthogonal
     shear against the derived closed form (hertz_max_orthogonal_shear, exact: |tau_rz| =
     0.213891 p0 at r = 0.848 a, z = 0.351 a), and von Mises against 2 tau_1 on the axis
-    (axis_max_shear, Fig. 5.8): the actual error within the bound it reports, the bound below
+    (axis_max_shear, Fig. 5.8), and the maximum shear (sigma_1 - sigma_3)/2 against tau_1 there
+    (sigma_rr = sigma_tt on the axis): the actual error within the bound it reports, the bound below
     1e-2 (the grid alone misses by about that), the place within 0.02 a (the field is flat at
     its maximum: an error e in the value allows ~sqrt(e) a in the place)."""
     aa, p00, nu_ = 2e-3, 1e9, 0.3
@@ -631,12 +633,13 @@ def test_superposed_maximum_of_the_orthogonal_shear_within_its_bound():
     tau, r0, z0 = stress.hertz_max_orthogonal_shear()
     zt, t1 = stress.axis_max_shear(nu_)
     for crit, ref, x_ref, z_ref in (("orthogonal_shear", tau, r0, z0),
-                                    ("von_mises", 2 * t1, 0.0, zt)):
+                                    ("von_mises", 2 * t1, 0.0, zt), ("max_shear", t1, 0.0, zt)):
         v, x, z, bound = stress.superposed_maximum(p, aa, nu_, crit, plane)
         err = abs(v / (ref * p00) - 1)
         assert err <= bound < 1e-2, (crit, err, bound)
         assert abs(abs(x) / aa - x_ref) < 0.02 and abs(z / aa - z_ref) < 0.02, (crit, x, z)
-    with pytest.raises(ValueError, match="criterion = 'tresca'"):
+    with pytest.raises(ValueError, match=r"^criterion = 'tresca'; valid: 'von_mises', "
+                                         r"'max_shear', 'orthogonal_shear'$"):
         stress.superposed_maximum(p, aa, nu_, "tresca", plane)
     with pytest.raises(ValueError, match="^a"):
         stress.superposed_maximum(p, -aa, nu_, "von_mises", plane)
