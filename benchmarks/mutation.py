@@ -32,7 +32,9 @@ runs the variable is unset and every test computes every reference. A fresh run 
 empty memo (the scratch folder is made anew); ``--resume`` keeps it. Measured on
 line_stress.py (the 177 mutants its first run checked without the memo, checked again with it,
 same tests, same machine, durations from mutmut's ``.meta``): median 9.0 s -> 0.71 s a mutant,
-3135 s -> 139 s in all (the rest is the tests of numeric/ themselves and the fork).
+3135 s -> 139 s in all (the rest is the tests of numeric/ themselves and the fork). The
+reference tests of test_ellipse_stress.py (the 20-digit superposition, the polar routes, the
+40-digit axis maxima: seven tests) take 32.9 s with the memo empty and 3.0 s with it filled.
 mutmut's own settings stay as they are: ``forkserver_warmup = "collect"`` (its default) already
 imports the tests, SymPy and the derivations once in the fork server; the time limit of a
 mutant (``timeout_multiplier`` 15 times its tests' time in the stats pass, the pass that fills
