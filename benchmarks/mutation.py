@@ -237,6 +237,15 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> 
         cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
         if cfg == mutmut_config(module, tests):
             return work
+        # tests added to the module's list since the run began: it goes on with the tests it
+        # began with (a changed test selection makes mutmut check every mutant again); the
+        # survivors the added tests kill are its "since" notes
+        sel = "pytest_add_cli_args_test_selection"
+        if ({**cfg, sel: None} == {**mutmut_config(module, tests), sel: None}
+                and set(cfg[sel]) <= set(tests)):
+            print(f"  --resume: numeric/{module} goes on with the {len(cfg[sel])} tests its "
+                  "run began with", flush=True)
+            return work
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
     shutil.copytree(NUMERIC, work / PACKAGE, ignore=shutil.ignore_patterns("__pycache__"))
@@ -371,6 +380,9 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
 def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
                resume: bool = False) -> Run:
     work = scratch(module, tests, base, resume)
+    # the tests of the run (a resumed run keeps those it began with: see scratch)
+    cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
+    tests = list(cfg["pytest_add_cli_args_test_selection"])
     resumed = (work / "run.log").exists()
     mutmut = str(Path(sys.executable).with_name("mutmut"))
     cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", "1"]
