@@ -34,6 +34,8 @@ import sympy as sp
 from hertzmdr.derive import boussinesq as bq
 from hertzmdr.derive.symbols import F, nu
 
+from oracle import memo
+
 COMPONENTS = ("xx", "yy", "zz", "xy", "xz", "yz")
 
 
@@ -71,6 +73,7 @@ def _psi_breaks(t):
     return np.array(sorted(br))
 
 
+@memo  # a mutation run's memo (tests/oracle.py): derive/'s kernel only
 def superposed_fast(nu_, a, b, x, y, z, n=16):
     """The six stresses {comp: sigma/p0} at (x, y, z), a >= b, under the unit elliptical
     pressure (p0 = 1), by Gauss-Legendre of the derived point-force field in polar
@@ -130,6 +133,7 @@ def _gauss_mp(n):
     return nodes, weights
 
 
+@memo  # a mutation run's memo (tests/oracle.py): derive/'s kernel only
 def superposed_polar_mp(nu_, a, b, x, y, z, n=14):
     """superposed_fast in mpmath at the working precision (call inside mp.workdps): the same
     panels and substitutions, n-point Gauss-Legendre on each; all six components. Minutes a
@@ -176,6 +180,7 @@ def superposed_polar_mp(nu_, a, b, x, y, z, n=14):
     return dict(zip(COMPONENTS, total, strict=True))
 
 
+@memo  # a mutation run's memo (tests/oracle.py): derive/'s kernel only
 def superposed_beside(nu_, a, b, x, y, z, n=16, n_psi=64, refine=12):
     """The six stresses {comp: sigma/p0} at a point beside the contact (x^2/a^2 + y^2/b^2 >
     1, z > 0), the same polar superposition about its foot (x, y): the rays psi that meet

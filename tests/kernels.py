@@ -15,6 +15,8 @@ from functools import cache
 
 import mpmath as mp
 
+from oracle import memo
+
 
 def uz_axisymmetric(p_gap: Callable[[mp.mpf], mp.mpf], r, a, E_star,
                     method: str = "gauss-legendre", rho_splits=(),
@@ -184,6 +186,7 @@ def tau_rz_rings(p: Callable[[mp.mpf], mp.mpf], r, z, a, degree: int = 5) -> lis
     return out
 
 
+@memo  # a mutation run's memo (tests/oracle.py): the point-force field and mpmath only
 def hertz_tau_rz(r, z, degree: int = 5) -> list:
     """:func:`tau_rz_rings` under the unit Hertz pressure (1 - rho^2)^(1/2) on the unit disc
     (its factored form keeps the rim exact)."""

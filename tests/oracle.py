@@ -9,7 +9,11 @@ reports the worst point, and records the worst error per function for the summar
 
 from __future__ import annotations
 
+import functools
+import hashlib
+import inspect
 import itertools
+import json
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -21,6 +25,10 @@ import numpy as np
 WORST: dict[str, float] = {}
 
 FULL = os.environ.get("HERTZMDR_SWEEP", "") == "full"
+
+#: the file of the oracle memo (:func:`memo`): set only by benchmarks/mutation.py, for its
+#: mutation runs; unset in every other run, where every reference is computed
+MEMO_FILE = os.environ.get("HERTZMDR_ORACLE_MEMO", "")
 
 
 def n_points(full: int, ci: int) -> int:
@@ -99,3 +107,114 @@ def assert_close(value, ref, rtol: float, what: str = "") -> float:
     err = float(abs((mp.mpf(value) - ref) / ref)) if ref != 0 else float(abs(mp.mpf(value)))
     assert err <= rtol, f"{what}: relative error {err:.3g} > {rtol:.3g} ({value} vs {ref})"
     return err
+
+
+# -- the oracle memo of mutation runs ------------------------------------------------------------
+#
+# mutmut 3 runs the tests of each mutant in a fresh process forked from one that has only
+# collected them, so every mutant recomputed the 30-digit references, which do not depend on the
+# mutated module. In a mutation run (HERTZMDR_ORACLE_MEMO names a file; benchmarks/mutation.py
+# sets it) a reference decorated with @memo is looked up there by its function (name and source)
+# and its exact arguments and working precision; the clean-test pass of the run computes and
+# writes each one, the mutants read them. Only for references that are pure functions of their
+# arguments and independent of numeric/ (a mutant cannot change them; if it changes their
+# arguments, the lookup misses and the reference is computed). Without the variable @memo
+# returns the function itself.
+
+_MEMO: dict[str, object] = {}
+_MEMO_SIZE = [-1]  # the file's size when last read
+
+
+def _code(x):
+    """A JSON-able exact form of an argument or value: mpf by its binary digits at full
+    precision, float by its hex, ints and strings as they are, sequences and dicts
+    element-wise; None
+    for what has no such form (a callable: that call is not memoized)."""
+    if isinstance(x, mp.mpf):
+        sign, man, exp, bc = x._mpf_
+        return ["mpf", sign, hex(man), exp, bc]
+    if isinstance(x, mp.mpc):
+        return ["mpc", _code(x.real), _code(x.imag)]
+    if isinstance(x, bool | str) or x is None:
+        return x
+    if isinstance(x, int | np.integer):
+        return ["int", int(x)]
+    if isinstance(x, float | np.floating):
+        return ["float", float(x).hex()]
+    if isinstance(x, dict):
+        items = _code(list(x.items()))
+        return None if items is None else ["dict", items[1]]
+    if isinstance(x, list | tuple):
+        items = [_code(v) for v in x]
+        return None if any(v is None and w is not None for v, w in zip(items, x, strict=True)) \
+            else ["tuple" if isinstance(x, tuple) else "list", items]
+    return None
+
+
+def _decode(c):
+    if not isinstance(c, list):
+        return c
+    tag = c[0]
+    if tag == "mpf":
+        # the stored binary digits as they are (not rounded to the caller's precision: a value
+        # made inside a function's mp.workdps keeps its digits after it returns)
+        return mp.make_mpf((c[1], mp.libmp.MPZ(int(c[2], 16)), c[3], c[4]))
+    if tag == "mpc":
+        return mp.mpc(_decode(c[1]), _decode(c[2]))
+    if tag == "int":
+        return c[1]
+    if tag == "float":
+        return float.fromhex(c[1])
+    items = [_decode(v) for v in c[1]]
+    if tag == "dict":
+        return dict(items)
+    return tuple(items) if tag == "tuple" else items
+
+
+def _read_memo() -> None:
+    try:
+        size = os.path.getsize(MEMO_FILE)
+    except OSError:
+        return
+    if size == _MEMO_SIZE[0]:
+        return
+    with open(MEMO_FILE) as fh:
+        for line in fh:
+            try:  # a line cut short (a mutant's run stopped mid-write) is skipped
+                row = json.loads(line)
+                _MEMO[row["key"]] = row["value"]
+            except (ValueError, KeyError):
+                continue
+    _MEMO_SIZE[0] = size
+
+
+def memo(func: Callable) -> Callable:
+    """``func`` memoized on disk during a mutation run (see above), else ``func`` itself."""
+    if not MEMO_FILE:
+        return func
+    try:  # its source text (a changed reference is a new one), else its bytecode
+        text = inspect.getsource(func).encode()
+    except (OSError, TypeError):
+        text = func.__code__.co_code
+    source = hashlib.sha256(text).hexdigest()[:16]
+    name = f"{func.__module__}.{func.__qualname__}:{source}"
+
+    @functools.wraps(func)
+    def memoized(*args, **kwargs):
+        code = _code([list(args), sorted(kwargs.items())])
+        if code is None:
+            return func(*args, **kwargs)
+        key = json.dumps([name, mp.mp.prec, code])
+        if key not in _MEMO:
+            _read_memo()
+        if key in _MEMO:
+            return _decode(_MEMO[key])
+        value = func(*args, **kwargs)
+        stored = _code(value)
+        if stored is not None:
+            _MEMO[key] = stored
+            with open(MEMO_FILE, "a") as fh:  # one line per value, appended
+                fh.write(json.dumps({"key": key, "value": stored}) + "\n")
+        return value
+
+    return memoized

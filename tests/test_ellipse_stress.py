@@ -24,7 +24,7 @@ from hertzmdr.numeric import line_stress, scene, stress
 from hertzmdr.numeric.scene.kinds.elliptic import EllipseStresses
 
 from named import assert_inputs_named
-from oracle import FULL
+from oracle import FULL, memo
 
 COMPONENTS = ("xx", "yy", "zz", "xy", "xz", "yz")
 
@@ -49,6 +49,7 @@ def _splits(c, n=3):
     return sorted(pts)
 
 
+@memo  # a mutation run's memo (tests/oracle.py): derive/ and mpmath only
 def superposed(comp, nu_, a, b, x, y, z):
     """sigma_comp at (x, y, z) under the unit elliptical pressure (p0 = 1): the derived
     point-force field integrated over the ellipse, xi = a sin(phi) cos(theta),
@@ -318,6 +319,7 @@ def test_axis_limits():
     assert np.max(np.abs(sxx - lyy)) < 3e-5
 
 
+@memo  # the generated mpmath forms (not numeric/ellipse_stress.py) and mpmath
 def _mp_peak(name, t, nu_, z0):
     slope = getattr(gen_mp, f"ellipse_stress_axis_{name}_slope")
     value = getattr(gen_mp, f"ellipse_stress_axis_{name}")

@@ -19,7 +19,7 @@ from hertzmdr.derive import line_stress as dl
 from hertzmdr.numeric import _generated_mp as gen_mp
 from hertzmdr.numeric import line_stress as ls
 
-from oracle import FULL, WORST
+from oracle import FULL, WORST, memo
 
 X, Z, P = dl.x, sp.Symbol("z_s", positive=True), dl.F_L
 
@@ -73,6 +73,7 @@ def _kernel(comp, deriv=""):
     return sp.lambdify((X, dl.z), k, "mpmath")
 
 
+@memo  # a mutation run's memo (tests/oracle.py): derive/ and mpmath only
 def superposed(comp, x, z, deriv=""):
     """int_-1^1 sqrt(1 - s^2) K(x - s, z) ds (b = 1, p0 = 1): tanh-sinh, split at the strip's
     edges (the pressure's square-root ends) and around the field point (the kernel's peak of
@@ -91,7 +92,10 @@ def superposed(comp, x, z, deriv=""):
 # points inside, below, near the surface, near the edge, outside and far away (b = 1)
 POINTS = [(0.0, 0.5), (0.3, 0.2), (-0.7, 0.9), (0.5, 1e-8), (0.99, 1e-3), (1.0, 1e-6),
           (1 - 1e-6, 1e-7), (1 + 1e-6, 1e-7), (-1.5, 1e-5), (1.2, 0.3), (3.0, 0.5),
-          (0.8, 0.6), (0.866, 0.5), (5.0, 20.0), (0.0, 1e3), (2.0, 1e6), (40.0, 1e-3)]
+          (0.8, 0.6), (0.866, 0.5), (5.0, 20.0), (0.0, 1e3), (2.0, 1e6), (40.0, 1e-3),
+          # outside the circle x^2 + z^2 = b^2 with q = b^2 - x^2 + z^2 >= 0 far from the
+          # strip: the inside form of g, (b - x)(b + x) + n^2, cancels there (3e-13 here)
+          (40.0, 40.0)]
 
 
 @pytest.mark.parametrize(("x", "z"), POINTS)
@@ -243,6 +247,7 @@ def test_plane_strain_and_principal_stresses():
 # -- maxima -----------------------------------------------------------------------------------
 
 @cache
+@memo
 def _tau1_root():
     """(z/b, tau_1/p0) at the root of d(tau_1)/dz on the axis: mp.findroot on the 30-digit
     superposition (computed once, shared by the tests below)."""
@@ -255,6 +260,7 @@ def _tau1_root():
 
 
 @cache
+@memo
 def _orthogonal_root():
     """(x/b, z/b, |tau_xz|/p0) at the root of the gradient of tau_xz, x > 0: mp.findroot on the
     30-digit superposition (computed once, shared)."""
@@ -267,6 +273,7 @@ def _orthogonal_root():
 
 
 @cache
+@memo
 def _vm_root(nu_s, start):
     """(z/b, sigma_vM/p0) at the root of d(sigma_vM^2)/dz on the axis, sigma_yy =
     nu (sigma_xx + sigma_zz): mp.findroot on the 30-digit superposition, the kernel
@@ -521,3 +528,25 @@ def test_max_shear_3d_names_nu_in_its_error():
     assert_inputs_named(ls.max_shear_3d, {"nu": 0.3})
     with pytest.raises(ValueError, match=r"^nu = 0\.6"):
         ls.max_shear_3d(0.6)
+
+
+@pytest.mark.parametrize("func", [ls.stresses, ls.principal_shear, ls.von_mises])
+def test_each_input_of_the_field_named_in_its_error(func):
+    """Every input of the field functions is named in its error (NaN for each in turn), at an
+    SI point (b = 1 mm, p0 = 1 GPa); axis_stresses likewise."""
+    from named import assert_inputs_named
+
+    assert_inputs_named(func, dict(x=0.3e-3, z=0.2e-3, b=1e-3, p0=1e9, nu=0.3))
+    assert_inputs_named(ls.axis_stresses, dict(z=0.2e-3, b=1e-3, p0=1e9, nu=0.3))
+
+
+def test_far_field_limit_in_half_widths_names_the_far_point():
+    """MAX_DISTANCE counts half-widths: with b = 1 mm the field is evaluated at D b and refused
+    at 2 D b (in metres, 1e47 and 2e47); in an array the error names the point that is too
+    far, not the first one."""
+    D, b = ls.MAX_DISTANCE, 1e-3
+    assert all(np.isfinite(v) for v in ls.stresses(D * b, 1e-3, b, 1e9, 0.3))
+    with pytest.raises(ValueError, match=r"^\(x, z\) = \(2e\+47, 0\.001\) m with b = 0\.001"):
+        ls.stresses(np.array([0.5e-3, 2 * D * b]), 1e-3, b, 1e9, 0.3)
+    with pytest.raises(ValueError, match=r"^\(x, z\) = \(0, 2e\+47\) m"):
+        ls.axis_stresses(np.array([1e-3, 2 * D * b]), b, 1e9, 0.3)

@@ -22,7 +22,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import stress
 
 from named import assert_inputs_named
-from oracle import WORST, Arg, assert_close, assert_mpmath_equal, n_points
+from oracle import WORST, Arg, assert_close, assert_mpmath_equal, memo, n_points
 
 
 @cache
@@ -31,6 +31,9 @@ def _kernel(comp):
     return sp.lambdify((nu, b.x, b.y, b.z), b.stresses()[comp].subs(F, 1), "mpmath")
 
 
+# @memo: a mutation run's memo of a reference (tests/oracle.py); these references use derive/
+# and mpmath only, nothing of numeric/
+@memo
 def _axis_reference(comp, nu_, zz):
     """(5.47) on the axis for the unit Hertz pressure: the phi-mean of K_xx is (K_xx + K_yy)/2
     at phi = 0; rho = sin(theta) makes the pressure's rim smooth (Gauss-Legendre)."""
@@ -42,6 +45,19 @@ def _axis_reference(comp, nu_, zz):
             k = (_kernel("xx")(nu_, rho, 0, zz) + _kernel("yy")(nu_, rho, 0, zz)) / 2
         return k * mp.cos(th) * 2 * mp.pi * rho * mp.cos(th)
     return mp.quad(f, _splits(zz), method="gauss-legendre")
+
+
+#: ds.axis_maxima (the 30-digit root of the derivation's slope), memoized in a mutation run
+_axis_maxima = memo(ds.axis_maxima)
+
+
+@memo
+def _axis_slope_30(nu_, zz):
+    """d(tau_1)/dz of the derivation at z/a = zz (nu a decimal string), at 30 digits."""
+    slope = sp.lambdify(z, ds.max_shear_axis().diff(z).subs({a: 1, p0: 1,
+                                                              nu: sp.Rational(nu_)}), "mpmath")
+    with mp.workdps(30):
+        return slope(zz)
 
 
 def _splits(zz):
@@ -84,18 +100,14 @@ def test_axis_maximum_shear():
     """tau_1 maximum on the axis: float64 root against the 30-digit root of the derivation;
     the chapter's z ~ 0.49 a for nu = 0.33 and the classical 0.31 p0 at 0.48 a for nu = 0.3."""
     for nu_, z_round, tau_round in (("0.3", 0.48, 0.31), ("0.33", 0.49, 0.30)):
-        z30, t30 = ds.axis_maxima(nu_)
+        z30, t30 = _axis_maxima(nu_)
         zf, tf = stress.axis_max_shear(float(nu_))
         # a simple root found by Brent to 4 ulp of the slope: ~1e-15 relative in z
         assert_close(zf, z30, 1e-14, f"z/a at nu={nu_}")
         assert_close(tf, t30, 1e-15, f"tau1/p0 at nu={nu_}")
         assert round(float(z30), 2) == z_round and round(float(t30), 2) == tau_round
-        # the slope at the 30-digit root is zero (its generated form, evaluated at 30 digits)
-        slope = sp.lambdify(z, ds.max_shear_axis().diff(z).subs({a: 1, p0: 1,
-                                                                  nu: sp.Rational(nu_)}),
-                            "mpmath")
-        with mp.workdps(30):
-            assert abs(slope(z30)) < mp.mpf(10) ** -27
+        # the slope at the 30-digit root is zero (the derivation's, evaluated at 30 digits)
+        assert abs(_axis_slope_30(nu_, z30)) < mp.mpf(10) ** -27
         assert abs(gen.stress_axis_max_shear_slope(1.0, float(nu_), 1.0, zf)) < 1e-15
 
 
@@ -104,7 +116,7 @@ def test_maximum_in_the_body(criterion):
     """The maximum over the body lies on the axis at the tau_1 depth; von Mises = Tresca =
     2 tau_1 there (sigma_xx = sigma_yy on the axis)."""
     for nu_ in ("0.3", "0.33"):
-        z30, t30 = ds.axis_maxima(nu_)
+        z30, t30 = _axis_maxima(nu_)
         val, rb, zb = stress.hertz_maximum(float(nu_), criterion)
         # the peak is flat: Nelder-Mead stops at 1e-10 in value, ~1e-7 a in position
         assert_close(val, 2 * t30, 1e-13, f"{criterion} max at nu={nu_}")
@@ -115,6 +127,12 @@ def test_maximum_in_the_body(criterion):
 def _johnson():
     return {k: sp.lambdify((nu, r, z), e.subs({a: 1, p0: 1}), "mpmath")
             for k, e in ds.johnson_field().items()}
+
+
+@memo
+def _johnson_at(comp, nu_, rr, zz):
+    """Johnson's printed component at (r, z) (a = p0 = 1), at the caller's precision."""
+    return _johnson()[comp](nu_, rr, zz)
 
 
 def _field_reference_superposition(nu_, rr, zz):
@@ -168,12 +186,11 @@ def test_hertz_field_against_johnson_at_50_digits():
     nus = rng.choice([0.0, 0.3, 0.33, 0.5, -0.5], m)
     got = np.array(stress.hertz_stress_cylindrical(rr, zz, 1.0, 1.0, nus))
     assert np.all(np.isfinite(got))
-    fj = _johnson()
     worst = 0.0
     with mp.workdps(50):
         for k in range(m):
             args = (mp.mpf(float(nus[k])), mp.mpf(float(rr[k])), mp.mpf(float(zz[k])))
-            ref = [fj[c](*args) for c in ("rr", "tt", "zz", "rz")]
+            ref = [_johnson_at(c, *args) for c in ("rr", "tt", "zz", "rz")]
             worst = max(worst, _tensor_error(got[:, k], ref))
     WORST["hertz_stress_cylindrical"] = max(WORST.get("hertz_stress_cylindrical", 0), worst)
     # a few roundings, one hyp2f1 (<= 1e-14 relative) per component
@@ -194,6 +211,22 @@ def test_spheroidal_coordinates():
     ok = u > 0
     lhs = r_[ok] ** 2 / (1 + u[ok]) + z_[ok] ** 2 / u[ok]
     assert np.allclose(lhs, 1, rtol=1e-13)
+
+
+def test_spheroidal_broadcasts_its_inputs():
+    """spheroidal() broadcasts r, z and a together (each of them the one array in turn, and a
+    column of radii against a row of points): the shape of the result, and each value the
+    scalar call's (the same operations on the same numbers: equal to the last bit)."""
+    v = np.array([0.2, 0.5, 1.5])
+    col = np.array([[1.0], [2.0]])
+    for r_, z_, a_, shape in ((v, 0.3, 1.0, (3,)), (0.3, v, 1.0, (3,)), (0.7, 0.3, v, (3,)),
+                              (v, v[::-1], col, (2, 3))):
+        out = stress.spheroidal(r_, z_, a_)
+        r_b, z_b, a_b = np.broadcast_arrays(r_, z_, a_)
+        for k in np.ndindex(*shape):
+            one = stress.spheroidal(float(r_b[k]), float(z_b[k]), float(a_b[k]))
+            for got, want in zip(out, one, strict=True):
+                assert got.shape == shape and got[k] == want, (k, shape)
 
 
 def test_field_on_the_axis_is_the_derived_axis_field():
@@ -303,6 +336,12 @@ def _superposition_axis_reference(p, zz):
                    _splits(zz), method="tanh-sinh")
 
 
+@memo
+def _punch_axis_reference(zz):
+    """:func:`_superposition_axis_reference` under the flat punch's 1/(1 - rho^2)^(1/2)."""
+    return _superposition_axis_reference(lambda th: 1 / mp.cos(th), zz)
+
+
 def test_superposition_route():
     """Under the Hertz pressure the superposition route reproduces the closed form, and its error
     estimate bounds the actual error; under the flat-punch pressure (singular at the rim) it
@@ -321,7 +360,7 @@ def test_superposition_route():
     for zz in (0.05, 0.5, 3.0):
         s, e = stress.superposed_stress(0.0, 0.0, zz, punch, 1.0, 0.3)
         with mp.workdps(25):
-            ref = _superposition_axis_reference(lambda th: 1 / mp.cos(th), mp.mpf(zz))
+            ref = _punch_axis_reference(mp.mpf(zz))
         # the estimate bounds the error (the rim's rounding term included: numeric/stress.py)
         assert abs(s[2, 2] - float(ref)) <= e[2, 2], (zz, abs(s[2, 2] - float(ref)), e[2, 2])
         assert_close(s[2, 2], ref, max(1e-12, float(e[2, 2] / abs(ref))), f"punch z={zz}")
@@ -345,7 +384,8 @@ def test_superposed_plane_and_its_maxima():
     k = np.unravel_index(int(np.argmax(tau)), tau.shape)
     value, x, z = f.maximum("max_shear")
     assert (x, z) == (f.x[k[1]], f.z[k[0]]) and abs(value - tau[k]) < 1e-12
-    with pytest.raises(ValueError, match="criterion"):
+    with pytest.raises(ValueError, match=r"^criterion = 'tresca'; valid: 'von_mises', "
+                                         r"'max_shear', 'orthogonal_shear'$"):
         f.maximum("tresca")
     with pytest.raises(ValueError, match="n = 1"):
         stress.superposed_plane(hp, 1.0, 0.3, n=1)
@@ -372,20 +412,28 @@ def test_bad_input_is_named():
         stress.superposed_stress(0.0, 0.0, 1.0, 3.0, 1.0, 0.3)
 
 
+@memo
+def _bracket_slopes_and_root(nu_, lo):
+    """The derivation's slope of tau_1 at z = lo and 2a, and its root between them (anderson),
+    at 30 digits, for nu_ (a float, taken exactly)."""
+    s = sp.Symbol("s", positive=True)
+    tau = (ds.max_shear_axis() / p0).subs(z, a * s).subs(a, 1).subs(nu, sp.Float(nu_, 40))
+    slope = sp.lambdify(s, sp.diff(tau, s), "mpmath")
+    with mp.workdps(30):
+        return (slope(mp.mpf(lo)), slope(mp.mpf(2)),
+                mp.findroot(slope, (mp.mpf(lo), mp.mpf(2)), solver="anderson"))
+
+
 def test_axis_maximum_shear_bracket():
     """Over the whole -1 < nu <= 1/2: the slope of tau_1 (the derivation's, at 30 digits) is
     > 0 at the derived z_lo and < 0 at 2a, and the float64 maximum agrees with a 30-digit
     root found by bisection on that bracket, down to nu = nextafter(-1, 0) where the maximum
     lies at 6e-17 a (the fixed bracket 0.05 a ... 2 a missed it for nu < -0.8985)."""
-    s = sp.Symbol("s", positive=True)
     nus = [np.nextafter(-1.0, 0.0), -1 + 1e-10, -0.99, -0.9, -0.8985, -0.5, 0.0, 0.3, 0.5]
     for nu_ in nus:
-        tau = (ds.max_shear_axis() / p0).subs(z, a * s).subs(a, 1).subs(nu, sp.Float(nu_, 40))
-        slope = sp.lambdify(s, sp.diff(tau, s), "mpmath")
         lo = float(gen.stress_axis_max_shear_bracket(1.0, nu_))
-        with mp.workdps(30):
-            assert slope(mp.mpf(lo)) > 0 and slope(mp.mpf(2)) < 0, nu_
-            root = mp.findroot(slope, (mp.mpf(lo), mp.mpf(2)), solver="anderson")
+        at_lo, at_2, root = _bracket_slopes_and_root(float(nu_), lo)
+        assert at_lo > 0 and at_2 < 0, nu_
         zf, _ = stress.axis_max_shear(nu_)
         # a simple root to 4 ulp of the slope by Brent, with a relative tolerance: ~1e-15
         assert_close(zf, root, 1e-14, f"z/a at nu = {nu_!r}")
@@ -574,7 +622,8 @@ def test_superposed_maximum_of_the_orthogonal_shear_within_its_bound():
     bound) under the Hertz pressure (a = 2 mm, p0 = 1 GPa) on a 5-point grid: the orthogonal
     shear against the derived closed form (hertz_max_orthogonal_shear, exact: |tau_rz| =
     0.213891 p0 at r = 0.848 a, z = 0.351 a), and von Mises against 2 tau_1 on the axis
-    (axis_max_shear, Fig. 5.8): the actual error within the bound it reports, the bound below
+    (axis_max_shear, Fig. 5.8), and the maximum shear (sigma_1 - sigma_3)/2 against tau_1 there
+    (sigma_rr = sigma_tt on the axis): the actual error within the bound it reports, the bound below
     1e-2 (the grid alone misses by about that), the place within 0.02 a (the field is flat at
     its maximum: an error e in the value allows ~sqrt(e) a in the place)."""
     aa, p00, nu_ = 2e-3, 1e9, 0.3
@@ -584,12 +633,13 @@ def test_superposed_maximum_of_the_orthogonal_shear_within_its_bound():
     tau, r0, z0 = stress.hertz_max_orthogonal_shear()
     zt, t1 = stress.axis_max_shear(nu_)
     for crit, ref, x_ref, z_ref in (("orthogonal_shear", tau, r0, z0),
-                                    ("von_mises", 2 * t1, 0.0, zt)):
+                                    ("von_mises", 2 * t1, 0.0, zt), ("max_shear", t1, 0.0, zt)):
         v, x, z, bound = stress.superposed_maximum(p, aa, nu_, crit, plane)
         err = abs(v / (ref * p00) - 1)
         assert err <= bound < 1e-2, (crit, err, bound)
         assert abs(abs(x) / aa - x_ref) < 0.02 and abs(z / aa - z_ref) < 0.02, (crit, x, z)
-    with pytest.raises(ValueError, match="criterion = 'tresca'"):
+    with pytest.raises(ValueError, match=r"^criterion = 'tresca'; valid: 'von_mises', "
+                                         r"'max_shear', 'orthogonal_shear'$"):
         stress.superposed_maximum(p, aa, nu_, "tresca", plane)
     with pytest.raises(ValueError, match="^a"):
         stress.superposed_maximum(p, -aa, nu_, "von_mises", plane)
