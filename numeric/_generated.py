@@ -4542,7 +4542,7 @@ def ellipse_stress_w1(a, b_e, x, y):
             return _math_ellipse_stress_w1(a, b_e, x, y)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return numpy.select([numpy.less_equal(a**2 + b_e**2 - x**2 - y**2, 0),True], [-1/2*a**2 - 1/2*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),(-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
+    return numpy.where(numpy.less_equal(a**2 + b_e**2 - x**2 - y**2, 0), -1/2*a**2 - 1/2*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2), (-2*a**2*b_e**2 + 2*a**2*y**2 + 2*b_e**2*x**2)/(a**2 + b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)))
 
 
 def ellipse_stress_w1_a(a, b_e, x, y):
@@ -4596,7 +4596,7 @@ def ellipse_stress_w1_b(a, b_e, x, y):
             return _math_ellipse_stress_w1_b(a, b_e, x, y)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return numpy.select([numpy.greater_equal(-a**2 + b_e**2 + x**2 + y**2, 0),True], [-1/2*a**2 + (1/2)*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2),2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2))], default=numpy.nan)
+    return numpy.where(numpy.greater_equal(-a**2 + b_e**2 + x**2 + y**2, 0), -1/2*a**2 + (1/2)*b_e**2 + (1/2)*x**2 + (1/2)*y**2 + (1/2)*numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2), 2*y**2*(a - b_e)*(a + b_e)/(a**2 - b_e**2 - x**2 - y**2 + numpy.sqrt(4*x**2*y**2 + (a**2 - b_e**2 - x**2 + y**2)**2)))
 
 
 def fit_adhesive_cone_depth(E_star, theta, a, rho_g):
@@ -5260,7 +5260,7 @@ def fit_cone_force_dz0(E_star, theta, z_p, z_0):
             return _math_fit_cone_force_dz0(E_star, theta, z_p, z_0)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return -4*E_star*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(numpy.pi*numpy.tan(theta))
+    return -4*E_star*(numpy.where(numpy.greater_equal(z_0 - z_p, 0), 0, 1))*functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(numpy.pi*numpy.tan(theta))
 
 
 def fit_hertz_force(E_star, R, z_p, z_0, F_0, s_0):
@@ -5353,7 +5353,7 @@ def fit_hertz_force_dz0(E_star, R, z_p, z_0):
             return _math_fit_hertz_force_dz0(E_star, R, z_p, z_0)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return -2*E_star*numpy.sqrt(R)*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))*numpy.sqrt(functools.reduce(numpy.maximum, [0, -z_0 + z_p]))
+    return -2*E_star*numpy.sqrt(R)*(numpy.where(numpy.greater_equal(z_0 - z_p, 0), 0, 1))*numpy.sqrt(functools.reduce(numpy.maximum, [0, -z_0 + z_p]))
 
 
 def fit_jkr_depth(E_star, R, a, rho_g):
@@ -5640,7 +5640,7 @@ def fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0):
             return _math_fit_powerlaw_force_dz0(E_star, c_n, kappa_n, n, z_p, z_0)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return -2*E_star*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
+    return -2*E_star*(functools.reduce(numpy.maximum, [0, -z_0 + z_p])/(c_n*kappa_n))**(n**(-1.0))*(numpy.where(numpy.greater_equal(z_0 - z_p, 0), 0, 1))
 
 
 def fit_punch_force(E_star, a, z_p, z_0, F_0, s_0):
@@ -5731,7 +5731,7 @@ def fit_punch_force_dz0(E_star, a, z_p, z_0):
             return _math_fit_punch_force_dz0(E_star, a, z_p, z_0)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return -2*E_star*a*(numpy.select([numpy.greater_equal(z_0 - z_p, 0),True], [0,1], default=numpy.nan))
+    return -2*E_star*a*(numpy.where(numpy.greater_equal(z_0 - z_p, 0), 0, 1))
 
 
 def fit_pyramid_cone_angle(alpha_p, n_sides):
@@ -5938,7 +5938,7 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
             return _math_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return E_star*R**2*numpy.select([numpy.less(lam, 1/2),True], [lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2,lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)], default=numpy.nan) + F_0 + s_0*z_p
+    return E_star*R**2*numpy.where(numpy.less(lam, 1/2), lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2, lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)) + F_0 + s_0*z_p
 
 
 def fit_sphere_force_dE(R, lam):
@@ -5962,7 +5962,7 @@ def fit_sphere_force_dE(R, lam):
             return _math_fit_sphere_force_dE(R, lam)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return R**2*numpy.select([numpy.less(lam, 1/2),True], [lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2,lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)], default=numpy.nan)
+    return R**2*numpy.where(numpy.less(lam, 1/2), lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2, lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))
 
 
 def fit_sphere_force_dz0(E_star, R, lam):
@@ -10029,7 +10029,7 @@ def sphere_force_from_radius(E_star, R, a):
     """
     import scipy.special
 
-    return numpy.select([numpy.less(a, (1/2)*R),True], [E_star*R**2*((1/2)*a**2*numpy.log1p(2*a/(R - a))/R**2 + (1/3)*a**3*scipy.special.hyp2f1(1, 3/2, 5/2, a**2/R**2)/R**3),E_star*(-R*a + (1/2)*(R**2 + a**2)*numpy.log1p(2*a/(R - a)))], default=numpy.nan)
+    return numpy.where(numpy.less(a, (1/2)*R), E_star*R**2*((1/2)*a**2*numpy.log1p(2*a/(R - a))/R**2 + (1/3)*a**3*scipy.special.hyp2f1(1, 3/2, 5/2, a**2/R**2)/R**3), E_star*(-R*a + (1/2)*(R**2 + a**2)*numpy.log1p(2*a/(R - a))))
 
 
 def sphere_g(R, x):
@@ -10127,7 +10127,7 @@ def sphere_lam_force(E_star, R, lam):
     """
     import scipy.special
 
-    return numpy.select([numpy.less(lam, 1/2),True], [E_star*R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)),E_star*R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))], default=numpy.nan)
+    return numpy.where(numpy.less(lam, 1/2), E_star*R**2*(lam*numpy.tanh(lam)**2 + (1/3)*numpy.tanh(lam)**3*scipy.special.hyp2f1(1, 3/2, 5/2, numpy.tanh(lam)**2)), E_star*R**2*(lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)))
 
 
 def sphere_lam_pressure_pole(E_star, R, lam, r):
