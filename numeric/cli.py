@@ -319,9 +319,6 @@ def cmd_fit(args) -> int:
 
     table = _fit_table(args)
     if table.columns is None and table.units is None and fit_io.is_batch(args.curve):
-        if args.adhesion:
-            raise UsageError(f"--adhesion: {args.curve} is a force map or a folder; the "
-                             "adhesive fit takes one curve")
         return cmd_fit_batch(args, table)
     if args.adhesion and table.depth_range is not None:
         raise UsageError("--adhesion: the scene's [fit] depth_range is for the fits without "
@@ -404,10 +401,17 @@ def cmd_fit_batch(args, table) -> int:
             raise UsageError("--out draws the map, which needs matplotlib: pip install "
                              "'hertzmdr[plot]'") from None
     bar = fit_batch.ProgressBar(sys.stderr) if sys.stderr.isatty() else None
+    if args.adhesion:
+        from hertzmdr.numeric import fit_adhesive
+
+        try:  # a tip without an adhesive model: one line for the batch
+            fit_adhesive._check_tip(tip)
+        except ValueError as exc:
+            raise UsageError(f"--adhesion: {exc}") from None
     results = fit_batch.fit_curves(curves, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
                                    sigma=sigma, fixed_z0=opts.get("fixed_z0"),
                                    fixed_baseline=opts.get("fixed_baseline"),
-                                   workers=args.workers, progress=bar)
+                                   adhesion=args.adhesion, workers=args.workers, progress=bar)
     results += [fit_batch._failed(fit_batch.Curve(name, None, None, np.zeros(0), np.zeros(0)),
                                   msg) for name, msg in unread]
     for r in results:
@@ -422,8 +426,12 @@ def cmd_fit_batch(args, table) -> int:
         ok = [(r, c) for r, c in zip(results, curves, strict=False) if r.ok]
         if ok:
             r, c = sorted(ok, key=lambda rc: rc[0].values[0])[len(ok) // 2]
-            median = fit.fit_curve(c.z, c.F, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu,
-                                   z0=z0, sigma=sigma)
+            if args.adhesion:
+                median = fit_adhesive.fit_curve(c.z, c.F, tip, nu=nu, tip_modulus=tip_E,
+                                                tip_nu=tip_nu, z0=z0, sigma=sigma)
+            else:
+                median = fit.fit_curve(c.z, c.F, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu,
+                                       z0=z0, sigma=sigma)
             fit_io.figure(median, args.out / "fit_median.png", f"curve {c.name} (median E*)")
         print(f"wrote {args.out}: fits.csv, modulus_map.png" + (", fit_median.png" if ok else ""))
     return 0 if any(r.ok for r in results) else 1

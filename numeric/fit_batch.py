@@ -1,10 +1,11 @@
 """Fit many force curves (a force map, a folder of curves) in parallel, one result per curve.
 
-:func:`fit_curves` fits each curve with :func:`hertzmdr.numeric.fit.fit_curve` and the same tip,
-over worker processes; a curve that cannot be fitted (no contact, too few points, any error) is
-one :class:`CurveFit` with its message, never an exception of the batch. :func:`write_table`
-writes the per-curve results as CSV; the figures (the modulus map) are in
-:mod:`hertzmdr.numeric.fit_io`.
+:func:`fit_curves` fits each curve with :func:`hertzmdr.numeric.fit.fit_curve` (with
+``adhesion=True``, :func:`hertzmdr.numeric.fit_adhesive.fit_curve`: a retract curve's work of
+adhesion as a fifth parameter) and the same tip, over worker processes; a curve that cannot be
+fitted (no contact, too few points, any error) is one :class:`CurveFit` with its message, never
+an exception of the batch. :func:`write_table` writes the per-curve results as CSV; the figures
+(the modulus map) are in :mod:`hertzmdr.numeric.fit_io`.
 """
 
 from __future__ import annotations
@@ -49,7 +50,9 @@ class CurveFit:
     """The fit of one curve of a batch, without its arrays (cheap to send between processes).
 
     ``values``/``errors`` are (E* [Pa], z_0 [m], F_0 [N], s_0 [N/m]) and their standard errors
-    (NaN when the fit failed); ``error`` is the message of a failed fit, else None.
+    (NaN when the fit failed); ``error`` is the message of a failed fit, else None;
+    ``dgamma``/``dgamma_error``: the work of adhesion [J/m^2] and its standard error of an
+    adhesive fit (None without adhesion; NaN when it failed).
     """
 
     name: str
@@ -66,27 +69,44 @@ class CurveFit:
     max_depth: float
     warnings: tuple[str, ...]
     error: str | None
+    dgamma: float | None = None
+    dgamma_error: float | None = None
 
     @property
     def ok(self) -> bool:
         return self.error is None
 
 
-def _failed(curve: Curve, message: str) -> CurveFit:
+def _failed(curve: Curve, message: str, adhesion: bool = False) -> CurveFit:
     nan4 = (math.nan,) * 4
+    dg = math.nan if adhesion else None
     return CurveFit(curve.name, curve.x, curve.y, nan4, nan4, math.nan, None, None, math.nan,
-                    int(np.size(curve.z)), 0, math.nan, (), message)
+                    int(np.size(curve.z)), 0, math.nan, (), message, dg, dg)
+
+
+#: the adhesive fit's parameters (E*, z_0, Delta gamma, F_0, s_0) that CurveFit.values holds
+_ADHESIVE_BASE = [0, 1, 3, 4]
 
 
 def _fit_one(curve: Curve, tip, options: dict) -> CurveFit:
+    options = dict(options)
+    adhesion = options.pop("adhesion", False)
     try:
-        r = fit.fit_curve(curve.z, curve.F, tip, **options)
+        if adhesion:
+            from hertzmdr.numeric import fit_adhesive
+
+            r = fit_adhesive.fit_curve(curve.z, curve.F, tip, **options)
+        else:
+            r = fit.fit_curve(curve.z, curve.F, tip, **options)
     except Exception as exc:  # noqa: BLE001 -- one curve's failure is its row, not the batch's
         msg = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
-        return _failed(curve, msg.splitlines()[0] if msg else type(exc).__name__)
-    return CurveFit(curve.name, curve.x, curve.y, tuple(map(float, r.values)),
-                    tuple(map(float, r.errors)), float(r.correlation[0, 1]), r.E, r.E_error,
-                    r.reduced_chi2, int(r.F.size), r.n_contact, r.max_depth, r.warnings, None)
+        return _failed(curve, msg.splitlines()[0] if msg else type(exc).__name__, adhesion)
+    keep = _ADHESIVE_BASE if adhesion else slice(None)
+    dg, dg_err = (float(r.values[2]), float(r.errors[2])) if adhesion else (None, None)
+    return CurveFit(curve.name, curve.x, curve.y, tuple(map(float, r.values[keep])),
+                    tuple(map(float, r.errors[keep])), float(r.correlation[0, 1]), r.E,
+                    r.E_error, r.reduced_chi2, int(r.F.size), r.n_contact, r.max_depth,
+                    r.warnings, None, dg, dg_err)
 
 
 def _fit_chunk(curves: Sequence[Curve], tip, options: dict) -> list[CurveFit]:
@@ -94,7 +114,7 @@ def _fit_chunk(curves: Sequence[Curve], tip, options: dict) -> list[CurveFit]:
 
 
 def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_nu=None,
-               z0=None, sigma=None, fixed_z0=None, fixed_baseline=None,
+               z0=None, sigma=None, fixed_z0=None, fixed_baseline=None, adhesion=False,
                workers: int | None = None,
                progress: Callable[[int, int, int], None] | None = None) -> list[CurveFit]:
     """Fit every curve with the same tip and options, in parallel; one result per curve.
@@ -106,6 +126,10 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     tip, nu, tip_modulus, tip_nu, z0, sigma, fixed_z0, fixed_baseline
         As :func:`hertzmdr.numeric.fit.fit_curve` (sigma [N] one number for every curve; a
         fixed contact point [m] or baseline (F_0 [N], s_0 [N/m]) the same for every curve).
+    adhesion : bool
+        Fit each curve as an adhesive retract curve
+        (:func:`hertzmdr.numeric.fit_adhesive.fit_curve`: the work of adhesion as a fifth
+        parameter, in each result's ``dgamma``); not with a fixed contact point or baseline.
     workers : int, optional
         Worker processes, >= 1 (default: the machine's cores). Batches of fewer than 32
         curves, and ``workers = 1``, run in this process.
@@ -122,8 +146,17 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
         workers = os.cpu_count() or 1
     if not (isinstance(workers, int) and workers >= 1):
         raise ValueError(f"workers = {workers!r} is out of range; valid: an integer >= 1")
-    options = {"nu": nu, "tip_modulus": tip_modulus, "tip_nu": tip_nu, "z0": z0, "sigma": sigma,
-               "fixed_z0": fixed_z0, "fixed_baseline": fixed_baseline}
+    options = {"nu": nu, "tip_modulus": tip_modulus, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
+    if adhesion:
+        from hertzmdr.numeric import fit_adhesive
+
+        if fixed_z0 is not None or fixed_baseline is not None:
+            raise ValueError("fixed_z0/fixed_baseline with adhesion = True: the adhesive fit "
+                             "fits all five parameters; valid only without adhesion")
+        fit_adhesive._check_tip(tip)  # one message for the batch, not one per curve
+        options["adhesion"] = True
+    else:
+        options.update(fixed_z0=fixed_z0, fixed_baseline=fixed_baseline)
     total = len(curves)
     if total == 0:
         return []
@@ -184,21 +217,31 @@ TABLE_COLUMNS = ("curve", "x [m]", "y [m]", "E_star [Pa]", "E_star_err [Pa]", "z
                  "max_depth [m]", "status", "message")
 
 
+#: the columns an adhesive batch adds after s_0_err [N/m]
+ADHESIVE_COLUMNS = ("dgamma [J/m^2]", "dgamma_err [J/m^2]")
+
+
 def write_table(results: Sequence[CurveFit], path) -> Path:
     """The per-curve results as CSV (UTF-8, SI units in the header; empty cells where a value
     does not exist: no position, no Poisson's ratio, a failed fit). ``status`` is ``ok``,
-    ``warning`` (the warnings in ``message``, joined by `` | ``) or ``failed``."""
+    ``warning`` (the warnings in ``message``, joined by `` | ``) or ``failed``. An adhesive
+    batch (any result with ``dgamma``) has the ADHESIVE_COLUMNS after ``s_0_err``."""
     import csv
 
     def num(v):
         return "" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{v:.10g}"
 
     path = Path(path)
+    adhesive = any(r.dgamma is not None for r in results)
+    k = TABLE_COLUMNS.index("s_0_err [N/m]") + 1
     with path.open("w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
-        w.writerow(TABLE_COLUMNS)
+        w.writerow(TABLE_COLUMNS[:k] + ADHESIVE_COLUMNS + TABLE_COLUMNS[k:] if adhesive
+                   else TABLE_COLUMNS)
         for r in results:
             pairs = [x for v, e in zip(r.values, r.errors, strict=True) for x in (num(v), num(e))]
+            if adhesive:
+                pairs += [num(r.dgamma), num(r.dgamma_error)]
             status = "failed" if not r.ok else ("warning" if r.warnings else "ok")
             message = r.error if not r.ok else " | ".join(r.warnings)
             w.writerow([r.name, num(r.x), num(r.y), *pairs, num(r.E), num(r.E_error),

@@ -431,6 +431,12 @@ def batch_summary(results, scene_E: float | None = None) -> str:
                      f"{engineering(float(vals.min()), 'Pa')} to "
                      f"{engineering(float(vals.max()), 'Pa')}; median standard error "
                      f"{engineering(float(np.median(errs)), 'Pa', 2)}")
+        if ok[0].dgamma is not None:  # an adhesive batch
+            dg = np.array([r.dgamma for r in ok])
+            dg_err = np.array([r.dgamma_error for r in ok])
+            lines.append(f"work of adhesion: median {float(np.median(dg)):.4g} J/m^2, from "
+                         f"{float(dg.min()):.4g} to {float(dg.max()):.4g} J/m^2; median "
+                         f"standard error {float(np.median(dg_err)):.2g} J/m^2")
     if scene_E is not None:
         lines.append(f"the scene's sample E = {engineering(scene_E, 'Pa')} (not used)")
     return "\n".join(lines)

@@ -354,8 +354,56 @@ def test_cli_adhesion_errors(tmp_path, capsys):
     assert main(["fit", str(flat), "--scene", str(EXAMPLE_SCENE), "--adhesion"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "no contact in the curve" in err[0], err
-    # a force map with --adhesion: refused in one line (the adhesive fit takes one curve)
-    assert main(["fit", str(EXAMPLES / "fit_force_map.csv"), "--scene", str(EXAMPLE_SCENE),
-                 "--adhesion"]) == 2
+    # a folder of curves with --adhesion and a tip without an adhesive model: one line for
+    # the batch (not one per curve)
+    folder = tmp_path / "curves"
+    folder.mkdir()
+    (folder / "a.csv").write_text(EXAMPLE_CURVE.read_text())
+    assert main(["fit", str(folder), "--scene", str(punch), "--adhesion"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "--adhesion" in err[0] and "one curve" in err[0], err
+    assert len(err) == 1 and "--adhesion" in err[0] and "no adhesive fit model" in err[0], err
+
+
+def test_adhesive_batch(tmp_path, capsys):
+    """A folder of three retract curves (noise of known size, other seeds) and one without
+    contact, fitted with --adhesion: exit 0, the table has the work of adhesion with its
+    error (each within 4 standard errors of the truth), the curve without contact is one
+    failed row with its message, and the summary names the work of adhesion. Through the API,
+    adhesion with a fixed contact point is one clear error."""
+    import csv
+
+    from hertzmdr.numeric import fit_batch
+
+    folder = tmp_path / "map"
+    folder.mkdir()
+    sigma = 2e-10
+    for seed in range(3):
+        z, F = forward_curve(noise=sigma, seed=seed)
+        rows = zip(z.tolist(), F.tolist(), strict=True)
+        (folder / f"c{seed}.csv").write_text(
+            "z [m], F [N]\n" + "".join(f"{a!r}, {b!r}\n" for a, b in rows))
+    (folder / "flat.csv").write_text("z [nm], F [nN]\n" + "".join(
+        f"{i}, {0.001 * (-1) ** i}\n" for i in range(50)))
+    scene = tmp_path / "tip.toml"  # the example's scene with forward_curve's tip, R_TIP
+    scene.write_text(EXAMPLE_SCENE.read_text().replace('radius = "2 um"',
+                                                       f'radius = "{R_TIP} m"'))
+    out = tmp_path / "out"
+    assert main(["fit", str(folder), "--scene", str(scene), "--adhesion", "--sigma",
+                 f"{sigma} N", "--out", str(out), "--workers", "1"]) == 0
+    captured = capsys.readouterr()
+    assert "work of adhesion: median" in captured.out
+    assert "curve flat:" in captured.err and "no contact" in captured.err
+    with (out / "fits.csv").open(encoding="utf-8") as fh:
+        rows = {r["curve"]: r for r in csv.DictReader(fh)}
+    assert list(rows["c0"])[11:13] == list(fit_batch.ADHESIVE_COLUMNS)  # after s_0_err
+    for name in ("c0", "c1", "c2"):
+        r = rows[name]
+        assert r["status"] != "failed", r
+        dg, err = float(r["dgamma [J/m^2]"]), float(r["dgamma_err [J/m^2]"])
+        assert abs(dg - DG_TRUE) < 4 * err, r
+        assert abs(float(r["E_star [Pa]"]) - E_TRUE) < 4 * float(r["E_star_err [Pa]"]), r
+    assert rows["flat"]["status"] == "failed" and rows["flat"]["dgamma [J/m^2]"] == ""
+    assert (out / "modulus_map.png").stat().st_size > 0
+    assert (out / "fit_median.png").stat().st_size > 0
+    with pytest.raises(ValueError, match="fixed_z0/fixed_baseline with adhesion"):
+        fit_batch.fit_curves([], hfit.Paraboloid(R=R_TIP), fixed_z0=1e-7, adhesion=True)
