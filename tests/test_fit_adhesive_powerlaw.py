@@ -28,12 +28,12 @@ from test_fit_adhesive_sphere import (
     forward_curve,
     jacobian_check,
 )
+from test_fit_jkr import cli_adhesive_fit
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion
 from hertzmdr.numeric import fit as hfit
 from hertzmdr.numeric import fit_adhesive as fa
-from hertzmdr.numeric.cli import main
 
 from oracle import n_points
 
@@ -188,17 +188,6 @@ def test_cli_fits_a_power_law_with_adhesion(tmp_path, capsys):
     z, F0 = forward_curve(shape=SHAPE, depth=DEPTH)
     sigma = 5e-3 * float(np.ptp(F0))
     z, F = forward_curve(noise=sigma, seed=5, shape=SHAPE, depth=DEPTH)
-    curve = tmp_path / "retract.csv"
-    rows = zip(z.tolist(), F.tolist(), strict=True)
-    curve.write_text("z [m], F [N]\n" + "".join(f"{a!r}, {b!r}\n" for a, b in rows))
-    scene = tmp_path / "power.toml"
-    scene.write_text(f'effects = ["force"]\n[[body]]\nshape = "power_law"\n'
-                     f'coefficient = {C_N}\nexponent = {N}\nrigid = true\n[[body]]\n'
-                     'shape = "flat"\nE = "1.5 MPa"\nnu = 0.5\n[load]\ndepth = "100 nm"\n')
-    assert main(["fit", str(curve), "--scene", str(scene), "--adhesion", "--sigma",
-                 f"{sigma} N"]) == 0
-    out = capsys.readouterr().out
-    assert "power law f = c_n r^n, adhesive" in out
-    line = next(ln for ln in out.splitlines() if ln.startswith("dgamma "))
-    value, err = float(line.split()[1]), float(line.split()[2])
-    assert abs(value - DG_TRUE) < 4 * err, line
+    cli_adhesive_fit(tmp_path, capsys, z, F, sigma,
+                     f'shape = "power_law"\ncoefficient = {C_N}\nexponent = {N}',
+                     "power law f = c_n r^n, adhesive")

@@ -26,12 +26,13 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from test_fit_jkr import cli_adhesive_fit
+from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion
 from hertzmdr.numeric import fit as hfit
 from hertzmdr.numeric import fit_adhesive as fa
-from hertzmdr.numeric.cli import main
 
 from oracle import n_points
 
@@ -246,21 +247,10 @@ def test_adhesive_sphere_jacobian_by_mpmath_derivative():
 
 # --- fits ------------------------------------------------------------------------------------
 def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0, shape=None, depth=DEPTH):
-    """A retract curve on a uniform grid of positions by the forward numeric/adhesion.py
-    (AdhesiveContact.equilibrium of ``shape``, default the exact sphere, under depth
-    control): contact down to the jump-off, then the baseline."""
-    E, z0, dg, F0, s0 = truth
-    shape = adhesion.Sphere(R=R_TIP) if shape is None else shape
-    c = adhesion.AdhesiveContact(shape, E_star=E, dgamma=dg)
-    d_dc = c.pull_off("depth").depth
-    z = np.linspace(z0 + 2.5 * d_dc, z0 + depth, n)
-    d = z - z0
-    F = F0 + s0 * z
-    on = d >= d_dc
-    F[on] += c.equilibrium(depth=d[on])[2]
-    if noise:
-        F = F + np.random.default_rng(seed).normal(0.0, noise, n)
-    return z, F
+    """test_fit_jkr's retract curve of ``shape`` (default: the exact sphere of radius R_TIP)
+    to the indentation ``depth``."""
+    return jkr_forward_curve(n, truth, noise, seed,
+                             adhesion.Sphere(R=R_TIP) if shape is None else shape, depth)
 
 
 def test_noise_free_recovery():
@@ -334,17 +324,6 @@ def test_cli_fits_an_exact_sphere_with_adhesion(tmp_path, capsys):
     z, F0 = forward_curve()
     sigma = 5e-3 * float(np.ptp(F0))
     z, F = forward_curve(noise=sigma, seed=5)
-    curve = tmp_path / "retract.csv"
-    rows = zip(z.tolist(), F.tolist(), strict=True)
-    curve.write_text("z [m], F [N]\n" + "".join(f"{a!r}, {b!r}\n" for a, b in rows))
-    scene = tmp_path / "sphere.toml"
-    scene.write_text(f'effects = ["force"]\n[[body]]\nshape = "exact_sphere"\n'
-                     f'radius = "{R_TIP} m"\nrigid = true\n[[body]]\nshape = "flat"\n'
-                     'E = "1.5 MPa"\nnu = 0.5\n[load]\ndepth = "100 nm"\n')
-    assert main(["fit", str(curve), "--scene", str(scene), "--adhesion", "--sigma",
-                 f"{sigma} N"]) == 0
-    out = capsys.readouterr().out
-    assert "exact sphere (spherical cap), adhesive" in out
-    line = next(ln for ln in out.splitlines() if ln.startswith("dgamma "))
-    value, err = float(line.split()[1]), float(line.split()[2])
-    assert abs(value - DG_TRUE) < 4 * err, line
+    cli_adhesive_fit(tmp_path, capsys, z, F, sigma,
+                     f'shape = "exact_sphere"\nradius = "{R_TIP} m"',
+                     "exact sphere (spherical cap), adhesive")

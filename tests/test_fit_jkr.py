@@ -182,15 +182,16 @@ def mp_curve(n_contact=300, n_free=60, truth=TRUTH):
         return np.array([float(v) for v in zs]), np.array([float(v) for v in Fs])
 
 
-def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0, shape=None):
+def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0, shape=None, depth=150e-9):
     """A retract curve on a uniform grid of positions by the forward numeric/adhesion.py
     (AdhesiveContact.equilibrium under depth control) of ``shape`` (default: the paraboloid of
-    radius R_TIP): contact down to the jump-off, then the baseline."""
+    radius R_TIP), to the indentation ``depth`` [m]: contact down to the jump-off, then the
+    baseline. The other adhesive tips' tests make their curves with it."""
     E, z0, dg, F0, s0 = truth
     shape = adhesion.Paraboloid(R=R_TIP) if shape is None else shape
     c = adhesion.AdhesiveContact(shape, E_star=E, dgamma=dg)
     d_dc = c.pull_off("depth").depth
-    z = np.linspace(z0 + 2.5 * d_dc, z0 + 150e-9, n)
+    z = np.linspace(z0 + 2.5 * d_dc, z0 + depth, n)
     d = z - z0
     F = F0 + s0 * z
     on = d >= d_dc
@@ -198,6 +199,26 @@ def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0, shape=None):
     if noise:
         F = F + np.random.default_rng(seed).normal(0.0, noise, n)
     return z, F
+
+
+def cli_adhesive_fit(tmp_path, capsys, z, F, sigma, body, label, dg_true=DG_TRUE):
+    """``hertzmdr fit --adhesion`` of the curve (z [m], F [N]) with a scene whose tip is the
+    TOML ``body`` (rigid, on a flat sample of E = 1.5 MPa): exit 0, ``label`` in the report,
+    the work of adhesion within 4 standard errors of ``dg_true`` (a 6e-5 event for right
+    errors)."""
+    curve = tmp_path / "retract.csv"
+    rows = zip(z.tolist(), F.tolist(), strict=True)
+    curve.write_text("z [m], F [N]\n" + "".join(f"{a!r}, {b!r}\n" for a, b in rows))
+    scene = tmp_path / "tip.toml"
+    scene.write_text(f'effects = ["force"]\n[[body]]\n{body}\nrigid = true\n[[body]]\n'
+                     'shape = "flat"\nE = "1.5 MPa"\nnu = 0.5\n[load]\ndepth = "100 nm"\n')
+    assert main(["fit", str(curve), "--scene", str(scene), "--adhesion", "--sigma",
+                 f"{sigma} N"]) == 0
+    out = capsys.readouterr().out
+    assert label in out
+    line = next(ln for ln in out.splitlines() if ln.startswith("dgamma "))
+    value, err = float(line.split()[1]), float(line.split()[2])
+    assert abs(value - dg_true) < 4 * err, line
 
 
 @pytest.mark.parametrize("make", [mp_curve, forward_curve], ids=["mpmath", "forward"])
