@@ -253,7 +253,10 @@ def _sampled_family(tip) -> _Family:
            for k in ("depth", "depth_da", "force", "force_dE", "force_dz0", "force_ddgamma")}
 
     def exact(a):
-        return shape._tables(np.minimum(a, r_max))
+        a = np.minimum(a, r_max)
+        if a.size == 0:  # no point in contact (the quadrature takes no empty array)
+            return a, a, a
+        return shape._tables(a)
 
     def interpolated(a):
         a = np.clip(a, 0.0, r_max)
@@ -399,6 +402,8 @@ def _contact_radius(d, fam, E_star, rho):
         if not low.any():
             break
         hi = np.where(low, np.minimum(2 * hi, 0.5 * (hi + fam.a_max)), hi)  # a < a_max
+        if fam.scan is not None and (hi[low] >= fam.a_max * (1 - 1e-9)).all():
+            break  # a sampled tip: depths beyond its samples (fit_curve refuses them)
     lo = np.full(dd.shape, a_c)
     target = np.sqrt(dd - d_c)
     a = hi.copy()
@@ -761,6 +766,10 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.P
         layout = _Layout(z_split, layout.keep & ~past)
         p0 = p
     keep = layout.keep
+    if isinstance(tip, _fit.SampledTip):  # the contact would need a > r_max
+        d_max = float(z[-1] - p[1])
+        if not d_max < float(fam.depth(max(p[0], _EPS), fam.a_max, np.sqrt(max(p[2], 0.0)))):
+            raise tip._too_deep(d_max)
     res = sol.fun
     dof = int(keep.sum()) - len(PARAMETERS)
     if dof < 2:
@@ -793,8 +802,6 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.P
     values = np.array([E_s, z_0, dgamma, F_0, s_0])
     d = z - z_0
     d_max = float(d[-1])
-    if isinstance(tip, _fit.SampledTip) and not d_max < float(fam.depth(E_s, fam.a_max, rho)):
-        raise tip._too_deep(d_max)  # the contact would need a > r_max
     warn = []
     if excluded:
         warn.append(f"{excluded} point(s) of the contact part lie past the jump-off (depth "
