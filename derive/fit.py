@@ -380,8 +380,69 @@ def adhesive_powerlaw_model() -> dict[str, sp.Expr]:
     return _adhesive_model(adhesion.power(), "power law")
 
 
+g_a = symbol("g_a")
+g_slope = symbol("g_slope")
+g_int = symbol("g_integral")
+
+
+@cache
+def adhesive_general_model() -> dict[str, sp.Expr]:
+    """The adhesive fit model of any MDR profile, in its g(a), g'(a) and G(a) = integral_0^a g
+    as symbols (``g_a``, ``g_slope``, ``g_integral``), and its Jacobian: what a sampled
+    (measured) tip evaluates with its numerical MDR's g, g' and G.
+
+    Starting point: the adhesive MDR's d(a) = g(a) - Delta l(a) (5.55) and (5.57) at that depth,
+    F = 2 E* (a d - G(a)) (:func:`_adhesive_family` with an undefined g; G' = g). The implicit
+    differentiation is :func:`_adhesive_model`'s (d(a(p), p) = z_p - z_0 for every parameter p:
+    da/dp = -(dd/dp + [p = z_0])/(dd/da), dF/dp = dF/dp|_a + dF/da da/dp), on the partial
+    derivatives in a of the undefined g and G, which are then written as the symbols. Asserted:
+    the paraboloid's g = x^2/R (g' = 2a/R, G = a^3/(3R)) gives :func:`jkr_model` back, relation
+    by relation; dF/dDelta gamma -> -2 pi a/g'(a) as Delta gamma -> 0; F = E* f(a; kappa).
+    """
+    dg = adhesion.dgamma
+    gf, Gf = sp.Function("g_f"), sp.Function("G_f")
+    dl = adhesion.critical_elongation()
+    depth = gf(a) - dl
+    force = 2 * E_star * (a * depth - Gf(a))  # (5.57) at d = g(a) - Delta l (5.55)
+
+    def partial(expr, v):
+        out = sp.diff(expr, v).subs(sp.Derivative(Gf(a), a), gf(a))
+        return out.subs(sp.Derivative(gf(a), a), g_slope)
+
+    def symbols_of(expr):
+        return expr.subs({gf(a): g_a, Gf(a): g_int}).subs({dg: rho_g**2})
+
+    dd_da, dF_da = partial(depth, a), partial(force, a)
+    out = {"d": sp.simplify(symbols_of(depth)),
+           "F": sp.simplify(symbols_of(force)) + F_0 + s_0 * z_p,
+           "d_da": sp.simplify(symbols_of(dd_da))}
+    for key, p in (("dE", E_star), ("dz0", z_0), ("ddgamma", dg)):
+        da_dp = -(partial(depth, p) + (1 if p is z_0 else 0)) / dd_da
+        dF = partial(force, p) + dF_da * da_dp
+        out[key] = sp.simplify(sp.factor(sp.simplify(symbols_of(dF))))
+    limit = -2 * sp.pi * a / g_slope
+    if sp.simplify(out["ddgamma"].subs(rho_g, 0) - limit) != 0:
+        raise AssertionError("dF/dDelta gamma of the general adhesive model at Delta gamma = 0 "
+                             f"is not -2 pi a/g'(a): {out['ddgamma']}")
+    kap = sp.Symbol("kappa", positive=True)
+    scaled = {rho_g: kap * sp.sqrt(E_star)}
+    tip_force = out["F"] - F_0 - s_0 * z_p
+    if sp.simplify(tip_force.subs(scaled) - E_star * tip_force.subs(scaled).subs(E_star, 1)) \
+            or sp.simplify(out["d"].subs(scaled) - out["d"].subs(scaled).subs(E_star, 1)):
+        raise AssertionError("the general adhesive model is not E* f(a; rho_g/sqrt(E*))")
+    # the paraboloid f = r^2/(2R): g = x^2/R (5.52), its slope and integral
+    par = {g_a: a**2 / R, g_slope: 2 * a / R, g_int: a**3 / (3 * R)}
+    jkr = jkr_model()
+    for key, expr in out.items():
+        if sp.simplify(expr.subs(par) - jkr[key]) != 0:
+            raise AssertionError(f"the general adhesive model's {key} at g = x^2/R is not the "
+                                 f"JKR model's: {expr}")
+    return out
+
+
 SPHERE_ADH_TEST = "tests/test_fit_adhesive_sphere.py"
 POWER_ADH_TEST = "tests/test_fit_adhesive_powerlaw.py"
+SAMPLED_ADH_TEST = "tests/test_fit_adhesive_sampled.py"
 
 
 def jkr_relations() -> list[Relation]:
@@ -402,7 +463,13 @@ def jkr_relations() -> list[Relation]:
                                   (powerlaw.c_n, powerlaw.kappa_n, powerlaw.n),
                                   "a power-law tip", "(5.55), (5.57), adhesive power law",
                                   "adhesion_powerlaw_depth",
-                                  "adhesion_powerlaw_force_from_radius", POWER_ADH_TEST))
+                                  "adhesion_powerlaw_force_from_radius", POWER_ADH_TEST)
+            + _adhesive_relations("adhesive_sampled", adhesive_general_model(),
+                                  (g_a, g_slope, g_int),
+                                  "any tip of MDR profile g (g_a = g(a), g_slope = g'(a), "
+                                  "g_integral = G(a), the integral of g over [0, a])",
+                                  "(5.55), (5.57), adhesive MDR of any g",
+                                  "g(a) - Delta l", "2 E* (a d - G(a))", SAMPLED_ADH_TEST))
 
 
 def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test,

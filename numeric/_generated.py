@@ -157,6 +157,12 @@ __all__ = [
     'fit_adhesive_powerlaw_force_dE',
     'fit_adhesive_powerlaw_force_ddgamma',
     'fit_adhesive_powerlaw_force_dz0',
+    'fit_adhesive_sampled_depth',
+    'fit_adhesive_sampled_depth_da',
+    'fit_adhesive_sampled_force',
+    'fit_adhesive_sampled_force_dE',
+    'fit_adhesive_sampled_force_ddgamma',
+    'fit_adhesive_sampled_force_dz0',
     'fit_adhesive_sphere_depth',
     'fit_adhesive_sphere_depth_da',
     'fit_adhesive_sphere_force',
@@ -559,6 +565,12 @@ RELATIONS = (
     ('fit_adhesive_powerlaw_force_dE', '(5.55), (5.57), adhesive power law, fit model', 'fit', '2*(2*E_star**(5/2)*a**(2*n + 3/2)*c_n**2*kappa_n**2*n**2 + 4*pi*E_star**(3/2)*a**(5/2)*n*rho_g**2 + 4*pi*E_star**(3/2)*a**(5/2)*rho_g**2 - 2*sqrt(2)*sqrt(pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n**2*rho_g - 3*sqrt(2)*sqrt(pi)*E_star**2*a**(n + 2)*c_n*kappa_n*n*rho_g)/((n + 1)*(2*E_star**(5/2)*a**(n + 1/2)*c_n*kappa_n*n - sqrt(2)*sqrt(pi)*E_star**2*a*rho_g))', ''),
     ('fit_adhesive_powerlaw_force_ddgamma', '(5.55), (5.57), adhesive power law, fit model', 'fit', '4*pi*E_star*a**(5/2)/(sqrt(2)*sqrt(pi)*sqrt(E_star)*a*rho_g - 2*E_star*a**(n + 1/2)*c_n*kappa_n*n)', ''),
     ('fit_adhesive_powerlaw_force_dz0', '(5.55), (5.57), adhesive power law, fit model', 'fit', '2*(-2*E_star**(3/2)*a**(n + 3/2)*c_n*kappa_n*n + 3*sqrt(2)*sqrt(pi)*E_star*a**2*rho_g)/(2*sqrt(E_star)*a**(n + 1/2)*c_n*kappa_n*n - sqrt(2)*sqrt(pi)*a*rho_g)', ''),
+    ('fit_adhesive_sampled_depth', '(5.55), (5.57), adhesive MDR of any g, fit model', 'fit', 'g_a - sqrt(2)*sqrt(pi)*sqrt(a)*rho_g/sqrt(E_star)', ''),
+    ('fit_adhesive_sampled_depth_da', '(5.55), (5.57), adhesive MDR of any g, fit model', 'fit', 'g_slope - sqrt(2)*sqrt(pi)*rho_g/(2*sqrt(E_star)*sqrt(a))', ''),
+    ('fit_adhesive_sampled_force', '(5.55), (5.57), adhesive MDR of any g, fit model', 'fit', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*rho_g + 2*E_star*a*g_a - 2*E_star*g_integral + F_0 + s_0*z_p', ''),
+    ('fit_adhesive_sampled_force_dE', '(5.55), (5.57), adhesive MDR of any g, fit model', 'fit', '2*(2*E_star**(3/2)*a**(3/2)*g_a*g_slope - 2*E_star**(3/2)*sqrt(a)*g_integral*g_slope + 4*pi*sqrt(E_star)*a**(3/2)*rho_g**2 - 2*sqrt(2)*sqrt(pi)*E_star*a**2*g_slope*rho_g - sqrt(2)*sqrt(pi)*E_star*a*g_a*rho_g + sqrt(2)*sqrt(pi)*E_star*g_integral*rho_g)/(2*E_star**(3/2)*sqrt(a)*g_slope - sqrt(2)*sqrt(pi)*E_star*rho_g)', ''),
+    ('fit_adhesive_sampled_force_ddgamma', '(5.55), (5.57), adhesive MDR of any g, fit model', 'fit', '-4*pi*sqrt(E_star)*a**(3/2)/(2*sqrt(E_star)*sqrt(a)*g_slope - sqrt(2)*sqrt(pi)*rho_g)', ''),
+    ('fit_adhesive_sampled_force_dz0', '(5.55), (5.57), adhesive MDR of any g, fit model', 'fit', '2*(-2*E_star**(3/2)*a**(3/2)*g_slope + 3*sqrt(2)*sqrt(pi)*E_star*a*rho_g)/(2*sqrt(E_star)*sqrt(a)*g_slope - sqrt(2)*sqrt(pi)*rho_g)', ''),
     ('fit_adhesive_sphere_depth', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', 'a*atanh(a/R) - sqrt(2)*sqrt(pi)*sqrt(a)*rho_g/sqrt(E_star)', ''),
     ('fit_adhesive_sphere_depth_da', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', 'atanh(a/R) + a/(R*(1 - a**2/R**2)) - sqrt(2)*sqrt(pi)*rho_g/(2*sqrt(E_star)*sqrt(a))', ''),
     ('fit_adhesive_sphere_force', '(5.55), (5.57), adhesive exact sphere, fit model', 'fit', '-2*sqrt(2)*sqrt(pi)*sqrt(E_star)*a**(3/2)*rho_g + E_star*(R**2*atanh(a/R) - R*a + a**2*atanh(a/R)) + F_0 + s_0*z_p', ''),
@@ -4984,6 +4996,211 @@ def fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return 2*(-2*E_star**(3/2)*a**(n + 3/2)*c_n*kappa_n*n + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a**2*rho_g)/(2*numpy.sqrt(E_star)*a**(n + 1/2)*c_n*kappa_n*n - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*a*rho_g)
+
+
+def fit_adhesive_sampled_depth(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Indentation depth d [m] of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: g(a) - Delta l
+    at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(g_a) is float and type(g_slope) is float and
+            type(g_integral) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sampled_depth(E_star, g_a, g_slope, g_integral, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return g_a - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(a)*rho_g/numpy.sqrt(E_star)
+
+
+def fit_adhesive_sampled_depth_da(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]): Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: g(a) - Delta l
+    differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sampled.py::test_adhesive_sampled_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(g_a) is float and type(g_slope) is float and
+            type(g_integral) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sampled_depth_da(E_star, g_a, g_slope, g_integral, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return g_slope - 1/2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g/(numpy.sqrt(E_star)*numpy.sqrt(a))
+
+
+def fit_adhesive_sampled_force(E_star, g_a, g_slope, g_integral, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: 2 E* (a d -
+    G(a)) at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : float or ndarray
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : float or ndarray
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : float or ndarray
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    if (type(E_star) is float and type(g_a) is float and type(g_slope) is float and
+            type(g_integral) is float and type(a) is float and type(rho_g) is float and
+            type(z_p) is float and type(F_0) is float and type(s_0) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sampled_force(E_star, g_a, g_slope, g_integral, a, rho_g, z_p, F_0, s_0)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return -2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*numpy.sqrt(E_star)*a**(3/2)*rho_g + 2*E_star*a*g_a - 2*E_star*g_integral + F_0 + s_0*z_p
+
+
+def fit_adhesive_sampled_force_dE(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of 2 E* (a d - G(a)) in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(g_a) is float and type(g_slope) is float and
+            type(g_integral) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sampled_force_dE(E_star, g_a, g_slope, g_integral, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(2*E_star**(3/2)*a**(3/2)*g_a*g_slope - 2*E_star**(3/2)*numpy.sqrt(a)*g_integral*g_slope + 4*numpy.pi*numpy.sqrt(E_star)*a**(3/2)*rho_g**2 - 2*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a**2*g_slope*rho_g - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a*g_a*rho_g + numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*g_integral*rho_g)/(2*E_star**(3/2)*numpy.sqrt(a)*g_slope - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*rho_g)
+
+
+def fit_adhesive_sampled_force_ddgamma(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of 2 E* (a d - G(a)) in Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(g_a) is float and type(g_slope) is float and
+            type(g_integral) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sampled_force_ddgamma(E_star, g_a, g_slope, g_integral, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return -4*numpy.pi*numpy.sqrt(E_star)*a**(3/2)/(2*numpy.sqrt(E_star)*numpy.sqrt(a)*g_slope - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g)
+
+
+def fit_adhesive_sampled_force_dz0(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of 2 E* (a d - G(a)) in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : float or ndarray
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : float or ndarray
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : float or ndarray
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : float or ndarray
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : float or ndarray
+        contact radius [m]
+    rho_g : float or ndarray
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    if (type(E_star) is float and type(g_a) is float and type(g_slope) is float and
+            type(g_integral) is float and type(a) is float and type(rho_g) is float):
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_adhesive_sampled_force_dz0(E_star, g_a, g_slope, g_integral, a, rho_g)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return 2*(-2*E_star**(3/2)*a**(3/2)*g_slope + 3*numpy.sqrt(2)*numpy.sqrt(numpy.pi)*E_star*a*rho_g)/(2*numpy.sqrt(E_star)*numpy.sqrt(a)*g_slope - numpy.sqrt(2)*numpy.sqrt(numpy.pi)*rho_g)
 
 
 def fit_adhesive_sphere_depth(E_star, R, a, rho_g):
@@ -14515,6 +14732,36 @@ def _math_fit_adhesive_powerlaw_force_ddgamma(E_star, c_n, kappa_n, n, a, rho_g)
 def _math_fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g):
     """``fit_adhesive_powerlaw_force_dz0`` for Python floats (the math module); raises where it does."""
     return 2*(-2*math.pow(E_star, 3/2)*math.pow(a, n + 3/2)*c_n*kappa_n*n + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*(a*a)*rho_g)/(2*math.sqrt(E_star)*math.pow(a, n + 1/2)*c_n*kappa_n*n - math.sqrt(2)*math.sqrt(math.pi)*a*rho_g)
+
+
+def _math_fit_adhesive_sampled_depth(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """``fit_adhesive_sampled_depth`` for Python floats (the math module); raises where it does."""
+    return g_a - math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(a)*rho_g/math.sqrt(E_star)
+
+
+def _math_fit_adhesive_sampled_depth_da(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """``fit_adhesive_sampled_depth_da`` for Python floats (the math module); raises where it does."""
+    return g_slope - 1/2*math.sqrt(2)*math.sqrt(math.pi)*rho_g/(math.sqrt(E_star)*math.sqrt(a))
+
+
+def _math_fit_adhesive_sampled_force(E_star, g_a, g_slope, g_integral, a, rho_g, z_p, F_0, s_0):
+    """``fit_adhesive_sampled_force`` for Python floats (the math module); raises where it does."""
+    return -2*math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(E_star)*math.pow(a, 3/2)*rho_g + 2*E_star*a*g_a - 2*E_star*g_integral + F_0 + s_0*z_p
+
+
+def _math_fit_adhesive_sampled_force_dE(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """``fit_adhesive_sampled_force_dE`` for Python floats (the math module); raises where it does."""
+    return 2*(2*math.pow(E_star, 3/2)*math.pow(a, 3/2)*g_a*g_slope - 2*math.pow(E_star, 3/2)*math.sqrt(a)*g_integral*g_slope + 4*math.pi*math.sqrt(E_star)*math.pow(a, 3/2)*(rho_g*rho_g) - 2*math.sqrt(2)*math.sqrt(math.pi)*E_star*(a*a)*g_slope*rho_g - math.sqrt(2)*math.sqrt(math.pi)*E_star*a*g_a*rho_g + math.sqrt(2)*math.sqrt(math.pi)*E_star*g_integral*rho_g)/(2*math.pow(E_star, 3/2)*math.sqrt(a)*g_slope - math.sqrt(2)*math.sqrt(math.pi)*E_star*rho_g)
+
+
+def _math_fit_adhesive_sampled_force_ddgamma(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """``fit_adhesive_sampled_force_ddgamma`` for Python floats (the math module); raises where it does."""
+    return -4*math.pi*math.sqrt(E_star)*math.pow(a, 3/2)/(2*math.sqrt(E_star)*math.sqrt(a)*g_slope - math.sqrt(2)*math.sqrt(math.pi)*rho_g)
+
+
+def _math_fit_adhesive_sampled_force_dz0(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """``fit_adhesive_sampled_force_dz0`` for Python floats (the math module); raises where it does."""
+    return 2*(-2*math.pow(E_star, 3/2)*math.pow(a, 3/2)*g_slope + 3*math.sqrt(2)*math.sqrt(math.pi)*E_star*a*rho_g)/(2*math.sqrt(E_star)*math.sqrt(a)*g_slope - math.sqrt(2)*math.sqrt(math.pi)*rho_g)
 
 
 def _math_fit_adhesive_sphere_depth(E_star, R, a, rho_g):

@@ -154,6 +154,12 @@ __all__ = [
     'fit_adhesive_powerlaw_force_dE',
     'fit_adhesive_powerlaw_force_ddgamma',
     'fit_adhesive_powerlaw_force_dz0',
+    'fit_adhesive_sampled_depth',
+    'fit_adhesive_sampled_depth_da',
+    'fit_adhesive_sampled_force',
+    'fit_adhesive_sampled_force_dE',
+    'fit_adhesive_sampled_force_ddgamma',
+    'fit_adhesive_sampled_force_dz0',
     'fit_adhesive_sphere_depth',
     'fit_adhesive_sphere_depth_da',
     'fit_adhesive_sphere_force',
@@ -3836,6 +3842,174 @@ def fit_adhesive_powerlaw_force_dz0(E_star, c_n, kappa_n, n, a, rho_g):
         square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
     """
     return 2*(-2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(n + mpmath.mpf(3)/mpmath.mpf(2))*c_n*kappa_n*n + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a**2*rho_g)/(2*mpmath.sqrt(E_star)*a**(n + mpmath.mpf(1)/mpmath.mpf(2))*c_n*kappa_n*n - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*a*rho_g)
+
+
+def fit_adhesive_sampled_depth(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Indentation depth d [m] of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) in adhesive contact of radius a, Delta gamma = rho_g^2.
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: g(a) - Delta l
+    at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return g_a - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(a)*rho_g/mpmath.sqrt(E_star)
+
+
+def fit_adhesive_sampled_depth_da(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dd/da [1] of the adhesive depth of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]): Newton's slope for a at a depth (0 at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: g(a) - Delta l
+    differentiated in a.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit_adhesive_sampled.py::test_adhesive_sampled_radius_by_mpmath``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return g_slope - mpmath.mpf(1)/mpmath.mpf(2)*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g/(mpmath.sqrt(E_star)*mpmath.sqrt(a))
+
+
+def fit_adhesive_sampled_force(E_star, g_a, g_slope, g_integral, a, rho_g, z_p, F_0, s_0):
+    """Force F [N] on any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) in adhesive contact of radius a at the position z_p, plus the baseline F_0 + s_0 z_p.
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: 2 E* (a d -
+    G(a)) at Delta gamma = rho_g^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_model_by_mpmath_parametric``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    z_p : mpmath.mpf
+        position of the tip's base (piezo), increasing into the sample [m]
+    F_0 : mpmath.mpf
+        force baseline: the force at z_p = 0 before contact [N]
+    s_0 : mpmath.mpf
+        slope of the force baseline before contact (drift, drag) [N/m]
+    """
+    return -2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g + 2*E_star*a*g_a - 2*E_star*g_integral + F_0 + s_0*z_p
+
+
+def fit_adhesive_sampled_force_dE(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dF/dE* [m^2] of the adhesive fit model of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) at a fixed position.
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of 2 E* (a d - G(a)) in E*.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(3)/mpmath.mpf(2))*g_a*g_slope - 2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(a)*g_integral*g_slope + 4*mpmath.pi*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))*rho_g**2 - 2*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a**2*g_slope*rho_g - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a*g_a*rho_g + mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*g_integral*rho_g)/(2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*mpmath.sqrt(a)*g_slope - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*rho_g)
+
+
+def fit_adhesive_sampled_force_ddgamma(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dF/dDelta gamma [m] of the adhesive fit model of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) at a fixed position (-2 pi a/g'(a) at Delta gamma = 0).
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of 2 E* (a d - G(a)) in Delta gamma.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return -4*mpmath.pi*mpmath.sqrt(E_star)*a**(mpmath.mpf(3)/mpmath.mpf(2))/(2*mpmath.sqrt(E_star)*mpmath.sqrt(a)*g_slope - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g)
+
+
+def fit_adhesive_sampled_force_dz0(E_star, g_a, g_slope, g_integral, a, rho_g):
+    """Derivative dF/dz_0 [N/m] of the adhesive fit model of any tip of MDR profile g (g_a = g(a), g_slope = g'(a), g_integral = G(a), the integral of g over [0, a]) at a fixed position (-dF/dd: infinite at the depth-controlled pull-off).
+
+    Chapter: (5.55), (5.57), adhesive MDR of any g, fit model. Derived from: implicit
+    differentiation at d(a) = z_p - z_0 of 2 E* (a d - G(a)) in z_0.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by ``tests/test_fit_adhesive_sampled.py::t
+    est_adhesive_sampled_jacobian_by_mpmath_derivative``.
+
+    Parameters
+    ----------
+    E_star : mpmath.mpf
+        effective modulus E* (5.8), (5.26) [Pa]
+    g_a : mpmath.mpf
+        MDR profile g(a) at the contact radius (5.55) [m]
+    g_slope : mpmath.mpf
+        slope g'(a) of the MDR profile at the contact radius [1]
+    g_integral : mpmath.mpf
+        integral of the MDR profile g(x) over [0, a] (5.57) [m^2]
+    a : mpmath.mpf
+        contact radius [m]
+    rho_g : mpmath.mpf
+        square root of the work of adhesion, sqrt(Delta gamma) (the JKR fit model's relations are written in it: no sqrt of a sum) [(J/m^2)^(1/2)]
+    """
+    return 2*(-2*E_star**(mpmath.mpf(3)/mpmath.mpf(2))*a**(mpmath.mpf(3)/mpmath.mpf(2))*g_slope + 3*mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*E_star*a*rho_g)/(2*mpmath.sqrt(E_star)*mpmath.sqrt(a)*g_slope - mpmath.sqrt(2)*mpmath.sqrt(mpmath.pi)*rho_g)
 
 
 def fit_adhesive_sphere_depth(E_star, R, a, rho_g):

@@ -1,5 +1,5 @@
 """Fit an adhesive retract curve F(z_p) for E*, the contact point and the work of adhesion: the
-paraboloid (JKR), the cone, the exact sphere or the power law.
+paraboloid (JKR), the cone, the exact sphere, the power law or a sampled (measured) tip.
 
 The model (generated from :func:`hertzmdr.derive.fit.jkr_model`, itself from the MDR's adhesive
 paraboloid in :mod:`hertzmdr.derive.adhesion`) is parametric in the contact radius a:
@@ -42,7 +42,11 @@ runs on a :class:`_Family` of the tip's generated relations. The exact sphere
 :func:`hertzmdr.derive.fit.adhesive_sphere_model`) and the power law c_n r^n, n > 1/2
 (``fit_adhesive_powerlaw_*``, from :func:`hertzmdr.derive.adhesion.power`) are the same fit
 again; the sphere's a_dc has no closed form and is the root of its generated dd/da
-(:func:`_sphere_pull_off_radius`), and its contact radius stays below R.
+(:func:`_sphere_pull_off_radius`), and its contact radius stays below R. A sampled tip
+(:class:`hertzmdr.numeric.fit.SampledTip`) runs on the relations of any MDR profile
+(``fit_adhesive_sampled_*``, :func:`hertzmdr.derive.fit.adhesive_general_model`: g(a), g'(a)
+and G(a) as arguments), evaluated with its numerical MDR's g, g' and G
+(:func:`_sampled_family`); its contact radius stays below the samples' r_max.
 
 Method: at a fixed kappa = rho_g/sqrt(E*) the model is E* times a shape of (z - z_0) (asserted
 in derive/fit.py), so a scan over (z_0, kappa) solves (E*, F_0, s_0) by linear least squares
@@ -126,13 +130,18 @@ class _Family:
     a_plain: object
     #: a length of the geometry [m]: the floor of a's bracket (R; 1 m for the cone, scale-free)
     length: float
-    #: the largest contact radius [m] (R of the exact sphere; inf for the others)
+    #: the largest contact radius [m] (R of the exact sphere, r_max of a sampled tip; inf for
+    #: the others)
     a_max: float = np.inf
+    #: a cheaper family for the start's scan (a sampled tip's interpolated tables), or None
+    scan: object = None
 
     def ratios(self, a_max: float) -> dict[str, float]:
         """The chapter's limit ratios at the largest contact radius a_max [m]."""
         if self.name in ("paraboloid", "exact sphere"):
             return {"a/R": a_max / self.shape[0]}
+        if self.name == "sampled tip":  # its range is checked against r_max (fit_curve)
+            return {}
         if self.name == "power law":  # d/a of the non-adhesive state at a_max
             return {"d/a": float(self.depth(1.0, a_max, 0.0)) / a_max}
         return {"tan(theta)": float(np.tan(self.shape[0]))}
@@ -206,6 +215,109 @@ def _sphere_pull_off_radius_one(E_star, dgamma, R):
     return float(brentq(slope, hi * 1e-12, hi, xtol=1e-300, rtol=4 * _EPS))
 
 
+#: contact radii of a sampled tip's tables: geometric from this fraction of r_max to r_max
+SAMPLED_A_FLOOR = 1e-6
+#: ... this many (the pull-off's bracket, a(d) without adhesion, the start scan's tables)
+SAMPLED_GRID = 600
+
+
+def _sampled_family(tip) -> _Family:
+    """The adhesive family of a :class:`hertzmdr.numeric.fit.SampledTip`: the generated
+    ``fit_adhesive_sampled_*`` (derive/fit.py's :func:`adhesive_general_model`, any g) at the
+    tip's g(a) (5.52), g'(a) and G(a) = integral_0^a g of its numerical MDR
+    (:class:`hertzmdr.numeric.adhesion.Sampled`: one quadrature of the profile's spline for all
+    three; g' is the quadrature's own derivative, not a finite difference), at every contact
+    radius a <= r_max asked for.
+
+    The pull-off radius a_dc is the first root of dd/da = g'(a) - Delta l/(2a) from a -> 0 (where
+    Delta l/(2a) ~ a^(-1/2) wins): bracketed on a geometric grid of SAMPLED_GRID radii from
+    SAMPLED_A_FLOOR r_max to r_max, then Brent's method at one Delta gamma (linear
+    interpolation between the grid's radii for arrays of Delta gamma: the start's scales only);
+    r_max when dd/da < 0 up to r_max (no pull-off within the samples). The start's scan runs on
+    ``scan``: the same relations on cubic Hermite interpolants of g (slopes g') and G (slopes g)
+    on that grid, g' their derivative (an approximation for the start only; Levenberg-Marquardt
+    and the reported Jacobian use the quadrature at every point).
+    """
+    from scipy.interpolate import CubicHermiteSpline
+
+    from hertzmdr.numeric import adhesion
+
+    shape = adhesion.Sampled(tip.profile)
+    r_max = float(tip.profile.r_max)
+    grid = np.geomspace(SAMPLED_A_FLOOR * r_max, r_max, SAMPLED_GRID)
+    g_grid, gp_grid, G_grid = (np.asarray(v, float) for v in shape._tables(grid))
+    g_spl = CubicHermiteSpline(np.r_[0.0, grid], np.r_[0.0, g_grid], np.r_[gp_grid[0], gp_grid])
+    G_spl = CubicHermiteSpline(np.r_[0.0, grid], np.r_[0.0, G_grid], np.r_[0.0, g_grid])
+    gp_spl = g_spl.derivative()
+    rel = {k: getattr(gen, f"fit_adhesive_sampled_{k}")
+           for k in ("depth", "depth_da", "force", "force_dE", "force_dz0", "force_ddgamma")}
+
+    def exact(a):
+        a = np.minimum(a, r_max)
+        if a.size == 0:  # no point in contact (the quadrature takes no empty array)
+            return a, a, a
+        return shape._tables(a)
+
+    def interpolated(a):
+        a = np.clip(a, 0.0, r_max)
+        return g_spl(a), gp_spl(a), G_spl(a)
+
+    def bind(tables, fn, baseline=False):
+        if baseline:  # the force without its baseline F_0 + s_0 z_p
+            return lambda E, a, rho: fn(E, *tables(a), a, rho, 0.0, 0.0, 0.0)
+        return lambda E, a, rho: fn(E, *tables(a), a, rho)
+
+    @lru_cache(maxsize=256)
+    def a_dc_one(E, dg):
+        if not dg > 0:
+            return 0.0
+        rho = np.sqrt(dg)
+        slope = rel["depth_da"](E, g_grid, gp_grid, G_grid, grid, rho)
+        k = int(np.argmax(slope > 0)) if (slope > 0).any() else grid.size
+        if k == grid.size:
+            return r_max
+        lo = grid[k - 1] if k else grid[0] * SAMPLED_A_FLOOR
+
+        def f(a):
+            return float(rel["depth_da"](E, *exact(np.array([a])), a, rho)[0])
+
+        if not (f(lo) < 0 < f(grid[k])):  # the grid's sign at the quadrature's rounding
+            return float(grid[k])
+        return float(brentq(f, lo, grid[k], xtol=1e-300, rtol=4 * _EPS))
+
+    def a_dc(E, dg):
+        dg_arr = np.asarray(dg, float)
+        if dg_arr.ndim == 0:
+            return a_dc_one(float(E), float(dg_arr))
+        rho = np.sqrt(np.maximum(dg_arr, 0.0))[:, None]
+        slope = rel["depth_da"](E, g_grid, gp_grid, G_grid, grid, rho)
+        pos = slope > 0
+        k = np.where(pos.any(axis=1), np.argmax(pos, axis=1), grid.size - 1)
+        k = np.maximum(k, 1)
+        rows = np.arange(dg_arr.size)
+        s0, s1 = slope[rows, k - 1], slope[rows, k]
+        t = np.clip(np.where(s1 > s0, -s0 / (s1 - s0), 1.0), 0.0, 1.0)
+        out = grid[k - 1] + t * (grid[k] - grid[k - 1])
+        return np.where(dg_arr > 0, out, 0.0)
+
+    def F_dc(E, dg):
+        a_c = a_dc(E, dg)
+        rho = np.sqrt(np.maximum(dg, 0.0))
+        return rel["force"](E, *interpolated(a_c), a_c, rho, 0.0, 0.0, 0.0)
+
+    def a_plain(d):  # g is increasing: a(d) without adhesion, by the grid
+        return np.interp(d, np.r_[0.0, g_grid], np.r_[0.0, grid])
+
+    def family(tables, scan=None):
+        return _Family("sampled tip", (), bind(tables, rel["depth"]),
+                       bind(tables, rel["depth_da"]), bind(tables, rel["force"], True),
+                       bind(tables, rel["force_dE"]), bind(tables, rel["force_dz0"]),
+                       bind(tables, rel["force_ddgamma"]), a_dc, F_dc, a_plain, r_max,
+                       a_max=r_max, scan=scan)
+
+    return family(exact, scan=family(interpolated))
+
+
 def _family(tip) -> _Family:
     """The adhesive relations of a Paraboloid (JKR), a Cone, an ExactSphere or a PowerLaw tip
     of numeric/fit.py."""
@@ -229,6 +341,8 @@ def _family(tip) -> _Family:
 
         return _generated_family("exact sphere", (R,), "adhesive_sphere", (a_dc, F_dc),
                                  a_plain, R, a_max=R)
+    if isinstance(tip, _fit.SampledTip):
+        return _sampled_family(tip)
     if isinstance(tip, _fit.PowerLaw):
         geo = (tip.c_n, tip.kappa_n, tip.n)
         return _generated_family(
@@ -288,6 +402,8 @@ def _contact_radius(d, fam, E_star, rho):
         if not low.any():
             break
         hi = np.where(low, np.minimum(2 * hi, 0.5 * (hi + fam.a_max)), hi)  # a < a_max
+        if fam.scan is not None and (hi[low] >= fam.a_max * (1 - 1e-9)).all():
+            break  # a sampled tip: depths beyond its samples (fit_curve refuses them)
     lo = np.full(dd.shape, a_c)
     target = np.sqrt(dd - d_c)
     a = hi.copy()
@@ -506,6 +622,9 @@ class JKRTip:
             return f"cone, adhesive (MDR), theta = {tip.theta:.6g} rad"
         if isinstance(tip, _fit.ExactSphere):
             return f"exact sphere (spherical cap), adhesive (MDR), R = {tip.R:.6g} m"
+        if isinstance(tip, _fit.SampledTip):
+            return (f"sampled tip, adhesive (numerical MDR), {tip.profile.source!r}, "
+                    f"r_max = {tip.profile.r_max:.6g} m")
         if isinstance(tip, _fit.PowerLaw):
             return (f"power law f = c_n r^n, adhesive (MDR), c_n = {tip.c_n:.6g} m^(1-n), "
                     f"n = {tip.n:.6g}")
@@ -568,23 +687,24 @@ class AdhesiveFitResult(_fit._Fitted):
 
 
 #: the tips with an adhesive fit model
-ADHESIVE_TIPS = (_fit.Paraboloid, _fit.Cone, _fit.ExactSphere, _fit.PowerLaw)
+ADHESIVE_TIPS = (_fit.Paraboloid, _fit.Cone, _fit.ExactSphere, _fit.PowerLaw, _fit.SampledTip)
 
 
 def _check_tip(tip):
     if not isinstance(tip, ADHESIVE_TIPS):
         raise ValueError(f"tip = {tip!r} has no adhesive fit model; valid: a Paraboloid "
                          "(hertzmdr.numeric.fit.Paraboloid, the scene's `sphere` body), a Cone "
-                         "(`cone`), an ExactSphere (`exact_sphere`) or a PowerLaw (`power_law`) "
-                         "with n > 1/2: the adhesive fit is written for these only "
-                         "(docs/fitting.md)")
+                         "(`cone`), an ExactSphere (`exact_sphere`), a PowerLaw (`power_law`) "
+                         "with n > 1/2 or a SampledTip (`profile`): the adhesive fit is "
+                         "written for these only (docs/fitting.md)")
     if isinstance(tip, _fit.PowerLaw) and not tip.n > 0.5:
         raise ValueError(f"the power law's n = {tip.n!r} has no adhesive pull-off (the adhesive "
                          "force falls without bound as the contact grows); valid for the "
                          "adhesive fit: n > 1/2")
 
 
-def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.PowerLaw, *,
+def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.PowerLaw
+              | _fit.SampledTip, *,
               nu=None, tip_modulus=None, tip_nu=None, z0=None,
               sigma=None) -> AdhesiveFitResult:
     """Fit an adhesive retract curve F(z) with the JKR paraboloid, or the adhesive cone, exact
@@ -596,9 +716,10 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.P
         Positions of the tip's base [m] (increasing into the sample, any order) and the force on
         the tip [N] (positive in compression, negative while adhesion pulls), as
         :func:`hertzmdr.numeric.fit.fit_curve`.
-    tip : hertzmdr.numeric.fit.Paraboloid, Cone, ExactSphere or PowerLaw
+    tip : hertzmdr.numeric.fit.Paraboloid, Cone, ExactSphere, PowerLaw or SampledTip
         The tip (radius of curvature R [m], the cone's angle theta [rad], the cap's radius R
-        [m], or the power law's c_n [m^(1-n)] and n > 1/2).
+        [m], the power law's c_n [m^(1-n)] and n > 1/2, or a measured profile: its contact
+        radius must stay below the samples' r_max [m], else one ValueError).
     nu, tip_modulus, tip_nu, z0, sigma
         As :func:`hertzmdr.numeric.fit.fit_curve` (z0 [m]: a guess of the contact point d = 0,
         added to the start scan; sigma [N]: the noise's standard deviation).
@@ -625,7 +746,7 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.P
     jump = _find_jump_off(z, F)
     z_split = -np.inf if jump is None else jump[0]
     layout = _Layout(z_split, np.ones(z.size, bool))
-    p0 = _start(fam, z, F, w, layout, z0)
+    p0 = _start(fam.scan or fam, z, F, w, layout, z0)
     if p0 is None:
         _fit._no_contact("no contact point makes the force rise with a positive modulus")
 
@@ -645,6 +766,10 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.P
         layout = _Layout(z_split, layout.keep & ~past)
         p0 = p
     keep = layout.keep
+    if isinstance(tip, _fit.SampledTip):  # the contact would need a > r_max
+        d_max = float(z[-1] - p[1])
+        if not d_max < float(fam.depth(max(p[0], _EPS), fam.a_max, np.sqrt(max(p[2], 0.0)))):
+            raise tip._too_deep(d_max)
     res = sol.fun
     dof = int(keep.sum()) - len(PARAMETERS)
     if dof < 2:
