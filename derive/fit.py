@@ -469,7 +469,17 @@ def jkr_relations() -> list[Relation]:
                                   "any tip of MDR profile g (g_a = g(a), g_slope = g'(a), "
                                   "g_integral = G(a), the integral of g over [0, a])",
                                   "(5.55), (5.57), adhesive MDR of any g",
-                                  "g(a) - Delta l", "2 E* (a d - G(a))", SAMPLED_ADH_TEST))
+                                  "g(a) - Delta l", "2 E* (a d - G(a))", SAMPLED_ADH_TEST,
+                                  domain=_SAMPLED_DOMAIN))
+
+
+#: where the general adhesive model is stated: a profile g increasing from g(0) = 0 (so
+#: G(a) < a g(a)) on the branch a > a_dc beyond the depth-controlled pull-off, where
+#: dd/da = g'(a) - Delta l/(2a) > 0 (Delta l = sqrt(2 pi a Delta gamma/E*), (5.55)), i.e.
+#: g'(a) = (Delta l/(2a))/t with t in (0, 1); at dd/da = 0, dF/dz_0 is infinite
+_SAMPLED_DOMAIN = {
+    g_slope: rho_g * sp.sqrt(2 * sp.pi * a / E_star) / (2 * a * unit_interval("t_s")),
+    g_int: a * g_a * unit_interval("t_G")}
 
 
 def _adhesive_relations(prefix, m, shape, label, src, depth_name, force_name, test,
