@@ -28,7 +28,7 @@ from test_fit_adhesive_sphere import (
     forward_curve,
     jacobian_check,
 )
-from test_fit_jkr import cli_adhesive_fit
+from test_fit_jkr import cli_adhesive_fit, radius_tolerance
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion
@@ -115,16 +115,11 @@ def test_adhesive_powerlaw_radius_by_mpmath():
                      np.geomspace(abs(d_c), 100 * abs(d_c), 3)]
     a = fa._contact_radius(ds, fam, E_TRUE, rho)
     with mp.workdps(DPS):
-        curv = float(mp.diff(lambda x: rt.depth(x, E_TRUE, DG_TRUE), a_dc, 2))
         for di, ai in zip(ds, a, strict=True):
             ref = rt.radius(mp.mpf(di), E_TRUE, DG_TRUE, a_dc)
-            slope = float(mp.diff(lambda x: rt.depth(x, E_TRUE, DG_TRUE), ref))
-            scale = float(rt.d_H(ref)) + float(mp.sqrt(2 * mp.pi * ref * DG_TRUE / E_TRUE))
-            # as test_fit_adhesive_sphere's: d(a) - d_dc at its rounding, over the slope or
-            # at the fold, and a^n's rounding (n ulp)
-            err = 8 * 2.2e-16 * (scale + 2 * abs(d_c) + abs(di))
-            tol = min(err / max(abs(slope), 1e-300), math.sqrt(2 * err / curv))
-            tol += 8e-16 * float(ref)
+            # and a^n's rounding (n ulp)
+            tol = radius_tolerance(lambda x: rt.depth(x, E_TRUE, DG_TRUE), rt.d_H, ref, a_dc,
+                                   di, d_c, E_TRUE, DG_TRUE, rounding=8e-16)
             assert abs(ai - float(ref)) <= tol, (di, ai, float(ref), tol)
     assert np.isnan(fa._contact_radius(np.array([d_c * (1 + 1e-9), 2 * d_c]), fam, E_TRUE,
                                        rho)).all()

@@ -22,6 +22,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 from test_fit_adhesive_sphere import EnergyRoute, jacobian_check, route, sneddon_depth, sphere_a_dc
+from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion
@@ -63,17 +64,9 @@ def jkr_route(R):
 
 
 def forward_curve(shape, n=400, depth=DEPTH):
-    """A noise-free retract curve by the closed-form forward model (depth control): contact
-    down to the jump-off, then the baseline."""
-    E, z0, dg, F0, s0 = TRUTH
-    c = adhesion.AdhesiveContact(shape, E_star=E, dgamma=dg)
-    d_dc = c.pull_off("depth").depth
-    z = np.linspace(z0 + 2.5 * d_dc, z0 + depth, n)
-    d = z - z0
-    F = F0 + s0 * z
-    on = d >= d_dc
-    F[on] += c.equilibrium(depth=d[on])[2]
-    return z, F
+    """A noise-free retract curve of ``shape`` by the closed-form forward model (test_fit_jkr's,
+    depth control): contact down to the jump-off, then the baseline."""
+    return jkr_forward_curve(n, TRUTH, 0.0, 0, shape, depth)
 
 
 # --- the generated relations -------------------------------------------------------------

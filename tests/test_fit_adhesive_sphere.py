@@ -26,7 +26,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
-from test_fit_jkr import cli_adhesive_fit
+from test_fit_jkr import cli_adhesive_fit, radius_tolerance
 from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
@@ -171,18 +171,11 @@ def test_adhesive_sphere_radius_by_mpmath():
     rt = route(R_TIP)
     with mp.workdps(DPS):
         a_dc = sphere_a_dc(rt, E_TRUE, DG_TRUE, R_TIP)
-        curv = float(mp.diff(lambda x: rt.depth(x, E_TRUE, DG_TRUE), a_dc, 2))
         for di, ai in zip(ds, a, strict=True):
             ref = rt.radius(mp.mpf(di), E_TRUE, DG_TRUE, a_dc, mp.mpf(R_TIP))
-            slope = float(mp.diff(lambda x: rt.depth(x, E_TRUE, DG_TRUE), ref))
-            scale = float(sneddon_depth(ref, mp.mpf(R_TIP))) \
-                + float(mp.sqrt(2 * mp.pi * ref * DG_TRUE / E_TRUE))
-            # as the cone's: the solver stops when d(a) - d_dc is at its rounding (4 ulp of
-            # each of d(a), d_dc, d; 2x here): a is known to it over the slope, or at the fold
-            # to sqrt(2 err/d''), whichever is smaller
-            err = 8 * 2.2e-16 * (scale + 2 * abs(d_c) + abs(di))
-            tol = min(err / max(abs(slope), 1e-300), math.sqrt(2 * err / curv))
-            tol += 4e-16 * float(ref)
+            tol = radius_tolerance(lambda x: rt.depth(x, E_TRUE, DG_TRUE),
+                                   lambda x: sneddon_depth(x, mp.mpf(R_TIP)), ref, a_dc, di,
+                                   d_c, E_TRUE, DG_TRUE)
             assert abs(ai - float(ref)) <= tol, (di, ai, float(ref), tol)
     assert np.isnan(fa._contact_radius(np.array([d_c * (1 + 1e-9), 2 * d_c]), fam, E_TRUE,
                                        rho)).all()

@@ -201,6 +201,20 @@ def forward_curve(n=400, truth=TRUTH, noise=0.0, seed=0, shape=None, depth=150e-
     return z, F
 
 
+def radius_tolerance(depth, d_H, ref, a_dc, d, d_c, E, dgamma, rounding=4e-16):
+    """How far an adhesive fit's contact radius at the depth d [m] may lie from the 30-digit
+    ``ref`` (mpf) of the route's ``depth(a)`` (mpf function; the pull-off radius ``a_dc``, the
+    depth there ``d_c``; the non-adhesive depth ``d_H(a)``): the solver stops when d(a) - d_c
+    is at its rounding (4 ulp of each of d(a), d_c, d; 2x here), so a is known to it over the
+    slope dd/da, or at the fold to sqrt(2 err/d''), whichever is smaller; plus ``rounding``
+    (relative) of the tip's own roundings in a."""
+    slope = float(mp.diff(depth, ref))
+    curv = float(mp.diff(depth, a_dc, 2))
+    scale = float(d_H(ref)) + float(mp.sqrt(2 * mp.pi * ref * dgamma / E))
+    err = 8 * 2.2e-16 * (scale + 2 * abs(d_c) + abs(d))
+    return min(err / max(abs(slope), 1e-300), math.sqrt(2 * err / curv)) + rounding * float(ref)
+
+
 def cli_adhesive_fit(tmp_path, capsys, z, F, sigma, body, label, dg_true=DG_TRUE):
     """``hertzmdr fit --adhesion`` of the curve (z [m], F [N]) with a scene whose tip is the
     TOML ``body`` (rigid, on a flat sample of E = 1.5 MPa): exit 0, ``label`` in the report,
