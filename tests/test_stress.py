@@ -696,9 +696,9 @@ def test_superposed_maximum_bound_takes_the_curvature_of_the_plane(case):
     x), off it (the mixed term), at the far corner (row and column shifted inwards). Each
     plane's peak is off its node, so the differences are not symmetric about it, and not where
     the field's maximum is (0, 0.481 a), so the refinement starts elsewhere: it still reaches
-    2 tau_1 (derivation, 30 digits) to 1e-12 (Nelder-Mead's fatol 1e-13 of the value, flat
-    peak), and with xatol = 0.05 the final simplex (~1e-6 a: fatol is what stops it) is well
-    inside xatol, so s = xatol."""
+    2 tau_1 (derivation, 30 digits) to 1e-10 (Nelder-Mead's final simplex, ~1e-5 a, on a
+    peak curving by ~1 per a^2), and with xatol = 0.05 the final simplex (~1e-6 a: fatol is
+    what stops it) is well inside xatol, so s = xatol."""
     z30, t30 = _axis_maxima("0.3")
     xs, zs = _A * np.linspace(0.0, 2.0, 7), _A * np.linspace(0.0, 2.0, 9)[1:]
     if case == "axis":  # node (0, 0.75 a); even in x: C = 0
@@ -715,7 +715,8 @@ def test_superposed_maximum_bound_takes_the_curvature_of_the_plane(case):
     v, x, z, bound = stress.superposed_maximum(_hertz_p, _A, 0.3, "von_mises", plane,
                                                xatol=xatol)
     ref = 2 * float(t30) * _P0
-    assert abs(v / ref - 1) < 1e-12 and abs(z / _A - float(z30)) < 1e-5 and abs(x) < 1e-5 * _A
+    # where Nelder-Mead stops (its simplex up to ~1e-5 a wide) is within ~1e-10 of the peak
+    assert abs(v / ref - 1) < 1e-10 and abs(z / _A - float(z30)) < 1e-5 and abs(x) < 1e-5 * _A
     want = _miss_model(curvature(xs[xa] / _A, zs[za] / _A), xatol, v)
     # the quadrature's estimate (~1e-15) is the only other part: 1e-10 of the miss term
     assert 1e-3 < want and abs(bound / want - 1) < 1e-10, (bound, want)
@@ -768,7 +769,10 @@ def test_superposed_maximum_bound_extrapolates_to_the_surface():
                                                "max_shear", plane, xatol=xatol)
     assert z == 1e-3 * _A and abs(x) < 1e-5 * _A
     t1, t2 = (float(_axis_tau_30("-0.9999", zz)) for zz in ("0.001", "0.002"))
-    assert abs(v / (t1 * _P0) - 1) < 1e-13  # the superposition at 1e-15, the plane's no part
+    # Nelder-Mead stops with its vertices' values within fatol = 1e-13 of each other, its
+    # simplex up to ~1e-5 a wide (measured 3e-6 ... 7e-6 a): a point that close to the axis,
+    # where the field curves by ~1 per a^2, is within ~1e-10 of the value there
+    assert abs(v / (t1 * _P0) - 1) < 1e-10
     extrapolation = (t1 - t2) / t1
     want = _miss_model(curvature(0.0, 0.5), xatol, v) + extrapolation
     assert 2e-6 < extrapolation and abs(bound / want - 1) < 1e-9, (bound, want, extrapolation)
