@@ -718,7 +718,7 @@ def test_superposed_maximum_bound_takes_the_curvature_of_the_plane(case):
     # where Nelder-Mead stops (its simplex up to ~1e-5 a wide) is within ~1e-10 of the peak
     assert abs(v / ref - 1) < 1e-10 and abs(z / _A - float(z30)) < 1e-5 and abs(x) < 1e-5 * _A
     want = _miss_model(curvature(xs[xa] / _A, zs[za] / _A), xatol, v)
-    # the quadrature's estimate (~1e-15) is the only other part: 1e-10 of the miss term
+    # the quadrature's estimate (~1e-15) is the only other part, ~1e-13 of the miss term
     assert 1e-3 < want and abs(bound / want - 1) < 1e-10, (bound, want)
 
 
