@@ -643,3 +643,159 @@ def test_superposed_maximum_of_the_orthogonal_shear_within_its_bound():
         stress.superposed_maximum(p, aa, nu_, "tresca", plane)
     with pytest.raises(ValueError, match="^a"):
         stress.superposed_maximum(p, -aa, nu_, "von_mises", plane)
+
+
+# superposed_maximum's bound, part by part. Its refinement climbs the superposed field itself;
+# the plane only chooses where it starts and gives the curvature of the bound's miss term. A
+# plane whose field is a polynomial has second differences known exactly, and a large xatol
+# makes that term (~1e-2) stand out over the quadrature's estimate (~1e-15 for the smooth
+# Hertz pressure) by 13 digits: the bound is then the error model's sum to ~1e-12 of itself.
+_A, _P0 = 2e-3, 1e9
+
+
+def _hertz_p(rr):
+    return _P0 * np.sqrt(np.maximum((1 - np.asarray(rr) / _A) * (1 + np.asarray(rr) / _A), 0.0))
+
+
+def _poly_plane(x0, z0, c, nx=7, nz=9):
+    """A PlaneField (every criterion the same field) on nx x-points 0 ... 2a and the nz - 1
+    z-points 0 < z <= 2a (hx = 2a/(nx - 1) != hz = 2a/(nz - 1), so hx and hz cannot be
+    swapped unseen), its field p0 (1 - A dX^2 - B dZ^2 - C dX dZ - G dX^2 dZ + E dZ^3 - K dX^4)
+    with dX = x/a - x0, dZ = z/a - z0, and its exact central second differences [Pa/a^2]
+    (Taylor's series of a polynomial ends: those of dX^2, dZ^2, dZ^3 and the mixed one of
+    dX dZ, dX^2 dZ are the derivatives; that of dX^4 is 12 dX^2 + 2 hx^2) as a function of
+    the node (X, Z)."""
+    A, B, C, G, E, K = c
+    x = _A * np.linspace(0.0, 2.0, nx)
+    z = _A * np.linspace(0.0, 2.0, nz)[1:]
+    hx = 2.0 / (nx - 1)
+    X, Z = np.meshgrid(x / _A - x0, z / _A - z0)
+    f = _P0 * (1 - A * X**2 - B * Z**2 - C * X * Z - G * X**2 * Z + E * Z**3 - K * X**4)
+
+    def curvature(xn, zn):
+        dx, dz = xn - x0, zn - z0
+        fxx = -2 * A - 2 * G * dz - K * (12 * dx**2 + 2 * hx**2)
+        fzz = -2 * B + 6 * E * dz
+        fxz = -C - 2 * G * dx
+        return _P0 * (abs(fxx) + 2 * abs(fxz) + abs(fzz))
+
+    return stress.PlaneField(x, z, f, f.copy(), f.copy(), 0.0), curvature
+
+
+def _miss_model(curv, s, value):
+    """The bound's miss term as its docstring states it: 4 (for the grid's averaging) times
+    1/2 (|f_xx| + 2 |f_xz| + |f_zz|) (2 s)^2 over the value."""
+    return 4 * 0.5 * curv * (2 * s) ** 2 / value
+
+
+@pytest.mark.parametrize("case", ["axis", "off_axis", "corner"])
+def test_superposed_maximum_bound_takes_the_curvature_of_the_plane(case):
+    """The miss term of superposed_maximum's bound (von Mises, Hertz pressure, nu = 0.3) from a
+    polynomial plane, against the model with the plane's exact second differences, at the
+    node where the plane is largest: on the axis (columns mirrored at x = 0, the field even in
+    x), off it (the mixed term), at the far corner (row and column shifted inwards). Each
+    plane's peak is off its node, so the differences are not symmetric about it, and not where
+    the field's maximum is (0, 0.481 a), so the refinement starts elsewhere: it still reaches
+    2 tau_1 (derivation, 30 digits) to 1e-10 (Nelder-Mead's final simplex, ~1e-5 a, on a
+    peak curving by ~1 per a^2), and with xatol = 0.05 the final simplex (~1e-6 a: fatol is
+    what stops it) is well inside xatol, so s = xatol."""
+    z30, t30 = _axis_maxima("0.3")
+    xs, zs = _A * np.linspace(0.0, 2.0, 7), _A * np.linspace(0.0, 2.0, 9)[1:]
+    if case == "axis":  # node (0, 0.75 a); even in x: C = 0
+        x0, z0, c, node = 0.0, 0.78, (0.5, 0.7, 0.0, 0.3, 0.2, 0.4), (0, 2)
+    elif case == "off_axis":  # node (2/3 a, 0.5 a)
+        x0, z0, c, node = 0.7, 0.47, (0.5, 0.7, 0.3, 0.3, 0.2, 0.4), (2, 1)
+    else:  # node (2 a, 2 a): curvature read at (5/3 a, 1.75 a)
+        x0, z0, c, node = 2.1, 2.05, (0.5, 0.7, 0.3, 0.3, 0.2, 0.4), (6, 7)
+    plane, curvature = _poly_plane(x0, z0, c)
+    assert np.unravel_index(int(np.argmax(plane.von_mises)), plane.von_mises.shape) \
+        == node[::-1]
+    xa, za = (min(node[0], 5), min(max(node[1], 1), 6))  # where the bound reads the curvature
+    xatol = 0.05
+    v, x, z, bound = stress.superposed_maximum(_hertz_p, _A, 0.3, "von_mises", plane,
+                                               xatol=xatol)
+    ref = 2 * float(t30) * _P0
+    # where Nelder-Mead stops (its simplex up to ~1e-5 a wide) is within ~1e-10 of the peak
+    assert abs(v / ref - 1) < 1e-10 and abs(z / _A - float(z30)) < 1e-5 and abs(x) < 1e-5 * _A
+    want = _miss_model(curvature(xs[xa] / _A, zs[za] / _A), xatol, v)
+    # the quadrature's estimate (~1e-15) is the only other part, ~1e-13 of the miss term
+    assert 1e-3 < want and abs(bound / want - 1) < 1e-10, (bound, want)
+
+
+@cache
+def _axis_tau_funcs(nu_):
+    """tau_1/p0 of the derivation on the axis and its slope, functions of s = z/a for mpmath
+    (nu a decimal string, exact)."""
+    s_ = sp.Symbol("s", positive=True)
+    tau = (ds.max_shear_axis() / p0).subs(z, a * s_).subs(a, 1).subs(nu, sp.Rational(nu_))
+    return sp.lambdify(s_, tau, "mpmath"), sp.lambdify(s_, sp.diff(tau, s_), "mpmath")
+
+
+@memo
+def _axis_tau_30(nu_, zz, peak=False):
+    """tau_1/p0 of the derivation on the axis (nu a decimal string) at z/a = zz, or with
+    peak=True (z/a, tau_1/p0) at the root of its slope found from zz, at 30 digits."""
+    value, slope = _axis_tau_funcs(nu_)
+    with mp.workdps(30):
+        if not peak:
+            return +value(mp.mpf(zz))
+        root = mp.findroot(slope, mp.mpf(zz))
+        return +root, +value(root)
+
+
+def _hertz_plane(nu_, n=5):
+    """The PlaneField superposed_plane makes for the Hertz pressure, from the closed form
+    (the same field to 1e-12, test_superposed_plane_and_its_maxima) in a fraction of its time."""
+    x = np.linspace(0.0, 2.0 * _A, n)
+    z = np.linspace(0.0, 2.0 * _A, n)[1:]
+    X, Z = np.meshgrid(x, z)
+    sig = stress.hertz_stress(X, 0.0 * X, Z, _A, _P0, nu_)
+    return stress.PlaneField(x, z, np.asarray(stress.von_mises(sig)),
+                             np.asarray(stress.max_shear(sig)), np.abs(sig[..., 0, 2]), 1e-15)
+
+
+def test_superposed_maximum_bound_extrapolates_to_the_surface():
+    """At nu = -0.9999 the largest shear (sigma_1 - sigma_3)/2 under the Hertz pressure lies
+    at z = 5e-5 a, above the route's lowest depth 1e-3 a (tau_1 = 3 p0/(4 (1 + s^2)) at
+    nu = -1, derive/stress.py): the refinement stops there and the bound adds the change of
+    the value over the last 1e-3 a, |tau(1e-3 a) - tau(2e-3 a)| (derivation, 30 digits), to
+    the miss term, here read from a polynomial plane largest on its top row (curvature one
+    row inwards, at 0.5 a) with xatol = 0.05: the sum to 1e-9 of itself (the extrapolation
+    term, 2.9e-6, is 3e-4 of it; the quadrature's estimate ~1e-15)."""
+    plane, curvature = _poly_plane(0.0, 0.2, (0.5, 0.7, 0.0, 0.3, 0.2, 0.4))
+    assert np.unravel_index(int(np.argmax(plane.max_shear)), plane.max_shear.shape) == (0, 0)
+    xatol = 0.05
+    v, x, z, bound = stress.superposed_maximum(_hertz_p, _A, -0.9999,
+                                               "max_shear", plane, xatol=xatol)
+    assert z == 1e-3 * _A and abs(x) < 1e-5 * _A
+    t1, t2 = (float(_axis_tau_30("-0.9999", zz)) for zz in ("0.001", "0.002"))
+    # Nelder-Mead stops with its vertices' values within fatol = 1e-13 of each other, its
+    # simplex up to ~1e-5 a wide (measured 3e-6 ... 7e-6 a): a point that close to the axis,
+    # where the field curves by ~1 per a^2, is within ~1e-10 of the value there
+    assert abs(v / (t1 * _P0) - 1) < 1e-10
+    extrapolation = (t1 - t2) / t1
+    want = _miss_model(curvature(0.0, 0.5), xatol, v) + extrapolation
+    assert 2e-6 < extrapolation and abs(bound / want - 1) < 1e-9, (bound, want, extrapolation)
+
+
+@pytest.mark.parametrize("nu_, start", [("-0.9999", "5e-5"), ("-0.995", "2.6e-3")])
+def test_superposed_maximum_near_the_surface_within_its_bound(nu_, start):
+    """The largest shear under the Hertz pressure at nu = -0.9999 (at z = 5e-5 a, above the
+    route's lowest depth 1e-3 a) and at nu = -0.995 (at z = 2.6e-3 a, just below twice it),
+    from the plane superposed_plane makes (n = 5), against the derivation's maximum on the
+    axis (30 digits): the actual error within the bound. At -0.9999 the linear extrapolation
+    over the last 1e-3 a sets the bound (the field falls by ~(1 + s^2)^-1 from 5e-5 a to
+    1e-3 a, 6.7e-7, and by 3 times that more over the next 1e-3 a): within 10 times the
+    error. At -0.995 the maximum is reached, there is nothing to extrapolate: the bound is the
+    curvature's and the quadrature's, 4e-9 (the extrapolation over (2e-3 a, 2.6e-3 a) would
+    add ~5e-7)."""
+    zr, tr = _axis_tau_30(nu_, start, peak=True)
+    v, x, z, bound = stress.superposed_maximum(_hertz_p, _A, float(nu_), "max_shear",
+                                               _hertz_plane(float(nu_)))
+    err = abs(v / (float(tr) * _P0) - 1)
+    assert err <= bound, (err, bound)
+    if nu_ == "-0.9999":
+        assert zr < 1e-4 and z == 1e-3 * _A and bound < 10 * err, (zr, z, err, bound)
+    else:
+        assert 2e-3 < zr < 3e-3 and abs(z / _A - float(zr)) < 1e-4 and bound < 1e-7, \
+            (zr, z, err, bound)
