@@ -212,15 +212,25 @@ def cases(row: Row, n: int, seed: int = 0, corners: bool = True):
             j //= len(e)
         pts.append(pt)
     pts += [{k: row.params[k].draw(rng) for k in names} for _ in range(n)]
+    seen = set()  # corners that differ only in the argument `near` moves share its points
+
+    def fresh(pt):
+        key = tuple(sorted((k, repr(np.asarray(v).tolist())) for k, v in pt.items()))
+        if key in seen:
+            return False
+        seen.add(key)
+        return True
+
     for pt in pts:
         pt = dict(pt)
         if row.derive is not None:
             pt = row.derive(pt)
             if pt is None:
                 continue
-        yield pt
+        if fresh(pt):
+            yield pt
         if row.near is not None:
-            yield from row.near(pt)
+            yield from (q for q in row.near(pt) if fresh(q))
 
 
 def run(rows: list[Row], n: int, seed: int = 0, keep: int = 3,
