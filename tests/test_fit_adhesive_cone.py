@@ -24,7 +24,11 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
-from test_fit_jkr import cli_adhesive_fit, radius_tolerance
+from test_fit_jkr import (
+    check_radius_beyond_and_without_adhesion,
+    cli_adhesive_fit,
+    radius_tolerance,
+)
 from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
@@ -166,12 +170,8 @@ def test_adhesive_cone_radius_by_mpmath():
                                    lambda x: d_H(x, THETA), ref, a_dc, di, d_c, E_TRUE,
                                    DG_TRUE)
             assert abs(ai - float(ref)) <= tol, (di, ai, float(ref), tol)
-    assert np.isnan(fa._contact_radius(np.array([d_c * (1 + 1e-9), 2 * d_c]), fam, E_TRUE,
-                                       rho)).all()
-    d = np.array([-1e-9, 0.0, 1e-9, 1e-7])
-    a0 = fa._contact_radius(d, fam, E_TRUE, 0.0)
-    assert np.isnan(a0[:2]).all()
-    np.testing.assert_allclose(a0[2:], 2 * d[2:] / (np.pi * np.tan(THETA)), rtol=1e-15)
+    check_radius_beyond_and_without_adhesion(  # (5.38)
+        fam, d_c, rho, E_TRUE, lambda di: 2 * di / (np.pi * np.tan(THETA)), rel=1e-15)
 
 
 def mp_model(E, z0, dg, z, a_lo):

@@ -28,7 +28,11 @@ from test_fit_adhesive_sphere import (
     forward_curve,
     jacobian_check,
 )
-from test_fit_jkr import cli_adhesive_fit, radius_tolerance
+from test_fit_jkr import (
+    check_radius_beyond_and_without_adhesion,
+    cli_adhesive_fit,
+    radius_tolerance,
+)
 
 from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import adhesion
@@ -121,15 +125,8 @@ def test_adhesive_powerlaw_radius_by_mpmath():
             tol = radius_tolerance(lambda x: rt.depth(x, E_TRUE, DG_TRUE), rt.d_H, ref, a_dc,
                                    di, d_c, E_TRUE, DG_TRUE, rounding=8e-16)
             assert abs(ai - float(ref)) <= tol, (di, ai, float(ref), tol)
-    assert np.isnan(fa._contact_radius(np.array([d_c * (1 + 1e-9), 2 * d_c]), fam, E_TRUE,
-                                       rho)).all()
-    d = np.array([-1e-9, 0.0, 1e-9, 1e-7])
-    a0 = fa._contact_radius(d, fam, E_TRUE, 0.0)
-    assert np.isnan(a0[:2]).all()
-    with mp.workdps(DPS):
-        for di, ai in zip(d[2:], a0[2:], strict=True):
-            ref = (mp.mpf(di) / (kappa(N) * C_N)) ** (1 / mp.mpf(N))
-            assert ai == pytest.approx(float(ref), rel=1e-14)
+    check_radius_beyond_and_without_adhesion(
+        fam, d_c, rho, E_TRUE, lambda di: (mp.mpf(di) / (kappa(N) * C_N)) ** (1 / mp.mpf(N)))
 
 
 def test_adhesive_powerlaw_jacobian_by_mpmath_derivative():

@@ -21,7 +21,14 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
-from test_fit_adhesive_sphere import EnergyRoute, jacobian_check, route, sneddon_depth, sphere_a_dc
+from test_fit_adhesive_sphere import (
+    EnergyRoute,
+    cap_cases,
+    jacobian_check,
+    route,
+    sneddon_depth,
+    sphere_a_dc,
+)
 from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
@@ -76,12 +83,7 @@ def test_adhesive_sampled_model_by_mpmath_parametric():
     decades of E*, R, Delta gamma and a/R from 1e-3 to 0.95."""
     rng = np.random.default_rng(1)
     worst = 0.0
-    for _ in range(n_cases := 12):
-        E = 10 ** rng.uniform(4, 11)
-        R = 10 ** rng.uniform(-8, -4)
-        dg = 10 ** rng.uniform(-4, 0)
-        a = R * 10 ** rng.uniform(-3, math.log10(0.95))
-        z, F0, s0 = rng.uniform(-1e-6, 1e-6), rng.uniform(-1e-9, 1e-9), rng.uniform(-1, 1)
+    for E, R, dg, a, z, F0, s0 in cap_cases(rng, n_cases := 12):
         rt = route(R)
         with mp.workdps(DPS):
             am, Rm = mp.mpf(a), mp.mpf(R)

@@ -26,7 +26,11 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
-from test_fit_jkr import cli_adhesive_fit, radius_tolerance
+from test_fit_jkr import (
+    check_radius_beyond_and_without_adhesion,
+    cli_adhesive_fit,
+    radius_tolerance,
+)
 from test_fit_jkr import forward_curve as jkr_forward_curve
 
 from hertzmdr.numeric import _generated as gen
@@ -110,18 +114,25 @@ def sphere_a_dc(rt, E, dg, R):
     return rt.a_dc(E, dg, a_jkr / 4, a_jkr)
 
 
+def cap_cases(rng, n):
+    """n draws of (E* [Pa], R [m], Delta gamma [J/m^2], a [m], z_p [m], F_0 [N], s_0 [N/m])
+    over decades of E*, R, Delta gamma and a/R from 1e-3 to 0.95, with a baseline."""
+    for _ in range(n):
+        E = 10 ** rng.uniform(4, 11)
+        R = 10 ** rng.uniform(-8, -4)
+        dg = 10 ** rng.uniform(-4, 0)
+        a = R * 10 ** rng.uniform(-3, math.log10(0.95))
+        yield (E, R, dg, a, rng.uniform(-1e-6, 1e-6), rng.uniform(-1e-9, 1e-9),
+               rng.uniform(-1, 1))
+
+
 # --- the generated relations -------------------------------------------------------------
 def test_adhesive_sphere_model_by_mpmath_parametric():
     """fit_adhesive_sphere_depth and fit_adhesive_sphere_force against the energy route at 30
     digits, over decades of E*, R, Delta gamma and a/R from 1e-3 to 0.95."""
     rng = np.random.default_rng(0)
     worst = 0.0
-    for _ in range(n_cases := 16):
-        E = 10 ** rng.uniform(4, 11)
-        R = 10 ** rng.uniform(-8, -4)
-        dg = 10 ** rng.uniform(-4, 0)
-        a = R * 10 ** rng.uniform(-3, math.log10(0.95))
-        z, F0, s0 = rng.uniform(-1e-6, 1e-6), rng.uniform(-1e-9, 1e-9), rng.uniform(-1, 1)
+    for E, R, dg, a, z, F0, s0 in cap_cases(rng, n_cases := 16):
         rt = route(R)
         with mp.workdps(DPS):
             am = mp.mpf(a)
@@ -177,18 +188,12 @@ def test_adhesive_sphere_radius_by_mpmath():
                                    lambda x: sneddon_depth(x, mp.mpf(R_TIP)), ref, a_dc, di,
                                    d_c, E_TRUE, DG_TRUE)
             assert abs(ai - float(ref)) <= tol, (di, ai, float(ref), tol)
-    assert np.isnan(fa._contact_radius(np.array([d_c * (1 + 1e-9), 2 * d_c]), fam, E_TRUE,
-                                       rho)).all()
-    d = np.array([-1e-9, 0.0, 1e-9, 1e-7])
-    a0 = fa._contact_radius(d, fam, E_TRUE, 0.0)
-    assert np.isnan(a0[:2]).all()
-    with mp.workdps(DPS):
-        Rm = mp.mpf(R_TIP)
-        for di, ai in zip(d[2:], a0[2:], strict=True):
-            ref = mp.findroot(lambda x, di=di: sneddon_depth(x, Rm) - di,
-                              (mp.sqrt(di * Rm) / 2, Rm * (1 - mp.mpf(10) ** -25)),
-                              solver="anderson")
-            assert ai == pytest.approx(float(ref), rel=1e-14)
+    Rm = mp.mpf(R_TIP)
+    check_radius_beyond_and_without_adhesion(
+        fam, d_c, rho, E_TRUE,
+        lambda di: mp.findroot(lambda x: sneddon_depth(x, Rm) - di,
+                               (mp.sqrt(di * Rm) / 2, Rm * (1 - mp.mpf(10) ** -25)),
+                               solver="anderson"))
 
 
 def mp_model(rt, E, z0, dg, z, a_lo, a_max):

@@ -215,6 +215,23 @@ def radius_tolerance(depth, d_H, ref, a_dc, d, d_c, E, dgamma, rounding=4e-16):
     return min(err / max(abs(slope), 1e-300), math.sqrt(2 * err / curv)) + rounding * float(ref)
 
 
+def check_radius_beyond_and_without_adhesion(fam, d_c, rho, E, radius, rel=1e-14):
+    """An adhesive family's contact radius (fit_adhesive._contact_radius): NaN past the
+    jump-off depth ``d_c`` [m] (no equilibrium there), NaN out of contact without adhesion,
+    and ``radius(d)`` (the non-adhesive a(d) at 30 digits, mpf or float) within ``rel`` at
+    d = 1 nm and 100 nm without adhesion."""
+    from hertzmdr.numeric import fit_adhesive as fa
+
+    assert np.isnan(fa._contact_radius(np.array([d_c * (1 + 1e-9), 2 * d_c]), fam, E,
+                                       rho)).all()
+    d = np.array([-1e-9, 0.0, 1e-9, 1e-7])
+    a0 = fa._contact_radius(d, fam, E, 0.0)
+    assert np.isnan(a0[:2]).all()
+    with mp.workdps(30):
+        for di, ai in zip(d[2:], a0[2:], strict=True):
+            assert ai == pytest.approx(float(radius(di)), rel=rel), di
+
+
 def cli_adhesive_fit(tmp_path, capsys, z, F, sigma, body, label, dg_true=DG_TRUE):
     """``hertzmdr fit --adhesion`` of the curve (z [m], F [N]) with a scene whose tip is the
     TOML ``body`` (rigid, on a flat sample of E = 1.5 MPa): exit 0, ``label`` in the report,
