@@ -21,8 +21,15 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
-from test_fit_adhesive_sphere import (
+from test_fit_adhesive_sphere import (  # the same truth, tip radius and depth as the cap's
+    DEPTH,
+    DG_TRUE,
+    DPS,
+    E_TRUE,
+    R_TIP,
+    TRUTH,
     EnergyRoute,
+    assert_recovered,
     cap_cases,
     jacobian_check,
     route,
@@ -37,15 +44,6 @@ from hertzmdr.numeric import fit as hfit
 from hertzmdr.numeric import fit_adhesive as fa
 from hertzmdr.numeric.cli import main
 
-DPS = 30
-R_TIP = 1e-6  # m
-E_TRUE = 2.0e6  # Pa
-DG_TRUE = 0.05  # J/m^2
-Z0_TRUE = 1.3e-6  # m
-F0_TRUE = 2.0e-9  # N
-S0_TRUE = 1.0e-4  # N/m
-DEPTH = 300e-9  # m: a/R up to ~0.6 (cap) or ~0.55 (paraboloid)
-TRUTH = np.array([E_TRUE, Z0_TRUE, DG_TRUE, F0_TRUE, S0_TRUE])
 R_MAX = 0.9 * R_TIP  # m: the samples' extent
 
 
@@ -185,13 +183,7 @@ def test_noise_free_recovery_sampled_paraboloid():
     closed-form tips' (z_0 to 1e-10 of the depth, the baseline to 1e-10 of the force range)."""
     z, F = forward_curve(adhesion.Paraboloid(R=R_TIP))
     res = fa.fit_curve(z, F, PARABOLOID_TIP)
-    span = float(np.ptp(F))
-    assert res.values[0] == pytest.approx(E_TRUE, rel=1e-10)
-    assert abs(res.values[1] - Z0_TRUE) <= 1e-10 * DEPTH
-    assert res.values[2] == pytest.approx(DG_TRUE, rel=1e-10)
-    assert abs(res.values[3] + res.values[4] * Z0_TRUE - F0_TRUE - S0_TRUE * Z0_TRUE) \
-        <= 1e-10 * span
-    assert res.jump_off is not None and res.z_split is not None
+    assert_recovered(res, F)
     assert "sampled tip, adhesive" in res.tip.describe()
     assert not res.warnings, res.warnings
 

@@ -114,6 +114,19 @@ def sphere_a_dc(rt, E, dg, R):
     return rt.a_dc(E, dg, a_jkr / 4, a_jkr)
 
 
+def assert_recovered(res, F):
+    """A noise-free fit of the forward curve (F [N]) of TRUTH: every parameter to <= 1e-10
+    relative (z_0 to 1e-10 of DEPTH, the baseline's value at z_0 to 1e-10 of the force range),
+    with the jump-off found."""
+    span = float(np.ptp(F))
+    assert res.values[0] == pytest.approx(E_TRUE, rel=1e-10)
+    assert abs(res.values[1] - Z0_TRUE) <= 1e-10 * DEPTH
+    assert res.values[2] == pytest.approx(DG_TRUE, rel=1e-10)
+    assert abs(res.values[3] + res.values[4] * Z0_TRUE - F0_TRUE - S0_TRUE * Z0_TRUE) \
+        <= 1e-10 * span
+    assert res.jump_off is not None and res.z_split is not None
+
+
 def cap_cases(rng, n):
     """n draws of (E* [Pa], R [m], Delta gamma [J/m^2], a [m], z_p [m], F_0 [N], s_0 [N/m])
     over decades of E*, R, Delta gamma and a/R from 1e-3 to 0.95, with a baseline."""
@@ -257,13 +270,7 @@ def test_noise_free_recovery():
     range); the jump-off force the energy route's."""
     z, F = forward_curve()
     res = fa.fit_curve(z, F, TIP)
-    span = float(np.ptp(F))
-    assert res.values[0] == pytest.approx(E_TRUE, rel=1e-10)
-    assert abs(res.values[1] - Z0_TRUE) <= 1e-10 * DEPTH
-    assert res.values[2] == pytest.approx(DG_TRUE, rel=1e-10)
-    assert abs(res.values[3] + res.values[4] * Z0_TRUE - F0_TRUE - S0_TRUE * Z0_TRUE) \
-        <= 1e-10 * span
-    assert res.jump_off is not None and res.z_split is not None
+    assert_recovered(res, F)
     assert "exact sphere (spherical cap), adhesive" in res.tip.describe()
     assert not any("excluded" in w for w in res.warnings), res.warnings
 
