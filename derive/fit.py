@@ -38,6 +38,12 @@ from hertzmdr.derive.symbols import E, E_star, R, a, d, nu, symbol, unit_interva
 
 TEST = "tests/test_fit.py"
 JAC_TEST = f"{TEST}::test_jacobian_by_mpmath_derivative"
+
+#: the exact sphere's dF/dE* printed once more with its common subexpressions computed once
+#: (codegen.render_fused: lam^2 once, squares and the cube as products, not NumPy's pow): the
+#: fit evaluates it at every point of every contact point it tries (numeric/fit.py), where the
+#: plain print costs ~5 times as much
+FUSED = {"fit_sphere_force_unit": ("fit_sphere_force_dE",)}
 FORCE_TEST = f"{TEST}::test_model_by_forward_models"
 
 z_p = symbol("z_p", real=True)
@@ -101,17 +107,28 @@ def sphere_model() -> dict[str, sp.Expr]:
         raise AssertionError(f"dF/dz_0 of the exact sphere is not -2 E* a: {dz0}")
     dE = sp.diff(model, E_star)
     _assert_linear_in_modulus("exact sphere", model, dE, dz0)
-    # the form the fit evaluates (derive/sphere.py's force_lam_fit: a continued fraction for
-    # the cancelling part below lam = 1/2, no 2F1); its branch above is (5.57) itself
+    # the form the fit evaluates (derive/sphere.py's force_lam_fit: in lam and a = R tanh(lam),
+    # a continued fraction for the cancelling part below lam = 1/2, no 2F1); its branch above is
+    # (5.57) itself at a = R tanh(lam)
+    on_lam = {a: s["a_lam"]}
     fast = sphere.force_lam_fit()
     (pw,) = fast.atoms(sp.Piecewise)
-    if sp.simplify(fast.subs(pw, pw.args[1][0]) - s["F_lam"]) != 0:
+    if sp.simplify(fast.subs(pw, pw.args[1][0]).subs(on_lam) - s["F_lam"]) != 0:
         raise AssertionError(f"the fit's sphere force above lam = 1/2 is not (5.57): {fast}")
     fit_force = fast + F_0 + s_0 * z_p
-    # Newton's step for lam in d = d(lam): dd/dlam, positive for lam > 0
+    # dF/dz_0 = -2 E* a (asserted above) at the given a: no tanh of its own
+    dz0_a = -2 * E_star * a
+    # Newton's step for lam in d = d(lam) = a lam (5.55): dd/dlam, positive for lam > 0, in
+    # lam and a: R (lam sech(lam)^2 + tanh(lam)) with sech^2 = 1 - tanh^2 = (R - a)(R + a)/R^2
+    # (no cosh to overflow beyond lam = 355: there a = R, and dd/dlam = a)
     d_dlam = sp.simplify(sp.diff(s["d_lam"], lam))
+    depth_a = a * lam
+    d_dlam_a = lam * (R - a) * (R + a) / R + a
+    for form, ref in ((depth_a, s["d_lam"]), (d_dlam_a, d_dlam), (dz0_a, dz0)):
+        if sp.simplify((form.subs(on_lam) - ref).rewrite(sp.exp)) != 0:
+            raise AssertionError(f"the exact sphere's {form} at a = R tanh(lam) is not {ref}")
     return {"F": model, "F_fit": fit_force, "dE": dE, "dE_fit": sp.diff(fit_force, E_star),
-            "dz0": dz0, "d_dlam": d_dlam}
+            "dz0": dz0_a, "d": depth_a, "d_dlam": d_dlam_a}
 
 
 alpha_p = symbol("alpha_p", positive=True)
@@ -233,29 +250,42 @@ def relations() -> list[Relation]:
         ]
     sm = sphere_model()
     lam = sphere.lam
-    lam_dom = {lam: sp.atanh(unit_interval("t_lam"))}  # lam in (0, inf): a/R = t_lam
+    t_lam = unit_interval("t_lam")
+    lam_a_dom = {lam: sp.atanh(t_lam), a: R * t_lam}  # lam in (0, inf): a/R = t_lam
+    given_a = (" at lam = atanh(a/R) and the contact radius a = R tanh(lam), both given (the fit "
+               "computes tanh once per point)")
     rels += [
         Relation("fit_sphere_force", "(5.57), fit model", sm["F_fit"],
-                 (E_star, R, lam, z_p, F_0, s_0),
+                 (E_star, R, lam, a, z_p, F_0, s_0),
                  "force F [N] on a rigid spherical cap (exact sphere) at the position z_p, "
                  "with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline "
-                 "F_0 + s_0 z_p", "(5.57) at lam = atanh(a/R); below lam = 1/2 its cancelling "
+                 "F_0 + s_0 z_p", "(5.57)" + given_a + "; below lam = 1/2 its cancelling "
                  "lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels (truncation "
                  "< 1e-18 relative; no 2F1, cheap at every point of a fit)",
-                 f"{TEST}::test_sphere_fit_force_by_mpmath", domain=lam_dom),
-        Relation("fit_sphere_force_dE", "(5.57), fit model", sm["dE_fit"], (R, lam),
+                 f"{TEST}::test_sphere_fit_force_by_mpmath", domain=lam_a_dom),
+        Relation("fit_sphere_force_dE", "(5.57), fit model", sm["dE_fit"], (R, lam, a),
                  "derivative dF/dE* [m^2] of the fit model of the exact sphere",
-                 "(5.57) differentiated in E*; below lam = 1/2 as fit_sphere_force",
-                 f"{TEST}::test_sphere_fit_force_by_mpmath", domain=lam_dom),
+                 "(5.57) differentiated in E*" + given_a + "; below lam = 1/2 as "
+                 "fit_sphere_force", f"{TEST}::test_sphere_fit_force_by_mpmath",
+                 domain=lam_a_dom),
         Relation("fit_sphere_force_dz0", "(5.55), (5.57), fit model", sm["dz0"],
-                 (E_star, R, lam),
-                 "derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0)",
-                 "-(dF/dlam)/(dd/dlam) of (5.57) and (5.55)", JAC_TEST),
-        Relation("fit_sphere_depth_dlam", "(5.55)", sm["d_dlam"], (R, lam),
-                 "derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the "
-                 "slope of Newton's iteration for lam at a given depth",
-                 "(5.55) at a = R tanh(lam), differentiated in lam",
-                 f"{TEST}::test_sphere_lam_by_newton"),
+                 (E_star, a),
+                 "derivative dF/dz_0 [N/m] of the fit model of the exact sphere at the contact "
+                 "radius a = R tanh(lam) (0 at a = 0, no contact)",
+                 "-(dF/dlam)/(dd/dlam) of (5.57) and (5.55), simplified to -2 E* a", JAC_TEST),
+        Relation("fit_sphere_depth", "(5.55)", sm["d"], (lam, a),
+                 "indentation depth d [m] of the exact sphere at lam = atanh(a/R) and its "
+                 "contact radius a = R tanh(lam), both given: the function of Newton's "
+                 "iteration for lam at a given depth",
+                 "(5.55), d = a atanh(a/R), at a = R tanh(lam)",
+                 f"{TEST}::test_sphere_lam_by_newton", domain=lam_a_dom),
+        Relation("fit_sphere_depth_dlam", "(5.55)", sm["d_dlam"], (R, lam, a),
+                 "derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam) at "
+                 "lam and a = R tanh(lam), both given: the slope of Newton's iteration for lam "
+                 "at a given depth",
+                 "(5.55) at a = R tanh(lam), differentiated in lam; sech(lam)^2 as "
+                 "(R - a)(R + a)/R^2", f"{TEST}::test_sphere_lam_by_newton",
+                 domain=lam_a_dom),
     ]
     return rels + jkr_relations()
 

@@ -142,15 +142,21 @@ def lam_minus_tanh_cf(levels: int = FIT_CF_LEVELS) -> sp.Expr:
 
 @cache
 def force_lam_fit() -> sp.Expr:
-    """The force E* R^2 ((1 + b^2) lam - b), b = tanh(lam), as the fit evaluates it: below
-    lam = FIT_LAM_SPLIT the cancelling lam - b by :func:`lam_minus_tanh_cf` (no 2F1: the
-    fit evaluates it at every point of every contact point it tries), above it directly.
+    """The force E* R^2 ((1 + b^2) lam - b), b = tanh(lam), as the fit evaluates it: in lam and
+    the contact radius a = R tanh(lam) (both arguments: the fit computes tanh once per point and
+    shares it between Newton's iteration for lam, the force and dF/dz_0 = -2 E* a), below
+    lam = FIT_LAM_SPLIT as E* (a^2 lam + R^2 (lam - b)) with the cancelling lam - b by
+    :func:`lam_minus_tanh_cf` (no 2F1: the fit evaluates it at every point of every contact
+    point it tries), above it as E* ((R^2 + a^2) lam - R a).
 
     Error model: the direct form's rounding is ~eps lam against a force ~(4/3) lam^3, a
     relative error ~1.5 eps/lam^2, <= 6 eps above lam = 1/2 (3.5 eps measured); the continued
     fraction's rounding is a few eps (positive terms only) and its truncation, checked here at
     40 digits on a grid of (0, FIT_LAM_SPLIT] (the relative truncation error grows with lam:
-    a Pade approximant's error ~ lam^(4 levels + 3)), is below 1e-18.
+    a Pade approximant's error ~ lam^(4 levels + 3)), is below 1e-18. The rounding of the
+    given a (an ulp) moves the force by (2 a^2 lam - [lam >= 1/2] R a)/(force/E*) ulp of a:
+    at most 1.5 ulp below lam = 1/2 (a^2 lam against (4/3) R^2 lam^3) and 1.7 above it (at
+    lam = 1/2, decreasing beyond).
     """
     b = sp.tanh(lam)
     exact = (1 + b**2) * lam - b
@@ -159,7 +165,13 @@ def force_lam_fit() -> sp.Expr:
                          40)) for k in range(1, 17))
     if not worst < 1e-18:
         raise AssertionError(f"the continued fraction's truncation error {worst} is not < 1e-18")
-    return E_star * R**2 * sp.Piecewise((small, lam < FIT_LAM_SPLIT), (exact, True))
+    small_a = a**2 * lam + R**2 * lam_minus_tanh_cf()
+    exact_a = (R**2 + a**2) * lam - R * a
+    on_lam = {a: R * b}
+    for form, ref in ((small_a, small), (exact_a, exact)):
+        if sp.simplify(form.subs(on_lam) - R**2 * ref) != 0:
+            raise AssertionError(f"the fit's sphere force in (lam, a) is not R^2 ({ref}): {form}")
+    return E_star * sp.Piecewise((small_a, lam < FIT_LAM_SPLIT), (exact_a, True))
 
 
 def pressure_pole_lam_stable() -> sp.Expr:

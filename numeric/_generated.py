@@ -193,6 +193,7 @@ __all__ = [
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
     'fit_sample_modulus_rigid_dE',
+    'fit_sphere_depth',
     'fit_sphere_depth_dlam',
     'fit_sphere_force',
     'fit_sphere_force_dE',
@@ -601,10 +602,11 @@ RELATIONS = (
     ('fit_sample_modulus_dE', '(5.26), inverted', 'fit', '-E2**2*nu1**2/(E2 + E_star*nu2**2 - E_star)**2 + E2**2/(E2 + E_star*nu2**2 - E_star)**2', ''),
     ('fit_sample_modulus_rigid', '(5.8), inverted', 'fit', 'E_star*(1 - nu**2)', ''),
     ('fit_sample_modulus_rigid_dE', '(5.8), inverted', 'fit', '1 - nu**2', ''),
-    ('fit_sphere_depth_dlam', '(5.55)', 'fit', 'R*(lam/cosh(lam)**2 + tanh(lam))', ''),
-    ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*R**2*Piecewise((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + lam*tanh(lam)**2, lam < 1/2), (lam*(tanh(lam)**2 + 1) - tanh(lam), True)) + F_0 + s_0*z_p', ''),
-    ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'R**2*Piecewise((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + lam*tanh(lam)**2, lam < 1/2), (lam*(tanh(lam)**2 + 1) - tanh(lam), True))', ''),
-    ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*R*tanh(lam)', ''),
+    ('fit_sphere_depth', '(5.55)', 'fit', 'a*lam', ''),
+    ('fit_sphere_depth_dlam', '(5.55)', 'fit', 'a + lam*(R - a)*(R + a)/R', ''),
+    ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*Piecewise((R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam, lam < 1/2), (-R*a + lam*(R**2 + a**2), True)) + F_0 + s_0*z_p', ''),
+    ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'Piecewise((R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam, lam < 1/2), (-R*a + lam*(R**2 + a**2), True))', ''),
+    ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*a', ''),
     ('flamant_sigma_xx', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x**2*z/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_tau_xz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x*z**2/(pi*(x**2 + z**2)**2)', ''),
@@ -6101,10 +6103,34 @@ def fit_sample_modulus_rigid_dE(nu):
     return 1 - nu**2
 
 
-def fit_sphere_depth_dlam(R, lam):
-    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the slope of Newton's iteration for lam at a given depth.
+def fit_sphere_depth(lam, a):
+    """Indentation depth d [m] of the exact sphere at lam = atanh(a/R) and its contact radius a = R tanh(lam), both given: the function of Newton's iteration for lam at a given depth.
 
-    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam.
+    Chapter: (5.55). Derived from: (5.55), d = a atanh(a/R), at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    lam : float or ndarray
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : float or ndarray
+        contact radius [m]
+    """
+    if type(lam) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sphere_depth(lam, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return a*lam
+
+
+def fit_sphere_depth_dlam(R, lam, a):
+    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam) at lam and a = R tanh(lam), both given: the slope of Newton's iteration for lam at a given depth.
+
+    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam;
+    sech(lam)^2 as (R - a)(R + a)/R^2.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
     ``tests/test_fit.py::test_sphere_lam_by_newton``.
@@ -6115,20 +6141,23 @@ def fit_sphere_depth_dlam(R, lam):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : float or ndarray
+        contact radius [m]
     """
-    if type(R) is float and type(lam) is float:
+    if type(R) is float and type(lam) is float and type(a) is float:
         try:  # the scalar path: Python floats, the math module
-            return _math_fit_sphere_depth_dlam(R, lam)
+            return _math_fit_sphere_depth_dlam(R, lam, a)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return R*(lam/numpy.cosh(lam)**2 + numpy.tanh(lam))
+    return a + lam*(R - a)*(R + a)/R
 
 
-def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+def fit_sphere_force(E_star, R, lam, a, z_p, F_0, s_0):
     """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R); below lam = 1/2
-    its cancelling lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R) and the contact
+    radius a = R tanh(lam), both given (the fit computes tanh once per point); below lam =
+    1/2 its cancelling lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels
     (truncation < 1e-18 relative; no 2F1, cheap at every point of a fit).
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
@@ -6142,6 +6171,8 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : float or ndarray
+        contact radius [m]
     z_p : float or ndarray
         position of the tip's base (piezo), increasing into the sample [m]
     F_0 : float or ndarray
@@ -6150,19 +6181,21 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
         slope of the force baseline before contact (drift, drag) [N/m]
     """
     if (type(E_star) is float and type(R) is float and type(lam) is float and
-            type(z_p) is float and type(F_0) is float and type(s_0) is float):
+            type(a) is float and type(z_p) is float and type(F_0) is float and
+            type(s_0) is float):
         try:  # the scalar path: Python floats, the math module
-            return _math_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0)
+            return _math_fit_sphere_force(E_star, R, lam, a, z_p, F_0, s_0)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return E_star*R**2*numpy.where(numpy.less(lam, 1/2), lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2, lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam)) + F_0 + s_0*z_p
+    return E_star*numpy.where(numpy.less(lam, 1/2), R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam, -R*a + lam*(R**2 + a**2)) + F_0 + s_0*z_p
 
 
-def fit_sphere_force_dE(R, lam):
+def fit_sphere_force_dE(R, lam, a):
     """Derivative dF/dE* [m^2] of the fit model of the exact sphere.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*; below lam = 1/2
-    as fit_sphere_force.
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E* at lam =
+    atanh(a/R) and the contact radius a = R tanh(lam), both given (the fit computes tanh
+    once per point); below lam = 1/2 as fit_sphere_force.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
     ``tests/test_fit.py::test_sphere_fit_force_by_mpmath``.
@@ -6173,20 +6206,22 @@ def fit_sphere_force_dE(R, lam):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     lam : float or ndarray
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : float or ndarray
+        contact radius [m]
     """
-    if type(R) is float and type(lam) is float:
+    if type(R) is float and type(lam) is float and type(a) is float:
         try:  # the scalar path: Python floats, the math module
-            return _math_fit_sphere_force_dE(R, lam)
+            return _math_fit_sphere_force_dE(R, lam, a)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return R**2*numpy.where(numpy.less(lam, 1/2), lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*numpy.tanh(lam)**2, lam*(numpy.tanh(lam)**2 + 1) - numpy.tanh(lam))
+    return numpy.where(numpy.less(lam, 1/2), R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((1/15)*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam, -R*a + lam*(R**2 + a**2))
 
 
-def fit_sphere_force_dz0(E_star, R, lam):
-    """Derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0).
+def fit_sphere_force_dz0(E_star, a):
+    """Derivative dF/dz_0 [N/m] of the fit model of the exact sphere at the contact radius a = R tanh(lam) (0 at a = 0, no contact).
 
     Chapter: (5.55), (5.57), fit model. Derived from: -(dF/dlam)/(dd/dlam) of (5.57) and
-    (5.55).
+    (5.55), simplified to -2 E* a.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
     ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
@@ -6195,17 +6230,15 @@ def fit_sphere_force_dz0(E_star, R, lam):
     ----------
     E_star : float or ndarray
         effective modulus E* (5.8), (5.26) [Pa]
-    R : float or ndarray
-        radius of curvature (effective radius (5.27) for two bodies) [m]
-    lam : float or ndarray
-        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : float or ndarray
+        contact radius [m]
     """
-    if type(E_star) is float and type(R) is float and type(lam) is float:
+    if type(E_star) is float and type(a) is float:
         try:  # the scalar path: Python floats, the math module
-            return _math_fit_sphere_force_dz0(E_star, R, lam)
+            return _math_fit_sphere_force_dz0(E_star, a)
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
-    return -2*E_star*R*numpy.tanh(lam)
+    return -2*E_star*a
 
 
 def flamant_sigma_xx(F_L, x, z):
@@ -13981,6 +14014,17 @@ def textbook_worn_force(E_star, R, b, d):
     return (1/3)*E_star*numpy.sqrt(-2*b**2 + 2*numpy.sqrt(4*R**2*d**2 + b**4))*(2*b**2 + numpy.sqrt(4*R**2*d**2 + b**4))/R
 
 
+def fit_sphere_force_unit(R, a, lam):
+    """(``fit_sphere_force_dE``) at once, their common subexpressions computed once
+    (SymPy's cse): each as the relation's own function gives it, to rounding. Arguments
+    as there.
+    """
+    _c0 = (a*a)
+    _c1 = (R*R)
+    _c2 = (lam*lam)
+    return numpy.where(numpy.less(lam, 1/2), _c0*lam + _c1*(lam*lam*lam)/(_c2 + _c2/(_c2/(_c2/(_c2/(_c2/((1/15)*_c2 + 13) + 11) + 9) + 7) + 5) + 3), -R*a + lam*(_c0 + _c1))
+
+
 def hertz_displacement_far(R, d, r):
     """(``hertz_displacement_outside_series``) at once, their common subexpressions
     computed once (SymPy's cse): each as the relation's own function gives it, to
@@ -14914,24 +14958,29 @@ def _math_fit_sample_modulus_rigid_dE(nu):
     return 1 - (nu*nu)
 
 
-def _math_fit_sphere_depth_dlam(R, lam):
+def _math_fit_sphere_depth(lam, a):
+    """``fit_sphere_depth`` for Python floats (the math module); raises where it does."""
+    return a*lam
+
+
+def _math_fit_sphere_depth_dlam(R, lam, a):
     """``fit_sphere_depth_dlam`` for Python floats (the math module); raises where it does."""
-    return R*(lam/(math.cosh(lam)*math.cosh(lam)) + math.tanh(lam))
+    return a + lam*(R - a)*(R + a)/R
 
 
-def _math_fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+def _math_fit_sphere_force(E_star, R, lam, a, z_p, F_0, s_0):
     """``fit_sphere_force`` for Python floats (the math module); raises where it does."""
-    return E_star*(R*R)*((lam**3/((lam*lam) + (lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((1/15)*(lam*lam) + 13) + 11) + 9) + 7) + 5) + 3) + lam*(math.tanh(lam)*math.tanh(lam))) if (lam < 1/2) else (lam*((math.tanh(lam)*math.tanh(lam)) + 1) - math.tanh(lam))) + F_0 + s_0*z_p
+    return E_star*(((R*R)*lam**3/((lam*lam) + (lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((1/15)*(lam*lam) + 13) + 11) + 9) + 7) + 5) + 3) + (a*a)*lam) if (lam < 1/2) else (-R*a + lam*((R*R) + (a*a)))) + F_0 + s_0*z_p
 
 
-def _math_fit_sphere_force_dE(R, lam):
+def _math_fit_sphere_force_dE(R, lam, a):
     """``fit_sphere_force_dE`` for Python floats (the math module); raises where it does."""
-    return (R*R)*((lam**3/((lam*lam) + (lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((1/15)*(lam*lam) + 13) + 11) + 9) + 7) + 5) + 3) + lam*(math.tanh(lam)*math.tanh(lam))) if (lam < 1/2) else (lam*((math.tanh(lam)*math.tanh(lam)) + 1) - math.tanh(lam)))
+    return (((R*R)*lam**3/((lam*lam) + (lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((lam*lam)/((1/15)*(lam*lam) + 13) + 11) + 9) + 7) + 5) + 3) + (a*a)*lam) if (lam < 1/2) else (-R*a + lam*((R*R) + (a*a))))
 
 
-def _math_fit_sphere_force_dz0(E_star, R, lam):
+def _math_fit_sphere_force_dz0(E_star, a):
     """``fit_sphere_force_dz0`` for Python floats (the math module); raises where it does."""
-    return -2*E_star*R*math.tanh(lam)
+    return -2*E_star*a
 
 
 def _math_flamant_sigma_xx(F_L, x, z):

@@ -190,6 +190,7 @@ __all__ = [
     'fit_sample_modulus_dE',
     'fit_sample_modulus_rigid',
     'fit_sample_modulus_rigid_dE',
+    'fit_sphere_depth',
     'fit_sphere_depth_dlam',
     'fit_sphere_force',
     'fit_sphere_force_dE',
@@ -4712,10 +4713,29 @@ def fit_sample_modulus_rigid_dE(nu):
     return 1 - nu**2
 
 
-def fit_sphere_depth_dlam(R, lam):
-    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam): the slope of Newton's iteration for lam at a given depth.
+def fit_sphere_depth(lam, a):
+    """Indentation depth d [m] of the exact sphere at lam = atanh(a/R) and its contact radius a = R tanh(lam), both given: the function of Newton's iteration for lam at a given depth.
 
-    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam.
+    Chapter: (5.55). Derived from: (5.55), d = a atanh(a/R), at a = R tanh(lam).
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    lam : mpmath.mpf
+        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return a*lam
+
+
+def fit_sphere_depth_dlam(R, lam, a):
+    """Derivative dd/dlam [m] of the exact sphere's depth d = R lam tanh(lam) at lam and a = R tanh(lam), both given: the slope of Newton's iteration for lam at a given depth.
+
+    Chapter: (5.55). Derived from: (5.55) at a = R tanh(lam), differentiated in lam;
+    sech(lam)^2 as (R - a)(R + a)/R^2.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
     ``tests/test_fit.py::test_sphere_lam_by_newton``.
@@ -4726,15 +4746,18 @@ def fit_sphere_depth_dlam(R, lam):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     lam : mpmath.mpf
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : mpmath.mpf
+        contact radius [m]
     """
-    return R*(lam/mpmath.cosh(lam)**2 + mpmath.tanh(lam))
+    return a + lam*(R - a)*(R + a)/R
 
 
-def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
+def fit_sphere_force(E_star, R, lam, a, z_p, F_0, s_0):
     """Force F [N] on a rigid spherical cap (exact sphere) at the position z_p, with lam = atanh(a/R) at the depth d = max(0, z_p - z_0), plus the baseline F_0 + s_0 z_p.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R); below lam = 1/2
-    its cancelling lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels
+    Chapter: (5.57), fit model. Derived from: (5.57) at lam = atanh(a/R) and the contact
+    radius a = R tanh(lam), both given (the fit computes tanh once per point); below lam =
+    1/2 its cancelling lam - tanh(lam) by Lambert's continued fraction of tanh, 7 levels
     (truncation < 1e-18 relative; no 2F1, cheap at every point of a fit).
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
@@ -4748,6 +4771,8 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     lam : mpmath.mpf
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : mpmath.mpf
+        contact radius [m]
     z_p : mpmath.mpf
         position of the tip's base (piezo), increasing into the sample [m]
     F_0 : mpmath.mpf
@@ -4755,14 +4780,15 @@ def fit_sphere_force(E_star, R, lam, z_p, F_0, s_0):
     s_0 : mpmath.mpf
         slope of the force baseline before contact (drift, drag) [N/m]
     """
-    return E_star*R**2*((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((mpmath.mpf(1)/mpmath.mpf(15))*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*mpmath.tanh(lam)**2) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam))) + F_0 + s_0*z_p
+    return E_star*((R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((mpmath.mpf(1)/mpmath.mpf(15))*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (-R*a + lam*(R**2 + a**2))) + F_0 + s_0*z_p
 
 
-def fit_sphere_force_dE(R, lam):
+def fit_sphere_force_dE(R, lam, a):
     """Derivative dF/dE* [m^2] of the fit model of the exact sphere.
 
-    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E*; below lam = 1/2
-    as fit_sphere_force.
+    Chapter: (5.57), fit model. Derived from: (5.57) differentiated in E* at lam =
+    atanh(a/R) and the contact radius a = R tanh(lam), both given (the fit computes tanh
+    once per point); below lam = 1/2 as fit_sphere_force.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
     ``tests/test_fit.py::test_sphere_fit_force_by_mpmath``.
@@ -4773,15 +4799,17 @@ def fit_sphere_force_dE(R, lam):
         radius of curvature (effective radius (5.27) for two bodies) [m]
     lam : mpmath.mpf
         atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : mpmath.mpf
+        contact radius [m]
     """
-    return R**2*((lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((mpmath.mpf(1)/mpmath.mpf(15))*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + lam*mpmath.tanh(lam)**2) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (lam*(mpmath.tanh(lam)**2 + 1) - mpmath.tanh(lam)))
+    return ((R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/((mpmath.mpf(1)/mpmath.mpf(15))*lam**2 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam) if (lam < mpmath.mpf(1)/mpmath.mpf(2)) else (-R*a + lam*(R**2 + a**2)))
 
 
-def fit_sphere_force_dz0(E_star, R, lam):
-    """Derivative dF/dz_0 [N/m] of the fit model of the exact sphere (0 at lam = 0).
+def fit_sphere_force_dz0(E_star, a):
+    """Derivative dF/dz_0 [N/m] of the fit model of the exact sphere at the contact radius a = R tanh(lam) (0 at a = 0, no contact).
 
     Chapter: (5.55), (5.57), fit model. Derived from: -(dF/dlam)/(dd/dlam) of (5.57) and
-    (5.55).
+    (5.55), simplified to -2 E* a.
 
     Derivation: ``hertzmdr.derive.fit``. Verified by
     ``tests/test_fit.py::test_jacobian_by_mpmath_derivative``.
@@ -4790,12 +4818,10 @@ def fit_sphere_force_dz0(E_star, R, lam):
     ----------
     E_star : mpmath.mpf
         effective modulus E* (5.8), (5.26) [Pa]
-    R : mpmath.mpf
-        radius of curvature (effective radius (5.27) for two bodies) [m]
-    lam : mpmath.mpf
-        atanh(a/R) of a rigid spherical cap (derive/sphere.py): a = R tanh(lam), d = R lam tanh(lam) [1]
+    a : mpmath.mpf
+        contact radius [m]
     """
-    return -2*E_star*R*mpmath.tanh(lam)
+    return -2*E_star*a
 
 
 def flamant_sigma_xx(F_L, x, z):

@@ -133,6 +133,9 @@ _EPS = float(np.finfo(float).eps)
 #: (f''/(2 f')) e^2 with f = lam tanh(lam) - d/R: e^2/(2 lam) at small lam, less beyond), far
 #: below an ulp; a bisection step must still shrink to 2 ulp
 LAM_NEWTON_STOP = 1e-8
+#: plain Newton steps from a close start before the safeguarded iteration takes over: from the
+#: table's ~2.5e-4 two suffice, from a warm start 1-3 (the relative error squares each step)
+LAM_FAST_STEPS = 4
 #: the start table of lam(d/R): nodes in ln(d/R) over [LAM_TABLE_SPAN], linear interpolation of
 #: ln(lam) in ln(d/R) (a smooth function, slope 1/2 to 1): error ~1e-4 relative, after which
 #: two Newton steps end at the last digit
@@ -153,16 +156,21 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
     """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
     (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
 
-    Newton's method with the derived slope dd/dlam (``fit_sphere_depth_dlam``) inside the
-    bracket [max(sqrt(d/R), d/R), (d/R + sqrt((d/R)(d/R + 4)))/2] of numeric/sphere.py's
-    bisection: a step that leaves the bracket is replaced by a bisection step, so the iteration
-    cannot diverge, and it converges quadratically; it stops after a Newton step below
-    LAM_NEWTON_STOP of lam (the next one would be below an ulp) or any step below 2 ulp.
+    Newton's method on d = a lam (``fit_sphere_depth``) with the derived slope dd/dlam
+    (``fit_sphere_depth_dlam``), both at the step's a = R tanh(lam) (one tanh a step). From a
+    close start (the table, ``start``) first plain Newton steps (:func:`_lam_newton`: no
+    bracket to keep), kept when they stop; else, and with no close start, inside the bracket
+    [max(sqrt(d/R), d/R), (d/R + sqrt((d/R)(d/R + 4)))/2] of numeric/sphere.py's bisection: a
+    step that leaves the bracket is replaced by a bisection step, so the iteration cannot
+    diverge, and it converges quadratically. Both stop after a Newton step below
+    LAM_NEWTON_STOP of lam (the next one would be below an ulp); a bisection step stops below
+    2 ulp.
     The first iterate: ``start`` (d's shape, optional; e.g. the roots at nearby depths, a fit's
-    previous contact point; clipped into the bracket, so any values are safe), else (and where
-    ``start`` is NaN) the interpolated table :func:`_lam_table` (~1e-4 relative): 1-2 steps a
-    point. ``with_slope``: also return dd/dlam [m] at the last iterate but one (inf where
-    d <= 0), for the next call's start at shifted depths, lam + shift/(dd/dlam).
+    previous contact point; any values are safe: a bad start fails the fast path's stop and is
+    clipped into the bracket), else (and where ``start`` is NaN) the interpolated table
+    :func:`_lam_table` (~1e-4 relative): 1-2 steps a point. ``with_slope``: also return
+    dd/dlam [m] at the last iterate but one (inf where d <= 0), for the next call's start at
+    shifted depths, lam + shift/(dd/dlam).
     """
     d = np.asarray(d, float)
     touch = d > 0
@@ -170,7 +178,6 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
     dd = d if every else d[touch]  # only the points in contact
     delta = dd / R
     lo = np.maximum(np.sqrt(delta), delta)
-    hi = np.maximum((delta + np.sqrt(delta * (delta + 4))) / 2, lo)
     first = None if start is None else np.asarray(start, float)
     first = first if first is None or every else first[touch]
     missing = True if first is None else np.isnan(first)
@@ -180,14 +187,54 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
         lam = np.exp(np.interp(np.log(delta), x, y))
     if first is not None:
         lam = np.where(missing, lam, first) if np.any(missing) else first
+    fast = _lam_newton(dd, R, np.maximum(lam, lo)) if _table or first is not None else None
+    if fast is not None:
+        lam, slope = fast
+    else:
+        lam, slope = _lam_safeguarded(dd, R, lam, lo)
+    if every:
+        return (lam, slope) if with_slope else lam
+    out = np.zeros(d.shape)
+    out[touch] = lam
+    if with_slope:
+        dl = np.full(d.shape, np.inf)  # no contact: no slope (a shift gives no start there)
+        dl[touch] = slope
+        return out, dl
+    return out
+
+
+def _lam_newton(dd, R, lam):
+    """:func:`lam_from_depth`'s fast path: at most LAM_FAST_STEPS plain Newton steps from a
+    close start (the table's, a warm start's), no bracket kept; (lam, dd/dlam at the last
+    iterate but one) when the last step is below LAM_NEWTON_STOP of the new lam at every point,
+    else None (then the safeguarded iteration runs from the same start). That stop is the
+    safeguarded iteration's own: lam > 0 (a step of at most 1e-8 lam leaves a positive lam)
+    within 1e-8 lam of a root of the increasing a lam - d on lam > 0, its only root there, and
+    the quadratic convergence puts the new lam within ~1e-16 lam of it. A step that runs off
+    (lam <= 0, where the slope can vanish: NaN) fails the stop and falls back."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for _ in range(LAM_FAST_STEPS):
+            a = gen.sphere_lam_contact_radius(R, lam)  # tanh once a step
+            slope = gen.fit_sphere_depth_dlam(R, lam, a)
+            new = lam - (gen.fit_sphere_depth(lam, a) - dd) / slope
+            if (np.abs(new - lam) <= LAM_NEWTON_STOP * new).all():
+                return new, slope
+            lam = new
+    return None
+
+
+def _lam_safeguarded(dd, R, lam, lo):
+    """:func:`lam_from_depth`'s safeguarded iteration: Newton's steps inside the bracket [lo,
+    hi], bisection where a step leaves it; (lam, dd/dlam at the last iterate but one)."""
+    hi = np.maximum((dd / R + np.sqrt(dd / R * (dd / R + 4))) / 2, lo)
     lam = np.clip(lam, lo, hi)
     slope = np.ones(dd.shape)
     for _ in range(LAM_MAX_STEPS):
-        f = gen.sphere_lam_depth(R, lam) - dd
+        a = gen.sphere_lam_contact_radius(R, lam)  # tanh once a step, shared by d and dd/dlam
+        f = gen.fit_sphere_depth(lam, a) - dd
         lo = np.where(f < 0, lam, lo)
         hi = np.where(f > 0, lam, hi)
-        with np.errstate(over="ignore"):  # cosh(lam)^2 overflows beyond lam = 355: dd/dlam
-            slope = gen.fit_sphere_depth_dlam(R, lam)  # is then R tanh(lam) exactly
+        slope = gen.fit_sphere_depth_dlam(R, lam, a)
         new = lam - f / slope
         newton = (new >= lo) & (new <= hi)
         step = np.abs(new - lam)
@@ -202,15 +249,7 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
         lam = new
         if done.all():
             break
-    if every:
-        return (lam, slope) if with_slope else lam
-    out = np.zeros(d.shape)
-    out[touch] = lam
-    if with_slope:
-        dl = np.full(d.shape, np.inf)  # no contact: no slope (a shift gives no start there)
-        dl[touch] = slope
-        return out, dl
-    return out
+    return lam, slope
 
 
 @dataclass(frozen=True)
@@ -249,27 +288,32 @@ class ExactSphere(_Tip):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
     def _lam(self, z, z0, start=None):
-        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start)
+        """(lam, a = R tanh(lam)) at the positions z: a is computed once, for the force, dF/dE*
+        and dF/dz_0 = -2 E* a."""
+        lam = lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start)
+        return lam, gen.sphere_lam_contact_radius(self.R, lam)
 
     def force(self, E_star, z, z0, F0, s0):
-        return gen.fit_sphere_force(E_star, self.R, self._lam(z, z0), z, F0, s0)
+        lam, a = self._lam(z, z0)
+        return gen.fit_sphere_force(E_star, self.R, lam, a, z, F0, s0)
 
-    def _dE(self, lam):
-        """dF/dE* at lam, evaluated at the points in contact only (0 elsewhere): its 2F1 form
-        is the costly part of the sphere's model."""
+    def _dE(self, lam, a):
+        """dF/dE* at (lam, a), evaluated at the points in contact only (0 elsewhere), by
+        ``fit_sphere_force_unit``: ``fit_sphere_force_dE`` with its common subexpressions
+        computed once (derive/fit.py's FUSED)."""
         touch = lam > 0
         if touch.all():  # a fit's tail
-            return gen.fit_sphere_force_dE(self.R, lam)
+            return gen.fit_sphere_force_unit(self.R, a, lam)
         out = np.zeros(lam.shape)
-        out[touch] = gen.fit_sphere_force_dE(self.R, lam[touch])
+        out[touch] = gen.fit_sphere_force_unit(self.R, a[touch], lam[touch])
         return out
 
     def derivatives(self, E_star, z, z0):
-        lam = self._lam(z, z0)
-        return self._dE(lam), gen.fit_sphere_force_dz0(E_star, self.R, lam)
+        lam, a = self._lam(z, z0)
+        return self._dE(lam, a), gen.fit_sphere_force_dz0(E_star, a)
 
     def basis(self, z, z0):
-        return self._dE(self._lam(z, z0))
+        return self._dE(*self._lam(z, z0))
 
     def _unit(self, z, z0, state=None):
         """As :meth:`_Tip._unit`; ``state`` (a dict one fit owns) keeps the last lam of the
@@ -286,7 +330,8 @@ class ExactSphere(_Tip):
                                     with_slope=True)
         if state is not None:
             state.update(lam=lam, slope=slope, z0=z0)
-        return self._dE(lam), gen.fit_sphere_force_dz0(1.0, self.R, lam)
+        a = gen.sphere_lam_contact_radius(self.R, lam)
+        return self._dE(lam, a), gen.fit_sphere_force_dz0(1.0, a)
 
     def ratios(self, d_max):
         lam = lam_from_depth(np.float64(d_max), self.R)

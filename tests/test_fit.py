@@ -129,44 +129,61 @@ def test_jacobian_by_mpmath_derivative(name):
 def test_sphere_lam_by_newton():
     """lam of R lam tanh(lam) = d by Newton's method against mpmath.findroot at 30 digits,
     over eleven decades of d/R (log-uniform; a/R = 0.99995 at d/R = 100), with d = 0 and
-    negative depths giving 0."""
+    negative depths giving 0; from the start table, from the bracket's lower bound (the
+    safeguarded iteration alone) and from bad starts (negative, 0, tiny, far too large, inf,
+    three times the root: the fast path's plain Newton steps fail their stop, or not, and the
+    safeguarded iteration takes over)."""
     R = 5e-6
     delta = np.r_[0.0, -1.0, np.logspace(-9, 2, 45)]
     lam = lam_from_depth(delta * R, R)
     assert lam[0] == 0 and lam[1] == 0
+    n = delta.size
+    others = [lam_from_depth(delta * R, R, _table=False)]
+    others += [lam_from_depth(delta * R, R, np.full(n, v)) for v in (-3.0, 0.0, 1e-300, 1e6,
+                                                                      np.inf)]
+    others.append(lam_from_depth(delta * R, R, 3 * lam))
     with mp.workdps(DPS):
-        for dl, got in zip(delta[2:], lam[2:], strict=True):
+        for k, dl in enumerate(delta[2:], start=2):
             ref = mp.findroot(lambda v, dl=dl: v * mp.tanh(v) - mp.mpf(dl),
                               mp.sqrt(mp.mpf(dl)) if dl < 1 else mp.mpf(dl))
             # 4 ulp: lam is the root to one ulp of a function evaluated to a few ulp (the
             # root's condition number, d/(lam dd/dlam), is between 1/2 and 1)
-            assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, got, ref)
+            for j, got in enumerate([lam[k]] + [o[k] for o in others]):
+                assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, j, got, ref)
+    for o in others:
+        assert o[0] == 0 and o[1] == 0
 
 
 def test_sphere_fit_force_by_mpmath():
     """The fit's exact-sphere force per unit E* (fit_sphere_force_dE; fit_sphere_force is E*
-    times it plus the baseline) against (5.57) in its atanh form, E* ((a^2 + R^2) atanh(a/R)
-    - a R) at a = R tanh(lam), at 30 digits: at the hard points lam -> 0 (the cancellation
-    lam - tanh(lam) ~ lam^3/3 that the printed continued fraction avoids; eight decades), both
-    sides of the split at lam = 1/2, and lam -> inf (a/R -> 1: tanh(lam) = 1 in float64 from
-    lam = 19.1), on the array and the scalar (math module) paths."""
+    times it plus the baseline), at lam and a = R tanh(lam) in float64, against (5.57) in its
+    atanh form, E* ((a^2 + R^2) atanh(a/R) - a R) at the exact a = R tanh(lam), at 30 digits:
+    at the hard points lam -> 0 (the cancellation lam - tanh(lam) ~ lam^3/3 that the printed
+    continued fraction avoids; eight decades), both sides of the split at lam = 1/2, and
+    lam -> inf (a/R -> 1: tanh(lam) = 1 in float64 from lam = 19.1), on the array and the
+    scalar (math module) paths and the fit's fused form (fit_sphere_force_unit)."""
     R, E, F0, s0, zp = 5e-6, 2e6, 1e-9, 1e-4, 1e-6
     lam = np.r_[np.logspace(-8, -0.5, 16), np.nextafter(0.5, 0), 0.5, np.nextafter(0.5, 1),
                 np.linspace(0.55, 3.0, 8), 19.0, 40.0]
-    arr = gen.fit_sphere_force_dE(R, lam)
-    force = gen.fit_sphere_force(E, R, lam, zp, F0, s0)
+    # a = R tanh(lam) as the fit computes it (numeric/fit.py: once per point), its rounding
+    # included in the error below
+    a = gen.sphere_lam_contact_radius(R, lam)
+    arr = gen.fit_sphere_force_dE(R, lam, a)
+    fused = gen.fit_sphere_force_unit(R, a, lam)  # what numeric/fit.py's ExactSphere calls
+    force = gen.fit_sphere_force(E, R, lam, a, zp, F0, s0)
     # 30 digits and 40 more: a/R = tanh(40) = 1 - 3.6e-35 must not round to 1
     with mp.workdps(DPS + 40):
-        for v, got, f in zip(lam, arr, force, strict=True):
-            scalar = gen.fit_sphere_force_dE(R, float(v))
+        for v, av, got, fu, f in zip(lam, a, arr, fused, force, strict=True):
+            scalar = gen.fit_sphere_force_dE(R, float(v), float(av))
             b = mp.tanh(mp.mpf(v))
             Rm = mp.mpf(R)
-            a = Rm * b
-            ref = (a**2 + Rm**2) * mp.atanh(b) - a * Rm
+            am = Rm * b
+            ref = (am**2 + Rm**2) * mp.atanh(b) - am * Rm
             # 10 eps: the direct form above lam = 1/2 rounds ~eps lam against a force
             # ~(4/3) lam^3 (1.5 eps/lam^2 <= 6 eps, 3.5 eps measured), the continued fraction
-            # below it a few eps (positive terms only; its truncation is < 1e-18)
-            for g in (got, scalar):
+            # below it a few eps (positive terms only; its truncation is < 1e-18), and a's
+            # rounding (an ulp) moves it by <= 1.7 ulp (derive/sphere.py's force_lam_fit)
+            for g in (got, scalar, fu):
                 assert abs(mp.mpf(g) / ref - 1) <= 10 * np.finfo(float).eps, (v, g, ref)
             ref_f = mp.mpf(E) * ref + mp.mpf(F0) + mp.mpf(s0) * mp.mpf(zp)
             # the sum of positive terms adds a few roundings to the force's 10 eps
