@@ -320,8 +320,46 @@ def force_map(nanite, side, n, workers):
             "error |\n|---|---|---|---|---|\n" + "".join(rows) + "\n")
 
 
+#: the pair whose CPU-time ratio --sphere-ratio measures (docs/fitting.md, "Speed")
+RATIO_PAIR = ("paraboloid, R = 50 um", "exact sphere, R = 5 um, a/R = 0.59")
+
+
+def sphere_ratio(rounds, n=2000):
+    """The exact sphere's CPU time per fit over the paraboloid's, on a shared machine: one
+    n-point curve each (as single_curves), fitted alternately ``rounds`` times in this process
+    (time.process_time per fit), so that both see the same load; the ratio of the medians is
+    what transfers to a quiet machine. Writes nothing."""
+    fits = []
+    for name in RATIO_PAIR:
+        tip, force, depth = TIPS[name]
+        z, F, sigma = curve(force, depth, n)
+        fits.append(lambda z=z, F=F, tip=tip, sigma=sigma: fit_curve(z, F, tip, sigma=sigma))
+    for fit in fits:  # the first calls (the sphere's start table) outside the timing
+        fit()
+    times = [[] for _ in fits]
+    for _ in range(rounds):
+        for fit, ts in zip(fits, times, strict=True):
+            t0 = time.process_time()
+            fit()
+            ts.append(time.process_time() - t0)
+    med = [float(np.median(ts)) for ts in times]
+    rows = [f"{name}: CPU per fit, median {_common.seconds(m)} (fastest "
+            f"{_common.seconds(min(ts))})" for name, m, ts in zip(RATIO_PAIR, med, times,
+                                                                  strict=True)]
+    return "\n".join(rows + [f"ratio of the medians: {med[1] / med[0]:.2f} ({rounds} rounds, "
+                             f"{n} points)"])
+
+
 def main(argv=None):
-    args = _common.parser(__doc__).parse_args(argv)
+    ap = _common.parser(__doc__)
+    ap.add_argument("--sphere-ratio", type=int, metavar="ROUNDS",
+                    help="only print the exact sphere's CPU time per fit over the "
+                         "paraboloid's, interleaved for ROUNDS rounds (a shared machine's "
+                         "measure; writes nothing)")
+    args = ap.parse_args(argv)
+    if args.sphere_ratio:
+        print(sphere_ratio(args.sphere_ratio, 200 if args.quick else 2000))
+        return
     run = _common.run_from(args)
     n = 200 if args.quick else 2000
     nanite = _common.peer("nanite", "nanite", "the nanite rows")

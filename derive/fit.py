@@ -124,11 +124,15 @@ def sphere_model() -> dict[str, sp.Expr]:
     d_dlam = sp.simplify(sp.diff(s["d_lam"], lam))
     depth_a = a * lam
     d_dlam_a = lam * (R - a) * (R + a) / R + a
-    for form, ref in ((depth_a, s["d_lam"]), (d_dlam_a, d_dlam), (dz0_a, dz0)):
+    # da/dlam = R sech(lam)^2 in a: the contact radius at Newton's last step, a + (da/dlam) step
+    a_dlam = sp.diff(s["a_lam"], lam)
+    a_dlam_a = (R - a) * (R + a) / R
+    for form, ref in ((depth_a, s["d_lam"]), (d_dlam_a, d_dlam), (dz0_a, dz0),
+                      (a_dlam_a, a_dlam)):
         if sp.simplify((form.subs(on_lam) - ref).rewrite(sp.exp)) != 0:
             raise AssertionError(f"the exact sphere's {form} at a = R tanh(lam) is not {ref}")
     return {"F": model, "F_fit": fit_force, "dE": dE, "dE_fit": sp.diff(fit_force, E_star),
-            "dz0": dz0_a, "d": depth_a, "d_dlam": d_dlam_a}
+            "dz0": dz0_a, "d": depth_a, "d_dlam": d_dlam_a, "a_dlam": a_dlam_a}
 
 
 alpha_p = symbol("alpha_p", positive=True)
@@ -286,6 +290,12 @@ def relations() -> list[Relation]:
                  "(5.55) at a = R tanh(lam), differentiated in lam; sech(lam)^2 as "
                  "(R - a)(R + a)/R^2", f"{TEST}::test_sphere_lam_by_newton",
                  domain=lam_a_dom),
+        Relation("fit_sphere_radius_dlam", "(5.55)", sm["a_dlam"], (R, a),
+                 "derivative da/dlam [m] of the exact sphere's contact radius a = R tanh(lam) "
+                 "at a given: the contact radius at Newton's last step for lam, a + (da/dlam) "
+                 "step, to an ulp for a step below 1e-8 lam, without a tanh",
+                 "a = R tanh(lam) differentiated in lam, sech(lam)^2 as (R - a)(R + a)/R^2",
+                 f"{TEST}::test_sphere_lam_by_newton", domain={a: R * t_lam}),
     ]
     return rels + jkr_relations()
 

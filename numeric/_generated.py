@@ -198,6 +198,7 @@ __all__ = [
     'fit_sphere_force',
     'fit_sphere_force_dE',
     'fit_sphere_force_dz0',
+    'fit_sphere_radius_dlam',
     'flamant_sigma_xx',
     'flamant_sigma_zz',
     'flamant_tau_xz',
@@ -607,6 +608,7 @@ RELATIONS = (
     ('fit_sphere_force', '(5.57), fit model', 'fit', 'E_star*Piecewise((R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam, lam < 1/2), (-R*a + lam*(R**2 + a**2), True)) + F_0 + s_0*z_p', ''),
     ('fit_sphere_force_dE', '(5.57), fit model', 'fit', 'Piecewise((R**2*lam**3/(lam**2 + lam**2/(lam**2/(lam**2/(lam**2/(lam**2/(lam**2/15 + 13) + 11) + 9) + 7) + 5) + 3) + a**2*lam, lam < 1/2), (-R*a + lam*(R**2 + a**2), True))', ''),
     ('fit_sphere_force_dz0', '(5.55), (5.57), fit model', 'fit', '-2*E_star*a', ''),
+    ('fit_sphere_radius_dlam', '(5.55)', 'fit', '(R - a)*(R + a)/R', ''),
     ('flamant_sigma_xx', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x**2*z/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_sigma_zz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*z**3/(pi*(x**2 + z**2)**2)', ''),
     ('flamant_tau_xz', 'Flamant (2-D Boussinesq)', 'line_stress', '-2*F_L*x*z**2/(pi*(x**2 + z**2)**2)', ''),
@@ -6239,6 +6241,30 @@ def fit_sphere_force_dz0(E_star, a):
         except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
             pass
     return -2*E_star*a
+
+
+def fit_sphere_radius_dlam(R, a):
+    """Derivative da/dlam [m] of the exact sphere's contact radius a = R tanh(lam) at a given: the contact radius at Newton's last step for lam, a + (da/dlam) step, to an ulp for a step below 1e-8 lam, without a tanh.
+
+    Chapter: (5.55). Derived from: a = R tanh(lam) differentiated in lam, sech(lam)^2 as (R
+    - a)(R + a)/R^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    R : float or ndarray
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : float or ndarray
+        contact radius [m]
+    """
+    if type(R) is float and type(a) is float:
+        try:  # the scalar path: Python floats, the math module
+            return _math_fit_sphere_radius_dlam(R, a)
+        except (ArithmeticError, ValueError):  # NumPy's inf/nan and warnings
+            pass
+    return (R - a)*(R + a)/R
 
 
 def flamant_sigma_xx(F_L, x, z):
@@ -14981,6 +15007,11 @@ def _math_fit_sphere_force_dE(R, lam, a):
 def _math_fit_sphere_force_dz0(E_star, a):
     """``fit_sphere_force_dz0`` for Python floats (the math module); raises where it does."""
     return -2*E_star*a
+
+
+def _math_fit_sphere_radius_dlam(R, a):
+    """``fit_sphere_radius_dlam`` for Python floats (the math module); raises where it does."""
+    return (R - a)*(R + a)/R
 
 
 def _math_flamant_sigma_xx(F_L, x, z):

@@ -195,6 +195,7 @@ __all__ = [
     'fit_sphere_force',
     'fit_sphere_force_dE',
     'fit_sphere_force_dz0',
+    'fit_sphere_radius_dlam',
     'flamant_sigma_xx',
     'flamant_sigma_zz',
     'flamant_tau_xz',
@@ -4822,6 +4823,25 @@ def fit_sphere_force_dz0(E_star, a):
         contact radius [m]
     """
     return -2*E_star*a
+
+
+def fit_sphere_radius_dlam(R, a):
+    """Derivative da/dlam [m] of the exact sphere's contact radius a = R tanh(lam) at a given: the contact radius at Newton's last step for lam, a + (da/dlam) step, to an ulp for a step below 1e-8 lam, without a tanh.
+
+    Chapter: (5.55). Derived from: a = R tanh(lam) differentiated in lam, sech(lam)^2 as (R
+    - a)(R + a)/R^2.
+
+    Derivation: ``hertzmdr.derive.fit``. Verified by
+    ``tests/test_fit.py::test_sphere_lam_by_newton``.
+
+    Parameters
+    ----------
+    R : mpmath.mpf
+        radius of curvature (effective radius (5.27) for two bodies) [m]
+    a : mpmath.mpf
+        contact radius [m]
+    """
+    return (R - a)*(R + a)/R
 
 
 def flamant_sigma_xx(F_L, x, z):

@@ -152,7 +152,7 @@ def _lam_table() -> tuple[np.ndarray, np.ndarray]:
     return x, np.log(lam_from_depth(np.exp(x), 1.0, _table=False))
 
 
-def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
+def lam_from_depth(d, R, start=None, *, with_radius=False, with_slope=False, _table=True):
     """lam = atanh(a/R) of the exact sphere at the depth d [m]: the root of R lam tanh(lam) = d
     (5.55), 0 for d <= 0 (vectorized; R [m] > 0).
 
@@ -168,9 +168,13 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
     The first iterate: ``start`` (d's shape, optional; e.g. the roots at nearby depths, a fit's
     previous contact point; any values are safe: a bad start fails the fast path's stop and is
     clipped into the bracket), else (and where ``start`` is NaN) the interpolated table
-    :func:`_lam_table` (~1e-4 relative): 1-2 steps a point. ``with_slope``: also return
-    dd/dlam [m] at the last iterate but one (inf where d <= 0), for the next call's start at
-    shifted depths, lam + shift/(dd/dlam).
+    :func:`_lam_table` (~1e-4 relative): 1-2 steps a point. ``with_radius``: also return the
+    contact radius a = R tanh(lam) [m] at the root (0 where d <= 0), as the last iterate's a
+    plus ``fit_sphere_radius_dlam`` times the last step (no tanh of its own: the step is below
+    1e-8 lam, so the second-order term, R sech(lam)^2 tanh(lam) step^2 <= 0.5e-16 a, is below
+    an ulp). ``with_slope``: also return dd/dlam [m] at the last iterate but one (inf where
+    d <= 0), for the next call's start at shifted depths, lam + shift/(dd/dlam). The result:
+    lam, then a (``with_radius``), then dd/dlam (``with_slope``).
     """
     d = np.asarray(d, float)
     touch = d > 0
@@ -189,24 +193,28 @@ def lam_from_depth(d, R, start=None, *, with_slope=False, _table=True):
         lam = np.where(missing, lam, first) if np.any(missing) else first
     fast = _lam_newton(dd, R, np.maximum(lam, lo)) if _table or first is not None else None
     if fast is not None:
-        lam, slope = fast
+        lam, slope, last = fast
     else:
-        lam, slope = _lam_safeguarded(dd, R, lam, lo)
-    if every:
-        return (lam, slope) if with_slope else lam
-    out = np.zeros(d.shape)
-    out[touch] = lam
+        lam, slope, last = _lam_safeguarded(dd, R, lam, lo)
+    outs = [lam]
+    if with_radius:  # the last iterate's a, moved along the last step
+        prev, a = last
+        outs.append(a + gen.fit_sphere_radius_dlam(R, a) * (lam - prev))
     if with_slope:
-        dl = np.full(d.shape, np.inf)  # no contact: no slope (a shift gives no start there)
-        dl[touch] = slope
-        return out, dl
-    return out
+        outs.append(slope)
+    if not every:  # lam = a = 0 (no contact); dd/dlam inf there: a shift gives no start
+        fills = [0.0] * (1 + with_radius) + [np.inf] * with_slope
+        for k, (v, fill) in enumerate(zip(outs, fills, strict=True)):
+            outs[k] = np.full(d.shape, fill)
+            outs[k][touch] = v
+    return outs[0] if len(outs) == 1 else tuple(outs)
 
 
 def _lam_newton(dd, R, lam):
     """:func:`lam_from_depth`'s fast path: at most LAM_FAST_STEPS plain Newton steps from a
     close start (the table's, a warm start's), no bracket kept; (lam, dd/dlam at the last
-    iterate but one) when the last step is below LAM_NEWTON_STOP of the new lam at every point,
+    iterate but one, (that iterate, its a)) when the last step is below LAM_NEWTON_STOP of the
+    new lam at every point,
     else None (then the safeguarded iteration runs from the same start). That stop is the
     safeguarded iteration's own: lam > 0 (a step of at most 1e-8 lam leaves a positive lam)
     within 1e-8 lam of a root of the increasing a lam - d on lam > 0, its only root there, and
@@ -218,19 +226,22 @@ def _lam_newton(dd, R, lam):
             slope = gen.fit_sphere_depth_dlam(R, lam, a)
             new = lam - (gen.fit_sphere_depth(lam, a) - dd) / slope
             if (np.abs(new - lam) <= LAM_NEWTON_STOP * new).all():
-                return new, slope
+                return new, slope, (lam, a)
             lam = new
     return None
 
 
 def _lam_safeguarded(dd, R, lam, lo):
     """:func:`lam_from_depth`'s safeguarded iteration: Newton's steps inside the bracket [lo,
-    hi], bisection where a step leaves it; (lam, dd/dlam at the last iterate but one)."""
+    hi], bisection where a step leaves it; (lam, dd/dlam at the last iterate but one, (that
+    iterate, its a))."""
     hi = np.maximum((dd / R + np.sqrt(dd / R * (dd / R + 4))) / 2, lo)
     lam = np.clip(lam, lo, hi)
     slope = np.ones(dd.shape)
+    last = None
     for _ in range(LAM_MAX_STEPS):
         a = gen.sphere_lam_contact_radius(R, lam)  # tanh once a step, shared by d and dd/dlam
+        last = (lam, a)
         f = gen.fit_sphere_depth(lam, a) - dd
         lo = np.where(f < 0, lam, lo)
         hi = np.where(f > 0, lam, hi)
@@ -249,7 +260,7 @@ def _lam_safeguarded(dd, R, lam, lo):
         lam = new
         if done.all():
             break
-    return lam, slope
+    return lam, slope, last
 
 
 @dataclass(frozen=True)
@@ -288,10 +299,10 @@ class ExactSphere(_Tip):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
     def _lam(self, z, z0, start=None):
-        """(lam, a = R tanh(lam)) at the positions z: a is computed once, for the force, dF/dE*
-        and dF/dz_0 = -2 E* a."""
-        lam = lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start)
-        return lam, gen.sphere_lam_contact_radius(self.R, lam)
+        """(lam, a = R tanh(lam)) at the positions z: a from Newton's last step, shared by the
+        force, dF/dE* and dF/dz_0 = -2 E* a."""
+        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start,
+                              with_radius=True)
 
     def force(self, E_star, z, z0, F0, s0):
         lam, a = self._lam(z, z0)
@@ -326,11 +337,10 @@ class ExactSphere(_Tip):
             prev = state["lam"] + (state["z0"] - z0) / state["slope"]
             start = (prev[prev.size - z.size:] if prev.size >= z.size
                      else np.r_[np.full(z.size - prev.size, np.nan), prev])
-        lam, slope = lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start,
-                                    with_slope=True)
+        lam, a, slope = lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R,
+                                       start, with_radius=True, with_slope=True)
         if state is not None:
             state.update(lam=lam, slope=slope, z0=z0)
-        a = gen.sphere_lam_contact_radius(self.R, lam)
         return self._dE(lam, a), gen.fit_sphere_force_dz0(1.0, a)
 
     def ratios(self, d_max):

@@ -132,26 +132,37 @@ def test_sphere_lam_by_newton():
     negative depths giving 0; from the start table, from the bracket's lower bound (the
     safeguarded iteration alone) and from bad starts (negative, 0, tiny, far too large, inf,
     three times the root: the fast path's plain Newton steps fail their stop, or not, and the
-    safeguarded iteration takes over)."""
+    safeguarded iteration takes over); with the contact radius a = R tanh(lam) each path
+    returns."""
     R = 5e-6
     delta = np.r_[0.0, -1.0, np.logspace(-9, 2, 45)]
     lam = lam_from_depth(delta * R, R)
     assert lam[0] == 0 and lam[1] == 0
     n = delta.size
-    others = [lam_from_depth(delta * R, R, _table=False)]
-    others += [lam_from_depth(delta * R, R, np.full(n, v)) for v in (-3.0, 0.0, 1e-300, 1e6,
-                                                                      np.inf)]
-    others.append(lam_from_depth(delta * R, R, 3 * lam))
+    # (lam, a = R tanh(lam)) from the table, the bracket alone, and bad starts
+    runs = [lam_from_depth(delta * R, R, with_radius=True),
+            lam_from_depth(delta * R, R, with_radius=True, _table=False)]
+    runs += [lam_from_depth(delta * R, R, np.full(n, v), with_radius=True)
+             for v in (-3.0, 0.0, 1e-300, 1e6, np.inf)]
+    runs.append(lam_from_depth(delta * R, R, 3 * lam, with_radius=True))
+    eps = np.finfo(float).eps
     with mp.workdps(DPS):
         for k, dl in enumerate(delta[2:], start=2):
             ref = mp.findroot(lambda v, dl=dl: v * mp.tanh(v) - mp.mpf(dl),
                               mp.sqrt(mp.mpf(dl)) if dl < 1 else mp.mpf(dl))
             # 4 ulp: lam is the root to one ulp of a function evaluated to a few ulp (the
             # root's condition number, d/(lam dd/dlam), is between 1/2 and 1)
-            for j, got in enumerate([lam[k]] + [o[k] for o in others]):
-                assert abs(mp.mpf(got) / ref - 1) <= 4 * np.finfo(float).eps, (dl, j, got, ref)
-    for o in others:
-        assert o[0] == 0 and o[1] == 0
+            assert abs(mp.mpf(lam[k]) / ref - 1) <= 4 * eps, (dl, lam[k], ref)
+            for j, (got, a) in enumerate(runs):
+                assert abs(mp.mpf(got[k]) / ref - 1) <= 4 * eps, (dl, j, got[k], ref)
+                # a is R tanh of the returned lam (what the fit's force needs of the pair):
+                # the last iterate's R tanh (NumPy's tanh and the product, ~1.5 ulp) moved
+                # along the last step (its Taylor remainder <= 0.5e-16 relative, the
+                # product's rounding an ulp of a step below 1e-8 lam): 3 ulp
+                a_ref = mp.mpf(R) * mp.tanh(mp.mpf(got[k]))
+                assert abs(mp.mpf(a[k]) / a_ref - 1) <= 3 * eps, (dl, j, a[k], a_ref)
+    for got, a in runs:
+        assert got[0] == got[1] == a[0] == a[1] == 0
 
 
 def test_sphere_fit_force_by_mpmath():
