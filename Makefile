@@ -27,7 +27,8 @@ check: $(STAMP)
 # the suite runs the --check itself (tests/test_generated.py); on as many workers as CI has
 # cores (pytest-xdist; `make test WORKERS=0` runs it in one process). loadgroup: the tests of
 # a file that share one costly module fixture (the benchmarks' quick run, the regenerated
-# files) are marked xdist_group and run on one worker, so the fixture is built once
+# files, the MDR's bound references: GROUPED in tests/conftest.py) run on one worker, so the
+# fixture is built once
 WORKERS ?= 2
 test: lint pyc
 	$(PY) -m pytest -q -n $(WORKERS) --dist loadgroup

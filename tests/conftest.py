@@ -28,22 +28,31 @@ def pytest_terminal_summary(terminalreporter):
 
 
 
-#: the files whose tests share one costly module fixture (xdist_group marks), by group
-GROUPED = {"tests/test_benchmarks.py": "benchmarks", "tests/test_generated.py": "generated"}
+#: the test files whose tests share a costly module fixture, each run on one worker by `make
+#: test` (--dist loadgroup): the benchmarks' quick run (~70 s of CPU), the regenerated files,
+#: the numerical MDR's 30-digit references (~20 s); split over two workers, each built its own
+GROUPED = {"test_benchmarks.py": "benchmarks", "test_generated.py": "generated",
+           "test_mdr_bounds.py": "mdr_bounds"}
+
+
+@pytest.hookimpl(tryfirst=True)  # before xdist's own hook reads the marks
+def pytest_collection_modifyitems(items):
+    for item in items:
+        group = GROUPED.get(item.path.name)
+        if group:
+            item.add_marker(pytest.mark.xdist_group(group))
 
 
 @pytest.hookimpl(optionalhook=True)
 def pytest_xdist_node_collection_finished(node, ids):
-    """`make test` runs ``--dist loadgroup``: the tests of a file marked ``xdist_group`` share
-    one costly module fixture (the benchmarks' quick run, ~80 s of CPU) and must run on one
-    worker. xdist groups them by writing ``@group`` into each test's id on the worker; under
-    pytest 9.2 that write no longer takes (pytest-xdist issue 1386), and every worker then
-    builds the fixture again, silently. constraints.txt keeps pytest below 9.2; this check
-    (on the controller, as each worker reports its collection) stops the run in one line if
-    the grouping is lost again."""
+    """xdist groups the tests marked ``xdist_group`` by writing ``@group`` into each test's id
+    on the worker; under pytest 9.2 that write no longer takes (pytest-xdist issue 1386), and
+    every worker then builds the fixture again, silently. constraints.txt keeps pytest below
+    9.2; this check (on the controller, as each worker reports its collection) stops the run in
+    one line if the grouping is lost again."""
     if node.config.getoption("dist") != "loadgroup":
         return
-    lost = [i for i in ids if GROUPED.get(i.split("::")[0]) and "@" not in i]
+    lost = [i for i in ids if i.split("::")[0].rsplit("/", 1)[-1] in GROUPED and "@" not in i]
     if lost:
         pytest.exit(f"--dist loadgroup did not group {len(lost)} tests marked xdist_group "
                     f"(e.g. {lost[0]}): pytest {pytest.__version__} and this pytest-xdist do "

@@ -26,8 +26,7 @@ import run_all  # noqa: E402  (benchmarks/ is a folder of scripts, not a package
 
 from hertzmdr.numeric import _timing  # noqa: E402
 
-#: with `make test` (--dist loadgroup): the quick run (~100 s of CPU) is built once, on one worker
-pytestmark = pytest.mark.xdist_group("benchmarks")
+# `make test` runs this file on one worker (GROUPED, tests/conftest.py): one module fixture
 
 NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])")
 NONFINITE = re.compile(r"\b(?:nan|inf|infinity)\b", re.IGNORECASE)

@@ -13,8 +13,7 @@ from hertzmdr.derive.__main__ import ROOT
 
 from oracle import FULL
 
-#: with `make test` (--dist loadgroup): the fresh-process regeneration is built once, on one worker
-pytestmark = pytest.mark.xdist_group("generated")
+# `make test` runs this file on one worker (GROUPED, tests/conftest.py): one module fixture
 
 #: the files ``python -m hertzmdr.derive`` writes, relative to the source tree
 GENERATED = ["numeric/_generated.py", "numeric/_generated_mp.py", "docs/derivations.md",
