@@ -27,7 +27,7 @@ from hertzmdr.numeric import hertz, sphere
 
 from kernels import uz_axisymmetric
 from named import assert_inputs_named
-from oracle import WORST, assert_close
+from oracle import WORST, assert_close, memo
 
 DPS = 30
 TOL_LIT = 1e-13  # the issue's 13 digits; closed forms are a handful of roundings (~1e-15)
@@ -224,21 +224,30 @@ def _jkr_mp(E, R, dg, a):
     return d, p, u_out
 
 
+@memo  # a mutation run's memo (tests/oracle.py): the generated mpmath forms (derive/'s, not
+# numeric/adhesion.py), tests/kernels.py's quadrature and mpmath only
+def _jkr_uz_3d(E, R, dg, a, rr):
+    """u_z(rr) of the derived JKR pressure of radius a put through the Boussinesq integral
+    (5.7) (tests/kernels.py), at the working precision."""
+    _, p, _ = _jkr_mp(E, R, dg, a)
+
+    def p_gap(gap):
+        return p(mp.sqrt(a**2 - gap))
+
+    return uz_axisymmetric(p_gap, rr, a, E)
+
+
 def test_jkr_pressure_by_boussinesq():
     with mp.workdps(DPS):
         E, R, dg = mp.mpf(3), mp.mpf(2), mp.mpf("0.05")
         a = mp.mpf("0.7")
-        d, p, u_out = _jkr_mp(E, R, dg, a)
-
-        def p_gap(gap):
-            return p(mp.sqrt(a**2 - gap))
-
+        d, _, u_out = _jkr_mp(E, R, dg, a)
         for s in ("0", "0.6"):
             rr = mp.mpf(s) * a
-            u = uz_axisymmetric(p_gap, rr, a, E)
+            u = _jkr_uz_3d(E, R, dg, a, rr)
             _record("JKR 3-D inside", abs(u / (d - rr**2 / (2 * R)) - 1), TOL_3D)
         rr = 2 * a
-        u = uz_axisymmetric(p_gap, rr, a, E)
+        u = _jkr_uz_3d(E, R, dg, a, rr)
         _record("JKR 3-D outside", abs(u / u_out(rr) - 1), TOL_3D)
     # the float64 fields at the same points
     c = ad.AdhesiveContact(ad.Paraboloid(2.0), 3.0, 0.05)
