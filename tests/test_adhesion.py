@@ -709,3 +709,99 @@ def test_punch_cycle_work_is_kendalls():
         assert_close(gen.adhesion_punch_cycle_work(E, R, dg), ref, 8e-16, f"E {E} a {R}")
         cyc = ad.AdhesiveContact(ad.FlatPunch(R), E, dg).cycle(to=1e-9, control="depth")
         assert_close(cyc.hysteresis, ref, 8e-16, f"cycle E {E} a {R}")
+
+
+def test_zero_load_radius_of_the_cone_and_power_law():
+    """The closed zero-load radius of the cone and the power law (AdhesiveContact.
+    zero_load_contact_radius) against the root of the derived F(a) printed for mpmath, found
+    by mpmath's secant method from 1.5 times the pull-off radius (30 digits): the closed form
+    is a few roundings, 1e-14; with dgamma = 0 there is no contact at zero load."""
+    for shape in (ad.Cone(np.radians(20)), ad.Cone(1.2), ad.PowerLaw(2.5e7, 2.0),
+                  ad.PowerLaw(3e3, 1.5), ad.PowerLaw(50.0, 0.8)):
+        E, dg, _, F_fn = _mp_curves(shape)
+        c = ad.AdhesiveContact(shape, float(E), float(dg))
+        with mp.workdps(DPS):
+            a0 = mp.findroot(F_fn, 1.5 * mp.mpf(c.pull_off("force").contact_radius))
+            assert_close(c.zero_load_contact_radius(), a0, 1e-14, f"{shape} a_0")
+    assert ad.AdhesiveContact(ad.Cone(0.3), 3e6, 0.0).zero_load_contact_radius() == 0.0
+
+
+def test_state_helpers_of_the_paraboloid():
+    """critical_elongation, force_at_depth and the non-adhesive pressure of the paraboloid
+    against the literature typed here at 30 digits: Delta l = sqrt(2 pi a dgamma/E*), the
+    JKR force at the stable root of d = a^2/R - Delta l(a) (secant method from the float
+    root), Hertz's p = 2 E*/(pi R) sqrt(a^2 - r^2) (Johnson (4.20) with p0 = 2 a E*/(pi R));
+    a few roundings each (1e-14; the force at a depth 1e-12, it cancels near zero load)."""
+    E, R, dg = 2e6 / 0.75, 20e-9, 0.05
+    c = ad.AdhesiveContact(ad.Paraboloid(R), E, dg)
+    a = np.array([1e-9, 7e-9, 3e-8])
+    d = np.array([0.0, 2e-9, 1e-8])
+    dl, F, p = c.critical_elongation(a), c.force_at_depth(d), c.shape.pressure0(
+        np.array([0.0, 0.5 * a[1], 0.99 * a[1]]), a[1], E)
+    with mp.workdps(DPS):
+        Em, Rm, gm = mp.mpf(E), mp.mpf(R), mp.mpf(dg)
+        for i, x in enumerate(a):
+            assert_close(dl[i], mp.sqrt(2 * mp.pi * mp.mpf(x) * gm / Em), 1e-14, "Delta l")
+        for i, dv in enumerate(d):
+            dm = mp.mpf(dv)
+            x = mp.findroot(lambda s, dm=dm: s**2 / Rm - mp.sqrt(2 * mp.pi * s * gm / Em) - dm,
+                            mp.mpf(float(c.contact_radius(depth=float(dv)))))
+            F_ref = 4 * Em * x**3 / (3 * Rm) - mp.sqrt(8 * mp.pi * gm * Em * x**3)
+            assert_close(F[i], F_ref, 1e-12, f"F at d = {dv}")
+        a1 = mp.mpf(a[1])
+        for i, t in enumerate((0.0, 0.5, 0.99)):
+            rr = mp.mpf(float(t * a[1]))
+            assert_close(p[i], 2 * Em / (mp.pi * Rm) * mp.sqrt(a1**2 - rr**2), 1e-14,
+                         f"p0 at r = {t} a")
+
+
+def test_radius_of_curvature_of_each_shape():
+    """The tip's radius of curvature the Tabor parameter takes: R of the paraboloid, the cap
+    and the worn tip, 1/(2 c_2) of the power law with n = 2 (c_2 r^2 = r^2/(2R)), none for
+    other exponents, the cone or the punch; and the contact's text names its parts."""
+    assert ad.Paraboloid(2e-6).radius_of_curvature == 2e-6
+    assert ad.Sphere(3e-6).radius_of_curvature == 3e-6
+    assert ad.Worn(4e-6, 1e-8).radius_of_curvature == 4e-6
+    assert ad.PowerLaw(2.5e5, 2.0).radius_of_curvature == 1 / 5e5
+    assert ad.PowerLaw(2.5e5, 2.5).radius_of_curvature is None
+    assert ad.Cone(0.3).radius_of_curvature is None
+    assert ad.FlatPunch(1e-6).radius_of_curvature is None
+    assert repr(ad.AdhesiveContact(ad.Paraboloid(1e-6), 2e6, 0.05)) == \
+        "AdhesiveContact(Paraboloid(R=1e-06), E_star=2000000.0, dgamma=0.05)"
+
+
+def test_sampled_paraboloid_fields():
+    """The non-adhesive fields of a sampled paraboloid (201 samples of r^2/(2R) on [0, 3a],
+    which the quintic spline reproduces) against Hertz's typed here: the height r^2/(2R), the
+    pressure 2 E*/(pi R) sqrt(a^2 - r^2) and the displacement outside
+    ((2 a^2 - r^2) asin(a/r) + a sqrt(r^2 - a^2))/(pi R) (Johnson (3.42b) with d = a^2/R).
+    Tolerances: the spline exact to rounding (1e-13 of the largest height); the Abel integral
+    of g' and the quadrature of g on the 201 samples 1e-12 (measured 2.6e-14 and 1.5e-14),
+    on the coarse representation (every other sample: the companion of the error estimate)
+    1e-9 (measured 3.1e-10 and 9.2e-11); its text names the source."""
+    from hertzmdr.numeric import mdr
+
+    E, R, a = 3e6, 1e-6, 1e-7
+    r = np.linspace(0.0, 3 * a, 201)
+    for coarse in (False, True):
+        s = ad.Sampled(mdr.Profile.from_samples(r, r**2 / (2 * R)), coarse=coarse)
+        tol = 1e-9 if coarse else 1e-12
+        x = np.array([0.0, 0.37 * a, a, 2.9 * a])
+        h = s.height(x)
+        assert np.all(np.abs(h - x**2 / (2 * R)) <= 1e-13 * (3 * a) ** 2 / (2 * R)), h
+        rin = np.array([0.0, 0.4 * a, 0.9 * a])
+        p = s.pressure0(rin, a, E)
+        rout = np.array([1.0001 * a, 1.5 * a, 2.5 * a])
+        u = s.displacement0_outside(rout, a)
+        with mp.workdps(DPS):
+            am, Rm, Em = mp.mpf(a), mp.mpf(R), mp.mpf(E)
+            for i, rv in enumerate(rin):
+                ref = 2 * Em / (mp.pi * Rm) * mp.sqrt(am**2 - mp.mpf(rv) ** 2)
+                assert_close(p[i], ref, tol, f"sampled p0 at {rv / a} a ({coarse})")
+            for i, rv in enumerate(rout):
+                rm = mp.mpf(rv)
+                ref = ((2 * am**2 - rm**2) * mp.asin(am / rm) + am * mp.sqrt(rm**2 - am**2)) \
+                    / (mp.pi * Rm)
+                assert_close(u[i], ref, tol, f"sampled u at {rv / a} a ({coarse})")
+        assert repr(s).startswith("Sampled(") and repr(s).endswith(
+            ", coarse=True)" if coarse else ")") and " at 0x" not in repr(s)
