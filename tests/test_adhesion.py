@@ -711,19 +711,39 @@ def test_punch_cycle_work_is_kendalls():
         assert_close(cyc.hysteresis, ref, 8e-16, f"cycle E {E} a {R}")
 
 
-def test_zero_load_radius_of_the_cone_and_power_law():
-    """The closed zero-load radius of the cone and the power law (AdhesiveContact.
-    zero_load_contact_radius) against the root of the derived F(a) printed for mpmath, found
-    by mpmath's secant method from 1.5 times the pull-off radius (30 digits): the closed form
-    is a few roundings, 1e-14; with dgamma = 0 there is no contact at zero load."""
+def test_zero_load_radius_of_each_shape():
+    """The zero-load radius (AdhesiveContact.zero_load_contact_radius) of the cone and the
+    power law (closed forms) and of the exact sphere and the worn tip (Brent's root of F(a)
+    above the pull-off radius) against the root of the derived F(a) printed for mpmath,
+    bracketed from the pull-off radius (Anderson's method, 30 digits): the closed forms
+    a few roundings, the float root a simple one of a smooth F, 1e-14 both; with dgamma = 0
+    there is no contact at zero load, closed form or not."""
     for shape in (ad.Cone(np.radians(20)), ad.Cone(1.2), ad.PowerLaw(2.5e7, 2.0),
-                  ad.PowerLaw(3e3, 1.5), ad.PowerLaw(50.0, 0.8)):
+                  ad.PowerLaw(3e3, 1.5), ad.PowerLaw(50.0, 0.8), ad.Sphere(20e-9),
+                  ad.Sphere(1e-6), ad.Worn(1e-6, 5e-9)):
         E, dg, _, F_fn = _mp_curves(shape)
         c = ad.AdhesiveContact(shape, float(E), float(dg))
         with mp.workdps(DPS):
-            a0 = mp.findroot(F_fn, 1.5 * mp.mpf(c.pull_off("force").contact_radius))
+            lo = mp.mpf(c.pull_off("force").contact_radius)  # F < 0 there
+            lim = mp.mpf(shape.a_limit) if np.isfinite(shape.a_limit) else mp.inf
+            hi = min(1.5 * lo, (lo + lim) / 2)  # the cap: a < R
+            while F_fn(hi) < 0:
+                hi = min(2 * hi, (hi + lim) / 2)
+            a0 = mp.findroot(F_fn, (lo, hi), solver="anderson")
             assert_close(c.zero_load_contact_radius(), a0, 1e-14, f"{shape} a_0")
-    assert ad.AdhesiveContact(ad.Cone(0.3), 3e6, 0.0).zero_load_contact_radius() == 0.0
+    for shape in (ad.Cone(0.3), ad.Sphere(1e-6)):
+        assert ad.AdhesiveContact(shape, 3e6, 0.0).zero_load_contact_radius() == 0.0
+
+
+def test_worn_tip_inputs_named_and_taken_as_floats():
+    """The worn tip's R and b: a bad one named with its value, and both kept as floats."""
+    with pytest.raises(ValueError, match=r"^R = -1e-06"):
+        ad.Worn(-1e-6, 1e-8)
+    with pytest.raises(ValueError, match=r"^b = -1e-08"):
+        ad.Worn(1e-6, -1e-8)
+    w = ad.Worn(np.float32(1e-6), np.float32(1e-8))
+    assert type(w.R) is float and w.R == float(np.float32(1e-6))
+    assert type(w.b) is float and w.b == float(np.float32(1e-8)) and w.kinks == (w.b,)
 
 
 def test_state_helpers_of_the_paraboloid():
@@ -805,3 +825,19 @@ def test_sampled_paraboloid_fields():
                 assert_close(u[i], ref, tol, f"sampled u at {rv / a} a ({coarse})")
         assert repr(s).startswith("Sampled(") and repr(s).endswith(
             ", coarse=True)" if coarse else ")") and " at 0x" not in repr(s)
+
+
+def test_worn_tip_within_its_flat_has_no_depth():
+    """A worn tip whose contact radius is within its flat (a <= b) has g(a) = 0 (5.52): no
+    depth, so no non-adhesive pressure and no displacement outside, as float zeros of r's
+    shape (r given as integers too); just past the flat both are positive."""
+    w = ad.Worn(1e-6, 2e-8)
+    for a in (1e-8, 2e-8):
+        for r in ([0, 0], [0.0, 0.5e-8]):
+            p = w.pressure0(r, a, 3e6)
+            assert p.dtype == np.float64 and p.shape == (2,) and np.all(p == 0), (a, r)
+        u = w.displacement0_outside([3e-8, 1e-7], a)
+        assert u.dtype == np.float64 and u.shape == (2,) and np.all(u == 0), a
+    a = 2.2e-8
+    assert np.all(w.pressure0([0.0, 1e-8], a, 3e6) > 0)
+    assert np.all(w.displacement0_outside([3e-8, 1e-7], a) > 0)
