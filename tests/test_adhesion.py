@@ -739,6 +739,11 @@ def test_zero_load_radius_of_each_shape():
             assert_close(c.zero_load_contact_radius(), a0, 1e-14, f"{shape} a_0")
     for shape in (ad.Cone(0.3), ad.Sphere(1e-6)):
         assert ad.AdhesiveContact(shape, 3e6, 0.0).zero_load_contact_radius() == 0.0
+    # without a closed form at dgamma = 1 J/m^2: a root of F (checked against mpmath above),
+    # on the stable branch
+    c = ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 1.0)
+    a0, po = c.zero_load_contact_radius(), c.pull_off("force")
+    assert a0 > po.contact_radius and abs(float(c.force(a0))) <= 1e-12 * abs(po.force)
     # where a closed form is derived it is the answer, not a root near it
     for shape in (ad.Cone(0.3), ad.PowerLaw(3e3, 1.5), ad.Paraboloid(1e-6)):
         assert ad.AdhesiveContact(shape, 3e6, 0.04).zero_load_contact_radius() == \
