@@ -242,6 +242,14 @@ def test_hertz_stress_cylindrical_broadcasts_its_inputs():
             one = stress.hertz_stress_cylindrical(**{**base, name: x})
             for got, want in zip(out, one, strict=True):
                 assert got.shape == (3,) and got[k] == want, (name, k)
+    # lengths in units of a (the field depends on r/a, z/a only): a power of 2 as a scales
+    # exactly, so the same bits for a = 1/2, 1, 2, 4 m as for the same point at a = 1 m
+    r1, z1 = np.array([0.3, 0.9, 1.7]), np.array([0.2, 0.5, 1e-3])
+    ref = stress.hertz_stress_cylindrical(r1, z1, 1.0, 1e9, 0.3)
+    for aa in (0.5, 2.0, 4.0):
+        got = stress.hertz_stress_cylindrical(aa * r1, aa * z1, aa, 1e9, 0.3)
+        for g, w in zip(got, ref, strict=True):
+            assert np.array_equal(g, w), aa
 
 
 def test_spheroidal_far_away_and_empty():
