@@ -27,7 +27,7 @@ from hertzmdr.numeric import hertz, sphere
 
 from kernels import uz_axisymmetric
 from named import assert_inputs_named
-from oracle import WORST, assert_close
+from oracle import WORST, assert_close, memo
 
 DPS = 30
 TOL_LIT = 1e-13  # the issue's 13 digits; closed forms are a handful of roundings (~1e-15)
@@ -224,21 +224,30 @@ def _jkr_mp(E, R, dg, a):
     return d, p, u_out
 
 
+@memo  # a mutation run's memo (tests/oracle.py): the generated mpmath forms (derive/'s, not
+# numeric/adhesion.py), tests/kernels.py's quadrature and mpmath only
+def _jkr_uz_3d(E, R, dg, a, rr):
+    """u_z(rr) of the derived JKR pressure of radius a put through the Boussinesq integral
+    (5.7) (tests/kernels.py), at the working precision."""
+    _, p, _ = _jkr_mp(E, R, dg, a)
+
+    def p_gap(gap):
+        return p(mp.sqrt(a**2 - gap))
+
+    return uz_axisymmetric(p_gap, rr, a, E)
+
+
 def test_jkr_pressure_by_boussinesq():
     with mp.workdps(DPS):
         E, R, dg = mp.mpf(3), mp.mpf(2), mp.mpf("0.05")
         a = mp.mpf("0.7")
-        d, p, u_out = _jkr_mp(E, R, dg, a)
-
-        def p_gap(gap):
-            return p(mp.sqrt(a**2 - gap))
-
+        d, _, u_out = _jkr_mp(E, R, dg, a)
         for s in ("0", "0.6"):
             rr = mp.mpf(s) * a
-            u = uz_axisymmetric(p_gap, rr, a, E)
+            u = _jkr_uz_3d(E, R, dg, a, rr)
             _record("JKR 3-D inside", abs(u / (d - rr**2 / (2 * R)) - 1), TOL_3D)
         rr = 2 * a
-        u = uz_axisymmetric(p_gap, rr, a, E)
+        u = _jkr_uz_3d(E, R, dg, a, rr)
         _record("JKR 3-D outside", abs(u / u_out(rr) - 1), TOL_3D)
     # the float64 fields at the same points
     c = ad.AdhesiveContact(ad.Paraboloid(2.0), 3.0, 0.05)
@@ -700,3 +709,168 @@ def test_punch_cycle_work_is_kendalls():
         assert_close(gen.adhesion_punch_cycle_work(E, R, dg), ref, 8e-16, f"E {E} a {R}")
         cyc = ad.AdhesiveContact(ad.FlatPunch(R), E, dg).cycle(to=1e-9, control="depth")
         assert_close(cyc.hysteresis, ref, 8e-16, f"cycle E {E} a {R}")
+        # its error bound: a few roundings of a closed form, above the error and ~1e-15
+        err = abs(float((mp.mpf(cyc.hysteresis) - ref) / ref)) * cyc.hysteresis
+        assert err <= cyc.hysteresis_error <= 1e-14 * cyc.hysteresis
+        assert cyc.control == "depth"
+    cyc = ad.AdhesiveContact(ad.FlatPunch(1e-6), 3e6, 0.0).cycle(to=1e-9, control="force")
+    assert cyc.jumps == [] and cyc.hysteresis == 0 and cyc.control == "force"
+
+
+def test_zero_load_radius_of_each_shape():
+    """The zero-load radius (AdhesiveContact.zero_load_contact_radius) of the cone and the
+    power law (closed forms) and of the exact sphere and the worn tip (Brent's root of F(a)
+    above the pull-off radius) against the root of the derived F(a) printed for mpmath,
+    bracketed from the pull-off radius (Anderson's method, 30 digits): the closed forms
+    a few roundings, the float root a simple one of a smooth F, 1e-14 both; with dgamma = 0
+    there is no contact at zero load, closed form or not."""
+    for shape in (ad.Cone(np.radians(20)), ad.Cone(1.2), ad.PowerLaw(2.5e7, 2.0),
+                  ad.PowerLaw(3e3, 1.5), ad.PowerLaw(50.0, 0.8), ad.Sphere(20e-9),
+                  ad.Sphere(1e-6), ad.Worn(1e-6, 5e-9)):
+        E, dg, _, F_fn = _mp_curves(shape)
+        c = ad.AdhesiveContact(shape, float(E), float(dg))
+        with mp.workdps(DPS):
+            lo = mp.mpf(c.pull_off("force").contact_radius)  # F < 0 there
+            lim = mp.mpf(shape.a_limit) if np.isfinite(shape.a_limit) else mp.inf
+            hi = min(1.5 * lo, (lo + lim) / 2)  # the cap: a < R
+            while F_fn(hi) < 0:
+                hi = min(2 * hi, (hi + lim) / 2)
+            a0 = mp.findroot(F_fn, (lo, hi), solver="anderson")
+            assert_close(c.zero_load_contact_radius(), a0, 1e-14, f"{shape} a_0")
+    for shape in (ad.Cone(0.3), ad.Sphere(1e-6)):
+        assert ad.AdhesiveContact(shape, 3e6, 0.0).zero_load_contact_radius() == 0.0
+    # without a closed form at dgamma = 1 J/m^2: a root of F (checked against mpmath above),
+    # on the stable branch
+    c = ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 1.0)
+    a0, po = c.zero_load_contact_radius(), c.pull_off("force")
+    assert a0 > po.contact_radius and abs(float(c.force(a0))) <= 1e-12 * abs(po.force)
+    # where a closed form is derived it is the answer, not a root near it
+    for shape in (ad.Cone(0.3), ad.PowerLaw(3e3, 1.5), ad.Paraboloid(1e-6)):
+        assert ad.AdhesiveContact(shape, 3e6, 0.04).zero_load_contact_radius() == \
+            shape.closed_zero_load(3e6, 0.04)
+
+
+def test_worn_tip_inputs_named_and_taken_as_floats():
+    """The worn tip's R and b: a bad one named with its value, and both kept as floats."""
+    with pytest.raises(ValueError, match=r"^R = -1e-06"):
+        ad.Worn(-1e-6, 1e-8)
+    with pytest.raises(ValueError, match=r"^b = -1e-08"):
+        ad.Worn(1e-6, -1e-8)
+    w = ad.Worn(np.float32(1e-6), np.float32(1e-8))
+    assert type(w.R) is float and w.R == float(np.float32(1e-6))
+    assert type(w.b) is float and w.b == float(np.float32(1e-8)) and w.kinks == (w.b,)
+
+
+def test_state_helpers_of_the_paraboloid():
+    """critical_elongation, force_at_depth and the non-adhesive pressure of the paraboloid
+    against the literature typed here at 30 digits: Delta l = sqrt(2 pi a dgamma/E*), the
+    JKR force at the stable root of d = a^2/R - Delta l(a) (secant method from the float
+    root), Hertz's p = 2 E*/(pi R) sqrt(a^2 - r^2) (Johnson (4.20) with p0 = 2 a E*/(pi R));
+    a few roundings each (1e-14; the force at a depth 1e-12, it cancels near zero load)."""
+    E, R, dg = 2e6 / 0.75, 20e-9, 0.05
+    c = ad.AdhesiveContact(ad.Paraboloid(R), E, dg)
+    a = np.array([1e-9, 7e-9, 3e-8])
+    d = np.array([0.0, 2e-9, 1e-8])
+    dl, F, p = c.critical_elongation(a), c.force_at_depth(d), c.shape.pressure0(
+        np.array([0.0, 0.5 * a[1], 0.99 * a[1]]), a[1], E)
+    with mp.workdps(DPS):
+        Em, Rm, gm = mp.mpf(E), mp.mpf(R), mp.mpf(dg)
+        for i, x in enumerate(a):
+            assert_close(dl[i], mp.sqrt(2 * mp.pi * mp.mpf(x) * gm / Em), 1e-14, "Delta l")
+        for i, dv in enumerate(d):
+            dm = mp.mpf(dv)
+            x = mp.findroot(lambda s, dm=dm: s**2 / Rm - mp.sqrt(2 * mp.pi * s * gm / Em) - dm,
+                            mp.mpf(float(c.contact_radius(depth=float(dv)))))
+            F_ref = 4 * Em * x**3 / (3 * Rm) - mp.sqrt(8 * mp.pi * gm * Em * x**3)
+            assert_close(F[i], F_ref, 1e-12, f"F at d = {dv}")
+        a1 = mp.mpf(a[1])
+        for i, t in enumerate((0.0, 0.5, 0.99)):
+            rr = mp.mpf(float(t * a[1]))
+            assert_close(p[i], 2 * Em / (mp.pi * Rm) * mp.sqrt(a1**2 - rr**2), 1e-14,
+                         f"p0 at r = {t} a")
+
+
+def test_radius_of_curvature_of_each_shape():
+    """The tip's radius of curvature the Tabor parameter takes: R of the paraboloid, the cap
+    and the worn tip, 1/(2 c_2) of the power law with n = 2 (c_2 r^2 = r^2/(2R)), none for
+    other exponents, the cone or the punch; and the contact's text names its parts."""
+    assert ad.Paraboloid(2e-6).radius_of_curvature == 2e-6
+    assert ad.Sphere(3e-6).radius_of_curvature == 3e-6
+    assert ad.Worn(4e-6, 1e-8).radius_of_curvature == 4e-6
+    assert ad.PowerLaw(2.5e5, 2.0).radius_of_curvature == 1 / 5e5
+    assert ad.PowerLaw(2.5e5, 2.5).radius_of_curvature is None
+    assert ad.Cone(0.3).radius_of_curvature is None
+    assert ad.FlatPunch(1e-6).radius_of_curvature is None
+    assert repr(ad.AdhesiveContact(ad.Paraboloid(1e-6), 2e6, 0.05)) == \
+        "AdhesiveContact(Paraboloid(R=1e-06), E_star=2000000.0, dgamma=0.05)"
+
+
+def test_sampled_paraboloid_and_cone_fields():
+    """The non-adhesive fields of a sampled paraboloid (201 samples of h0 + r^2/(2R) on
+    [0, 3a], which the quintic spline reproduces; h0 = 1 nm, which no field may see) against
+    Hertz's typed here: the height f(r) - f(0) = r^2/(2R), the pressure
+    2 E*/(pi R) sqrt(a^2 - r^2) and the displacement outside
+    ((2 a^2 - r^2) asin(a/r) + a sqrt(r^2 - a^2))/(pi R) (Johnson (3.42b) with d = a^2/R);
+    of a sampled cone (r tan(theta)) the pressure E* tan(theta)/2 acosh(a/r) (the cone of
+    Love 1939 and Sneddon 1948), +inf at the apex. Inputs of any shape give results of that shape.
+    Tolerances: the spline exact to rounding (1e-13 of the largest height); the Abel integral
+    of g' and the quadrature of g on the 201 samples 1e-12 (measured 2.6e-14 and 1.5e-14),
+    on the coarse representation (every other sample: the companion of the error estimate)
+    1e-9 (measured 3.6e-10 and 9.2e-11), and it differs from the fine one (else the estimate
+    would be 0); the text names the source and only the coarse one says so."""
+    from hertzmdr.numeric import mdr
+
+    E, R, a, h0, th = 3e6, 1e-6, 1e-7, 1e-9, np.radians(20)
+    r = np.linspace(0.0, 3 * a, 201)
+    rin = np.array([[0.0], [0.4 * a], [0.9 * a]])
+    rout = np.array([[1.0001 * a, 1.5 * a, 2.5 * a]])
+    got = {}
+    for coarse in (False, True):
+        tol = 1e-9 if coarse else 1e-12
+        s = ad.Sampled(mdr.Profile.from_samples(r, h0 + r**2 / (2 * R)), coarse=coarse)
+        x = np.array([[0.0, 0.37 * a], [a, 2.9 * a]])
+        h = s.height(x)
+        assert h.shape == (2, 2)
+        assert np.all(np.abs(h - x**2 / (2 * R)) <= 1e-13 * (3 * a) ** 2 / (2 * R)), h
+        p = got[coarse] = s.pressure0(rin, a, E)
+        u = s.displacement0_outside(rout, a)
+        assert p.shape == (3, 1) and u.shape == (1, 3)
+        cone = ad.Sampled(mdr.Profile.from_samples(r, r * np.tan(th)), coarse=coarse)
+        pc = cone.pressure0(np.array([0.0, 0.2 * a, 0.7 * a]), a, E)
+        assert pc[0] == np.inf
+        with mp.workdps(DPS):
+            am, Rm, Em = mp.mpf(a), mp.mpf(R), mp.mpf(E)
+            for i, rv in enumerate(rin.ravel()):
+                ref = 2 * Em / (mp.pi * Rm) * mp.sqrt(am**2 - mp.mpf(rv) ** 2)
+                assert_close(p[i, 0], ref, tol, f"sampled p0 at {rv / a} a ({coarse})")
+            for i, rv in enumerate(rout.ravel()):
+                rm = mp.mpf(rv)
+                ref = ((2 * am**2 - rm**2) * mp.asin(am / rm) + am * mp.sqrt(rm**2 - am**2)) \
+                    / (mp.pi * Rm)
+                assert_close(u[0, i], ref, tol, f"sampled u at {rv / a} a ({coarse})")
+            for t, v in zip((0.2, 0.7), pc[1:], strict=True):
+                ref = Em * mp.tan(mp.mpf(th)) / 2 * mp.acosh(1 / mp.mpf(t))
+                assert_close(v, ref, tol, f"sampled cone p0 at {t} a ({coarse})")
+        assert cone.pressure0(np.array([0.0]), a, E)[0] == np.inf  # the apex alone too
+        text = repr(s)
+        assert " at 0x" not in text and text == (
+            f"Sampled({s.profile.source!r}, r_max={3 * a!r}"
+            + (", coarse=True)" if coarse else ")"))
+    assert np.all(np.abs(got[True] / got[False] - 1) > 1e-13)
+
+
+def test_worn_tip_within_its_flat_has_no_depth():
+    """A worn tip whose contact radius is within its flat (a <= b) has g(a) = 0 (5.52): no
+    depth, so no non-adhesive pressure and no displacement outside, as float zeros of r's
+    shape (r given as integers too); just past the flat both are positive."""
+    w = ad.Worn(1e-6, 2e-8)
+    for a in (1e-8, 2e-8):
+        for r in ([0, 0], [0.0, 0.5e-8]):
+            p = w.pressure0(r, a, 3e6)
+            assert p.dtype == np.float64 and p.shape == (2,) and np.all(p == 0), (a, r)
+        for r in ([1, 2], [3e-8, 1e-7]):
+            u = w.displacement0_outside(r, a)
+            assert u.dtype == np.float64 and u.shape == (2,) and np.all(u == 0), (a, r)
+    a = 2.2e-8
+    assert np.all(w.pressure0([0.0, 1e-8], a, 3e6) > 0)
+    assert np.all(w.displacement0_outside([3e-8, 1e-7], a) > 0)

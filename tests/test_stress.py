@@ -229,6 +229,57 @@ def test_spheroidal_broadcasts_its_inputs():
                 assert got.shape == shape and got[k] == want, (k, shape)
 
 
+def test_hertz_stress_cylindrical_broadcasts_its_inputs():
+    """hertz_stress_cylindrical() broadcasts r, z, a, p0 and nu together, each the one array
+    in turn: the shape of each component, and each value the scalar call's (the same
+    operations on the same numbers: equal to the last bit)."""
+    base = {"r": 0.7e-3, "z": 0.4e-3, "a": 1e-3, "p0": 1e9, "nu": 0.3}
+    values = {"r": [0.2e-3, 1e-3, 2.5e-3], "z": [0.0, 0.3e-3, 2e-3], "a": [0.5e-3, 1e-3, 3e-3],
+              "p0": [0.0, 1e8, 2e9], "nu": [-0.5, 0.0, 0.5]}
+    for name, v in values.items():
+        out = stress.hertz_stress_cylindrical(**{**base, name: np.array(v)})
+        for k, x in enumerate(v):
+            one = stress.hertz_stress_cylindrical(**{**base, name: x})
+            for got, want in zip(out, one, strict=True):
+                assert got.shape == (3,) and got[k] == want, (name, k)
+    # lengths in units of a (the field depends on r/a, z/a only): a power of 2 as a scales
+    # exactly, so the same bits for a = 1/2, 1, 2, 4 m as for the same point at a = 1 m
+    r1, z1 = np.array([0.3, 0.9, 1.7]), np.array([0.2, 0.5, 1e-3])
+    ref = stress.hertz_stress_cylindrical(r1, z1, 1.0, 1e9, 0.3)
+    for aa in (0.5, 2.0, 4.0):
+        got = stress.hertz_stress_cylindrical(aa * r1, aa * z1, aa, 1e9, 0.3)
+        for g, w in zip(got, ref, strict=True):
+            assert np.array_equal(g, w), aa
+
+
+def test_spheroidal_far_away_and_empty():
+    """Beyond 2^200 a (~1.6e60 a; r^4 would overflow past ~1e77 a) spheroidal() works in units
+    of a power of 2 near max(r, z): (xi, cos(beta), sin(beta)) at points from 1e61 a to
+    MAX_DISTANCE a (on the axis, on the surface, both large, z tiny beside r) mixed with
+    points near the contact in one call, against the positive root u of
+    r^2/(a^2 + u) + z^2/u = 1 in mpmath at 30 digits (xi = sqrt(u)/a, cos(beta) = z/(a xi),
+    sin(beta) = r/sqrt(a^2 + u)): a few roundings of the scaled forms, 1e-14 each; no
+    overflow warning on the way (warnings are errors). An empty input gives empty results."""
+    aa = 2.0
+    r_ = np.array([1e61, 0.0, 3e80, 1e99, 5e99, 0.5, 2e60, 7.0, 1e100])
+    z_ = np.array([0.0, 1e70, 2e80, 1e-3, 5e99, 0.3, 1e-5, 1e65, 0.0])
+    xi, cos_b, sin_b = stress.spheroidal(r_ * aa, z_ * aa, aa)
+    with mp.workdps(30):
+        for i in range(r_.size):
+            rm, zm = mp.mpf(r_[i]), mp.mpf(z_[i])
+            q = rm**2 + zm**2 - 1
+            u = (q + mp.sqrt(q**2 + 4 * zm**2)) / 2  # in units of a^2
+            ref = (mp.sqrt(u), zm / mp.sqrt(u), rm / mp.sqrt(1 + u))
+            for what, got, want in zip(("xi", "cos", "sin"), (xi[i], cos_b[i], sin_b[i]), ref,
+                                       strict=True):
+                if want == 0:
+                    assert got == 0, (what, r_[i], z_[i], got)
+                else:
+                    assert_close(float(got), want, 1e-14, f"{what} at ({r_[i]}, {z_[i]}) a")
+    empty = stress.spheroidal(np.array([]), np.array([]), aa)
+    assert all(v.shape == (0,) for v in empty)
+
+
 def test_field_on_the_axis_is_the_derived_axis_field():
     """The literature form at eta = 1, chi = 0, xi = z/a is the derived (5.48), (5.49), exactly."""
     s = sp.Symbol("s", positive=True)
