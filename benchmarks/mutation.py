@@ -94,7 +94,11 @@ _STRESS_TESTS = [f"tests/test_stress.py::test_{t}" for t in """
     superposed_plane_on_its_smallest_grid superposed_plane_error_is_relative
     superposed_maximum_of_the_orthogonal_shear_within_its_bound
     orthogonal_shear_maximum_by_superposition orthogonal_shear_maximum_is_the_largest_in_the_body
-    point_force_shear_is_the_ring_routes_kernel spheroidal_broadcasts_its_inputs""".split()]
+    point_force_shear_is_the_ring_routes_kernel spheroidal_broadcasts_its_inputs
+    spheroidal_far_away_and_empty hertz_stress_cylindrical_broadcasts_its_inputs
+    superposed_maximum_bound_takes_the_curvature_of_the_plane
+    superposed_maximum_bound_extrapolates_to_the_surface
+    superposed_maximum_near_the_surface_within_its_bound""".split()]
 
 # test_powerlaw.py but its slow references (the 3-D elasticity check, kappa by quadrature: 170 s
 # for each mutant they reach) and five of the nine exponents of the outside displacement
