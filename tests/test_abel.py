@@ -30,8 +30,12 @@ from hertzmdr.numeric import abel
 from hertzmdr.numeric._abel import edge as abel_edge
 from hertzmdr.numeric._abel import moments, operators
 
-from oracle import WORST
-from test_worn import pressure_ref as worn_pressure_ref
+from oracle import WORST, memo
+from test_worn import pressure_ref
+
+# the mpmath references, memoized in a mutation run (tests/oracle.py's memo; each a pure
+# function of its arguments, mpmath and tests/ only, never numeric/)
+worn_pressure_ref = memo(pressure_ref)  # (5.59) of the worn paraboloid by quadrature
 
 E = 2.1e11  # Pa
 A_CONTACT = 3e-4  # m
@@ -398,6 +402,13 @@ def test_operators_are_cached():
     assert len(abel._CACHE) == 4
 
 
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _moment_ref(sl, sh, tt, k):
+    """mu_k = int_sl^sh v^k (s - tt)^(-1/2) ds, v = (s - sl)/(sh - sl), by tanh-sinh
+    quadrature in u = s - sl (no cancellation near s_lo)."""
+    return mp.quad(lambda u: (u / (sh - sl)) ** k / mp.sqrt(u + (sl - tt)), [0, sh - sl])
+
+
 @pytest.mark.parametrize("kmax", [0, 2, 4, 8])
 def test_inverse_moments_in_closed_form(kmax):
     """The (5.59) operator's moments mu_k = int v^k (s - t)^(-1/2) ds over a piece
@@ -430,9 +441,8 @@ def test_inverse_moments_in_closed_form(kmax):
                 if sl < tt:
                     assert np.all(mu[a, :, b] == 0.0)  # a piece left of the output point
                     continue
-                for k in range(kmax + 1):  # in u = s - s_lo (no cancellation near s_lo)
-                    ref = mp.quad(lambda u, w=sh - sl, o=sl - tt, k=k:
-                                  (u / w) ** k / mp.sqrt(u + o), [0, sh - sl])
+                for k in range(kmax + 1):
+                    ref = _moment_ref(sl, sh, tt, k)
                     worst = max(worst, abs(float(mu[a, k, b] / ref) - 1))
     _record(f"abel exact moments kmax={kmax}", worst, 16 * np.finfo(float).eps)
 
@@ -496,6 +506,12 @@ def test_edge_on_the_last_sample_and_beyond_it():
         abel.pressure_matrix(5, 0.25, edge=2.0)
 
 
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _beta_ref(k, beta):
+    """int_0^1 x^k (x + beta (1 - x))^k dx by quadrature at the working precision."""
+    return mp.quad(lambda x: x**k * (x + beta * (1 - x)) ** k, [0, 1])
+
+
 def test_beta_table_by_quadrature():
     """_beta_table's c[k, j] (the moments of the pieces in closed form, built at import) against
     int_0^1 x^k (x + beta (1 - x))^k dx by 30-digit quadrature at four beta, k <= 8 (the
@@ -507,6 +523,6 @@ def test_beta_table_by_quadrature():
         for kk in range(k + 1):
             for beta in (0.0, 0.3, 1.0, 7.0):
                 with mp.workdps(30):
-                    ref = mp.quad(lambda x, k=kk, b=beta: x**k * (x + b * (1 - x)) ** k, [0, 1])
+                    ref = _beta_ref(kk, beta)
                 got = sum(c[kk, j] * beta**j for j in range(kk + 1))
                 _record("beta table", abs(got / ref - 1), 1e-15)
