@@ -20,6 +20,8 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import mdr as nmdr
 from hertzmdr.numeric import powerlaw as npl
 
+from oracle import memo
+
 rp = sp.Symbol("r", positive=True)
 theta = sp.Symbol("theta", positive=True)
 
@@ -330,6 +332,39 @@ def _g_ref(K, x, weight=lambda t: 1):
         [0, mp.sqrt(x - b)])
 
 
+# the references above as pure functions of numbers, memoized in a mutation run (tests/oracle.py's
+# memo: mpmath only, never numeric/; a mutant that changes an argument, such as the contact
+# radius, misses the memo and the reference is computed)
+@memo
+def _kinked_p(n, c, b, c2, a, r, E_):
+    """(5.59) of the kinked profile _kinked(n, c, b, c2) at r, contact radius a."""
+    return _p_ref(_kinked(n, c, b, c2), a, r, E_)
+
+
+@memo
+def _kinked_g(n, c, b, c2, x):
+    """g(x) of the kinked profile, integral_0^x g' dx."""
+    return _g_ref(_kinked(n, c, b, c2), x)
+
+
+@memo
+def _kinked_g552(n, c, b, c2, x):
+    """g(x) of the kinked profile by (5.52) itself: x integral_0^(pi/2) f'(x sin t) dt."""
+    K = _kinked(n, c, b, c2)
+    x = mp.mpf(x)
+    return x * mp.quad(lambda t: K["fprime"](x * mp.sin(t)), [0, mp.asin(min(1, K["b"] / x)),
+                                                              mp.pi / 2])
+
+
+@memo
+def _kinked_radius_and_force(n, c, b, c2, dd, E_):
+    """The contact radius a with g(a) = dd (findroot from 0.7) and the force (5.57)
+    F = 2 E* integral_0^a x g'(x) dx, for d = g(a)."""
+    K = _kinked(n, c, b, c2)
+    a_ref = mp.findroot(lambda x: _g_ref(K, x) - dd, mp.mpf("0.7"))
+    return a_ref, 2 * E_ * _g_ref(K, a_ref, lambda t: t)
+
+
 def _kinked_samples(n, N, b=0.4, c2=1.0):
     f = lambda r: np.where(r <= b, r**n, b**n + c2 * (r - b))  # noqa: E731
     r_s = np.unique(np.concatenate([np.linspace(0, b, round(N * b) + 1),
@@ -338,6 +373,18 @@ def _kinked_samples(n, N, b=0.4, c2=1.0):
 
 
 KINK_RADII = [0.01, 0.2, 0.39, 0.4 * (1 - 1e-7), 0.4 * (1 + 1e-7), 0.41, 0.5, 0.69]
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _worn_p_ref(r, a_, b, Rv, E_):
+    """(5.59) of the worn paraboloid at r, contact radius a_: x = b + t^2 (r < b) or
+    x = r + w^2 (r > b)."""
+    r = mp.mpf(r)
+    if r < b:
+        return E_ / mp.pi * mp.quad(lambda t: 2 * t * _worn_gprime(b + t * t, b, Rv) / mp.sqrt(
+            ((b - r) + t * t) * (b + t * t + r)), [0, mp.sqrt(a_ - b)])
+    return E_ / mp.pi * mp.quad(lambda w: 2 * _worn_gprime(r + w * w, b, Rv)
+                                / mp.sqrt(2 * r + w * w), [0, mp.sqrt(a_ - r)])
 
 
 def test_numeric_worn_pressure():
@@ -351,16 +398,8 @@ def test_numeric_worn_pressure():
     a_ = sol.contact_radius
     rr = np.array([0.0, 0.1, 0.29, b * (1 - 1e-9), b * (1 + 1e-9), 0.31, 0.35, 0.99 * a_])
     p, est = sol.pressure(rr, return_error=True)
-    def p_ref(r):  # (5.59): x = b + t^2 (r < b) or x = r + w^2 (r > b)
-        r = mp.mpf(r)
-        if r < b:
-            return E / mp.pi * mp.quad(lambda t: 2 * t * _worn_gprime(b + t * t, b, Rv) / mp.sqrt(
-                ((b - r) + t * t) * (b + t * t + r)), [0, mp.sqrt(a_ - b)])
-        return E / mp.pi * mp.quad(lambda w: 2 * _worn_gprime(r + w * w, b, Rv)
-                                   / mp.sqrt(2 * r + w * w), [0, mp.sqrt(a_ - r)])
-
     with mp.workdps(30):
-        ref = [p_ref(r) for r in rr]
+        ref = [_worn_p_ref(r, a_, b, Rv, E) for r in rr]
     err = np.abs(p / np.array([float(v) for v in ref]) - 1)
     # the splines are exact (piecewise quadratic f); what is left is the cubic table of the
     # remainder of g' in sqrt(x - b): measured 1.4e-11 at these 160 samples. At r = b(1 -+
@@ -376,18 +415,15 @@ def test_numeric_kinked_profile(source):
     f, r_s = _kinked_samples(2, 100)
     prof = (nmdr.Profile.from_samples(r_s, f(r_s), breakpoints=[0.4]) if source == "samples"
             else nmdr.Profile.from_callable(f, 1.0, breakpoints=[0.4], n=25))
+    kink = (2, 1, 0.4, 1.0)  # n, c, b, c2 of _kinked
     with mp.workdps(30):
-        K = _kinked(2, 1, 0.4, 1.0)
         # the hand-derived g' integrates to (5.52) itself: g(x) = x int f'(x sin t) dt
-        for xv in (mp.mpf("0.3"), mp.mpf("0.7")):
-            g552 = xv * mp.quad(lambda t, xv=xv: K["fprime"](xv * mp.sin(t)),
-                                [0, mp.asin(min(1, K["b"] / xv)), mp.pi / 2])
-            assert abs(_g_ref(K, xv) / g552 - 1) < 1e-25
-        dd = float(_g_ref(K, "0.7"))
+        for xv in ("0.3", "0.7"):
+            assert abs(_kinked_g(*kink, xv) / _kinked_g552(*kink, xv) - 1) < 1e-25
+        dd = float(_kinked_g(*kink, "0.7"))
         sol = prof.solve(depth=dd, E_star=E)
-        a_ref = mp.findroot(lambda x: _g_ref(K, x) - dd, mp.mpf("0.7"))
-        F_ref = 2 * E * _g_ref(K, a_ref, lambda t: t)  # (5.57) with d = g(a)
-        p_ref = [float(_p_ref(K, sol.contact_radius, r, E)) for r in KINK_RADII]
+        a_ref, F_ref = _kinked_radius_and_force(*kink, dd, E)  # (5.57) with d = g(a)
+        p_ref = [float(_kinked_p(*kink, sol.contact_radius, r, E)) for r in KINK_RADII]
     # exact splines: rounding, and g by quadrature to ~1e-15 (Newton polishes on it)
     assert abs(sol.contact_radius / float(a_ref) - 1) < 1e-13
     assert abs(sol.force / float(F_ref) - 1) < 1e-13
@@ -403,34 +439,41 @@ def test_numeric_kinked_convergence_and_estimate():
     N^-4 there; docs/mdr.md), and the estimate bounds it at every radius and resolution."""
     radii = [0.2, 0.4 * (1 - 1e-7), 0.41, 0.5]
     errs = []
+    kink = (2.5, 1, 0.4, 1.0)  # n, c, b, c2 of _kinked
     with mp.workdps(30):
-        K = _kinked(2.5, 1, 0.4, 1.0)
-        dd = float(_g_ref(K, "0.7"))
+        dd = float(_kinked_g(*kink, "0.7"))
     for N in (100, 400):
         f, r_s = _kinked_samples(2.5, N)
         sol = nmdr.Profile.from_samples(r_s, f(r_s), breakpoints=[0.4]).solve(
             depth=dd, E_star=E)
         p, est = sol.pressure(np.array(radii), return_error=True)
         with mp.workdps(30):
-            ref = np.array([float(_p_ref(K, sol.contact_radius, r, E)) for r in radii])
+            ref = np.array([float(_kinked_p(*kink, sol.contact_radius, r, E)) for r in radii])
         errs.append(np.abs(p / ref - 1))
         assert np.all(est / p >= errs[-1]), (N, est / p, errs[-1])
     assert np.all(errs[1] < errs[0] / 4**3), errs
 
 
 # -- (5.57) and the accuracy contract --------------------------------------------------------
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _force_by_the_pressure_ref(n, a_, E_):
+    """F = integral_0^a 2 pi r p(r) dr with p from (5.59) for g = x^n (x = r cosh t removes
+    the kernel's singularity), and G = integral_0^a g dx."""
+    def p(r):  # (5.59) with g'(x) = n x^(n-1)
+        return E_ / mp.pi * mp.quad(lambda t: n * (r * mp.cosh(t)) ** (n - 1),
+                                    [0, mp.acosh(a_ / r)])
+
+    return (mp.quad(lambda r: 2 * mp.pi * r * p(r), [0, a_]),
+            mp.quad(lambda x: x**n, [0, a_]))
+
+
 def test_mdr_force_by_the_pressure():
     """gen.mdr_force (5.57) against the pressure integrated over the disc, F = integral_0^a
     2 pi r p(r) dr, with p from (5.59) by quadrature (x = r cosh t removes the kernel's
     singularity), for g = x^2.5: an independent route to the force."""
     n, a_, E_ = mp.mpf("2.5"), mp.mpf("0.7"), mp.mpf(3e9)
     with mp.workdps(30):
-        def p(r):  # (5.59) with g'(x) = n x^(n-1)
-            return E_ / mp.pi * mp.quad(lambda t: n * (r * mp.cosh(t)) ** (n - 1),
-                                        [0, mp.acosh(a_ / r)])
-
-        F_ref = mp.quad(lambda r: 2 * mp.pi * r * p(r), [0, a_])
-        G = mp.quad(lambda x: x**n, [0, a_])
+        F_ref, G = _force_by_the_pressure_ref(n, a_, E_)
     F = gen.mdr_force(float(E_), float(a_), float(a_**n), float(G))
     # the float rounding of four arguments and three operations: a few ulp
     assert abs(F / F_ref - 1) < 1e-14
