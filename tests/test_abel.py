@@ -454,32 +454,99 @@ def test_imports_neither_sympy_nor_scipy():
     assert out.stdout.strip() == "", f"imported at import time: {out.stdout.strip()}"
 
 
+def _close(M, v, ref):
+    """M @ v equals ref up to the rounding of the sums, whose order differs between a matrix
+    and a transform (the functions add the edge correction separately): 64 ulp of
+    sum_j |M_ij v_j|, the size of the terms (the differentiating (5.59) operator has terms
+    ~1e3 times its result at N = 401)."""
+    return np.all(np.abs(M @ v - ref) <= 64 * np.finfo(float).eps * (np.abs(M) @ np.abs(v)))
+
+
+def _fresh_operators():
+    """The transforms and the matrices share the operator cache: each side is computed from
+    an empty one, so that a matrix is never the transform's cached operator (or the reverse)."""
+    operators._CACHE.clear()
+    abel_edge._EDGE_CACHE.clear()
+
+
 @pytest.mark.parametrize("N", [51, 401])
 def test_matrices_are_the_transforms(N):
     """pressure_matrix/line_load_matrix for a known edge apply the same operators as the
-    functions: equal up to the rounding of the sums, whose order differs (the functions add
-    the edge correction separately): 64 ulp of sum_j |M_ij v_j|, the size of the terms (the
-    differentiating (5.59) operator has terms ~1e3 times its result at N = 401)."""
-    eps = np.finfo(float).eps
-
-    def close(M, v, ref):
-        return np.all(np.abs(M @ v - ref) <= 64 * eps * (np.abs(M) @ np.abs(v)))
-
+    functions (see _close), each built anew (_fresh_operators)."""
     x, dx = grid(N)
     for n in (2.0, 2.5, 4.0):
         q, p = powerlaw_pair(n, x)
+        _fresh_operators()
+        pq = abel.pressure_from_line_load(q, dx, edge=A_CONTACT)
+        qp = abel.line_load_from_pressure(p, dx, edge=A_CONTACT)
+        _fresh_operators()
         M, F = (abel.pressure_matrix(N, dx, edge=A_CONTACT),
                 abel.line_load_matrix(N, dx, edge=A_CONTACT))
-        assert close(M, q, abel.pressure_from_line_load(q, dx, edge=A_CONTACT))
-        assert close(F, p, abel.line_load_from_pressure(p, dx, edge=A_CONTACT))
+        assert _close(M, q, pq)
+        assert _close(F, p, qp)
         assert not M[x >= A_CONTACT].any() and not M[:, x >= A_CONTACT].any()
     # with a kink between two samples: the worn paraboloid's operator
     a, b = 1.0, 0.3005
     xx = np.linspace(0, 1.2, N)
     q = np.where(xx < a, 0.1 - gen.worn_g(1.0, b, np.minimum(xx, a)), 0.0)
+    _fresh_operators()
     pk = abel.pressure_from_line_load(q, xx[1], edge=a, kink=b)
+    _fresh_operators()
     Mk = abel.pressure_matrix(N, xx[1], edge=a, kink=b)
-    assert close(Mk, q, pk)
+    assert _close(Mk, q, pk)
+
+
+def test_matrices_of_several_grids_and_edges_in_one_process():
+    """Matrices of two grids and two edges built one after the other (the operator cache
+    holds them all at once: each is its own entry) are each the transform of its own grid and
+    edge, computed from an empty cache."""
+    cases = [(51, A_CONTACT), (51, 0.9 * A_CONTACT), (81, A_CONTACT), (81, 0.8 * A_CONTACT)]
+    refs = []
+    for N, a_ in cases:
+        x, dx = grid(N)
+        q, p = powerlaw_pair(2.5, x * A_CONTACT / a_)  # the contact of radius a_
+        _fresh_operators()
+        refs.append((q, p, abel.pressure_from_line_load(q, dx, edge=a_),
+                     abel.line_load_from_pressure(p, dx, edge=a_)))
+    _fresh_operators()
+    for (N, a_), (q, p, pq, qp) in zip(cases, refs, strict=True):
+        dx = grid(N)[1]
+        assert _close(abel.pressure_matrix(N, dx, edge=a_), q, pq), (N, a_)
+        assert _close(abel.line_load_matrix(N, dx, edge=a_), p, qp), (N, a_)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _kink_moment_ref(tau, beta, s_lo, s_hi, k):
+    """mu_k = int_{s_lo}^{s_hi} v^k ds / sqrt((s - beta)(s - tau)), v = (s - s_lo)/(s_hi -
+    s_lo), by tanh-sinh quadrature in t with s = max(beta, tau) + t^2 (ds/sqrt(s - max) =
+    2 dt: no endpoint singularity left)."""
+    top, bot = max(beta, tau), min(beta, tau)
+    return mp.quad(lambda t: 2 * ((top + t * t - s_lo) / (s_hi - s_lo)) ** k
+                   / mp.sqrt(t * t + (top - bot)), [mp.sqrt(s_lo - top), mp.sqrt(s_hi - top)])
+
+
+def test_kink_moments_by_quadrature():
+    """_moments_cosh (the kernel 1/sqrt((s - b^2)(s - r^2)) of a kink at s = b^2, in units
+    dx = 1) against 30-digit quadrature, k <= 5, on pieces starting at the kink or at the
+    output point, with the kink and the output point 0.01 ... 10 apart (u = acosh spans up to
+    ~6 on the first piece: 24 panels of _COSH_PANEL) and a piece far away. Gauss-Legendre of 8
+    points on panels <= 0.25 in u: (5 * 0.125)^16/16! ~ 1e-17 per panel; left is rounding: of
+    the sums of <= 24 * 8 positive terms (16 eps), and of the centre c = (beta + tau)/2, whose
+    ulp of s is relative eps s/h in s - c and in z = (s - c)/h (h = |beta - tau|/2): measured
+    1.6e-13 for h = 0.005, s = 100 (the bound eps s_hi/|beta - tau| is 2.7e-12 there)."""
+    from hertzmdr.numeric._abel.moments import _moments_cosh
+
+    eps = np.finfo(float).eps
+    # (tau, beta, s_lo, s_hi): tau < beta (an output point left of the kink), tau > beta
+    for tau, beta, s_lo, s_hi in [(99.99, 100.0, 100.0, 121.0), (90.0, 100.0, 100.0, 121.0),
+                                  (100.0, 99.99, 100.0, 121.0), (110.0, 100.0, 110.0, 121.0),
+                                  (99.0, 100.0, 400.0, 441.0)]:
+        mu = _moments_cosh(np.array([[tau]]), np.array([[s_lo]]), np.array([[s_hi]]),
+                           np.array([[s_hi - s_lo]]), beta, 5, 8)[0, 0]
+        with mp.workdps(30):
+            err = max(abs(float(mu[k] / _kink_moment_ref(tau, beta, s_lo, s_hi, k)) - 1)
+                      for k in range(6))
+        _record("abel kink moments", err, 16 * eps + eps * s_hi / abs(beta - tau))
 
 
 @pytest.mark.parametrize("kwargs, match", [
@@ -526,3 +593,73 @@ def test_beta_table_by_quadrature():
                     ref = _beta_ref(kk, beta)
                 got = sum(c[kk, j] * beta**j for j in range(kk + 1))
                 _record("beta table", abs(got / ref - 1), 1e-15)
+
+
+def _sloped_kink_q(x, b, u0):
+    """A line load with a square-root kink at x = b that slopes on both sides (the worn
+    paraboloid's is flat left of its kink): in s = x^2, beta = b^2, a = 1,
+    q = beta - s + u0 sqrt(1 - beta) for s < beta (linear in s), u0 (sqrt(1 - beta) -
+    sqrt(s - beta)) beyond (Q(beta) + sqrt(s - beta) U with U = -u0 constant), 0 for x >= 1."""
+    s, beta = x**2, b**2
+    q = u0 * (np.sqrt(1 - beta) - np.sqrt(np.clip(s - beta, 0, None))) + np.clip(beta - s, 0,
+                                                                                     None)
+    return np.where(x < 1, q, 0.0)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _sloped_kink_p_ref(r, b, u0):
+    """(5.59) of _sloped_kink_q, p = -(1/pi) int_r^1 q'(x) dx/sqrt(x^2 - r^2) with q' = -2x
+    (x < b) and -u0 x/sqrt(x^2 - b^2) (x > b), in closed form (t = x^2: the first is
+    2 sqrt(b^2 - r^2), the second u0 int dt/(2 sqrt((t - b^2)(t - r^2))) = u0 log(sqrt(t -
+    b^2) + sqrt(t - r^2)) between its ends)."""
+    r, b = mp.mpf(r), mp.mpf(b)
+    beta, rr = b * b, r * r
+    left = 2 * mp.sqrt(beta - rr) if r < b else 0
+    return (left + u0 * mp.log((mp.sqrt(1 - beta) + mp.sqrt(1 - rr))
+                               / mp.sqrt(abs(beta - rr)))) / mp.pi
+
+
+def _sloped_kink_p_quad(r, b, u0):
+    """(5.59) of _sloped_kink_q by tanh-sinh quadrature in t = x^2: the left part
+    int_(r^2)^(b^2) dt/sqrt(t - r^2) with t = r^2 + w^2, the right part
+    (u0/2) int dt/sqrt((t - b^2)(t - r^2)) from max(r, b)^2 to 1 with t = max^2 + w^2."""
+    beta, rr = b * b, r * r
+    left = mp.quad(lambda w: 2, [0, mp.sqrt(beta - rr)]) if r < b else 0
+    lo, other = max(beta, rr), min(beta, rr)
+    right = u0 / 2 * mp.quad(lambda w: 2 / mp.sqrt(w * w + lo - other), [0, mp.sqrt(1 - lo)])
+    return (left + right) / mp.pi
+
+
+def test_kink_with_a_sloped_left_part_is_exact():
+    """A kink with q sloped on both sides (_sloped_kink_q: linear in s left of it, Q(beta) +
+    sqrt(s - beta) U with U constant beyond, the edge given) is in the interpolants' span: the
+    transform and the kinked matrix are exact to rounding, left of the kink, next to it and
+    beyond, the kink between two samples or on one (p = +inf there), over more rows than one
+    block of the build (_BLOCK = 48) on either side. The closed form is checked against
+    30-digit quadrature of (5.59) at two radii. Rounding: as for Hertz, the rounding of q
+    divided by the differences of ~N samples, 2e-15 N (measured 9.4e-14 at N = 201, 3.5e-14
+    at N = 241; the sample next to the kink, within dx/2, is left out: there
+    U_i = (q_i - Q(beta))/sqrt(s_i - beta) divides a difference of nearly equal samples)."""
+    b, u0 = 0.5, 0.3
+    with mp.workdps(30):
+        for r in (mp.mpf("0.2"), mp.mpf("0.7")):  # (5.59) by quadrature in t = x^2
+            assert abs(_sloped_kink_p_quad(r, mp.mpf(b), u0)
+                       / _sloped_kink_p_ref(r, b, u0) - 1) < 1e-25
+    for N, kb in ((201, b), (241, b)):  # dx = 0.006: b between samples; dx = 0.005: on one
+        x = np.linspace(0, 1.2, N)
+        dx = x[1]
+        q = _sloped_kink_q(x, b, u0)
+        on = abs(b / dx - round(b / dx)) < 1e-9
+        m = (x < 0.98) & (np.abs(x - b) > 0.5 * dx)
+        with mp.workdps(30):
+            ref = np.array([float(_sloped_kink_p_ref(float(v), b, u0)) for v in x[m]])
+        _fresh_operators()
+        p = abel.pressure_from_line_load(q, dx, edge=1.0, kink=kb)
+        _record(f"abel inverse sloped kink N={N}", rel_err(p[m], ref, slice(None)), 2e-15 * N)
+        if on:
+            assert p[int(round(b / dx))] == np.inf
+        else:
+            _fresh_operators()
+            M = abel.pressure_matrix(N, dx, edge=1.0, kink=kb)
+            _record(f"abel matrix sloped kink N={N}", rel_err((M @ q)[m], ref, slice(None)),
+                    2e-15 * N)
