@@ -668,3 +668,34 @@ def test_kink_with_a_sloped_left_part_is_exact():
             M = abel.pressure_matrix(N, dx, edge=1.0, kink=b)
             _record(f"abel matrix sloped kink N={N}", rel_err((M @ q)[m], ref, slice(None)),
                     2e-15 * N)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _edge_moment_ref(tau, A, s_lo, s_hi, k):
+    """mu_k = int_{s_lo}^{s_hi} v^k sqrt(A - s)/sqrt(s - tau) ds, v = (s - s_lo)/(s_hi - s_lo),
+    by tanh-sinh quadrature in w with s = tau + w^2 (ds/sqrt(s - tau) = 2 dw)."""
+    return mp.quad(lambda w: 2 * ((tau + w * w - s_lo) / (s_hi - s_lo)) ** k
+                   * mp.sqrt(max(A - tau - w * w, 0)), [mp.sqrt(s_lo - tau), mp.sqrt(s_hi - tau)])
+
+
+def test_edge_moments_by_quadrature():
+    """_moments_theta (the (5.61) weight sqrt(A - s)/sqrt(s - tau) next to a contact edge A, in
+    units dx = 1) against 30-digit quadrature, k <= 5: the last piece [s_K, A] and the one
+    before it, for the output point on them (theta spans up to pi/2: 16 panels of
+    _THETA_PANEL) and a few samples before them. Gauss-Legendre of 11 points on panels <= 0.1
+    rad of an entire function of theta: below 1e-16; left is the rounding of the sums of
+    <= 16 * 11 positive terms and of the ends (sin and cos of theta from square roots): 64 eps."""
+    from hertzmdr.numeric._abel.moments import _moments_theta
+
+    A = 100.5**2
+    worst = 0.0
+    for tau, s_lo, s_hi in [(100.0**2, 100.0**2, A), (99.0**2, 100.0**2, A),
+                            (99.0**2, 99.0**2, 100.0**2), (90.0**2, 99.0**2, 100.0**2),
+                            (0.0, 100.0**2, A)]:
+        mu = _moments_theta(np.array([[tau]]), np.array([[s_lo]]), np.array([[s_hi]]),
+                            np.array([[s_hi - s_lo]]), A, 5, 11)[0, 0]
+        with mp.workdps(30):
+            for k in range(6):
+                ref = _edge_moment_ref(mp.mpf(tau), mp.mpf(A), mp.mpf(s_lo), mp.mpf(s_hi), k)
+                worst = max(worst, abs(float(mu[k] / ref) - 1))
+    _record("abel edge moments", worst, 64 * np.finfo(float).eps)
