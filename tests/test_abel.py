@@ -638,10 +638,10 @@ def test_kink_with_a_sloped_left_part_is_exact():
     sqrt(s - beta) U with U constant beyond, the edge given) is in the interpolants' span: the
     transform and the kinked matrix are exact to rounding, left of the kink, next to it and
     beyond, the kink between two samples or on one (p = +inf there), over more rows than one
-    block of the build (_BLOCK = 48) on either side. The closed form is checked against
-    30-digit quadrature of (5.59) at two radii. Rounding: as for Hertz, the rounding of q
-    divided by the differences of ~N samples, 2e-15 N (measured 9.4e-14 at N = 201, 3.5e-14
-    at N = 241; the sample next to the kink, within dx/2, is left out: there
+    block of the build (_BLOCK = 48) on either side, and without an edge. The closed form is
+    checked against 30-digit quadrature of (5.59) at two radii. Rounding: as for Hertz, the
+    rounding of q divided by the differences of ~N samples, 2e-15 N (measured 9.4e-14 at
+    N = 201, 3.5e-14 at N = 241; the sample next to the kink, within dx/2, is left out: there
     U_i = (q_i - Q(beta))/sqrt(s_i - beta) divides a difference of nearly equal samples)."""
     u0 = 0.3
     with mp.workdps(30):
@@ -668,6 +668,18 @@ def test_kink_with_a_sloped_left_part_is_exact():
             M = abel.pressure_matrix(N, dx, edge=1.0, kink=b)
             _record(f"abel matrix sloped kink N={N}", rel_err((M @ q)[m], ref, slice(None)),
                     2e-15 * N)
+    # without an edge: q + 1 on [0, 1] has no zero, the transform is truncated at the grid's
+    # end x = 1, and p (which sees only q') is the same closed form
+    x = np.linspace(0, 1, 201)
+    q = _sloped_kink_q(x, 0.5, u0) + 1.0
+    q[-1] = 1.0  # _sloped_kink_q is 0 from x = 1 on: its limit there, the constant
+    m = (x < 0.98) & (np.abs(x - 0.5) > 0.5 * x[1])
+    with mp.workdps(30):
+        ref = np.array([float(_sloped_kink_p_ref(float(v), 0.5, u0)) for v in x[m]])
+    _fresh_operators()
+    p = abel.pressure_from_line_load(q, x[1], kink=0.5)
+    assert p[100] == np.inf  # b = 100 dx: on a sample
+    _record("abel inverse sloped kink, no edge", rel_err(p[m], ref, slice(None)), 2e-15 * 201)
 
 
 @memo  # a mutation run's memo (tests/oracle.py): mpmath only
