@@ -650,7 +650,8 @@ def test_kink_with_a_sloped_left_part_is_exact():
                        / _sloped_kink_p_ref(r, 0.5, u0) - 1) < 1e-25
     # dx = 0.006: b between samples; dx = 0.005: on one; b = 0.7, dx = 0.004: on a sample
     # where (b/dx)^2 = 30624.99999999999, not 175^2 (the build snaps it to the sample)
-    for N, b in ((201, 0.5), (241, 0.5), (301, 0.7)):
+    # and b = 1.5 dx: two samples left of the kink, a linear left part
+    for N, b in ((201, 0.5), (241, 0.5), (301, 0.7), (201, 0.009)):
         x = np.linspace(0, 1.2, N)
         dx = x[1]
         q = _sloped_kink_q(x, b, u0)
