@@ -640,9 +640,10 @@ def test_kink_with_a_sloped_left_part_is_exact():
     beyond, the kink between two samples or on one (p = +inf there), over more rows than one
     block of the build (_BLOCK = 48) on either side, and without an edge. The closed form is
     checked against 30-digit quadrature of (5.59) at two radii. Rounding: as for Hertz, the
-    rounding of q divided by the differences of ~N samples, 2e-15 N (measured 9.4e-14 at
-    N = 201, 3.5e-14 at N = 241; the sample next to the kink, within dx/2, is left out: there
-    U_i = (q_i - Q(beta))/sqrt(s_i - beta) divides a difference of nearly equal samples)."""
+    rounding of q divided by the differences of ~N samples, 2e-15 N (measured 2.0e-13 at
+    N = 201, 6.6e-14 at N = 241, up to the last sample inside the edge; the sample next to
+    the kink, within dx/2, is left out: there U_i = (q_i - Q(beta))/sqrt(s_i - beta) divides
+    a difference of nearly equal samples)."""
     u0 = 0.3
     with mp.workdps(30):
         for r in (mp.mpf("0.2"), mp.mpf("0.7")):  # (5.59) by quadrature in t = x^2
@@ -651,12 +652,14 @@ def test_kink_with_a_sloped_left_part_is_exact():
     # dx = 0.006: b between samples; dx = 0.005: on one; b = 0.7, dx = 0.004: on a sample
     # where (b/dx)^2 = 30624.99999999999, not 175^2 (the build snaps it to the sample)
     # and b = 1.5 dx: two samples left of the kink, a linear left part
-    for N, b in ((201, 0.5), (241, 0.5), (301, 0.7), (201, 0.009)):
-        x = np.linspace(0, 1.2, N)
-        dx = x[1]
+    # and K = 144 = 3 _BLOCK samples inside the edge (the build's last block of rows)
+    grids = [(np.linspace(0, 1.2, N), b) for N, b in ((201, 0.5), (241, 0.5), (301, 0.7),
+                                                      (201, 0.009))]
+    for x, b in grids + [(np.arange(175) / 144.5, 0.5)]:
+        N, dx = len(x), x[1]
         q = _sloped_kink_q(x, b, u0)
         on = abs(b / dx - round(b / dx)) < 1e-9
-        m = (x < 0.98) & (np.abs(x - b) > 0.5 * dx)
+        m = (x < 1) & (np.abs(x - b) > 0.5 * dx)
         with mp.workdps(30):
             ref = np.array([float(_sloped_kink_p_ref(float(v), b, u0)) for v in x[m]])
         _fresh_operators()
