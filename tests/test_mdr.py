@@ -427,6 +427,9 @@ def test_numeric_kinked_profile(source):
     # exact splines: rounding, and g by quadrature to ~1e-15 (Newton polishes on it)
     assert abs(sol.contact_radius / float(a_ref) - 1) < 1e-13
     assert abs(sol.force / float(F_ref) - 1) < 1e-13
+    # the reported rel_error bounds both (its slope a g'(a) takes the kink's term of g')
+    assert sol.rel_error >= max(abs(sol.contact_radius / float(a_ref) - 1),
+                                abs(sol.force / float(F_ref) - 1))
     p, est = sol.pressure(np.array(KINK_RADII), return_error=True)
     err = np.abs(p / np.array(p_ref) - 1)
     assert np.all(err < 3e-9), err  # cubic tables of q on ~100 nodes: measured 1.1e-9
@@ -592,3 +595,38 @@ def test_pressure_on_the_axis(n):
     assert abs(p[0] / ref[0] - 1) < tol0 and abs(p[1] / ref[1] - 1) < tol1, p / ref - 1
     covered = err >= np.abs(p - ref)
     assert covered[1] and (covered[0] or n == 1.5), err / np.abs(p - ref)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath and the closed-form g only
+def _worn_u_outside_ref(r, a_, b, Rv, d):
+    """(5.60) outside the contact by tanh-sinh quadrature, u = (2/pi) integral_0^asin(a/r)
+    (d - g(r sin t)) dt, with the worn paraboloid's closed-form g (Problem 8, worn_g),
+    evaluated in float64 (1e-16) at the quadrature's nodes; split at asin(b/r), where g has
+    its square-root kink."""
+    def g(x):
+        return float(gen.worn_g(Rv, b, float(x)))
+
+    t_b, t_a = mp.asin(b / r), mp.asin(a_ / r)
+    return 2 / mp.pi * mp.quad(lambda t: d - g(r * mp.sin(t)), [0, t_b, t_a])
+
+
+def test_numeric_worn_displacement():
+    """The worn paraboloid sampled with its kink as a breakpoint (the panels of (5.60) graded
+    towards asin(b/r), where g has its square-root kink): u = d - f(r) inside (exact), and
+    outside against (5.60) by quadrature of the closed-form g; the bound covers the error.
+    Tolerance: the quintic table of g on 160 samples, as the outside displacement of
+    test_numeric_powerlaw (1e-10)."""
+    Rv, b, dd = 1.0, 0.3, 0.1
+    r_s = np.unique(np.concatenate([np.linspace(0, b, 41), np.linspace(b, 1, 121)]))
+    f = np.where(r_s < b, 0, (r_s**2 - b**2) / (2 * Rv))
+    sol = nmdr.Profile.from_samples(r_s, f, breakpoints=[b]).solve(depth=dd, E_star=E)
+    a_ = sol.contact_radius
+    r_in = np.array([0.1, 0.35, 0.9 * a_])
+    r_out = np.array([1.05, 1.5, 3.0]) * a_
+    u, err = sol.displacement(np.concatenate([r_in, r_out]), return_error=True)
+    with mp.workdps(20):
+        ref_out = [float(_worn_u_outside_ref(mp.mpf(float(r)), mp.mpf(float(a_)), b, Rv, dd))
+                   for r in r_out]
+    ref = np.concatenate([dd - np.where(r_in < b, 0, (r_in**2 - b**2) / (2 * Rv)), ref_out])
+    np.testing.assert_allclose(u, ref, rtol=1e-10)
+    assert np.all(err >= np.abs(u - ref))
