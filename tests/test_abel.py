@@ -30,8 +30,12 @@ from hertzmdr.numeric import abel
 from hertzmdr.numeric._abel import edge as abel_edge
 from hertzmdr.numeric._abel import moments, operators
 
-from oracle import WORST
-from test_worn import pressure_ref as worn_pressure_ref
+from oracle import WORST, memo
+from test_worn import pressure_ref
+
+# the mpmath references, memoized in a mutation run (tests/oracle.py's memo; each a pure
+# function of its arguments, mpmath and tests/ only, never numeric/)
+worn_pressure_ref = memo(pressure_ref)  # (5.59) of the worn paraboloid by quadrature
 
 E = 2.1e11  # Pa
 A_CONTACT = 3e-4  # m
@@ -398,6 +402,13 @@ def test_operators_are_cached():
     assert len(abel._CACHE) == 4
 
 
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _moment_ref(sl, sh, tt, k):
+    """mu_k = int_sl^sh v^k (s - tt)^(-1/2) ds, v = (s - sl)/(sh - sl), by tanh-sinh
+    quadrature in u = s - sl (no cancellation near s_lo)."""
+    return mp.quad(lambda u: (u / (sh - sl)) ** k / mp.sqrt(u + (sl - tt)), [0, sh - sl])
+
+
 @pytest.mark.parametrize("kmax", [0, 2, 4, 8])
 def test_inverse_moments_in_closed_form(kmax):
     """The (5.59) operator's moments mu_k = int v^k (s - t)^(-1/2) ds over a piece
@@ -430,9 +441,8 @@ def test_inverse_moments_in_closed_form(kmax):
                 if sl < tt:
                     assert np.all(mu[a, :, b] == 0.0)  # a piece left of the output point
                     continue
-                for k in range(kmax + 1):  # in u = s - s_lo (no cancellation near s_lo)
-                    ref = mp.quad(lambda u, w=sh - sl, o=sl - tt, k=k:
-                                  (u / w) ** k / mp.sqrt(u + o), [0, sh - sl])
+                for k in range(kmax + 1):
+                    ref = _moment_ref(sl, sh, tt, k)
                     worst = max(worst, abs(float(mu[a, k, b] / ref) - 1))
     _record(f"abel exact moments kmax={kmax}", worst, 16 * np.finfo(float).eps)
 
@@ -444,32 +454,99 @@ def test_imports_neither_sympy_nor_scipy():
     assert out.stdout.strip() == "", f"imported at import time: {out.stdout.strip()}"
 
 
+def _close(M, v, ref):
+    """M @ v equals ref up to the rounding of the sums, whose order differs between a matrix
+    and a transform (the functions add the edge correction separately): 64 ulp of
+    sum_j |M_ij v_j|, the size of the terms (the differentiating (5.59) operator has terms
+    ~1e3 times its result at N = 401)."""
+    return np.all(np.abs(M @ v - ref) <= 64 * np.finfo(float).eps * (np.abs(M) @ np.abs(v)))
+
+
+def _fresh_operators():
+    """The transforms and the matrices share the operator cache: each side is computed from
+    an empty one, so that a matrix is never the transform's cached operator (or the reverse)."""
+    operators._CACHE.clear()
+    abel_edge._EDGE_CACHE.clear()
+
+
 @pytest.mark.parametrize("N", [51, 401])
 def test_matrices_are_the_transforms(N):
     """pressure_matrix/line_load_matrix for a known edge apply the same operators as the
-    functions: equal up to the rounding of the sums, whose order differs (the functions add
-    the edge correction separately): 64 ulp of sum_j |M_ij v_j|, the size of the terms (the
-    differentiating (5.59) operator has terms ~1e3 times its result at N = 401)."""
-    eps = np.finfo(float).eps
-
-    def close(M, v, ref):
-        return np.all(np.abs(M @ v - ref) <= 64 * eps * (np.abs(M) @ np.abs(v)))
-
+    functions (see _close), each built anew (_fresh_operators)."""
     x, dx = grid(N)
     for n in (2.0, 2.5, 4.0):
         q, p = powerlaw_pair(n, x)
+        _fresh_operators()
+        pq = abel.pressure_from_line_load(q, dx, edge=A_CONTACT)
+        qp = abel.line_load_from_pressure(p, dx, edge=A_CONTACT)
+        _fresh_operators()
         M, F = (abel.pressure_matrix(N, dx, edge=A_CONTACT),
                 abel.line_load_matrix(N, dx, edge=A_CONTACT))
-        assert close(M, q, abel.pressure_from_line_load(q, dx, edge=A_CONTACT))
-        assert close(F, p, abel.line_load_from_pressure(p, dx, edge=A_CONTACT))
+        assert _close(M, q, pq)
+        assert _close(F, p, qp)
         assert not M[x >= A_CONTACT].any() and not M[:, x >= A_CONTACT].any()
     # with a kink between two samples: the worn paraboloid's operator
     a, b = 1.0, 0.3005
     xx = np.linspace(0, 1.2, N)
     q = np.where(xx < a, 0.1 - gen.worn_g(1.0, b, np.minimum(xx, a)), 0.0)
+    _fresh_operators()
     pk = abel.pressure_from_line_load(q, xx[1], edge=a, kink=b)
+    _fresh_operators()
     Mk = abel.pressure_matrix(N, xx[1], edge=a, kink=b)
-    assert close(Mk, q, pk)
+    assert _close(Mk, q, pk)
+
+
+def test_matrices_of_several_grids_and_edges_in_one_process():
+    """Matrices of two grids and two edges built one after the other (the operator cache
+    holds them all at once: each is its own entry) are each the transform of its own grid and
+    edge, computed from an empty cache."""
+    cases = [(51, A_CONTACT), (51, 0.9 * A_CONTACT), (81, A_CONTACT), (81, 0.8 * A_CONTACT)]
+    refs = []
+    for N, a_ in cases:
+        x, dx = grid(N)
+        q, p = powerlaw_pair(2.5, x * A_CONTACT / a_)  # the contact of radius a_
+        _fresh_operators()
+        refs.append((q, p, abel.pressure_from_line_load(q, dx, edge=a_),
+                     abel.line_load_from_pressure(p, dx, edge=a_)))
+    _fresh_operators()
+    for (N, a_), (q, p, pq, qp) in zip(cases, refs, strict=True):
+        dx = grid(N)[1]
+        assert _close(abel.pressure_matrix(N, dx, edge=a_), q, pq), (N, a_)
+        assert _close(abel.line_load_matrix(N, dx, edge=a_), p, qp), (N, a_)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _kink_moment_ref(tau, beta, s_lo, s_hi, k):
+    """mu_k = int_{s_lo}^{s_hi} v^k ds / sqrt((s - beta)(s - tau)), v = (s - s_lo)/(s_hi -
+    s_lo), by tanh-sinh quadrature in t with s = max(beta, tau) + t^2 (ds/sqrt(s - max) =
+    2 dt: no endpoint singularity left)."""
+    top, bot = max(beta, tau), min(beta, tau)
+    return mp.quad(lambda t: 2 * ((top + t * t - s_lo) / (s_hi - s_lo)) ** k
+                   / mp.sqrt(t * t + (top - bot)), [mp.sqrt(s_lo - top), mp.sqrt(s_hi - top)])
+
+
+def test_kink_moments_by_quadrature():
+    """_moments_cosh (the kernel 1/sqrt((s - b^2)(s - r^2)) of a kink at s = b^2, in units
+    dx = 1) against 30-digit quadrature, k <= 5, on pieces starting at the kink or at the
+    output point, with the kink and the output point 0.01 ... 10 apart (u = acosh spans up to
+    ~6 on the first piece: 24 panels of _COSH_PANEL) and a piece far away. Gauss-Legendre of 8
+    points on panels <= 0.25 in u: (5 * 0.125)^16/16! ~ 1e-17 per panel; left is rounding: of
+    the sums of <= 24 * 8 positive terms (16 eps), and of the centre c = (beta + tau)/2, whose
+    ulp of s is relative eps s/h in s - c and in z = (s - c)/h (h = |beta - tau|/2): measured
+    1.6e-13 for h = 0.005, s = 100 (the bound eps s_hi/|beta - tau| is 2.7e-12 there)."""
+    from hertzmdr.numeric._abel.moments import _moments_cosh
+
+    eps = np.finfo(float).eps
+    # (tau, beta, s_lo, s_hi): tau < beta (an output point left of the kink), tau > beta
+    for tau, beta, s_lo, s_hi in [(99.99, 100.0, 100.0, 121.0), (90.0, 100.0, 100.0, 121.0),
+                                  (100.0, 99.99, 100.0, 121.0), (110.0, 100.0, 110.0, 121.0),
+                                  (99.0, 100.0, 400.0, 441.0)]:
+        mu = _moments_cosh(np.array([[tau]]), np.array([[s_lo]]), np.array([[s_hi]]),
+                           np.array([[s_hi - s_lo]]), beta, 5, 8)[0, 0]
+        with mp.workdps(30):
+            err = max(abs(float(mu[k] / _kink_moment_ref(tau, beta, s_lo, s_hi, k)) - 1)
+                      for k in range(6))
+        _record("abel kink moments", err, 16 * eps + eps * s_hi / abs(beta - tau))
 
 
 @pytest.mark.parametrize("kwargs, match", [
@@ -496,6 +573,12 @@ def test_edge_on_the_last_sample_and_beyond_it():
         abel.pressure_matrix(5, 0.25, edge=2.0)
 
 
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _beta_ref(k, beta):
+    """int_0^1 x^k (x + beta (1 - x))^k dx by quadrature at the working precision."""
+    return mp.quad(lambda x: x**k * (x + beta * (1 - x)) ** k, [0, 1])
+
+
 def test_beta_table_by_quadrature():
     """_beta_table's c[k, j] (the moments of the pieces in closed form, built at import) against
     int_0^1 x^k (x + beta (1 - x))^k dx by 30-digit quadrature at four beta, k <= 8 (the
@@ -507,6 +590,128 @@ def test_beta_table_by_quadrature():
         for kk in range(k + 1):
             for beta in (0.0, 0.3, 1.0, 7.0):
                 with mp.workdps(30):
-                    ref = mp.quad(lambda x, k=kk, b=beta: x**k * (x + b * (1 - x)) ** k, [0, 1])
+                    ref = _beta_ref(kk, beta)
                 got = sum(c[kk, j] * beta**j for j in range(kk + 1))
                 _record("beta table", abs(got / ref - 1), 1e-15)
+
+
+def _sloped_kink_q(x, b, u0):
+    """A line load with a square-root kink at x = b that slopes on both sides (the worn
+    paraboloid's is flat left of its kink): in s = x^2, beta = b^2, a = 1,
+    q = beta - s + u0 sqrt(1 - beta) for s < beta (linear in s), u0 (sqrt(1 - beta) -
+    sqrt(s - beta)) beyond (Q(beta) + sqrt(s - beta) U with U = -u0 constant), 0 for x >= 1."""
+    s, beta = x**2, b**2
+    # a sample on the kink carries Q(beta): its float x may lie an ulp beyond b, where
+    # sqrt(s - beta) ~ 1e-8 would be an error of the data, not of the transform
+    root = np.where(np.abs(x - b) <= 4 * np.finfo(float).eps * b, 0.0,
+                    np.sqrt(np.clip(s - beta, 0, None)))
+    q = u0 * (np.sqrt(1 - beta) - root) + np.clip(beta - s, 0, None)
+    return np.where(x < 1, q, 0.0)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _sloped_kink_p_ref(r, b, u0):
+    """(5.59) of _sloped_kink_q, p = -(1/pi) int_r^1 q'(x) dx/sqrt(x^2 - r^2) with q' = -2x
+    (x < b) and -u0 x/sqrt(x^2 - b^2) (x > b), in closed form (t = x^2: the first is
+    2 sqrt(b^2 - r^2), the second u0 int dt/(2 sqrt((t - b^2)(t - r^2))) = u0 log(sqrt(t -
+    b^2) + sqrt(t - r^2)) between its ends)."""
+    r, b = mp.mpf(r), mp.mpf(b)
+    beta, rr = b * b, r * r
+    left = 2 * mp.sqrt(beta - rr) if r < b else 0
+    return (left + u0 * mp.log((mp.sqrt(1 - beta) + mp.sqrt(1 - rr))
+                               / mp.sqrt(abs(beta - rr)))) / mp.pi
+
+
+def _sloped_kink_p_quad(r, b, u0):
+    """(5.59) of _sloped_kink_q by tanh-sinh quadrature in t = x^2: the left part
+    int_(r^2)^(b^2) dt/sqrt(t - r^2) with t = r^2 + w^2, the right part
+    (u0/2) int dt/sqrt((t - b^2)(t - r^2)) from max(r, b)^2 to 1 with t = max^2 + w^2."""
+    beta, rr = b * b, r * r
+    left = mp.quad(lambda w: 2, [0, mp.sqrt(beta - rr)]) if r < b else 0
+    lo, other = max(beta, rr), min(beta, rr)
+    right = u0 / 2 * mp.quad(lambda w: 2 / mp.sqrt(w * w + lo - other), [0, mp.sqrt(1 - lo)])
+    return (left + right) / mp.pi
+
+
+def test_kink_with_a_sloped_left_part_is_exact():
+    """A kink with q sloped on both sides (_sloped_kink_q: linear in s left of it, Q(beta) +
+    sqrt(s - beta) U with U constant beyond, the edge given) is in the interpolants' span: the
+    transform and the kinked matrix are exact to rounding, left of the kink, next to it and
+    beyond, the kink between two samples or on one (p = +inf there), over more rows than one
+    block of the build (_BLOCK = 48) on either side, and without an edge. The closed form is
+    checked against 30-digit quadrature of (5.59) at two radii. Rounding: as for Hertz, the
+    rounding of q divided by the differences of ~N samples, 2e-15 N (measured 2.0e-13 at
+    N = 201, 6.6e-14 at N = 241, up to the last sample inside the edge; the sample next to
+    the kink, within dx/2, is left out: there U_i = (q_i - Q(beta))/sqrt(s_i - beta) divides
+    a difference of nearly equal samples)."""
+    u0 = 0.3
+    with mp.workdps(30):
+        for r in (mp.mpf("0.2"), mp.mpf("0.7")):  # (5.59) by quadrature in t = x^2
+            assert abs(_sloped_kink_p_quad(r, mp.mpf("0.5"), u0)
+                       / _sloped_kink_p_ref(r, 0.5, u0) - 1) < 1e-25
+    # dx = 0.006: b between samples; dx = 0.005: on one; b = 0.7, dx = 0.004: on a sample
+    # where (b/dx)^2 = 30624.99999999999, not 175^2 (the build snaps it to the sample)
+    # and b = 1.5 dx: two samples left of the kink, a linear left part
+    # and K = 144 = 3 _BLOCK samples inside the edge (the build's last block of rows)
+    grids = [(np.linspace(0, 1.2, N), b) for N, b in ((201, 0.5), (241, 0.5), (301, 0.7),
+                                                      (201, 0.009))]
+    for x, b in grids + [(np.arange(175) / 144.5, 0.5)]:
+        N, dx = len(x), x[1]
+        q = _sloped_kink_q(x, b, u0)
+        on = abs(b / dx - round(b / dx)) < 1e-9
+        m = (x < 1) & (np.abs(x - b) > 0.5 * dx)
+        with mp.workdps(30):
+            ref = np.array([float(_sloped_kink_p_ref(float(v), b, u0)) for v in x[m]])
+        _fresh_operators()
+        p = abel.pressure_from_line_load(q, dx, edge=1.0, kink=b)
+        _record(f"abel inverse sloped kink N={N}", rel_err(p[m], ref, slice(None)), 2e-15 * N)
+        if on:
+            assert p[int(round(b / dx))] == np.inf
+        else:
+            _fresh_operators()
+            M = abel.pressure_matrix(N, dx, edge=1.0, kink=b)
+            _record(f"abel matrix sloped kink N={N}", rel_err((M @ q)[m], ref, slice(None)),
+                    2e-15 * N)
+    # without an edge: q + 1 on [0, 1] has no zero, the transform is truncated at the grid's
+    # end x = 1, and p (which sees only q') is the same closed form
+    x = np.linspace(0, 1, 201)
+    q = _sloped_kink_q(x, 0.5, u0) + 1.0
+    q[-1] = 1.0  # _sloped_kink_q is 0 from x = 1 on: its limit there, the constant
+    m = (x < 0.98) & (np.abs(x - 0.5) > 0.5 * x[1])
+    with mp.workdps(30):
+        ref = np.array([float(_sloped_kink_p_ref(float(v), 0.5, u0)) for v in x[m]])
+    _fresh_operators()
+    p = abel.pressure_from_line_load(q, x[1], kink=0.5)
+    assert p[100] == np.inf  # b = 100 dx: on a sample
+    _record("abel inverse sloped kink, no edge", rel_err(p[m], ref, slice(None)), 2e-15 * 201)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _edge_moment_ref(tau, A, s_lo, s_hi, k):
+    """mu_k = int_{s_lo}^{s_hi} v^k sqrt(A - s)/sqrt(s - tau) ds, v = (s - s_lo)/(s_hi - s_lo),
+    by tanh-sinh quadrature in w with s = tau + w^2 (ds/sqrt(s - tau) = 2 dw)."""
+    return mp.quad(lambda w: 2 * ((tau + w * w - s_lo) / (s_hi - s_lo)) ** k
+                   * mp.sqrt(max(A - tau - w * w, 0)), [mp.sqrt(s_lo - tau), mp.sqrt(s_hi - tau)])
+
+
+def test_edge_moments_by_quadrature():
+    """_moments_theta (the (5.61) weight sqrt(A - s)/sqrt(s - tau) next to a contact edge A, in
+    units dx = 1) against 30-digit quadrature, k <= 5: the last piece [s_K, A] and the one
+    before it, for the output point on them (theta spans up to pi/2: 16 panels of
+    _THETA_PANEL) and a few samples before them. Gauss-Legendre of 11 points on panels <= 0.1
+    rad of an entire function of theta: below 1e-16; left is the rounding of the sums of
+    <= 16 * 11 positive terms and of the ends (sin and cos of theta from square roots): 64 eps."""
+    from hertzmdr.numeric._abel.moments import _moments_theta
+
+    A = 100.5**2
+    worst = 0.0
+    for tau, s_lo, s_hi in [(100.0**2, 100.0**2, A), (99.0**2, 100.0**2, A),
+                            (99.0**2, 99.0**2, 100.0**2), (90.0**2, 99.0**2, 100.0**2),
+                            (0.0, 100.0**2, A)]:
+        mu = _moments_theta(np.array([[tau]]), np.array([[s_lo]]), np.array([[s_hi]]),
+                            np.array([[s_hi - s_lo]]), A, 5, 11)[0, 0]
+        with mp.workdps(30):
+            for k in range(6):
+                ref = _edge_moment_ref(mp.mpf(tau), mp.mpf(A), mp.mpf(s_lo), mp.mpf(s_hi), k)
+                worst = max(worst, abs(float(mu[k] / ref) - 1))
+    _record("abel edge moments", worst, 64 * np.finfo(float).eps)

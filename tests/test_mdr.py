@@ -20,6 +20,8 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric import mdr as nmdr
 from hertzmdr.numeric import powerlaw as npl
 
+from oracle import memo
+
 rp = sp.Symbol("r", positive=True)
 theta = sp.Symbol("theta", positive=True)
 
@@ -330,6 +332,39 @@ def _g_ref(K, x, weight=lambda t: 1):
         [0, mp.sqrt(x - b)])
 
 
+# the references above as pure functions of numbers, memoized in a mutation run (tests/oracle.py's
+# memo: mpmath only, never numeric/; a mutant that changes an argument, such as the contact
+# radius, misses the memo and the reference is computed)
+@memo
+def _kinked_p(n, c, b, c2, a, r, E_):
+    """(5.59) of the kinked profile _kinked(n, c, b, c2) at r, contact radius a."""
+    return _p_ref(_kinked(n, c, b, c2), a, r, E_)
+
+
+@memo
+def _kinked_g(n, c, b, c2, x):
+    """g(x) of the kinked profile, integral_0^x g' dx."""
+    return _g_ref(_kinked(n, c, b, c2), x)
+
+
+@memo
+def _kinked_g552(n, c, b, c2, x):
+    """g(x) of the kinked profile by (5.52) itself: x integral_0^(pi/2) f'(x sin t) dt."""
+    K = _kinked(n, c, b, c2)
+    x = mp.mpf(x)
+    return x * mp.quad(lambda t: K["fprime"](x * mp.sin(t)), [0, mp.asin(min(1, K["b"] / x)),
+                                                              mp.pi / 2])
+
+
+@memo
+def _kinked_radius_and_force(n, c, b, c2, dd, E_):
+    """The contact radius a with g(a) = dd (findroot from 0.7) and the force (5.57)
+    F = 2 E* integral_0^a x g'(x) dx, for d = g(a)."""
+    K = _kinked(n, c, b, c2)
+    a_ref = mp.findroot(lambda x: _g_ref(K, x) - dd, mp.mpf("0.7"))
+    return a_ref, 2 * E_ * _g_ref(K, a_ref, lambda t: t)
+
+
 def _kinked_samples(n, N, b=0.4, c2=1.0):
     f = lambda r: np.where(r <= b, r**n, b**n + c2 * (r - b))  # noqa: E731
     r_s = np.unique(np.concatenate([np.linspace(0, b, round(N * b) + 1),
@@ -338,6 +373,18 @@ def _kinked_samples(n, N, b=0.4, c2=1.0):
 
 
 KINK_RADII = [0.01, 0.2, 0.39, 0.4 * (1 - 1e-7), 0.4 * (1 + 1e-7), 0.41, 0.5, 0.69]
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _worn_p_ref(r, a_, b, Rv, E_):
+    """(5.59) of the worn paraboloid at r, contact radius a_: x = b + t^2 (r < b) or
+    x = r + w^2 (r > b)."""
+    r = mp.mpf(r)
+    if r < b:
+        return E_ / mp.pi * mp.quad(lambda t: 2 * t * _worn_gprime(b + t * t, b, Rv) / mp.sqrt(
+            ((b - r) + t * t) * (b + t * t + r)), [0, mp.sqrt(a_ - b)])
+    return E_ / mp.pi * mp.quad(lambda w: 2 * _worn_gprime(r + w * w, b, Rv)
+                                / mp.sqrt(2 * r + w * w), [0, mp.sqrt(a_ - r)])
 
 
 def test_numeric_worn_pressure():
@@ -351,16 +398,8 @@ def test_numeric_worn_pressure():
     a_ = sol.contact_radius
     rr = np.array([0.0, 0.1, 0.29, b * (1 - 1e-9), b * (1 + 1e-9), 0.31, 0.35, 0.99 * a_])
     p, est = sol.pressure(rr, return_error=True)
-    def p_ref(r):  # (5.59): x = b + t^2 (r < b) or x = r + w^2 (r > b)
-        r = mp.mpf(r)
-        if r < b:
-            return E / mp.pi * mp.quad(lambda t: 2 * t * _worn_gprime(b + t * t, b, Rv) / mp.sqrt(
-                ((b - r) + t * t) * (b + t * t + r)), [0, mp.sqrt(a_ - b)])
-        return E / mp.pi * mp.quad(lambda w: 2 * _worn_gprime(r + w * w, b, Rv)
-                                   / mp.sqrt(2 * r + w * w), [0, mp.sqrt(a_ - r)])
-
     with mp.workdps(30):
-        ref = [p_ref(r) for r in rr]
+        ref = [_worn_p_ref(r, a_, b, Rv, E) for r in rr]
     err = np.abs(p / np.array([float(v) for v in ref]) - 1)
     # the splines are exact (piecewise quadratic f); what is left is the cubic table of the
     # remainder of g' in sqrt(x - b): measured 1.4e-11 at these 160 samples. At r = b(1 -+
@@ -376,21 +415,21 @@ def test_numeric_kinked_profile(source):
     f, r_s = _kinked_samples(2, 100)
     prof = (nmdr.Profile.from_samples(r_s, f(r_s), breakpoints=[0.4]) if source == "samples"
             else nmdr.Profile.from_callable(f, 1.0, breakpoints=[0.4], n=25))
+    kink = (2, 1, 0.4, 1.0)  # n, c, b, c2 of _kinked
     with mp.workdps(30):
-        K = _kinked(2, 1, 0.4, 1.0)
         # the hand-derived g' integrates to (5.52) itself: g(x) = x int f'(x sin t) dt
-        for xv in (mp.mpf("0.3"), mp.mpf("0.7")):
-            g552 = xv * mp.quad(lambda t, xv=xv: K["fprime"](xv * mp.sin(t)),
-                                [0, mp.asin(min(1, K["b"] / xv)), mp.pi / 2])
-            assert abs(_g_ref(K, xv) / g552 - 1) < 1e-25
-        dd = float(_g_ref(K, "0.7"))
+        for xv in ("0.3", "0.7"):
+            assert abs(_kinked_g(*kink, xv) / _kinked_g552(*kink, xv) - 1) < 1e-25
+        dd = float(_kinked_g(*kink, "0.7"))
         sol = prof.solve(depth=dd, E_star=E)
-        a_ref = mp.findroot(lambda x: _g_ref(K, x) - dd, mp.mpf("0.7"))
-        F_ref = 2 * E * _g_ref(K, a_ref, lambda t: t)  # (5.57) with d = g(a)
-        p_ref = [float(_p_ref(K, sol.contact_radius, r, E)) for r in KINK_RADII]
+        a_ref, F_ref = _kinked_radius_and_force(*kink, dd, E)  # (5.57) with d = g(a)
+        p_ref = [float(_kinked_p(*kink, sol.contact_radius, r, E)) for r in KINK_RADII]
     # exact splines: rounding, and g by quadrature to ~1e-15 (Newton polishes on it)
     assert abs(sol.contact_radius / float(a_ref) - 1) < 1e-13
     assert abs(sol.force / float(F_ref) - 1) < 1e-13
+    # the reported rel_error bounds both (its slope a g'(a) takes the kink's term of g')
+    assert sol.rel_error >= max(abs(sol.contact_radius / float(a_ref) - 1),
+                                abs(sol.force / float(F_ref) - 1))
     p, est = sol.pressure(np.array(KINK_RADII), return_error=True)
     err = np.abs(p / np.array(p_ref) - 1)
     assert np.all(err < 3e-9), err  # cubic tables of q on ~100 nodes: measured 1.1e-9
@@ -403,34 +442,41 @@ def test_numeric_kinked_convergence_and_estimate():
     N^-4 there; docs/mdr.md), and the estimate bounds it at every radius and resolution."""
     radii = [0.2, 0.4 * (1 - 1e-7), 0.41, 0.5]
     errs = []
+    kink = (2.5, 1, 0.4, 1.0)  # n, c, b, c2 of _kinked
     with mp.workdps(30):
-        K = _kinked(2.5, 1, 0.4, 1.0)
-        dd = float(_g_ref(K, "0.7"))
+        dd = float(_kinked_g(*kink, "0.7"))
     for N in (100, 400):
         f, r_s = _kinked_samples(2.5, N)
         sol = nmdr.Profile.from_samples(r_s, f(r_s), breakpoints=[0.4]).solve(
             depth=dd, E_star=E)
         p, est = sol.pressure(np.array(radii), return_error=True)
         with mp.workdps(30):
-            ref = np.array([float(_p_ref(K, sol.contact_radius, r, E)) for r in radii])
+            ref = np.array([float(_kinked_p(*kink, sol.contact_radius, r, E)) for r in radii])
         errs.append(np.abs(p / ref - 1))
         assert np.all(est / p >= errs[-1]), (N, est / p, errs[-1])
     assert np.all(errs[1] < errs[0] / 4**3), errs
 
 
 # -- (5.57) and the accuracy contract --------------------------------------------------------
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _force_by_the_pressure_ref(n, a_, E_):
+    """F = integral_0^a 2 pi r p(r) dr with p from (5.59) for g = x^n (x = r cosh t removes
+    the kernel's singularity), and G = integral_0^a g dx."""
+    def p(r):  # (5.59) with g'(x) = n x^(n-1)
+        return E_ / mp.pi * mp.quad(lambda t: n * (r * mp.cosh(t)) ** (n - 1),
+                                    [0, mp.acosh(a_ / r)])
+
+    return (mp.quad(lambda r: 2 * mp.pi * r * p(r), [0, a_]),
+            mp.quad(lambda x: x**n, [0, a_]))
+
+
 def test_mdr_force_by_the_pressure():
     """gen.mdr_force (5.57) against the pressure integrated over the disc, F = integral_0^a
     2 pi r p(r) dr, with p from (5.59) by quadrature (x = r cosh t removes the kernel's
     singularity), for g = x^2.5: an independent route to the force."""
     n, a_, E_ = mp.mpf("2.5"), mp.mpf("0.7"), mp.mpf(3e9)
     with mp.workdps(30):
-        def p(r):  # (5.59) with g'(x) = n x^(n-1)
-            return E_ / mp.pi * mp.quad(lambda t: n * (r * mp.cosh(t)) ** (n - 1),
-                                        [0, mp.acosh(a_ / r)])
-
-        F_ref = mp.quad(lambda r: 2 * mp.pi * r * p(r), [0, a_])
-        G = mp.quad(lambda x: x**n, [0, a_])
+        F_ref, G = _force_by_the_pressure_ref(n, a_, E_)
     F = gen.mdr_force(float(E_), float(a_), float(a_**n), float(G))
     # the float rounding of four arguments and three operations: a few ulp
     assert abs(F / F_ref - 1) < 1e-14
@@ -490,3 +536,97 @@ def test_rtol_range_lower_end():
         for frac in (0.3, 0.6):
             s = prof.solve(depth=float(prof.g(frac)), E_star=E, rtol=lo)
             assert s.met, (bp, frac, s.why_not_met)
+
+
+def test_g_and_displacement_bounds_hold_and_are_tight():
+    """Solution.g and Solution.displacement with return_error=True (the envelope of the
+    fine-minus-coarse difference over half a coarse spacing, operators.envelope): each bound
+    covers the error against the closed forms of the sampled power law (g = kappa c x^n, (5.52);
+    u = d - f(r) inside, the derived outside displacement (5.60)) at every radius (measured:
+    the bounds are 20 ... 260 times the error of g, 60 ... 1600 times that of u)."""
+    n = 2.5
+    prof, dd = _powerlaw_case(n, 200)
+    sol = prof.solve(depth=dd, E_star=E)
+    a_ = sol.contact_radius
+    kappa = float(npl.kappa(n))
+    x = np.array([0.05, 0.3, 0.61, 0.97, 1.0]) * a_
+    g, g_err = sol.g(x, return_error=True)
+    true = np.abs(g - float(kappa) * 2.0 * x**n)
+    assert np.all(g_err >= true), (g_err, true)
+    ro = np.array([0.2, 0.8, 1.0, 1.3, 3.0]) * a_
+    u, u_err = sol.displacement(ro, return_error=True)
+    ref = np.where(ro <= a_, dd - 2.0 * ro**n, npl.surface_displacement(ro, dd, 2.0, n))
+    true_u = np.abs(u - ref)
+    assert np.all(u_err >= true_u), (u_err, true_u)
+
+
+def test_callable_that_cannot_meet_rtol_says_why():
+    """A callable refined up to n_max without meeting rtol: not met, and why_not_met names the
+    last grid (2 n 2^level intervals a segment), n_max and the estimate (resolution.Grid)."""
+    prof = nmdr.Profile.from_callable(lambda x: x**2.5, 1.0, n=8, n_max=32)
+    dd = float(npl.kappa(2.5)) * 0.4**2.5
+    s = prof.solve(depth=dd, E_star=E, rtol=nmdr.RTOL_RANGE[0])
+    assert not s.met
+    assert s.why_not_met == ("the callable's grid reached 32 intervals a segment (n_max = 32); "
+                             f"its estimate is {s.rel_error:.1e}")
+
+
+@pytest.mark.parametrize("n", [1.0, 1.5, 2.0, 2.5])
+def test_pressure_on_the_axis(n):
+    """p(0): +inf under a conical tip (n = 1: f'(0) > 0, p log-infinite), finite and the power
+    law's closed form otherwise, also where the splines' f'(0) is a small nonzero
+    interpolation error (n = 1.5, 2.5: operators.conical_tip tells the two apart by the
+    fine and coarse slopes). At the axis the splines' order is limited by x^n: measured
+    errors of p(0) 8.3e-2 (n = 1.5, 400 samples), 4.4e-4 (n = 2.5, 200 samples), rounding
+    (n = 2); asserted with a factor 2 (n = 1.5: 0.2). At r = 0.5 a the tolerances of
+    test_numeric_powerlaw. The error bound covers the error at both radii, except at the
+    axis for n = 1.5, where it is 0.63 times the error (a finding, not asserted here: see
+    benchmarks/mutation_notes.toml)."""
+    N = {1.5: 400, 2.5: 200}.get(n, 40)
+    prof, dd = _powerlaw_case(n, N)
+    sol = prof.solve(depth=dd, E_star=E)
+    r = np.array([0.0, 0.5 * sol.contact_radius])
+    p, err = sol.pressure(r, return_error=True)
+    if n == 1.0:
+        assert p[0] == np.inf and np.isfinite(p[1])
+        return
+    ref = npl.pressure(r, dd, 2.0, n, E)
+    tol0, tol1 = {1.5: (0.2, 1e-6), 2.5: (9e-4, 1e-7)}.get(n, (1e-12, 1e-12))
+    assert abs(p[0] / ref[0] - 1) < tol0 and abs(p[1] / ref[1] - 1) < tol1, p / ref - 1
+    covered = err >= np.abs(p - ref)
+    assert covered[1] and (covered[0] or n == 1.5), err / np.abs(p - ref)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath and the closed-form g only
+def _worn_u_outside_ref(r, a_, b, Rv, d):
+    """(5.60) outside the contact by tanh-sinh quadrature, u = (2/pi) integral_0^asin(a/r)
+    (d - g(r sin t)) dt, with the worn paraboloid's closed-form g (Problem 8, worn_g),
+    evaluated in float64 (1e-16) at the quadrature's nodes; split at asin(b/r), where g has
+    its square-root kink."""
+    def g(x):
+        return float(gen.worn_g(Rv, b, float(x)))
+
+    t_b, t_a = mp.asin(b / r), mp.asin(a_ / r)
+    return 2 / mp.pi * mp.quad(lambda t: d - g(r * mp.sin(t)), [0, t_b, t_a])
+
+
+def test_numeric_worn_displacement():
+    """The worn paraboloid sampled with its kink as a breakpoint (the panels of (5.60) graded
+    towards asin(b/r), where g has its square-root kink): u = d - f(r) inside (exact), and
+    outside against (5.60) by quadrature of the closed-form g; the bound covers the error.
+    Tolerance: the quintic table of g on 160 samples, as the outside displacement of
+    test_numeric_powerlaw (1e-10)."""
+    Rv, b, dd = 1.0, 0.3, 0.1
+    r_s = np.unique(np.concatenate([np.linspace(0, b, 41), np.linspace(b, 1, 121)]))
+    f = np.where(r_s < b, 0, (r_s**2 - b**2) / (2 * Rv))
+    sol = nmdr.Profile.from_samples(r_s, f, breakpoints=[b]).solve(depth=dd, E_star=E)
+    a_ = sol.contact_radius
+    r_in = np.array([0.1, 0.35, 0.9 * a_])
+    r_out = np.array([1.05, 1.5, 3.0]) * a_
+    u, err = sol.displacement(np.concatenate([r_in, r_out]), return_error=True)
+    with mp.workdps(20):
+        ref_out = [float(_worn_u_outside_ref(mp.mpf(float(r)), mp.mpf(float(a_)), b, Rv, dd))
+                   for r in r_out]
+    ref = np.concatenate([dd - np.where(r_in < b, 0, (r_in**2 - b**2) / (2 * Rv)), ref_out])
+    np.testing.assert_allclose(u, ref, rtol=1e-10)
+    assert np.all(err >= np.abs(u - ref))
