@@ -80,7 +80,7 @@ def verification_section() -> str:
     ]
     out = ["## Verification\n\n| what | against | test |\n| --- | --- | --- |\n"]
     out += [f"| {a} | {b} | `{c}` |\n" for a, b, c in rows]
-    return "".join(out) + "\n" + CONTRACT
+    return "".join(out) + "\n" + CONTRACT + KNOWN_DEFECT
 
 
 CONTRACT = """### The accuracy contract of the numerical MDR
@@ -123,3 +123,15 @@ terms and the grading. They share the Gauss-Legendre rule (`numeric/_quadrature.
 substitution that removes the kernel's singularity.
 
 """
+
+
+#: a reported bound below its error, found and not yet fixed (promise 2): said where it shows
+KNOWN_DEFECT = (
+    "\n**A known defect (promise 2, not fixed).** For a sampled profile whose f grows as r^n "
+    "with 1 < n < 2 at the axis, the pressure's error bound at r = 0 can be smaller than the "
+    "error: for f = c r^1.5 on 400 samples, `Solution.pressure(0, return_error=True)` is 8.3 % "
+    "off the closed form and its bound is 0.63 times that. The splines converge there as "
+    "h^(n-1), slower than the coarse-vs-fine difference assumes (order >= 1). At r = a/2 the "
+    "same bound covers the error 19 times; n = 2.5 at the axis is covered. "
+    "`tests/test_mdr.py::test_pressure_bound_on_the_axis_of_a_sampled_power_law_1_5` is a "
+    "strict xfail until it is fixed (e.g. by the observed order of three resolutions).\n")
