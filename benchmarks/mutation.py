@@ -244,11 +244,17 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> 
         # tests added to the module's list since the run began: it goes on with the tests it
         # began with (a changed test selection makes mutmut check every mutant again); the
         # survivors the added tests kill are its "since" notes
+        # A changed time limit only reclassifies timeouts: the run goes on with the new one.
         sel = "pytest_add_cli_args_test_selection"
-        if ({**cfg, sel: None} == {**mutmut_config(module, tests), sel: None}
+        limit = ("timeout_multiplier", "timeout_constant")
+        now = mutmut_config(module, tests)
+        if ({**cfg, sel: None, **dict.fromkeys(limit)} == {**now, sel: None,
+                                                           **dict.fromkeys(limit)}
                 and set(cfg[sel]) <= set(tests)):
             print(f"  --resume: numeric/{module} goes on with the {len(cfg[sel])} tests its "
                   "run began with", flush=True)
+            if any(cfg.get(k) != now.get(k) for k in limit):
+                write_config(work, {**now, sel: cfg[sel]})
             return work
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
@@ -259,12 +265,21 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> 
             undecorate(path)
     for folder in ("tests", *EXTRA):
         (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
+    write_config(work, mutmut_config(module, tests))
+    return work
+
+
+def write_config(work: Path, cfg: dict) -> None:
+    """The scratch folder's pyproject.toml: the repository's, its [tool.mutmut] being ``cfg``.
+    Its time of change is kept: load_run counts a run's time from the scratch folder's making."""
+    path = work / "pyproject.toml"
+    made = path.stat() if path.exists() else None
     text = (ROOT / "pyproject.toml").read_text()
     text = re.sub(r"(?ms)^\[tool\.mutmut\]\n.*?(?=^\[|\Z)", "", text)  # replaced below
-    cfg = mutmut_config(module, tests)
     text += "\n[tool.mutmut]\n" + "".join(f"{k} = {json.dumps(v)}\n" for k, v in cfg.items())
-    (work / "pyproject.toml").write_text(text)
-    return work
+    path.write_text(text)
+    if made is not None:
+        os.utime(path, ns=(made.st_atime_ns, made.st_mtime_ns))
 
 
 def undecorate(path: Path) -> None:
