@@ -80,7 +80,7 @@ def verification_section() -> str:
     ]
     out = ["## Verification\n\n| what | against | test |\n| --- | --- | --- |\n"]
     out += [f"| {a} | {b} | `{c}` |\n" for a, b, c in rows]
-    return "".join(out) + "\n" + CONTRACT + KNOWN_DEFECT
+    return "".join(out) + "\n" + CONTRACT + AXIS_BOUND
 
 
 CONTRACT = """### The accuracy contract of the numerical MDR
@@ -125,13 +125,17 @@ substitution that removes the kernel's singularity.
 """
 
 
-#: a reported bound below its error, found and not yet fixed (promise 2): said where it shows
-KNOWN_DEFECT = (
-    "\n**A known defect (promise 2, not fixed).** For a sampled profile whose f grows as r^n "
-    "with 1 < n < 2 at the axis, the pressure's error bound at r = 0 can be smaller than the "
-    "error: for f = c r^1.5 on 400 samples, `Solution.pressure(0, return_error=True)` is 8.3 % "
-    "off the closed form and its bound is 0.63 times that. The splines converge there as "
-    "h^(n-1), slower than the coarse-vs-fine difference assumes (order >= 1). At r = a/2 the "
-    "same bound covers the error 19 times; n = 2.5 at the axis is covered. "
-    "`tests/test_mdr.py::test_pressure_bound_on_the_axis_of_a_sampled_power_law_1_5` is a "
-    "strict xfail until it is fixed (e.g. by the observed order of three resolutions).\n")
+#: how the pressure's bound handles an order below 1 (the defect it fixed, 2026-11-27)
+AXIS_BOUND = (
+    "\n**The pressure's bound where the splines converge slowly.** For a sampled profile whose "
+    "f grows as r^n with 1 < n < 2 at the axis, the splines' error in p(0) falls only as "
+    "h^(n-1), below the order 1 at which the coarse-vs-fine difference bounds the fine error. "
+    "Until 2026-11-27 it did not: for f = c r^1.5 on 400 samples, "
+    "`Solution.pressure(0, return_error=True)` was 8.3 % off the closed form and its bound "
+    "0.63 times that (found by the mutation run of that day). The bound now measures the order "
+    "from a third resolution (every other knot of the coarse one, `Rep.halved`): where the "
+    "two differences fall by a factor rho between 1 and 2, it is difference / (rho - 1), "
+    "Richardson's estimate; at the axis that is 2.2 (n = 1.5) and 4.0 (n = 1.2) times the "
+    "error, at r = a/2 unchanged. "
+    "`tests/test_mdr.py::test_pressure_bound_on_the_axis_of_a_sampled_power_law` checks it "
+    "against the closed form, at a depth and at a force.\n")

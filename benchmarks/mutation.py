@@ -559,8 +559,7 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
     modules = {r.module for r in runs}
     found = [f for f in load_notes("finding") if f["module"] in modules]
     if found:
-        lines += ["## Defects found on the way (not fixed here: their modules are being changed "
-                  "on other branches)", ""]
+        lines += ["## Defects found on the way (each says whether and where it was fixed)", ""]
         lines += [f"- `{f['module']}`: {f['text']}" for f in found]
         lines.append("")
     killed = [k for k in load_notes("killed") if k["module"] in modules]

@@ -51,7 +51,10 @@ Method (all lengths in m, pressures in Pa, forces in N):
   (5.55) and (5.57) (the differences at a alone can vanish by accident), plus a rounding
   floor (64 + 4 N) eps (the spline's derivative loses about log10(N) digits). The pressure's
   bound (``return_error=True``) adds the Abel integral of |q - q_coarse| and a rounding bound
-  (a kink term's parameter (r/b)^2 near 1). ``rtol`` has one meaning: the target of
+  (a kink term's parameter (r/b)^2 near 1); where a third resolution (half the coarse one)
+  shows the pair converging at an order below 1 (the splines near a singular f'', as f ~
+  r^1.5 at the axis: h^0.5), the difference is divided by (rho - 1), rho the ratio of the
+  two differences (Richardson). ``rtol`` has one meaning: the target of
   ``rel_error``, in ``RTOL_RANGE`` (default ``DEFAULT_RTOL``). A callable's grid is doubled
   until the bound meets it; a sampled profile's quadrature is refined while that lowers the
   bound (its splines cannot be refined). ``Solution.met`` says whether it was met and
@@ -153,6 +156,9 @@ class Solution:
     _coarse: Rep = field(repr=False)
     _d_coarse: float = field(repr=False)
     _a_coarse: float = field(repr=False)
+    _r_max: float = field(default=0.0, repr=False)  # the profile's, for the third resolution
+    _load: float | None = field(default=None, repr=False)  # the force, if solved at one
+    _third: tuple | None = field(default=None, repr=False)  # (Rep, a), made on first use
 
     @property
     def unloaded(self) -> bool:
@@ -164,13 +170,28 @@ class Solution:
         its absolute error [m] (``Profile.g``)."""
         return _g(self._rep, self._coarse, x, return_error)
 
+    def _halved(self) -> tuple[Rep, float] | None:
+        """The third resolution (half the coarse one, ``Rep.halved``) solved as this solution
+        was (at its depth, or its force), and its contact radius [m]; None where it cannot be
+        solved (a depth beyond what the halved samples reach)."""
+        if self._third is None:
+            rep = self._coarse.halved()
+            try:
+                _, a, _ = solve.one(rep, self._r_max, None if self._load is not None
+                                    else self.depth, self._load, self.E_star, self._a_coarse)
+                self._third = (rep, a)
+            except ValueError:
+                self._third = (None, None)
+        return None if self._third[0] is None else self._third
+
     def pressure(self, r, *, return_error=False):
         """Contact pressure p(r) [Pa] (5.59) at r [m] (0 outside the contact).
 
         +inf at a kink r = b < a (a log singularity, (5.59) of b s / sqrt(x^2 - b^2)) and at
         r = 0 under a conical tip. With ``return_error=True`` also returns a bound of the
         absolute error per point [Pa]: coarse-vs-fine difference, the Abel integral of the
-        tables' difference and a rounding bound (module docstring); tests/test_mdr.py and
+        tables' difference (divided by rho - 1 where a third resolution shows an order below
+        1, rho = 2^order) and a rounding bound (module docstring); tests/test_mdr.py and
         tests/test_mdr_bounds.py check it against 30-digit references, near kinks too.
         """
         r = nonnegative("r", r)
@@ -186,9 +207,24 @@ class Solution:
         # dev: the same integral of |q - q_coarse| (the signed difference may pass through 0
         # at some r while both are in error)
         p, dev = operators.pressure(self._rep, flat, a, E, 6, conical, other=self._coarse)
-        pc = operators.pressure(self._coarse, flat, self._a_coarse, E, 4, conical)
         with np.errstate(invalid="ignore"):  # inf - inf at a conical tip's r = 0
-            err = np.abs(p - pc) + dev + operators.rounding(self._rep, flat, p, a, E)
+            if (third := self._halved()) is None:
+                pc = operators.pressure(self._coarse, flat, self._a_coarse, E, 4, conical)
+                est = np.abs(p - pc) + dev
+            else:
+                # the same one level down (coarse vs half of it): their ratio rho = 2^order.
+                # The pair's difference bounds the fine error while the order is >= 1; below
+                # (the splines near a singular f'', e.g. f ~ r^1.5 on the axis: h^0.5) the
+                # error is difference / (rho - 1) (Richardson), up to 1 / (rho - 1) times it
+                pc, dev_c = operators.pressure(self._coarse, flat, self._a_coarse, E, 4,
+                                               conical, other=third[0])
+                p3 = operators.pressure(third[0], flat, third[1], E, 4, conical)
+                est = np.abs(p - pc) + dev
+                with np.errstate(divide="ignore"):
+                    rho = (np.abs(pc - p3) + dev_c) / est
+                    slow = (rho > 1) & (rho < 2)
+                    est = np.where(slow, est / np.where(slow, rho - 1, 1), est)
+            err = est + operators.rounding(self._rep, flat, p, a, E)
         err[np.isinf(p)] = np.inf
         return result(p.reshape(r.shape)), result(err.reshape(r.shape))
 
@@ -398,7 +434,7 @@ class Profile:
             coarse, fine = self._source.pair(0)
             return Solution(depth=0.0, contact_radius=0.0, force=0.0, E_star=E_star,
                             rel_error=0.0, rtol=rtol, met=True, why_not_met=None, _rep=fine,
-                            _coarse=coarse, _d_coarse=0.0, _a_coarse=0.0)
+                            _coarse=coarse, _d_coarse=0.0, _a_coarse=0.0, _r_max=self.r_max)
         if depth is not None:
             at = self._at_depths(np.array([depth]), E_star, rtol)
             a, F, ac, err = (float(v[0]) for v in at[:4])
@@ -422,7 +458,7 @@ class Profile:
         return Solution(depth=d, contact_radius=a, force=F, E_star=E_star, rel_error=err,
                         rtol=rtol, met=met, why_not_met=None if met else
                         self._source.why_not(err, lvl), _rep=fine, _coarse=coarse,
-                        _d_coarse=dc, _a_coarse=ac)
+                        _d_coarse=dc, _a_coarse=ac, _r_max=self.r_max, _load=force)
 
     def _at_depths(self, depths: np.ndarray, E_star: float, rtol: float):
         """a [m], F [N], the coarse a [m], the bound [1] and the refinement level at every

@@ -92,22 +92,8 @@ def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float 
     """(d [m], a [m], F [N]) on the fine representation at the ``depth`` [m] or the force
     ``load`` [N],
     the coarse one's d [m] and a [m], and the bound of the relative error of d, a, F."""
-    from scipy.optimize import brentq
-
-    out = []
-    for rep in (fine, coarse):
-        if depth is not None:
-            d = depth
-            a = radius(rep, r_max, d, out[0][1] if out else None)
-        else:
-            Fmax = force_of_radius(rep, r_max, E_star)
-            if load > Fmax:
-                raise ValueError(f"force = {load} exceeds F(r_max) = {Fmax}")
-            a = brentq(lambda aa, rp=rep: force_of_radius(rp, aa, E_star) - load,
-                       0.0, r_max, xtol=1e-16 * r_max, rtol=1e-15)
-            d = float(quadrature.g(rep, np.array([a]))[0])
-        out.append((d, a, force(rep, a, d, E_star)))
-    (d, a, F), (dc, ac, Fc) = out
+    d, a, F = one(fine, r_max, depth, load, E_star)
+    dc, ac, Fc = one(coarse, r_max, depth, load, E_star, a)
     # 1. coarse vs fine: the error of the coarse solution, conservative for the fine one
     diff = max(abs(F - Fc) / F, abs(a - ac) / a, abs(d - dc) / d)
     # 2. the same without an accidental cancellation at a: the envelope of the differences
@@ -125,6 +111,25 @@ def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float 
     # 3. rounding: f' of a spline through N samples loses about log10(N) digits
     floor = (64 + 4 * len(fine.knots)) * _EPS
     return d, a, F, dc, ac, max(diff, dev) + floor
+
+
+def one(rep: Rep, r_max: float, depth: float | None, load: float | None, E_star: float,
+        guess: float | None = None) -> tuple[float, float, float]:
+    """(d [m], a [m], F [N]) on one representation at the ``depth`` [m] or the force
+    ``load`` [N] (5.55), (5.57); ``guess``: a contact radius near a [m] (depth control)."""
+    from scipy.optimize import brentq
+
+    if depth is not None:
+        d = depth
+        a = radius(rep, r_max, d, guess)
+    else:
+        Fmax = force_of_radius(rep, r_max, E_star)
+        if load > Fmax:
+            raise ValueError(f"force = {load} exceeds F(r_max) = {Fmax}")
+        a = brentq(lambda aa: force_of_radius(rep, aa, E_star) - load,
+                   0.0, r_max, xtol=1e-16 * r_max, rtol=1e-15)
+        d = float(quadrature.g(rep, np.array([a]))[0])
+    return d, a, force(rep, a, d, E_star)
 
 
 def _too_deep(d: float, g_hi: float, r_max: float) -> ValueError:

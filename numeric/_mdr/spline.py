@@ -84,6 +84,22 @@ class Rep:
         return replace(self, m_theta=m_theta, tables=None, ugrid=None,
                        table_nodes=self.table_nodes if table_nodes is None else table_nodes)
 
+    def halved(self) -> Rep:
+        """A coarser representation: every other knot (the segment edges kept), interpolated
+        by a spline of the same degree through this one's values there, with half the table
+        nodes. The third resolution of the pressure's bound (``Solution.pressure``), which
+        measures the order at which the (coarse, fine) pair converges."""
+        keep = np.zeros(len(self.knots), bool)
+        keep[::2] = True
+        keep[-1] = True
+        keep |= np.isin(self.knots, self.edges)
+        r = self.knots[keep]
+        seg = self.seg_index(r)
+        f = np.array([float(self.segments[j](x)) for j, x in zip(seg, r, strict=True)])
+        out = build(r, f, self.edges[1:-1], self.k, None, self.m_theta)
+        out.table_nodes = max(8, self.table_nodes // 2)
+        return out
+
     def panel_knots(self):
         """Knots used as panel breaks: all of them for k = 1 (f' jumps there), every few for
         the smoother splines (at most 64 panels), always the segment edges."""
