@@ -715,3 +715,276 @@ def test_edge_moments_by_quadrature():
                 ref = _edge_moment_ref(mp.mpf(tau), mp.mpf(A), mp.mpf(s_lo), mp.mpf(s_hi), k)
                 worst = max(worst, abs(float(mu[k] / ref) - 1))
     _record("abel edge moments", worst, 64 * np.finfo(float).eps)
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _first_root_ref(coef):
+    """The smallest real root in (0, 1] of sum_k coef[k] u^k (mpmath's polyroots at the working
+    precision, of the float coefficients as they are), or 1 if there is none."""
+    top = max(k for k, c in enumerate(coef) if c != 0)  # polyroots needs a non-zero lead
+    roots = mp.polyroots([mp.mpf(c) for c in reversed(coef[:top + 1])], maxsteps=200,
+                         extraprec=200)
+    real = [mp.re(z) for z in roots if abs(mp.im(z)) < mp.mpf(10) ** -20 and 0 < mp.re(z) <= 1]
+    return min(real) if real else mp.mpf(1)
+
+
+# (coefficients in u, whether Newton from the linear root is accepted): data vanishing nearly
+# linearly (the fast path), a root of a cubic next to the grid's sample; then the cases for the
+# companion matrix: the linear root past the next sample (or before the sample), a second root
+# before Newton's (two), no root in (0, 1], the linear term 0, a root 1.8e-13 past the next
+# sample and 2.3e-13 before it; then Newton's own limits: a root 1e-6 from the sample (its
+# stop relative to u), a root 1e-13 past the next sample (returned as 1), the linear root at
+# 1.5 (Newton's reach), a constant, complex roots of real part 0.5
+_EDGE_ROOT_CASES = [
+    ((0.3, -1.0, 0.05, -0.02), True), ((1e-3, -1.0, 0.2, 0.1), True),
+    ((0.9, -1.0, 0.1, 0.0), True), ((2.0, -1.0, -1.0, 0.0), False),
+    ((1.0, 1.0, -4.0), False), ((0.16, -2.0, 4.0), True), ((1e-3, -1.0, 10.0), True),
+    ((1.0, 1.0, 1.0), False), ((1.0, -0.5), False), ((1.0, 0.0, -4.0), True),
+    ((1.0, 0.2, -(1.2 - 4e-13)), None), ((1.0, 0.2, -(1.2 + 5e-13)), None),
+    ((0.23, -0.28, -1.34, 1.45), False),  # Newton reaches the second root, 0.95: the probe
+    ((-0.03125, 0.0625, 0.5, -1.0), False),  # Newton's root 0.5, the probe hits the root 0.25
+    ((-1.23, 0.91, 2.71, -2.08), False),  # Newton goes past the next sample (1.29), root 0.69
+    ((0.25, -1.0, 0.5, 4.0), False),  # p' = 0 at the linear root: no Newton step; no root
+    ((1e-6, -1.0, 500.0), True), ((1 + 1e-13, -1.0), True), ((1.5, -1.0, -0.5), True),
+    ((0.14, 0.0, -2.11, -1.74), True), ((1.0, 0.0, 0.0, 0.0), True), ((0.5, -1.0, 1.0), False),
+    ((0.0, 1.0, -2.0), False),  # a root at 0 is not in (0, 1]
+]
+
+
+def test_edge_root_against_mpmath(monkeypatch):
+    """_edge_root (the edge of a row between its last non-zero sample, u = 0, and the next one,
+    u = 1) against mpmath's roots of the same float coefficients at 30 digits: the smallest
+    root in (0, 1], or exactly 1 when there is none. Newton from the linear root is the path
+    for data vanishing nearly linearly (the docstring's "a few float operations"): the
+    companion matrix is called only where it must be (counted). Tolerance: a simple root of
+    the float polynomial is determined to the rounding of its evaluation, eps sum|c_k u^k| /
+    |p'(u)| (1 to 3.4 eps of u here; measured at most 0.49 of it); Newton's stop (a step <=
+    1e-15 u) and the companion matrix's roots polished by Newton both reach it."""
+    calls = []
+    polyroots = np.polynomial.polynomial.polyroots
+
+    def counted(c):
+        calls.append(1)
+        return polyroots(c)
+
+    monkeypatch.setattr(np.polynomial.polynomial, "polyroots", counted)
+    with mp.workdps(30):
+        for coef, newton in _EDGE_ROOT_CASES:
+            calls.clear()
+            u = abel_edge._edge_root(np.array(coef))
+            ref = float(_first_root_ref(coef))
+            terms = sum(abs(c) * ref**k for k, c in enumerate(coef))
+            slope = abs(sum(k * c * ref ** (k - 1) for k, c in enumerate(coef) if k))
+            tol = np.finfo(float).eps * terms / slope if ref < 1 else 0.0  # no root: 1 exactly
+            assert 0 < u <= 1 and abs(u - ref) <= tol, (coef, u, ref)
+            if newton is not None:
+                assert (not calls) == newton, (coef, calls)
+
+def test_edge_found_from_one_or_two_samples():
+    """The smallest supports: one non-zero sample (the edge is the next sample, a = dx: q linear
+    in s through q_0 and 0, p(0) = 2 q_0/(pi dx); forward, R = p_0 constant, q(0) = pi p_0/2 dx),
+    two (the linear root of q in s: Hertz with a = 1.5 dx, exact), an edge given inside the
+    first dx (a = 0.5 dx: p(0) = 2 q_0/(pi a)), and an edge 1e-10 dx past the sample 1 (snapped
+    to it: the edge moves by 1e-10 dx, p(0) by 1e-10 of itself; unsnapped, the last piece
+    [1, a^2] of width 2e-10 would amplify the rounding of q_1 ~ 2e-10 by 1/2e-10). Hertz is
+    linear in s: exact but for a few roundings, 1e-14; the snapped case 1e-10 plus that."""
+    dx = 0.5
+    q0 = 3.0
+    p = abel.pressure_from_line_load([q0, 0.0, 0.0, 0.0], dx)
+    assert abs(p[0] / (2 * q0 / (np.pi * dx)) - 1) < 1e-14 and not p[1:].any()
+    q = abel.line_load_from_pressure([q0, 0.0, 0.0, 0.0], dx)
+    assert abs(q[0] / (np.pi * q0 / 2 * dx) - 1) < 1e-14 and not q[1:].any()
+    x = np.arange(5.0)
+    for a, edge in ((1.5, None), (1.5, 1.5), (0.5, 0.5), (1 + 1e-10, None), (1 + 1e-10, 1 + 1e-10)):
+        q = np.where(x < a, a * a - x * x, 0.0)
+        pa = 2 / np.pi * np.sqrt(np.clip(a * a - x * x, 0, None))
+        tol = 1e-14 if a != 1 + 1e-10 else 1.1e-10
+        got = abel.pressure_from_line_load(q, 1.0, edge=edge)
+        assert rel_err(got, pa, x < a - 0.2) < tol, (a, edge)
+        back = abel.line_load_from_pressure(pa, 1.0, edge=edge)
+        assert rel_err(back, q, x < a - 0.2) < tol, (a, edge)
+
+
+def test_edge_snapped_with_rounded_samples():
+    """An edge a = (K + d) dx given within the snap's window after the sample K (A - K^2 <=
+    1e-9 (2K + 1) in s = x^2) is moved to that sample, for K = 1 and 80 and d = 1e-9 (A - K^2
+    = 2K d), with q = a^2 (1 - (x/a)^2): its samples carry a rounding of ~eps a^2, which the
+    last piece [K^2, A] (width 2K d) would amplify by 1/(2K d) (measured 5e-9 at K = 80,
+    d = 1.2e-9, just outside the window). Snapped, p moves with its edge by ~d/a (measured
+    1.0e-9 at K = 1, 2.0e-10 at K = 80): tolerance 1.1 d."""
+    for K in (1, 80):
+        d = 1e-9
+        a = K + d
+        x = np.arange(K + 4.0)
+        q = np.where(x < a, a * a * (1 - (x / a) ** 2), 0.0)
+        pa = 2 / np.pi * np.sqrt(np.clip(a * a - x * x, 0, None))
+        _record("abel edge snapped, rounded samples",
+                rel_err(abel.pressure_from_line_load(q, 1.0, edge=a), pa, x < a - 0.2), 1.1 * d)
+
+def test_scatter_of_the_pieces_is_the_sum_piece_by_piece():
+    """_scatter_t (the pieces' contributions added to the transposed operator, WT[start_i + l,
+    rows] += contrib[i, l]) against its definition, piece by piece in a loop: the stencil
+    starts of the inverse operator's pieces (runs of equal starts at either end, clipped) for
+    every degree 1..9 and a few sizes, one block of pieces from the middle (no run), a single
+    piece, and starts with a gap (the general path). The same sums in another order: 8 ulp
+    of the sum of |terms| (at most 2 deg + 2 terms meet in one entry)."""
+    from hertzmdr.numeric._abel.interpolation import _stencils
+
+    rng = np.random.default_rng(7)
+    cases = []
+    for deg in range(1, 10):
+        for n_nodes in (deg + 1, deg + 2, 2 * deg + 3, 40):
+            start = _stencils(n_nodes, n_nodes - 1, deg)  # n_nodes pieces (the edge a node)
+            cases += [start, start[3:9] if len(start) > 9 else start[:1]]
+    cases += [np.array([0, 0, 1, 3, 4]), np.array([2, 2, 2]), np.array([5])]
+    for start in cases:
+        P, L, n_rows = len(start), 3, 4
+        contrib = rng.standard_normal((P, L, n_rows))
+        got = np.zeros((int(start.max()) + L + 1, n_rows))
+        operators._scatter_t(got, slice(0, n_rows), contrib, start)
+        ref, size = np.zeros_like(got), np.zeros_like(got)
+        for i, c in enumerate(start):
+            ref[c:c + L] += contrib[i]
+            size[c:c + L] += np.abs(contrib[i])
+        assert np.all(np.abs(got - ref) <= 8 * np.finfo(float).eps * size), start
+
+
+def test_edge_correction_is_the_operator_built_with_the_edge():
+    """(5.59) with an edge is applied as the edge-free operator of N samples plus a correction
+    of the last pieces (_edge_correction); built directly from the pieces with the edge
+    (_build, every piece's moments against the kernel) it is the same matrix: N from 6 to 101,
+    degree 1..9, edges 1.5 dx (K = 1, fewer samples than the stencil), mid-grid, next to a
+    sample, on the last sample. The same terms summed in another order: 16 ulp of the row's
+    largest entry (measured 0.7 ulp)."""
+    worst = 0.0
+    for N in (6, 12, 40, 101):
+        for degree in (1, 2, 3, 5, 9):
+            for x_edge in (1.5, 2.3, 4.7, N / 2 + 0.25, N - 1.5, N - 1.0):
+                if x_edge > N - 1:
+                    continue
+                K, A = abel_edge._edge_index(np.zeros(N), x_edge)
+                operators._CACHE.clear()
+                M = operators._operator("inverse", K, A, degree, N)
+                ref = operators._build("inverse", K, A, degree)
+                row = np.max(np.abs(ref), axis=1, keepdims=True)
+                worst = max(worst, float(np.max(np.abs(M - ref) / row)))
+                y = np.random.default_rng(K).standard_normal(K + 1)
+                got = operators._apply("inverse", K, A, degree, N, y[None, :])[0]
+                assert np.all(np.abs(got - M @ y) <= 64 * np.finfo(float).eps
+                              * (np.abs(M) @ np.abs(y)))  # as _close
+    _record("abel edge correction vs direct build", worst / np.finfo(float).eps, 16)
+
+
+def test_kink_on_a_sample_rising_flat_and_near_the_axis():
+    """p at a kink on a sample is log-singular with the sign of -U(b) (U = (q - q(b))/sqrt(s -
+    b^2) beyond it): q rising beyond the kink (U = +0.3) gives -inf; q flat beyond it (U = 0,
+    no singular term) the mean of the two neighbouring samples, and there q = max(b^2 - x^2, 0)
+    with the edge given beyond the kink is Hertz of radius b: p = (2/pi) sqrt(b^2 - r^2) left
+    of the kink, 0 beyond it (linear in s: to rounding, 2e-15 N). And the kink 1.2 dx from the
+    axis (its left piece [dx^2, b^2] narrower than one s-width, 0.44 dx^2) is exact like the
+    others (_sloped_kink_q, 2e-15 N as there), on every sample."""
+    N = 201
+    x = np.linspace(0, 1, N)
+    dx = x[1]
+    b = x[100]
+    p = abel.pressure_from_line_load(1 + 0.3 * np.sqrt(np.clip(x**2 - b**2, 0, None)), dx,
+                                     kink=b)
+    assert p[100] == -np.inf and np.isfinite(np.delete(p, 100)).all()
+    q = np.clip(b * b - x**2, 0, None)
+    p = abel.pressure_from_line_load(q, dx, edge=0.9, kink=b)
+    assert p[100] == (p[99] + p[101]) / 2
+    # q = 1 beyond the kink, dropping to 0 at the edge 0.9: p is not 0 right of the kink; U(b)
+    # is a sum of terms that cancel, 0 or a rounding of either sign, so the kink's sample is
+    # the mean of its neighbours or +-inf
+    p1 = abel.pressure_from_line_load(np.where(x < 0.9, 1 + q, 0.0), dx, edge=0.9, kink=b)
+    assert p1[100] in (np.inf, -np.inf, (p1[99] + p1[101]) / 2) and p1[101] != p1[102] != 0
+    ref = 2 / np.pi * np.sqrt(np.clip(b * b - x**2, 0, None))
+    m = np.abs(x - b) > 0.5 * dx
+    assert np.all(np.abs(p[m] - ref[m]) <= 2e-15 * N * ref[0])
+    u0 = 0.3
+    x = np.linspace(0, 1.2, N)
+    b = 1.2 * x[1]
+    q = _sloped_kink_q(x, b, u0)
+    m = x < 1  # every sample: the one left of the kink, 0.2 dx from it, too (its row takes
+    # the short piece [dx^2, b^2] whole; measured 4.4e-14)
+    with mp.workdps(30):
+        ref = np.array([float(_sloped_kink_p_ref(float(v), b, u0)) for v in x[m]])
+    _record("abel inverse sloped kink at 1.2 dx",
+            rel_err(abel.pressure_from_line_load(q, x[1], edge=1.0, kink=b)[m], ref,
+                    slice(None)), 2e-15 * N)
+    _fresh_operators()
+    M = abel.pressure_matrix(N, x[1], edge=1.0, kink=b)
+    _record("abel matrix sloped kink at 1.2 dx", rel_err((M @ q)[m], ref, slice(None)),
+            2e-15 * N)
+
+
+def test_operator_cache_is_least_recently_used_within_its_bytes(monkeypatch):
+    """_cached keeps at most _CACHE_BYTES of operators (set to 2000 bytes here): a new entry
+    evicts the least recently used ones (a hit makes an entry the most recent), down to one
+    entry, which stays even when it alone is larger than the bound."""
+    monkeypatch.setattr(operators, "_CACHE_BYTES", 2000)
+    operators._CACHE.clear()
+    small = [np.full((10, 10), float(i)) for i in range(4)]  # 800 bytes each
+    for i in range(2):
+        assert operators._cached(("t", i), lambda i=i: small[i]) is small[i]
+    assert list(operators._CACHE) == [("t", 0), ("t", 1)]
+    operators._cached(("t", 0), lambda: small[3])  # a hit: 0 is now the most recent
+    operators._cached(("t", 2), lambda: small[2])  # 2400 bytes: 1 goes
+    assert list(operators._CACHE) == [("t", 0), ("t", 2)]
+    big = (0, np.zeros((15, 15)))  # 1800 bytes, a tuple as _edge_correction's
+    assert operators._cached(("t", 3), lambda: big) is big
+    assert list(operators._CACHE) == [("t", 3)]  # 0 and 2 go
+    huge = np.zeros((30, 30))  # 7200 bytes: alone over the bound, kept
+    operators._cached(("t", 4), lambda: huge)
+    assert list(operators._CACHE) == [("t", 4)]
+    operators._CACHE.clear()
+
+
+_R_COEF = (1.0, -0.7, 0.4, 0.9, -0.3, 0.2, -0.5, 0.1, 0.3, -0.2)  # R(s), degree 9
+
+
+@memo  # a mutation run's memo (tests/oracle.py): mpmath only
+def _forward_polynomial_ref(s, degree, edge):
+    """(5.61) in s: q = int_s^T P(t)/sqrt(t - s) dt of P = sum_k<=degree _R_COEF[k] t^k times
+    sqrt(1 - t) with an edge at t = 1 (t = s + (1 - s) sin^2(theta)), or truncated at T = 1
+    without one (t = s + w^2), by quadrature of the smooth integrand at the working precision."""
+    s = mp.mpf(s)
+
+    def R(t):
+        return sum(mp.mpf(c) * t**k for k, c in enumerate(_R_COEF[:degree + 1]))
+
+    if edge:
+        return 2 * (1 - s) * mp.quad(lambda th: R(s + (1 - s) * mp.sin(th) ** 2)
+                                     * mp.cos(th) ** 2, [0, mp.pi / 2])
+    return 2 * mp.quad(lambda w: R(s + w * w), [0, mp.sqrt(1 - s)])
+
+
+def test_polynomials_of_every_degree_to_rounding():
+    """The interpolants are exact on polynomials of their degree in s, and so are the
+    transforms: (5.61) of p = P(s) of degree 5 and 9 without an edge (the transform truncated
+    at the grid's end, Gauss-Legendre in w of degree + 1 points: exact), of p = sqrt(1 - s)
+    P(s) with the edge at 1 (degree 9: the w-pieces far from the edge converge like (7 +
+    sqrt 48)^-(2n - 2k) with n = degree + 6, the theta-pieces to 1e-15); and (5.59) with
+    degree 1 (Hertz, linear in s), the edge found and given. References: 30-digit quadrature
+    (_forward_polynomial_ref), the Hertz pair. Rounding: the sums of ~N terms of the size of
+    q, 2e-15 N (measured 1.3e-15, 8.9e-16, 3.9e-15; degree 1: 3.8e-15)."""
+    N = 41
+    for degree, edge in ((5, False), (9, False), (9, True)):
+        x = np.linspace(0, 1.2 if edge else 1.0, 61 if edge else N)
+        s = x * x
+        P = sum(c * s**k for k, c in enumerate(_R_COEF[:degree + 1]))
+        if edge:
+            P = np.where(x < 1, P * np.sqrt(np.clip(1 - s, 0, None)), 0.0)
+        m = (x < (0.95 if edge else 0.99)) & (np.arange(len(x)) % 3 == 0)  # a third: time
+        got = abel.line_load_from_pressure(P, x[1], edge=1.0 if edge else None, degree=degree)
+        with mp.workdps(30):
+            ref = np.array([float(_forward_polynomial_ref(float(v), degree, edge))
+                            for v in s[m]])
+        _record(f"abel forward polynomial degree {degree} edge {edge}",
+                rel_err(got[m], ref, slice(None)), 2e-15 * len(x))
+    x = np.linspace(0, 1.2, N)
+    q = np.clip(1 - x**2, 0, None)
+    p = 2 / np.pi * np.sqrt(np.clip(1 - x**2, 0, None))
+    for edge in (None, 1.0):
+        _record("abel inverse degree 1", rel_err(abel.pressure_from_line_load(
+            q, x[1], edge=edge, degree=1), p, x < 0.95), 2e-15 * N)
