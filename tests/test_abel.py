@@ -780,6 +780,19 @@ def test_edge_root_against_mpmath(monkeypatch):
             if newton is not None:
                 assert (not calls) == newton, (coef, calls)
 
+
+@pytest.mark.parametrize("root", [0.5, 0.25, 0.75])
+def test_edge_root_of_a_double_root(root):
+    """A double root (u - u0)^2, its coefficients exact in binary (with 0.3 or 0.9 the float
+    polynomial may have no real root): f and f' are both rounding there,
+    and the companion matrix's root, polished by Newton steps that divided one by the other,
+    went from 0.5 to 0.625 (found by the mutation triage of 2026-11-27); a step is now kept
+    only where it lowers |f|. Tolerance: a double root is determined by the data to
+    sqrt(eps) of it (the polynomial is below rounding within that distance), 1.5e-8."""
+    u = abel_edge._edge_root(np.array([root * root, -2 * root, 1.0]))
+    assert abs(u - root) <= 1.5e-8 * root, u
+
+
 def test_edge_found_from_one_or_two_samples():
     """The smallest supports: one non-zero sample (the edge is the next sample, a = dx: q linear
     in s through q_0 and 0, p(0) = 2 q_0/(pi dx); forward, R = p_0 constant, q(0) = pi p_0/2 dx),

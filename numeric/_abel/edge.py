@@ -101,11 +101,15 @@ def _edge_root(coef: np.ndarray) -> float:
         return 1.0  # no root before the next (zero) sample: the edge is that sample
     u = float(real.min())
     for _ in range(3):  # polish: the companion matrix loses digits when the top coefficients
-        # are rounding noise (data linear in s, as for Hertz)
+        # are rounding noise (data linear in s, as for Hertz); a step is kept only where it
+        # lowers |f| (at a double root f and f' are both rounding: (u - 1/2)^2 went to 0.625)
         f, d1 = val(u)
         if d1 == 0:
             break
-        u -= f / d1
+        step = u - f / d1
+        if not abs(val(step)[0]) < abs(f):
+            break
+        u = step
     return min(max(u, 0.0), 1.0)
 
 
