@@ -182,6 +182,17 @@ MODULES: dict[str, list[str]] = {
     "ellipse_stress.py": _ELLIPSE_STRESS_TESTS,
     "force_law.py": ["tests/test_force_law.py"],
     "adhesion.py": ["tests/test_adhesion.py"],
+    "tangential.py": ["tests/test_tangential.py"],
+    "fit.py": ["tests/test_fit.py", "tests/test_fit_sampled.py", "tests/test_fit_breakpoints.py"],
+    "fit_adhesive.py": [f"tests/test_fit_adhesive_{t}.py" for t in (
+        "sphere", "cone", "powerlaw", "sampled")] + ["tests/test_fit_jkr.py"],
+    "fit_batch.py": ["tests/test_fit_batch.py"],
+    "fit_io.py": ["tests/test_fit_batch.py", "tests/test_fit_scene.py",
+                  "tests/test_fit_breakpoints.py"],
+    "_accuracy_cases.py": ["tests/test_cli.py", "tests/test_domains.py"],
+    # the timing of the benchmarks and `hertzmdr accuracy`: its tests are the benchmarks'
+    # quick runs (about 70 s of CPU for each mutant they reach)
+    "_timing.py": ["tests/test_benchmarks.py"],
 }
 
 STATUS = {1: "killed", 3: "killed", 0: "survived", 5: "no tests", 33: "no tests",
