@@ -533,7 +533,11 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "Runs since 2026-11-27 10:00 UTC read the tests' mpmath references from a memo filled "
         "by the run's first test pass (`HERTZMDR_ORACLE_MEMO`, tests/oracle.py's `memo`; unset "
         "in every other run): on the 177 mutants of `line_stress.py` checked before and after "
-        "it, the median time a mutant went from 9.0 s to 0.71 s (3135 s to 139 s in all).",
+        "it, the median time a mutant went from 9.0 s to 0.71 s (3135 s to 139 s in all). "
+        "Runs since 2026-11-27 16:00 UTC stop a mutant at 6 times its tests' CPU time in the "
+        "run's first pass (pyproject.toml's `timeout_multiplier` 3, was mutmut's 15: two "
+        "looping mutants of `stress.py` had held a run 89 min each); its *timeout* count is "
+        "of those.",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
