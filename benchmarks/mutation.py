@@ -136,7 +136,8 @@ _MDR_TESTS = [f"tests/test_mdr.py::test_{t}" for t in """
     numeric_from_callable_and_force_control numeric_kinked_convergence_and_estimate
     numeric_kinked_profile numeric_noisy_samples numeric_powerlaw numeric_worn_pressure
     numeric_worn_with_and_without_breakpoint rtol_is_the_target
-    rtol_range_lower_end""".split()]
+    rtol_range_lower_end pressure_on_the_axis pressure_bound_on_the_axis_of_a_sampled_power_law
+    pressure_bound_covers_power_laws_sampled_coarsely_and_finely""".split()]
 
 # test_ellipse_stress.py but the bearing scene's two tests (the scene plumbing, 10 s each: the
 # maxima they check are reached by test_maxima_lie_on_the_axis and
