@@ -132,12 +132,19 @@ _SPHERE_TESTS = [f"tests/test_sphere.py::test_{t}" for t in """
 # the tests of test_mdr.py that call numeric/mdr.py (the others check derive/mdr.py, and one
 # of them, a SymPy solve given 10 s, fails when the machine is loaded)
 _MDR_TESTS = [f"tests/test_mdr.py::test_{t}" for t in """
-    bad_input_is_named mdr_force_by_the_pressure numeric_convergence_order
-    numeric_from_callable_and_force_control numeric_kinked_convergence_and_estimate
-    numeric_kinked_profile numeric_noisy_samples numeric_powerlaw numeric_worn_pressure
-    numeric_worn_with_and_without_breakpoint rtol_is_the_target
-    rtol_range_lower_end pressure_on_the_axis pressure_bound_on_the_axis_of_a_sampled_power_law
-    pressure_bound_covers_power_laws_sampled_coarsely_and_finely""".split()]
+    numeric_powerlaw numeric_convergence_order numeric_worn_with_and_without_breakpoint
+    numeric_from_callable_and_force_control numeric_noisy_samples numeric_roundtrips
+    force_depth_curve_is_monotone force_depth_curve_vectorized_bounds_every_depth
+    bad_input_is_named numeric_worn_pressure numeric_kinked_profile
+    numeric_kinked_convergence_and_estimate mdr_force_by_the_pressure
+    rtol_outside_the_range_is_refused rtol_is_the_target rtol_range_lower_end
+    g_and_displacement_bounds_hold_and_are_tight callable_that_cannot_meet_rtol_says_why
+    pressure_on_the_axis pressure_bound_on_the_axis_of_a_sampled_power_law
+    pressure_bound_covers_power_laws_sampled_coarsely_and_finely
+    numeric_worn_displacement""".split()]
+# the public face, numeric/mdr.py: also the bounds of every sampled profile against 30-digit
+# references and the unloaded solution
+_MDR_PY_TESTS = _MDR_TESTS + ["tests/test_mdr_bounds.py", "tests/test_zero_load.py"]
 
 # test_ellipse_stress.py but the bearing scene's two tests (the scene plumbing, 10 s each: the
 # maxima they check are reached by test_maxima_lie_on_the_axis and
@@ -169,7 +176,7 @@ MODULES: dict[str, list[str]] = {
             "_a_narrow_peak_and_an_increasing_pressure", "_names_its_inputs")],
     "line_stress.py": ["tests/test_line_stress.py"],
     "sphere.py": _SPHERE_TESTS,
-    "mdr.py": _MDR_TESTS,
+    "mdr.py": _MDR_PY_TESTS,
     "_mdr": _MDR_TESTS,
     "abel.py": ["tests/test_abel.py"],
     "_abel": ["tests/test_abel.py"],
