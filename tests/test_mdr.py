@@ -801,3 +801,35 @@ def test_radius_root_finder_on_every_cell_of_its_bracket():
         for guess in (None, 0.6):
             a_ = msolve.radius(fine, 1.0, d, guess)
             assert abs(a_ / a_true - 1) < (64 + 4 * 41) * np.finfo(float).eps, (a_true, a_)
+
+
+def test_pressure_and_displacement_at_the_axis_alone():
+    """p(0) and u_z(0) asked for alone (the radius r = 0 is the only one of its grading group
+    in operators.abel): f = r^2 (R = 1/2, the splines exact), p(0) = 2 E* a/(pi R) and
+    u(0) = d (Hertz, (5.59) and (5.60) of g = 2 x^2); to the rounding of test_pressure_on_the_axis
+    (1e-12)."""
+    r = np.linspace(0.0, 1.0, 41)
+    sol = nmdr.Profile.from_samples(r, r**2).solve(depth=0.18, E_star=E)  # a = 0.3
+    a_ = sol.contact_radius
+    assert abs(sol.pressure(0.0) / (2 * E * a_ / (np.pi * 0.5)) - 1) < 1e-12
+    assert sol.displacement(np.array([0.0]))[0] == 0.18
+
+
+def test_force_past_f_of_r_max_and_callable_checks():
+    """Under force control a force past F(r_max) names it and F(r_max) (f = r^2 on [0, 1]:
+    d = g(1) = 2, a = 1, Hertz F = (4/3) E* sqrt(R) d^1.5 = 8/3 E* with R = 1/2); a callable
+    with a non-finite value anywhere on [0, r_max] is refused by name; a callable's f(0) is
+    subtracted (f + 1 solves as f: a, F of the power law's closed forms, test_numeric_
+    from_callable_and_force_control's 1e-9)."""
+    r = np.linspace(0.0, 1.0, 41)
+    with pytest.raises(ValueError, match=r"^force = 1000000000000\.0 exceeds F\(r_max\) = "
+                       r"2666666666\.66"):
+        nmdr.Profile.from_samples(r, r**2).solve(force=1e12, E_star=E)
+    with pytest.raises(ValueError, match=r"^f returned a non-finite value \(or the wrong shape\) "
+                       r"on \[0, r_max\]; valid: finite values, one per radius$"):
+        nmdr.Profile.from_callable(lambda x: np.where(x > 0.5, np.nan, x**2), 1.0)
+    prof = nmdr.Profile.from_callable(lambda x: x**2.5 + 1.0, 1.0)
+    dd = float(npl.kappa(2.5)) * 0.4**2.5
+    sol = prof.solve(depth=dd, E_star=E, rtol=1e-9)
+    assert abs(sol.contact_radius / 0.4 - 1) < 1e-9
+    assert abs(sol.force / npl.force(dd, 1.0, 2.5, E) - 1) < 1e-9
