@@ -833,3 +833,16 @@ def test_force_past_f_of_r_max_and_callable_checks():
     sol = prof.solve(depth=dd, E_star=E, rtol=1e-9)
     assert abs(sol.contact_radius / 0.4 - 1) < 1e-9
     assert abs(sol.force / npl.force(dd, 1.0, 2.5, E) - 1) < 1e-9
+
+
+def test_force_control_at_the_micrometre_scale():
+    """Under force control (Brent's method on F(a), solve.pair) at the scale of an AFM tip:
+    f = r^2/(2R), R = 10 um, sampled to r_max = 2 um (the splines exact), a force of 1 nN
+    with E* = 1 GPa: a and d of Hertz (a^3 = 3 F R/(4 E*), d = a^2/R) to 1e-13 (Brent's
+    bracket closes to 1e-16 r_max and 1e-15 relative; g by quadrature to rounding)."""
+    Rv, F = 10e-6, 1e-9
+    r = np.linspace(0.0, 2e-6, 41)
+    sol = nmdr.Profile.from_samples(r, r**2 / (2 * Rv)).solve(force=F, E_star=E)
+    a_ref = (3 * F * Rv / (4 * E)) ** (1 / 3)
+    assert abs(sol.contact_radius / a_ref - 1) < 1e-13, sol.contact_radius / a_ref - 1
+    assert abs(sol.depth / (a_ref**2 / Rv) - 1) < 1e-13, sol.depth / (a_ref**2 / Rv) - 1
