@@ -863,3 +863,20 @@ def test_noisy_samples_bound_covers_the_force_error():
     f[0] = 0.0
     sol = nmdr.Profile.from_samples(r_s, f, smoothing="gcv").solve(depth=0.25, E_star=E)
     assert sol.rel_error >= abs(sol.force / gen.hertz_force(E, 1.0, 0.25) - 1)
+
+
+def test_callable_grids_at_the_ends_of_n_max():
+    """resolution.Grid at the ends of its range: n = n_max = 8 solves on its first pair (8
+    and 16 intervals a segment) and its rel_error bounds the force's error against the power
+    law's closed form; n = 16 with n_max = 32 stops after that first pair (the next, 32 and
+    64, would pass n_max) and says so."""
+    dd = float(npl.kappa(2.5)) * 0.4**2.5
+    ref = npl.force(dd, 1.0, 2.5, E)
+    sol = nmdr.Profile.from_callable(lambda x: x**2.5, 1.0, n=8, n_max=8).solve(
+        depth=dd, E_star=E)
+    assert abs(sol.force / ref - 1) <= sol.rel_error
+    s = nmdr.Profile.from_callable(lambda x: x**2.5, 1.0, n=16, n_max=32).solve(
+        depth=dd, E_star=E, rtol=nmdr.RTOL_RANGE[0])
+    assert not s.met
+    assert s.why_not_met == ("the callable's grid reached 32 intervals a segment (n_max = 32); "
+                             f"its estimate is {s.rel_error:.1e}")
