@@ -880,3 +880,31 @@ def test_callable_grids_at_the_ends_of_n_max():
     assert not s.met
     assert s.why_not_met == ("the callable's grid reached 32 intervals a segment (n_max = 32); "
                              f"its estimate is {s.rel_error:.1e}")
+
+
+def test_linear_spline_kinks_at_every_knot():
+    """k = 1: the linear spline through samples of r^2 (11 of them, no breakpoints) has a
+    kink at every inner knot (kinks.jumps finds them from f' on either side); its g, a, F
+    and p against the elementary g of this piecewise-linear profile and (5.59) by quadrature
+    at 30 digits (_two_kinks_refs takes any number of kinks): each within its reported bound,
+    and within 10 times the measured error (the tables in x of a remainder with a
+    square-root kink at every knot: g 1.2e-3, a 7e-5, F 1e-7, p 3.8e-2, the bounds 4 to 300
+    times that)."""
+    r = np.linspace(0.0, 1.0, 11)
+    c = tuple(float(v) for v in np.diff(r**2) / np.diff(r))  # slopes (2k + 1)/10
+    bs = tuple(float(v) for v in r[1:-1])
+    prof = nmdr.Profile.from_samples(r, r**2, k=1)
+    x, x_a, radii = [0.05, 0.25, 0.5, 0.62], 0.63, [0.05, 0.33, 0.55]
+    with mp.workdps(30):
+        cc, bb = [mp.mpf(v) for v in c], [mp.mpf(v) for v in bs]
+        dd = float(mp.mpf(x_a) * _two_kinks_q(cc, bb, mp.mpf(x_a)))
+        g_ref = np.array([float(mp.mpf(v) * _two_kinks_q(cc, bb, mp.mpf(v))) for v in x])
+        a_ref, F_ref, p_ref = _two_kinks_refs(c, bs, dd, radii, E)
+    g, g_err = prof.g(x, return_error=True)
+    assert np.all(np.abs(g - g_ref) <= np.minimum(g_err, 1.2e-2 * g_ref)), (g / g_ref - 1)
+    sol = prof.solve(depth=dd, E_star=E)
+    da, dF = abs(sol.contact_radius / float(a_ref) - 1), abs(sol.force / float(F_ref) - 1)
+    assert da < 7e-4 and dF < 1e-6 and max(da, dF) <= sol.rel_error, (da, dF, sol.rel_error)
+    p, p_err = sol.pressure(np.array(radii), return_error=True)
+    p_ref = np.array([float(v) for v in p_ref])
+    assert np.all(np.abs(p - p_ref) <= np.minimum(p_err, 0.38 * p_ref)), p / p_ref - 1
