@@ -6,6 +6,7 @@ float64 forms would cancel); finite-difference equilibrium; the surface traction
 point-force far field.
 """
 
+import re
 from functools import cache
 
 import mpmath as mp
@@ -278,6 +279,57 @@ def test_spheroidal_far_away_and_empty():
                     assert_close(float(got), want, 1e-14, f"{what} at ({r_[i]}, {z_[i]}) a")
     empty = stress.spheroidal(np.array([]), np.array([]), aa)
     assert all(v.shape == (0,) for v in empty)
+
+
+def test_a_point_beyond_max_distance_is_named_among_many():
+    """max(r, z) <= MAX_DISTANCE a: the one point beyond it among 100 (more than 64 points:
+    the whole-array check first), in a row and in a 10 x 10 array, at a = 1 mm, is named by
+    its own r, z and a and the valid range, by spheroidal() and hertz_stress_cylindrical();
+    points exactly at MAX_DISTANCE a are accepted, alone and among 100."""
+    aa = 1e-3
+    r_ = np.full(100, 0.5e-3)
+    # 1e101 a, beyond MAX_DISTANCE a = 1e97 m (and below MAX_DISTANCE / a = 1e103 m)
+    r_[37] = 1e98
+    z_ = np.linspace(0.0, 1e-3, 100)
+    msg = "^" + re.escape(f"r = 1e+98, z = {float(z_[37])!r}, a = 0.001: max(r, z) is out of "
+                          "range; valid: max(r, z) <= 1e+100 a")
+    for func, more in ((stress.spheroidal, ()), (stress.hertz_stress_cylindrical, (1e9, 0.3))):
+        for shape in ((100,), (10, 10)):
+            with pytest.raises(ValueError, match=msg):
+                func(r_.reshape(shape), z_.reshape(shape), aa, *more)
+        edge = stress.MAX_DISTANCE * aa
+        for rr, zz in ((edge, 0.0), (0.0, edge), (np.full(100, edge), z_)):
+            assert all(np.all(np.isfinite(v)) for v in func(rr, zz, aa, *more))
+
+
+def test_hertz_stress_cylindrical_p0_and_nu_arrays_across_blocks_and_forms():
+    """p0 and nu as arrays along one axis against a column of radii (a 2 x 3 result), and as
+    arrays over 40,000 points (three blocks of 16,384) near the contact and far from it (xi
+    from 0 to ~60: the form with atan and, where xi >= 1, the hypergeometric one, in every
+    block): each value the one the function gives for that point alone or in a block of
+    1,000 (the same operations on the same numbers: equal to the last bit)."""
+    col = np.array([[0.4e-3], [2.5e-3]])
+    p0s, nus = np.array([1e8, 2e9, 5e9]), np.array([-0.5, 0.3, 0.5])
+    out = stress.hertz_stress_cylindrical(col, 0.8e-3, 1e-3, p0s, nus)
+    for i, j in np.ndindex(2, 3):
+        one = stress.hertz_stress_cylindrical(col[i, 0], 0.8e-3, 1e-3, p0s[j], nus[j])
+        for got, want in zip(out, one, strict=True):
+            assert got.shape == (2, 3) and got[i, j] == want, (i, j)
+    rng = np.random.default_rng(7)
+    n = 40_000
+    r_ = 1e-3 * np.exp(rng.uniform(np.log(1e-3), np.log(60.0), n))
+    z_ = 1e-3 * np.exp(rng.uniform(np.log(1e-3), np.log(60.0), n))
+    p0_ = rng.uniform(1e8, 3e9, n)
+    nu_ = rng.choice([-0.5, 0.0, 0.3, 0.5], n)
+    xi = stress.spheroidal(r_, z_, 1e-3)[0]
+    for k in range(0, n, 16384):  # both forms in every block
+        assert np.any(xi[k:k + 16384] < 1) and np.any(xi[k:k + 16384] >= 1), k
+    out = stress.hertz_stress_cylindrical(r_, z_, 1e-3, p0_, nu_)
+    for k in range(0, n, 1000):
+        part = stress.hertz_stress_cylindrical(r_[k:k + 1000], z_[k:k + 1000], 1e-3,
+                                               p0_[k:k + 1000], nu_[k:k + 1000])
+        for got, want in zip(out, part, strict=True):
+            assert np.array_equal(got[k:k + 1000], want), k
 
 
 def test_field_on_the_axis_is_the_derived_axis_field():
