@@ -633,6 +633,13 @@ def test_more_inputs_named_and_the_criteria_by_name():
     assert abs(2 * shear / tres - 1) < 1e-13
 
 
+def test_superposed_plane_names_its_inputs():
+    """superposed_plane names a and nu in its errors (each NaN in turn), on its smallest grid."""
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    assert_inputs_named(lambda a, nu: stress.superposed_plane(hp, a, nu, n=2),
+                        dict(a=1.0, nu=0.3))
+
+
 def test_orthogonal_shear_maximum_by_superposition():
     """The derived largest |tau_rz| and its place against Newton's method on the gradient of
     tau_rz superposed from the point-force field (tests/kernels.py's rings, no closed form),
