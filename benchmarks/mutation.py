@@ -132,11 +132,19 @@ _SPHERE_TESTS = [f"tests/test_sphere.py::test_{t}" for t in """
 # the tests of test_mdr.py that call numeric/mdr.py (the others check derive/mdr.py, and one
 # of them, a SymPy solve given 10 s, fails when the machine is loaded)
 _MDR_TESTS = [f"tests/test_mdr.py::test_{t}" for t in """
-    bad_input_is_named mdr_force_by_the_pressure numeric_convergence_order
-    numeric_from_callable_and_force_control numeric_kinked_convergence_and_estimate
-    numeric_kinked_profile numeric_noisy_samples numeric_powerlaw numeric_worn_pressure
-    numeric_worn_with_and_without_breakpoint rtol_is_the_target
-    rtol_range_lower_end""".split()]
+    numeric_powerlaw numeric_convergence_order numeric_worn_with_and_without_breakpoint
+    numeric_from_callable_and_force_control numeric_noisy_samples numeric_roundtrips
+    force_depth_curve_is_monotone force_depth_curve_vectorized_bounds_every_depth
+    bad_input_is_named numeric_worn_pressure numeric_kinked_profile
+    numeric_kinked_convergence_and_estimate mdr_force_by_the_pressure
+    rtol_outside_the_range_is_refused rtol_is_the_target rtol_range_lower_end
+    g_and_displacement_bounds_hold_and_are_tight callable_that_cannot_meet_rtol_says_why
+    pressure_on_the_axis pressure_bound_on_the_axis_of_a_sampled_power_law
+    pressure_bound_covers_power_laws_sampled_coarsely_and_finely
+    numeric_worn_displacement""".split()]
+# the public face, numeric/mdr.py: also the bounds of every sampled profile against 30-digit
+# references and the unloaded solution
+_MDR_PY_TESTS = _MDR_TESTS + ["tests/test_mdr_bounds.py", "tests/test_zero_load.py"]
 
 # test_ellipse_stress.py but the bearing scene's two tests (the scene plumbing, 10 s each: the
 # maxima they check are reached by test_maxima_lie_on_the_axis and
@@ -168,7 +176,7 @@ MODULES: dict[str, list[str]] = {
             "_a_narrow_peak_and_an_increasing_pressure", "_names_its_inputs")],
     "line_stress.py": ["tests/test_line_stress.py"],
     "sphere.py": _SPHERE_TESTS,
-    "mdr.py": _MDR_TESTS,
+    "mdr.py": _MDR_PY_TESTS,
     "_mdr": _MDR_TESTS,
     "abel.py": ["tests/test_abel.py"],
     "_abel": ["tests/test_abel.py"],
@@ -182,6 +190,17 @@ MODULES: dict[str, list[str]] = {
     "ellipse_stress.py": _ELLIPSE_STRESS_TESTS,
     "force_law.py": ["tests/test_force_law.py"],
     "adhesion.py": ["tests/test_adhesion.py"],
+    "tangential.py": ["tests/test_tangential.py"],
+    "fit.py": ["tests/test_fit.py", "tests/test_fit_sampled.py", "tests/test_fit_breakpoints.py"],
+    "fit_adhesive.py": [f"tests/test_fit_adhesive_{t}.py" for t in (
+        "sphere", "cone", "powerlaw", "sampled")] + ["tests/test_fit_jkr.py"],
+    "fit_batch.py": ["tests/test_fit_batch.py"],
+    "fit_io.py": ["tests/test_fit_batch.py", "tests/test_fit_scene.py",
+                  "tests/test_fit_breakpoints.py"],
+    "_accuracy_cases.py": ["tests/test_cli.py", "tests/test_domains.py"],
+    # the timing of the benchmarks and `hertzmdr accuracy`: its tests are the benchmarks'
+    # quick runs (about 70 s of CPU for each mutant they reach)
+    "_timing.py": ["tests/test_benchmarks.py"],
 }
 
 STATUS = {1: "killed", 3: "killed", 0: "survived", 5: "no tests", 33: "no tests",
@@ -522,7 +541,11 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "Runs since 2026-11-27 10:00 UTC read the tests' mpmath references from a memo filled "
         "by the run's first test pass (`HERTZMDR_ORACLE_MEMO`, tests/oracle.py's `memo`; unset "
         "in every other run): on the 177 mutants of `line_stress.py` checked before and after "
-        "it, the median time a mutant went from 9.0 s to 0.71 s (3135 s to 139 s in all).",
+        "it, the median time a mutant went from 9.0 s to 0.71 s (3135 s to 139 s in all). "
+        "Runs since 2026-11-27 16:00 UTC stop a mutant at 6 times its tests' CPU time in the "
+        "run's first pass (pyproject.toml's `timeout_multiplier` 3, was mutmut's 15: two "
+        "looping mutants of `stress.py` had held a run 89 min each); its *timeout* count is "
+        "of those.",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "

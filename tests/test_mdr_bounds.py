@@ -34,6 +34,8 @@ import pytest
 
 from hertzmdr.numeric import mdr
 
+from oracle import memo
+
 E = 1e11  # Pa
 DPS = 30
 
@@ -180,10 +182,46 @@ def reference(case, d):
     return a, 2 * E * (d * a - G_ref(case, a))
 
 
+# The references of case number ``index`` of _cases() at given arguments, memoized in a
+# mutation run (tests/oracle.py's memo: the module is a pure function of its arguments, the
+# profiles being fixed in _cases; unset in every other run). Call inside mp.workdps(DPS).
+@memo
+def _reference(index, d):
+    return reference(_cases()[index], d)
+
+
+@memo
+def _p(index, a, r):
+    return p_ref(_cases()[index], a, r)
+
+
+@memo
+def _u(index, a, d, r):
+    return u_ref(_cases()[index], a, d, r)
+
+
+@memo
+def _g(index, x):
+    return g_ref(_cases()[index], x)
+
+
+@memo
+def _at_force(index, Ft, a0):
+    """(a, d) where (5.57) with d = g(a) gives the force Ft, by findroot near a0."""
+    case = _cases()[index]
+
+    def F_of(x):  # (5.57) with d = g(a), scaled by the target
+        return 2 * E * (g_ref(case, x) * x - G_ref(case, x)) / Ft - 1
+
+    a = mp.findroot(F_of, (a0 * (1 - mp.mpf(1e-3)), a0 * (1 + mp.mpf(1e-3))),
+                    solver="anderson")
+    return a, g_ref(case, a)
+
+
 def rows():
     """(case, quantity, depth, bound, actual error) for every reported bound."""
     out = []
-    for case in _cases():
+    for ci, case in enumerate(_cases()):
         prof = case.profile()
         curve = prof.force_depth_curve(np.array(case.depths), E_star=E)
         for i, d in enumerate(case.depths):
@@ -195,10 +233,10 @@ def rows():
             xg = np.array([0.5, 1.1]) * sol.contact_radius
             g, gerr = sol.g(xg, return_error=True)
             with mp.workdps(DPS):
-                a, F = reference(case, d)
-                pr = [p_ref(case, sol.contact_radius, x) for x in rr]
-                ur = [u_ref(case, a, d, x) for x in ru]
-                gr = [g_ref(case, x) for x in xg]
+                a, F = _reference(ci, d)
+                pr = [_p(ci, sol.contact_radius, x) for x in rr]
+                ur = [_u(ci, a, d, x) for x in ru]
+                gr = [_g(ci, x) for x in xg]
                 errs = {
                     "curve F": (curve.rel_error[i], abs(curve.force[i] / F - 1)),
                     "curve a": (curve.rel_error[i], abs(curve.contact_radius[i] / a - 1)),
@@ -220,21 +258,16 @@ def rows():
 
 def force_control_rows():
     """The issue-12 tip under force control: d and a against the reference at that force."""
-    case = _cases()[-1]
+    ci = len(_cases()) - 1
+    case = _cases()[ci]
     prof = case.profile()
     out = []
     for d0 in (10e-9, 100e-9):
         with mp.workdps(DPS):
-            a0, F0 = reference(case, d0)
+            a0, F0 = _reference(ci, d0)
             Ft = float(F0)
             sol = prof.solve(force=Ft, E_star=E)
-
-            def F_of(x, Ft=Ft):  # (5.57) with d = g(a), scaled by the target
-                return 2 * E * (g_ref(case, x) * x - G_ref(case, x)) / Ft - 1
-
-            a = mp.findroot(F_of, (a0 * (1 - mp.mpf(1e-3)), a0 * (1 + mp.mpf(1e-3))),
-                            solver="anderson")
-            d = g_ref(case, a)
+            a, d = _at_force(ci, Ft, a0)
             out += [(case.name, "force control d", d0, sol.rel_error,
                      float(abs(sol.depth / d - 1))),
                     (case.name, "force control a", d0, sol.rel_error,
@@ -280,8 +313,8 @@ def test_max_pressure_bound_holds(index):
     value, bound = sol.max_pressure(return_error=True)
     a = sol.contact_radius
     with mp.workdps(DPS):
-        want = p_ref(case, a, 0)
-        assert all(p_ref(case, a, x * a) < want for x in (0.2, 0.5))
+        want = _p(index, a, 0)
+        assert all(_p(index, a, x * a) < want for x in (0.2, 0.5))
         err = float(abs(value / want - 1))
     assert err <= bound / value, (err, bound / value)
     cone = _cases()[3]
