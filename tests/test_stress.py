@@ -6,6 +6,7 @@ float64 forms would cancel); finite-difference equilibrium; the surface traction
 point-force far field.
 """
 
+import re
 from functools import cache
 
 import mpmath as mp
@@ -280,6 +281,57 @@ def test_spheroidal_far_away_and_empty():
     assert all(v.shape == (0,) for v in empty)
 
 
+def test_a_point_beyond_max_distance_is_named_among_many():
+    """max(r, z) <= MAX_DISTANCE a: the one point beyond it among 100 (more than 64 points:
+    the whole-array check first), in a row and in a 10 x 10 array, at a = 1 mm, is named by
+    its own r, z and a and the valid range, by spheroidal() and hertz_stress_cylindrical();
+    points exactly at MAX_DISTANCE a are accepted, alone and among 100."""
+    aa = 1e-3
+    r_ = np.full(100, 0.5e-3)
+    # 1e101 a, beyond MAX_DISTANCE a = 1e97 m (and below MAX_DISTANCE / a = 1e103 m)
+    r_[37] = 1e98
+    z_ = np.linspace(0.0, 1e-3, 100)
+    msg = "^" + re.escape(f"r = 1e+98, z = {float(z_[37])!r}, a = 0.001: max(r, z) is out of "
+                          "range; valid: max(r, z) <= 1e+100 a")
+    for func, more in ((stress.spheroidal, ()), (stress.hertz_stress_cylindrical, (1e9, 0.3))):
+        for shape in ((100,), (10, 10)):
+            with pytest.raises(ValueError, match=msg):
+                func(r_.reshape(shape), z_.reshape(shape), aa, *more)
+        edge = stress.MAX_DISTANCE * aa
+        for rr, zz in ((edge, 0.0), (0.0, edge), (np.full(100, edge), z_)):
+            assert all(np.all(np.isfinite(v)) for v in func(rr, zz, aa, *more))
+
+
+def test_hertz_stress_cylindrical_p0_and_nu_arrays_across_blocks_and_forms():
+    """p0 and nu as arrays along one axis against a column of radii (a 2 x 3 result), and as
+    arrays over 40,000 points (three blocks of 16,384) near the contact and far from it (xi
+    from 0 to ~60: the form with atan and, where xi >= 1, the hypergeometric one, in every
+    block): each value the one the function gives for that point alone or in a block of
+    1,000 (the same operations on the same numbers: equal to the last bit)."""
+    col = np.array([[0.4e-3], [2.5e-3]])
+    p0s, nus = np.array([1e8, 2e9, 5e9]), np.array([-0.5, 0.3, 0.5])
+    out = stress.hertz_stress_cylindrical(col, 0.8e-3, 1e-3, p0s, nus)
+    for i, j in np.ndindex(2, 3):
+        one = stress.hertz_stress_cylindrical(col[i, 0], 0.8e-3, 1e-3, p0s[j], nus[j])
+        for got, want in zip(out, one, strict=True):
+            assert got.shape == (2, 3) and got[i, j] == want, (i, j)
+    rng = np.random.default_rng(7)
+    n = 40_000
+    r_ = 1e-3 * np.exp(rng.uniform(np.log(1e-3), np.log(60.0), n))
+    z_ = 1e-3 * np.exp(rng.uniform(np.log(1e-3), np.log(60.0), n))
+    p0_ = rng.uniform(1e8, 3e9, n)
+    nu_ = rng.choice([-0.5, 0.0, 0.3, 0.5], n)
+    xi = stress.spheroidal(r_, z_, 1e-3)[0]
+    for k in range(0, n, 16384):  # both forms in every block
+        assert np.any(xi[k:k + 16384] < 1) and np.any(xi[k:k + 16384] >= 1), k
+    out = stress.hertz_stress_cylindrical(r_, z_, 1e-3, p0_, nu_)
+    for k in range(0, n, 1000):
+        part = stress.hertz_stress_cylindrical(r_[k:k + 1000], z_[k:k + 1000], 1e-3,
+                                               p0_[k:k + 1000], nu_[k:k + 1000])
+        for got, want in zip(out, part, strict=True):
+            assert np.array_equal(got[k:k + 1000], want), k
+
+
 def test_field_on_the_axis_is_the_derived_axis_field():
     """The literature form at eta = 1, chi = 0, xi = z/a is the derived (5.48), (5.49), exactly."""
     s = sp.Symbol("s", positive=True)
@@ -415,6 +467,25 @@ def test_superposition_route():
         # the estimate bounds the error (the rim's rounding term included: numeric/stress.py)
         assert abs(s[2, 2] - float(ref)) <= e[2, 2], (zz, abs(s[2, 2] - float(ref)), e[2, 2])
         assert_close(s[2, 2], ref, max(1e-12, float(e[2, 2] / abs(ref))), f"punch z={zz}")
+
+
+def test_superposition_estimate_bounds_the_error_of_coarse_rules_under_the_punch():
+    """The error estimate of coarse rules (8 angles; tanh-sinh levels 1 and 2, and the rules
+    with half their steps) under the flat punch, whose rim singularity makes the rounding
+    term (sources moved by a few ulps) as large as the rules' difference at some depths: on
+    the axis from 0.5 a to 2.8 a, sigma_zz against mpmath quadrature of (5.47) at 25 digits
+    (its error far below 1e-15 p0): the estimate is the sum of both terms and bounds the
+    actual error at every depth (promise 2; measured: the rules' difference alone, or the
+    two terms' difference, falls short at some of these depths)."""
+    punch = lambda rho: 1 / np.sqrt(1 - rho * rho)  # noqa: E731
+    for level in (1, 2):
+        for zz in (0.5, 0.8, 0.91, 0.98, 1.22, 1.42, 1.92, 2.07, 2.78):
+            s, e = stress.superposed_stress(0.0, 0.0, zz, punch, 1.0, 0.3, n_psi=8,
+                                            level=level)
+            with mp.workdps(25):
+                ref = _punch_axis_reference(mp.mpf(zz))
+            actual = abs(s[2, 2] - float(ref))
+            assert actual <= e[2, 2], (level, zz, actual, e[2, 2])
 
 
 def test_superposed_plane_and_its_maxima():
@@ -560,6 +631,13 @@ def test_more_inputs_named_and_the_criteria_by_name():
     tres, r_t, z_t = stress.hertz_maximum(0.3, "tresca")
     # the same peak found twice by Nelder-Mead (flat there: 1e-13 in value, as above)
     assert abs(2 * shear / tres - 1) < 1e-13
+
+
+def test_superposed_plane_names_its_inputs():
+    """superposed_plane names a and nu in its errors (each NaN in turn), on its smallest grid."""
+    hp = lambda rho: np.sqrt(np.maximum(1 - rho * rho, 0.0))  # noqa: E731
+    assert_inputs_named(lambda a, nu: stress.superposed_plane(hp, a, nu, n=2),
+                        dict(a=1.0, nu=0.3))
 
 
 def test_orthogonal_shear_maximum_by_superposition():
