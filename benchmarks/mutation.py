@@ -98,7 +98,11 @@ _STRESS_TESTS = [f"tests/test_stress.py::test_{t}" for t in """
     spheroidal_far_away_and_empty hertz_stress_cylindrical_broadcasts_its_inputs
     superposed_maximum_bound_takes_the_curvature_of_the_plane
     superposed_maximum_bound_extrapolates_to_the_surface
-    superposed_maximum_near_the_surface_within_its_bound""".split()]
+    superposed_maximum_near_the_surface_within_its_bound
+    a_point_beyond_max_distance_is_named_among_many
+    hertz_stress_cylindrical_p0_and_nu_arrays_across_blocks_and_forms
+    superposition_estimate_bounds_the_error_of_coarse_rules_under_the_punch
+    superposed_plane_names_its_inputs""".split()]
 
 # test_powerlaw.py but its slow references (the 3-D elasticity check, kappa by quadrature: 170 s
 # for each mutant they reach) and five of the nine exponents of the outside displacement
@@ -362,12 +366,17 @@ def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
     # mutant, where a reason may be written for a whole line
     for n in [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
               for k in load_notes("since")] + notes:
+        # a note's optional "line" (the run's) tells apart lines of the same text
+        if n.get("line", s.line) != s.line:
+            continue
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
             return n["reason"]
     # "text" notes: every mutant of the line that only changes the text of a string (a method
     # text, a label): presentation, with the reason
     for n in load_notes("text"):
+        if n.get("line", s.line) != s.line:
+            continue
         if n["module"] == module and squash(n["original"]) in squash(s.original) and text_only(s):
             return n["reason"]
     return None
