@@ -80,7 +80,7 @@ def verification_section() -> str:
     ]
     out = ["## Verification\n\n| what | against | test |\n| --- | --- | --- |\n"]
     out += [f"| {a} | {b} | `{c}` |\n" for a, b, c in rows]
-    return "".join(out) + "\n" + CONTRACT + AXIS_BOUND
+    return "".join(out) + "\n" + CONTRACT + AXIS_BOUND + KNOWN_DEFECT
 
 
 CONTRACT = """### The accuracy contract of the numerical MDR
@@ -124,6 +124,17 @@ substitution that removes the kernel's singularity.
 
 """
 
+
+#: a reported bound below its error, found and not yet fixed (promise 2): said where it shows
+KNOWN_DEFECT = (
+    "\n**A known defect (promise 2, not fixed).** A profile smoothed from noisy samples "
+    "(`smoothing=\"gcv\"`) reports a `rel_error` that can be below its error: for r^2/2 on "
+    "401 samples with noise of 5e-7, the force is 5.1e-4 off Hertz and `rel_error` is "
+    "2.9e-4. The bound compares a fine and a coarse representation, both smoothed; the "
+    "smoothing's bias is common to both, so their difference does not see it. Found by the "
+    "mutation run of `_mdr` (2026-11-27); "
+    "`tests/test_mdr.py::test_noisy_samples_bound_covers_the_force_error` is a strict xfail "
+    "until it is fixed. Interpolated samples (the default) are not affected.\n")
 
 #: how the pressure's bound handles an order below 1 (the defect it fixed, 2026-11-27)
 AXIS_BOUND = (
