@@ -176,19 +176,20 @@ class Solution:
         its absolute error [m] (``Profile.g``)."""
         return _g(self._rep, self._coarse, x, return_error)
 
-    def _halved(self) -> tuple[Rep, float] | None:
+    def _halved(self) -> tuple[Rep, float]:
         """The third resolution (half the coarse one, ``Rep.halved``) solved as this solution
-        was (at its depth, or its force), and its contact radius [m]; None where it cannot be
-        solved (a depth beyond what the halved samples reach)."""
+        was (at its depth, or its force), and its contact radius [m]; where it cannot be
+        solved (a depth beyond what the halved samples reach, at the profile's end), the
+        coarse one's contact radius."""
         if self._third is None:
             rep = self._coarse.halved()
             try:
                 _, a, _ = solve.one(rep, self._r_max, None if self._load is not None
                                     else self.depth, self._load, self.E_star, self._a_coarse)
-                self._third = (rep, a)
             except ValueError:
-                self._third = (None, None)
-        return None if self._third[0] is None else self._third
+                a = self._a_coarse
+            self._third = (rep, a)
+        return self._third
 
     def pressure(self, r, *, return_error=False):
         """Contact pressure p(r) [Pa] (5.59) at r [m] (0 outside the contact).
@@ -214,30 +215,27 @@ class Solution:
         # at some r while both are in error)
         p, dev = operators.pressure(self._rep, flat, a, E, 6, conical, other=self._coarse)
         with np.errstate(invalid="ignore"):  # inf - inf at a conical tip's r = 0
-            if (third := self._halved()) is None:
-                pc = operators.pressure(self._coarse, flat, self._a_coarse, E, 4, conical)
-                est = np.abs(p - pc) + dev
-            else:
-                # the same one level down (coarse vs half of it): their ratio rho = 2^order.
-                # The pair's difference bounds the fine error while the order is >= 1; below
-                # (the splines near a singular f'', e.g. f ~ r^1.5 on the axis: h^0.5) the
-                # error is difference / (rho - 1) (Richardson), up to 1 / (rho - 1) times it
-                # Where the differences do not shrink (rho <= 1) and keep their sign, the
-                # pressure has not converged (f = 2 r^1.2 on 40 samples: p(0) 68 % off, the
-                # differences 5 % each): no bound, +inf. Not where they are below STALLED of
-                # the mean pressure: there they are the quadratures' last digits (1e-10 ...
-                # 1e-9 of it for smooth profiles, measured), not a trend.
-                pc, dev_c = operators.pressure(self._coarse, flat, self._a_coarse, E, 4,
-                                               conical, other=third[0])
-                p3 = operators.pressure(third[0], flat, third[1], E, 4, conical)
-                est = np.abs(p - pc) + dev
-                with np.errstate(divide="ignore"):
-                    rho = (np.abs(pc - p3) + dev_c) / est
-                    slow = (rho > 1) & (rho < 2)
-                    est = np.where(slow, est / np.where(slow, rho - 1, 1), est)
-                    stalled = ((rho <= 1) & ((p - pc) * (pc - p3) > 0)
-                               & (est > STALLED * self.force / (np.pi * a * a)))
-                    est[stalled] = np.inf
+            # the same one level down (coarse vs half of it, ``_halved``): their ratio rho =
+            # 2^order. The pair's difference bounds the fine error while the order is >= 1;
+            # below (the splines near a singular f'', e.g. f ~ r^1.5 on the axis: h^0.5) the
+            # error is difference / (rho - 1) (Richardson), up to 1 / (rho - 1) times it.
+            # Where the differences do not shrink (rho <= 1) and keep their sign, the
+            # pressure has not converged (f = 2 r^1.2 on 40 samples: p(0) 68 % off, the
+            # differences 5 % each): no bound, +inf. Not where they are below STALLED of
+            # the mean pressure: there they are the quadratures' last digits (1e-10 ...
+            # 1e-9 of it for smooth profiles, measured), not a trend.
+            third, a3 = self._halved()
+            pc, dev_c = operators.pressure(self._coarse, flat, self._a_coarse, E, 4,
+                                           conical, other=third)
+            p3 = operators.pressure(third, flat, a3, E, 4, conical)
+            est = np.abs(p - pc) + dev
+            with np.errstate(divide="ignore"):
+                rho = (np.abs(pc - p3) + dev_c) / est
+                slow = (rho > 1) & (rho < 2)
+                est = np.where(slow, est / np.where(slow, rho - 1, 1), est)
+                stalled = ((rho <= 1) & ((p - pc) * (pc - p3) > 0)
+                           & (est > STALLED * self.force / (np.pi * a * a)))
+                est[stalled] = np.inf
             err = est + operators.rounding(self._rep, flat, p, a, E)
         err[np.isinf(p)] = np.inf
         return result(p.reshape(r.shape)), result(err.reshape(r.shape))

@@ -615,6 +615,23 @@ def test_pressure_bound_on_the_axis_of_a_sampled_power_law(n, control):
     assert abs(p[0] - ref[0]) <= err[0] <= 10 * abs(p[0] - ref[0]), err[0] / abs(p[0] - ref[0])
 
 
+def test_pressure_bound_at_the_end_of_the_samples():
+    """A depth of 1 - 1e-9 of g(r_max) for f = r^1.5 on 21 samples: the contact reaches the
+    last sample, and the third resolution of the pressure's bound (every fourth sample)
+    cannot reach that depth (its g(r_max) is 1e-3 lower); the bound then takes it at the
+    coarse contact radius. Against the closed form at the axis (20 % off: h^0.5 on 21
+    samples) and at 0.3, 0.6, 0.9 a: covered (measured 1.7 times at the axis; with the
+    coarse pair alone it was 0.57 times)."""
+    r_s = np.linspace(0, 1, 21)
+    prof = nmdr.Profile.from_samples(r_s, r_s**1.5)
+    dd = float(prof.g(1.0)) * (1 - 1e-9)
+    sol = prof.solve(depth=dd, E_star=E)
+    assert sol._halved()[1] == sol._a_coarse  # the case this test is for
+    r = np.array([0.0, 0.3, 0.6, 0.9]) * sol.contact_radius
+    p, err = sol.pressure(r, return_error=True)
+    assert np.all(err >= np.abs(p - npl.pressure(r, dd, 1.0, 1.5, E)))
+
+
 _ORDER_CASES = [(1.2, 40), (1.3, 400), (1.7, 80), (2.2, 160), (3.5, 40)]
 
 
