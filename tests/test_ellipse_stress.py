@@ -648,7 +648,7 @@ def test_maxima_at_the_surface_centre():
         val, zb, plane = el.max_shear(t, nu_)
         assert zb == 0.0 and plane == "x", (t, nu_)  # sigma_xx (along a): least compressive
         assert abs(val - (sx - sz) / 2) < 1e-15, (t, nu_)
-    for t, nu_ in ((0.5, -0.5), (0.1, 0.0), (1e-3, 0.1)):
+    for t, nu_ in ((0.5, -0.5), (0.1, 0.0), (0.1, 0.1), (1e-3, 0.1)):
         sx, sy, sz = _centre(t, nu_)
         vm, zvm = el.max_von_mises(t, nu_)
         assert zvm == 0.0, (t, nu_)
@@ -682,3 +682,28 @@ def test_circle_just_beside_the_edge_near_the_surface():
     ref_all = (h[..., 0, 0], h[..., 1, 1], h[..., 2, 2], h[..., 0, 1], h[..., 0, 2], h[..., 1, 2])
     for got, ref in zip(s[:6], ref_all, strict=True):
         assert np.max(np.abs(got - ref)) < 2e-13
+
+
+def test_orthogonal_shear_maximum_of_the_circle_is_the_exact_one():
+    """b/a = 1: both planes' maxima are Huber's |tau_rz| maximum, whose value and place are
+    derived exactly (numeric/stress.py's hertz_max_orthogonal_shear): the value to 1e-14 p0
+    (a flat maximum: Nelder-Mead's 1e-11 in position costs nothing in value), the place to
+    1e-6 relative (measured 1e-7: the value is flat to rounding within ~1e-8 of it)."""
+    v, r, z = stress.hertz_max_orthogonal_shear()
+    out = el.max_orthogonal_shear(1.0)
+    for comp in ("yz", "xz"):
+        got_v, got_r, got_z = out[comp]
+        assert abs(got_v - v) < 1e-14, comp
+        assert abs(got_r - r) < 1e-6 * r and abs(got_z - z) < 1e-6 * z, comp
+
+
+def test_error_is_that_of_each_point():
+    """The reported error has one entry per field point and is that point's own: in one call,
+    a point under a circular contact and one by the edge of a slender one (b/a = 1e-3: the J
+    integrals grow like a/b; 5.4e-12 p0 reported alone at rtol = 1e-10), the first's error
+    stays at the rounding level (16 eps p0 = 3.6e-15 p0 plus what is left of its quadrature),
+    below 1e-14 p0."""
+    s = el.stresses([0.3, 0.99], [0.2, 0.0], [0.3, 1e-6], 1.0, [1.0, 1e-3], 1.0, 0.3,
+                    rtol=1e-10)
+    assert s.error.shape == (2,)
+    assert s.error[0] < 1e-14 < s.error[1]
