@@ -6,6 +6,7 @@ field (numeric/line_stress.py) as b/a -> 0; harmonicity of H1 (J_xx + J_yy = 2 e
 30-digit root finding on the mpmath print of the derived axis expressions.
 """
 
+import re
 from functools import cache
 from pathlib import Path
 
@@ -578,3 +579,131 @@ def test_axis_stresses_in_si_units_by_polar_superposition():
         ref = superposed_fast(nu_, 1.0, b / a, 0.0, 0.0, zz / a)
         for g, comp in zip(got, ("xx", "yy", "zz"), strict=True):
             assert abs(float(g[i]) - p0 * ref[comp]) < 1e-14 * p0, (zz, comp, g[i], ref[comp])
+
+
+def test_semi_axes_refusal_names_the_element_that_is_too_long():
+    """b > a is refused naming the offending pair of a broadcast (2, 3) grid, not its first
+    element: a = [[1], [1.5]], b = [0.5, 1.2, 0.3] has one b > a, at (0, 1)."""
+    msg = (r"^b = 1\.2 m > a = 1 m: the semi-axis b \(along y\) must not exceed a \(along x\); "
+           r"swap x and y$")
+    with pytest.raises(ValueError, match=msg):
+        el.stresses(0.0, 0.0, 1.0, [[1.0], [1.5]], [0.5, 1.2, 0.3], 1.0, 0.3)
+    with pytest.raises(ValueError, match=msg):
+        el.axis_stresses(1.0, [[1.0], [1.5]], [0.5, 1.2, 0.3], 1.0, 0.3)
+
+
+def test_rtol_range_is_closed_and_named():
+    """rtol in [1e-14, 1e-2], both ends accepted (and giving the same stresses to the coarser
+    one's reported error), anything else refused naming rtol, its value and the range."""
+    fine = el.stresses(0.3, 0.1, 0.2, 1.0, 0.5, 1.0, 0.3, rtol=1e-14)
+    coarse = el.stresses(0.3, 0.1, 0.2, 1.0, 0.5, 1.0, 0.3, rtol=1e-2)
+    for f, c in zip(fine[:6], coarse[:6], strict=True):
+        assert abs(f - c) <= coarse.error
+    for bad in (0.05, 1e-15):
+        with pytest.raises(ValueError, match=rf"^rtol = {bad!r} is out of range; valid: "
+                                             r"1e-14 <= rtol <= 0\.01$"):
+            el.stresses(0.3, 0.1, 0.2, 1.0, 0.5, 1.0, 0.3, rtol=bad)
+
+
+def test_ratio_and_nu_of_the_maxima_are_named():
+    """max_shear, max_von_mises, max_orthogonal_shear refuse b/a outside (0, 1] and nu outside
+    (-1, 1/2], naming the input, its value and the range; b/a = 1 is the circle."""
+    ratio = r"^b_over_a = {} is out of range; valid: 0\.0 < b_over_a <= 1\.0$"
+    for f, args in ((el.max_shear, (0.3,)), (el.max_von_mises, (0.3,)),
+                    (el.max_orthogonal_shear, ())):
+        for bad in (0.0, 1.5):
+            with pytest.raises(ValueError, match=ratio.format(re.escape(repr(bad)))):
+                f(bad, *args)
+    for f in (el.max_shear, el.max_von_mises):
+        with pytest.raises(ValueError,
+                           match=r"^nu = 0\.7 is out of range; valid: -1 < nu <= 0\.5$"):
+            f(0.5, 0.7)
+    assert el.max_shear(1.0, 0.3)[2] == "y"  # the circle: both planes, the first named
+
+
+def test_no_warning_beside_a_slender_contact():
+    """Beside a contact with b/a = 1e-8 (the surface quadratic's branch not taken divides
+    0/0 or by 0 once b^2 is below a^2's rounding): no warning (pytest turns warnings into
+    errors), finite stresses; far beside it, at 2 a, they are the line contact's decay, of
+    order (b/a) p0 -- here below 1e-7 p0."""
+    t = 1e-8
+    s = el.stresses([2.0, 1.0, 2.0], [0.0, 0.0, 0.0], [0.1, 1e-3, 0.0], 1.0, t, 1.0, 0.3)
+    for v in s:
+        assert np.all(np.isfinite(v))
+    assert np.max(np.abs(np.array(s[:6])[:, 0])) < 1e-7
+
+
+def _centre(t, nu_):
+    """sigma_xx, sigma_yy, sigma_zz / p0 at the centre of the contact's surface (Johnson,
+    Contact Mechanics, 1985, section 3.5: -2 nu - (1 - 2 nu) b/(a + b), the same with a, -1)."""
+    return (-2 * nu_ - (1 - 2 * nu_) * t / (1 + t), -2 * nu_ - (1 - 2 * nu_) / (1 + t), -1.0)
+
+
+def test_maxima_at_the_surface_centre():
+    """For small or negative nu the largest tau_1 and sigma_vM on the axis are at the surface
+    centre (z = 0), equal to Johnson's centre stresses (another formula: a printed closed
+    form); to 1e-15 p0, a few roundings."""
+    for t, nu_ in ((0.5, -0.5), (0.1, -0.5), (1e-3, 0.0)):
+        sx, _, sz = _centre(t, nu_)
+        val, zb, plane = el.max_shear(t, nu_)
+        assert zb == 0.0 and plane == "x", (t, nu_)  # sigma_xx (along a): least compressive
+        assert abs(val - (sx - sz) / 2) < 1e-15, (t, nu_)
+    for t, nu_ in ((0.5, -0.5), (0.1, 0.0), (0.1, 0.1), (1e-3, 0.1)):
+        sx, sy, sz = _centre(t, nu_)
+        vm, zvm = el.max_von_mises(t, nu_)
+        assert zvm == 0.0, (t, nu_)
+        ref = np.sqrt(((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) / 2)
+        assert abs(vm - ref) < 1e-15, (t, nu_)
+
+
+@pytest.mark.parametrize(("t", "nu_"), [(0.5, 0.0), (0.1, 0.1)])
+def test_max_shear_in_the_long_axis_plane(t, nu_):
+    """For small nu the largest tau_1 below the surface is (sigma_xx - sigma_zz)/2, plane
+    "x": the value and depth against 40-digit root finding on the derived forms (tolerances
+    as test_axis_maxima_at_30_digits), and the other plane's shear is lower at every depth."""
+    val, zb, plane = el.max_shear(t, nu_)
+    assert plane == "x" and zb > 0
+    zr, vr = _mp_peak("shear_x", t, nu_, zb * t)
+    assert abs(zb - float(zr)) < 1e-12 * float(zr) and abs(val - float(vr)) < 1e-14
+    z = np.geomspace(1e-3, 20.0, 400) * t  # the y plane's shear on the axis: all lower
+    _, syy, szz = el.axis_stresses(z, 1.0, t, 1.0, nu_)
+    assert np.max(syy - szz) / 2 < val
+
+
+def test_circle_just_beside_the_edge_near_the_surface():
+    """Just outside the contact and 1e-6 a below the surface, where lam - w1 (q) is ~1e-12 a^2
+    and must be solved for without cancellation: the circle against Huber's closed form
+    (numeric/stress.py), to 2e-13 p0 as test_circle_reproduces_huber; a q taken as lam - w1
+    would be off by ~2e-12 p0 here."""
+    phi = np.linspace(0.1, 1.4, 5)
+    X, Y, Z = 1.237 * np.cos(phi), 1.237 * np.sin(phi), np.full(5, 1e-6)
+    s = el.stresses(X, Y, Z, 1.0, 1.0, 1.0, 0.3, rtol=1e-13)
+    h = stress.hertz_stress(X, Y, Z, 1.0, 1.0, 0.3)
+    ref_all = (h[..., 0, 0], h[..., 1, 1], h[..., 2, 2], h[..., 0, 1], h[..., 0, 2], h[..., 1, 2])
+    for got, ref in zip(s[:6], ref_all, strict=True):
+        assert np.max(np.abs(got - ref)) < 2e-13
+
+
+def test_orthogonal_shear_maximum_of_the_circle_is_the_exact_one():
+    """b/a = 1: both planes' maxima are Huber's |tau_rz| maximum, whose value and place are
+    derived exactly (numeric/stress.py's hertz_max_orthogonal_shear): the value to 1e-14 p0
+    (a flat maximum: Nelder-Mead's 1e-11 in position costs nothing in value), the place to
+    1e-6 relative (measured 1e-7: the value is flat to rounding within ~1e-8 of it)."""
+    v, r, z = stress.hertz_max_orthogonal_shear()
+    out = el.max_orthogonal_shear(1.0)
+    for comp in ("yz", "xz"):
+        got_v, got_r, got_z = out[comp]
+        assert abs(got_v - v) < 1e-14, comp
+        assert abs(got_r - r) < 1e-6 * r and abs(got_z - z) < 1e-6 * z, comp
+
+
+def test_error_is_that_of_each_point():
+    """The reported error has one entry per field point and is that point's own: in one call,
+    a point under a circular contact and one by the edge of a slender one (b/a = 1e-3: the J
+    integrals grow like a/b; 5.4e-12 p0 reported alone at rtol = 1e-10), the first's error
+    stays at the rounding level (16 eps p0 = 3.6e-15 p0 plus what is left of its quadrature),
+    below 1e-14 p0."""
+    s = el.stresses([0.3, 0.99], [0.2, 0.0], [0.3, 1e-6], 1.0, [1.0, 1e-3], 1.0, 0.3,
+                    rtol=1e-10)
+    assert s.error.shape == (2,)
+    assert s.error[0] < 1e-14 < s.error[1]
