@@ -160,7 +160,13 @@ _ELLIPSE_STRESS_TESTS = [f"tests/test_ellipse_stress.py::test_{t}" for t in """
     circle_reproduces_huber axis_limits axis_maxima_at_30_digits maxima_lie_on_the_axis
     orthogonal_shear_limits bad_input_is_named
     von_mises_and_principal_shear_by_polar_superposition
-    axis_stresses_in_si_units_by_polar_superposition""".split()]
+    axis_stresses_in_si_units_by_polar_superposition
+    semi_axes_refusal_names_the_element_that_is_too_long rtol_range_is_closed_and_named
+    ratio_and_nu_of_the_maxima_are_named no_warning_beside_a_slender_contact
+    maxima_at_the_surface_centre max_shear_in_the_long_axis_plane
+    circle_just_beside_the_edge_near_the_surface
+    orthogonal_shear_maximum_of_the_circle_is_the_exact_one error_is_that_of_each_point
+    far_points_are_finite_up_to_max_distance_and_named_beyond""".split()]
 
 # the modules of numeric/ but the generated ones, demo.py, plots.py and scene/ (its own page),
 # most physics first, each with the (fast) test files written for it

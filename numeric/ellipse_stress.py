@@ -23,7 +23,8 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._validate import as_float, between, nonnegative, poisson, positive, result
 
 __all__ = ["EllipseStresses", "stresses", "von_mises", "principal_shear", "axis_stresses",
-           "max_shear", "max_von_mises", "max_orthogonal_shear", "DEFAULT_RTOL"]
+           "max_shear", "max_von_mises", "max_orthogonal_shear", "DEFAULT_RTOL",
+           "MAX_DISTANCE"]
 
 #: default relative accuracy (to p0) of the quadrature of the field integrals
 DEFAULT_RTOL = 1e-10
@@ -177,11 +178,25 @@ def _algebraic(g):
             gen.ellipse_stress_tau_yz(*args))
 
 
+#: :func:`stresses` accepts max(|x|, |y|, z) up to this many semi-axes a (the stresses there
+#: are below 1e-40 p0; from about 1e26 a the ellipsoidal coordinate's products overflow, and
+#: from 1e60 a the result was a silent NaN)
+MAX_DISTANCE = 1e20
+
+
 def _inputs(x, y, z, a, b, p0, nu):
     a, b = _semi_axes(a, b)
     arrays = np.broadcast_arrays(as_float("x", x), as_float("y", y), nonnegative("z", z), a, b,
                                  nonnegative("p0", p0), poisson("nu", nu))
-    return [np.array(v, dtype=float) for v in arrays]
+    x, y, z, a, b, p0, nu = [np.array(v, dtype=float) for v in arrays]
+    far = np.maximum(np.maximum(np.abs(x), np.abs(y)), z) > MAX_DISTANCE * a
+    if far.any():
+        i = np.unravel_index(np.argmax(far), far.shape) if far.ndim else ()
+        raise ValueError(f"x = {float(x[i])!r}, y = {float(y[i])!r}, z = {float(z[i])!r}, "
+                         f"a = {float(a[i])!r}: max(|x|, |y|, z) is out of range; valid: "
+                         f"max(|x|, |y|, z) <= {MAX_DISTANCE:g} a (the stresses there are "
+                         "below 1e-40 p0)")
+    return [x, y, z, a, b, p0, nu]
 
 
 def stresses(x, y, z, a, b, p0, nu, rtol=DEFAULT_RTOL):

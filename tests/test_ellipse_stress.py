@@ -707,3 +707,31 @@ def test_error_is_that_of_each_point():
                     rtol=1e-10)
     assert s.error.shape == (2,)
     assert s.error[0] < 1e-14 < s.error[1]
+
+
+def test_far_points_are_finite_up_to_max_distance_and_named_beyond():
+    """Promise 1 far from the contact (triellipse's finding, 2026-11-27): from about 1e26 a the
+    ellipsoidal coordinate's products overflowed (a RuntimeWarning), from 1e60 a the stresses
+    were a silent NaN. Up to MAX_DISTANCE = 1e20 a every component is finite with no warning,
+    for a circle and slender ellipses (b/a down to 1e-8), and it is the point load's field:
+    sigma_zz on the axis is -3 F / (2 pi z^2) with F = (2/3) pi a b p0 (Boussinesq), to
+    rounding (1e-12). Beyond, one ValueError names the point, a and the valid range."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for ba in (1.0, 1e-3, 1e-8):
+            for pt in ((1e20, 0.0, 0.5), (0.0, -1e20, 0.5), (0.3, 0.2, 1e20),
+                       (1e20, 1e20, 1e20)):
+                s = el.stresses(*pt, 1.0, ba, 1e9, 0.3)
+                v = [s.sigma_xx, s.sigma_yy, s.sigma_zz, s.tau_xy, s.tau_xz, s.tau_yz]
+                assert np.all(np.isfinite(v)), (ba, pt)
+        z = 1e20
+        s = el.stresses(0.0, 0.0, z, 1.0, 0.5, 1e9, 0.3)
+        F = 2 / 3 * np.pi * 1.0 * 0.5 * 1e9
+        assert abs(s.sigma_zz / (-3 * F / (2 * np.pi * z**2)) - 1) < 1e-12
+    with pytest.raises(ValueError) as e:
+        el.stresses(np.array([[0.0, 0.0], [0.0, 1.5e20]]), 0.0, 0.5, 1e-3, 5e-4, 1e9, 0.3)
+    assert str(e.value) == ("x = 1.5e+20, y = 0.0, z = 0.5, a = 0.001: max(|x|, |y|, z) is "
+                            "out of range; valid: max(|x|, |y|, z) <= 1e+20 a (the stresses "
+                            "there are below 1e-40 p0)")
