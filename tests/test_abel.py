@@ -1001,3 +1001,20 @@ def test_polynomials_of_every_degree_to_rounding():
     for edge in (None, 1.0):
         _record("abel inverse degree 1", rel_err(abel.pressure_from_line_load(
             q, x[1], edge=edge, degree=1), p, x < 0.95), 2e-15 * N)
+
+
+def test_rows_after_an_all_zero_row_are_transformed():
+    """Rows are grouped by their edge; an all-zero row (no edge: it transforms to zero) must not
+    end the loop over the groups. Rows [0, q, 0, 2 q] of the Hertz line load (a = 30 dx)
+    give [0, p, 0, 2 p] with p the single row's transform, to rounding (the batched product
+    sums the same 64 terms in another order: measured 3e-15 of p's scale, asserted 1e-13).
+    Found by the mutation run of abel.py (2026-11-27): `continue` -> `break` survived."""
+    dx, a = 1.0, 30.0  # the edge 30 dx
+    x = np.arange(64) * dx
+    q = np.maximum(a * a - x * x, 0.0)
+    p = abel.pressure_from_line_load(q, dx)
+    rows = abel.pressure_from_line_load(np.array([0 * q, q, 0 * q, 2 * q]), dx)
+    scale = np.max(np.abs(p))
+    assert np.all(rows[[0, 2]] == 0) and p.any()
+    assert np.max(np.abs(rows[1] - p)) <= 1e-13 * scale
+    assert np.max(np.abs(rows[3] - 2 * p)) <= 2e-13 * scale
