@@ -53,6 +53,7 @@ from __future__ import annotations
 import argparse
 import ast
 import datetime
+import functools
 import json
 import os
 import re
@@ -344,14 +345,20 @@ def function_lines(path: Path) -> dict[str, int]:
     return out
 
 
+@functools.cache
+def _notes_files() -> tuple[dict, ...]:
+    """The parsed notes files, read once a run (find_note asks for them per survivor)."""
+    return tuple(tomllib.loads(path.read_text()) for path in (NOTES, SCENE_NOTES)
+                 if path.exists())
+
+
 def load_notes(kind: str = "equivalent") -> list[dict]:
     """The notes of benchmarks/mutation_notes.toml and mutation_notes_scene.toml: "equivalent"
     (survivors that cannot be killed, with the reason), "since" (survivors of a module's last
     run killed by a test added after it), "text" (a line whose text-only mutants are
     presentation), "killed" (survivors of earlier runs and the tests added) or "finding"
     (defects seen while writing those tests)."""
-    return [n for path in (NOTES, SCENE_NOTES) if path.exists()
-            for n in tomllib.loads(path.read_text()).get(kind, [])]
+    return [n for data in _notes_files() for n in data.get(kind, [])]
 
 
 def text_only(s: Survivor) -> bool:
