@@ -1048,8 +1048,12 @@ def test_profile_g_offset_samples_and_the_unloaded_solution():
         gs, gs_err = sol.g(x, return_error=True)
         assert np.all(np.abs(gs / (2 * x**2) - 1) < 1e-13) and np.all(np.abs(gs - g) <= gs_err)
         for f in (sol.pressure, sol.displacement):
-            v, e = f(np.array([0.0, 0.5]), return_error=True)
-            assert np.all(v == 0.0) and np.all(e == 0.0)
+            out = f(np.array([0.0, 0.5]), return_error=True)
+            assert isinstance(out, tuple) and np.all(out[0] == 0.0) and np.all(out[1] == 0.0)
+    # the largest pressure, a float unless asked for its bound: on the axis, Hertz's
+    # p0 = 2 E* a/(pi R) (R = 1/2), to test_pressure_on_the_axis's rounding (1e-12)
+    pm = nmdr.Profile.from_samples(r, r**2).solve(depth=0.18, E_star=E).max_pressure()
+    assert isinstance(pm, float) and abs(pm / (2 * E * 0.3 / (np.pi * 0.5)) - 1) < 1e-12, pm
 
 
 def test_pressure_bound_is_free_of_units_and_the_cone_is_infinite_at_its_tip():
