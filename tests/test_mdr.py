@@ -956,3 +956,156 @@ def test_linear_spline_kinks_at_every_knot():
     p, p_err = sol.pressure(np.array(radii), return_error=True)
     p_ref = np.array([float(v) for v in p_ref])
     assert np.all(np.abs(p - p_ref) <= np.minimum(p_err, 0.38 * p_ref)), p / p_ref - 1
+
+
+# --- trimdrpy: mdr.py's mutation survivors (2026-11-27 run): messages, validation, unloaded
+
+
+def test_every_refusal_of_the_mdr_api_names_its_input():
+    """Each input of the MDR API refused in one anchored line naming it, its value and what is
+    valid, at both ends of each range (the value just inside is accepted)."""
+    r = np.linspace(0.0, 1.0, 41)
+    prof = nmdr.Profile.from_samples(r, r**2)
+    assert prof.source == "41 samples" and prof.r_max == 1.0
+    sol = prof.solve(depth=0.18, E_star=E)
+    cases = [
+        (lambda: prof.solve(depth=0.1, E_star=E, rtol=0.0),
+         r"^rtol = 0\.0 is out of range; valid: 1e-11 <= rtol <= 0\.01 \(what the numerical "
+         r"MDR can deliver: mdr\.RTOL_RANGE\)$"),
+        (lambda: prof.solve(depth=0.1, E_star=E, rtol="x"), r"^rtol = 'x' is out of range"),
+        (lambda: sol.pressure(-1.0), r"^r = -1\.0 is out of range; valid: 0 <= r < inf$"),
+        (lambda: sol.displacement(-1.0), r"^r = -1\.0 is out of range; valid: 0 <= r < inf$"),
+        (lambda: sol.g("abc"), r"^x = 'abc' is not a number"),
+        (lambda: nmdr.Profile.from_samples(-r, r), r"^r\[1\] = -0\.025 is out of range"),
+        (lambda: nmdr.Profile.from_samples(r, np.r_[r[:-1], np.nan]), r"^f\[40\] = nan is out"),
+        (lambda: nmdr.Profile.from_samples(r, r[:40]),
+         r"^r and f must be 1-D of equal length >= 4; got \(41,\), \(40,\)$"),
+        (lambda: nmdr.Profile.from_samples(r[:3], r[:3]), r"^r and f must be 1-D of equal "),
+        (lambda: nmdr.Profile.from_samples(np.r_[0, 0.5, 0.5, 1], np.r_[0, 1, 1, 2.0]),
+         r"^r must start at 0 and increase strictly$"),
+        (lambda: nmdr.Profile.from_samples(r, r**2, breakpoints=[1.0]),
+         r"^breakpoints \[.*1\.0\)?\] must be samples strictly inside \(0, 1\.0\)$"),
+        (lambda: nmdr.Profile.from_samples(r, r**2, breakpoints=[0.0]),
+         r"^breakpoints \[.*0\.0\)?\] must be samples strictly inside \(0, 1\.0\)$"),
+        (lambda: nmdr.Profile.from_samples(r, r**2, breakpoints=[0.51]),
+         r"^breakpoints \[.*0\.51\)?\] must be samples strictly inside \(0, 1\.0\)$"),
+        (lambda: nmdr.Profile.from_samples(r, r**2, breakpoints=[0.025]),
+         r"^breakpoints \[.*0\.025\)?\] leave one sample interval between r = 0 and 0\.025; "
+         r"valid: at least two intervals \(three samples\) in every piece between 0, the "
+         r"breakpoints and r\[-1\] \(the error bound compares a piece's samples with every "
+         r"other one of them\)$"),
+        (lambda: nmdr.Profile.from_samples(r, r**2, k=2), r"^k = 2 is out of range; valid: 1, "
+         r"3, 5$"),
+        (lambda: nmdr.Profile.from_callable(np.square, -1.0),
+         r"^r_max = -1\.0 is out of range; valid: r_max > 0 and finite$"),
+        (lambda: nmdr.Profile.from_callable(np.square, 1.0, breakpoints=[1.0]),
+         r"^breakpoints \[.*1\.0\)?\] must lie in \(0, 1\.0\)$"),
+        (lambda: nmdr.Profile.from_callable(np.square, 1.0, breakpoints=[0.0]),
+         r"^breakpoints \[.*0\.0\)?\] must lie in \(0, 1\.0\)$"),
+        (lambda: nmdr.Profile.from_callable(np.square, 1.0, n=3),
+         r"^n = 3 is out of range; valid: an integer 4 <= n <= n_max = 8192$"),
+        (lambda: nmdr.Profile.from_callable(np.square, 1.0, n=4.0), r"^n = 4\.0 is out of range"),
+        (lambda: nmdr.Profile.from_callable(np.square, 1.0, n=8193),
+         r"^n = 8193 is out of range; valid: an integer 4 <= n <= n_max = 8192$"),
+        (lambda: prof.solve(depth=0.1, E_star=-1.0),
+         r"^E_star = -1\.0 is out of range; valid: E_star > 0 and finite$"),
+        (lambda: prof.solve(E_star=E), r"^give exactly one of depth= and force=$"),
+        (lambda: prof.solve(force=-1.0, E_star=E),
+         r"^force = -1\.0 is out of range; valid: 0 <= force < inf$"),
+        (lambda: prof.force_depth_curve([-0.1], E_star=E),
+         r"^depths\[0\] = -0\.1 is out of range; valid: 0 <= depths < inf$"),
+        (lambda: prof.force_depth_curve([0.1], E_star=-1.0),
+         r"^E_star = -1\.0 is out of range; valid: E_star > 0 and finite$"),
+    ]
+    for call, message in cases:
+        with pytest.raises(ValueError, match=message):
+            call()
+    # the ends of the ranges are accepted: rtol = RTOL_RANGE[1], n = 4 and n = n_max, a
+    # breakpoint that leaves exactly two intervals before r[-1]
+    assert prof.solve(depth=0.1, E_star=E, rtol=nmdr.RTOL_RANGE[1]).met
+    assert nmdr.Profile.from_callable(np.square, 1.0, n=4).source == (
+        "callable, 4 to 8192 intervals a segment")
+    assert nmdr.Profile.from_callable(np.square, 1.0, n=8, n_max=8).r_max == 1.0
+    nmdr.Profile.from_samples(r, r**2, breakpoints=[float(r[-3])])
+
+
+def test_profile_g_offset_samples_and_the_unloaded_solution():
+    """Profile.g with its bound: f = r^2 + 1 on 41 samples (f(0) subtracted: R = 1/2, the
+    splines exact) gives g = 2 x^2 (5.52) to rounding (1e-13; the bound covers it); the
+    unloaded solution (depth 0, and force 0) keeps E*, rtol and the profile's g, with exact
+    zeros of p and u_z and their bounds."""
+    r = np.linspace(0.0, 1.0, 41)
+    prof = nmdr.Profile.from_samples(r, r**2 + 1.0)
+    x = np.array([0.1, 0.45, 0.8])
+    g, g_err = prof.g(x, return_error=True)
+    assert np.all(np.abs(g / (2 * x**2) - 1) < 1e-13), g / (2 * x**2) - 1
+    # the bound: the coarse tables' interpolation, measured 1.1e-11 ... 2.5e-10 here (the
+    # tables in x, ~1e-10 relative: mdr.NEAR's note)
+    assert np.all(np.abs(g - 2 * x**2) <= g_err) and np.all(g_err < 1e-9), g_err
+    for kw in ({"depth": 0.0}, {"force": 0.0}):
+        sol = prof.solve(E_star=E, **kw)
+        assert sol.unloaded and sol.E_star == E and sol.rtol == nmdr.DEFAULT_RTOL and sol.met
+        gs, gs_err = sol.g(x, return_error=True)
+        assert np.all(np.abs(gs / (2 * x**2) - 1) < 1e-13) and np.all(np.abs(gs - g) <= gs_err)
+        for f in (sol.pressure, sol.displacement):
+            out = f(np.array([0.0, 0.5]), return_error=True)
+            assert isinstance(out, tuple) and np.all(out[0] == 0.0) and np.all(out[1] == 0.0)
+    # the largest pressure, a float unless asked for its bound: on the axis, Hertz's
+    # p0 = 2 E* a/(pi R) (R = 1/2), to test_pressure_on_the_axis's rounding (1e-12)
+    pm = nmdr.Profile.from_samples(r, r**2).solve(depth=0.18, E_star=E).max_pressure()
+    assert isinstance(pm, float) and abs(pm / (2 * E * 0.3 / (np.pi * 0.5)) - 1) < 1e-12, pm
+
+
+def test_pressure_bound_is_free_of_units_and_the_cone_is_infinite_at_its_tip():
+    """Dimensional analysis: scaling the lengths by lam and E* by s scales p and its bound by
+    s and leaves p/E*, its bound/E* and where the bound is +inf unchanged. f = 2 lam (r/lam)^1.2
+    on 41 samples (the stalled case of mdr.STALLED: +inf on the axis) at a = lam/2, for
+    (lam, E*) = (1 m, 1 GPa), (1 um, 1 Pa), (1000 km, 1 mPa): p/E* to 1e-10 (the same
+    quadratures on scaled nodes: rounding), the finite bounds to 1e-3 (each a difference of
+    two quadratures, whose last digits, ~1e-10 of p, are ~3e-5 of the smallest bound here);
+    measured 8e-6. A sampled cone f = r: p = +inf at r = 0 asked alone, and at r = 0.1 the
+    cone's (E*/2) tan(theta) arccosh(a/r) ((5.39), a = 2 d/pi) within its bound."""
+    def scaled(lam, Es):
+        r = np.linspace(0.0, lam, 41)
+        prof = nmdr.Profile.from_samples(r, 2 * lam * (r / lam) ** 1.2)
+        sol = prof.solve(depth=float(prof.g(0.5 * lam)), E_star=Es)
+        rr = sol.contact_radius * np.array([0.0, 0.2, 0.4, 0.6, 0.9, 0.98])
+        p, e = sol.pressure(rr, return_error=True)
+        return p / Es, e / Es
+
+    p0, e0 = scaled(1.0, 1e9)
+    assert np.isinf(e0[0]) and np.all(np.isfinite(e0[1:]))
+    for lam, Es in ((1e-6, 1.0), (1e6, 1e-3)):
+        p, e = scaled(lam, Es)
+        assert np.all(np.abs(p / p0 - 1) < 1e-10), (lam, p / p0 - 1)
+        assert np.array_equal(np.isinf(e), np.isinf(e0)), (lam, e)
+        fin = np.isfinite(e0)
+        assert np.all(np.abs(e[fin] / e0[fin] - 1) < 1e-3), (lam, e[fin] / e0[fin] - 1)
+    r = np.linspace(0.0, 1.0, 41)
+    sol = nmdr.Profile.from_samples(r, r).solve(depth=0.3, E_star=E)
+    assert np.isinf(sol.pressure(np.array([0.0]))[0])
+    a_ = 2 * 0.3 / np.pi
+    p, e = sol.pressure(np.array([0.0, 0.1]), return_error=True)
+    assert np.isinf(p[0]) and np.isinf(e[0])
+    assert abs(p[1] - E / 2 * np.arccosh(a_ / 0.1)) <= e[1], (p, e, E / 2 * np.arccosh(a_ / 0.1))
+
+
+def test_values_and_bounds_keep_the_shape_of_their_input():
+    """g, p and u_z with and without their bounds on a 2-D input of radii come back in its
+    shape, each value the one of the same radius asked for alone (f = r^2 sampled, a = 0.3)."""
+    r = np.linspace(0.0, 1.0, 41)
+    prof = nmdr.Profile.from_samples(r, r**2)
+    sol = prof.solve(depth=0.18, E_star=E)
+    rr = np.array([[0.05, 0.2], [0.29, 0.6]])
+    for f in (prof.g, sol.g, sol.pressure, sol.displacement):
+        v, e = f(rr, return_error=True)
+        assert v.shape == e.shape == rr.shape and f(rr).shape == rr.shape
+        v1, e1 = f(rr[1, :1], return_error=True)
+        assert v1[0] == v[1, 0] and e1[0] == e[1, 0]
+    # f(0) is subtracted: on f = r^2 + 1, u_z = d - r^2 inside the contact (Hertz, (5.60))
+    off = nmdr.Profile.from_samples(r, r**2 + 1.0).solve(depth=0.18, E_star=E)
+    u, ue = off.displacement(np.array([0.0, 0.1]), return_error=True)
+    assert np.all(np.abs(u - (0.18 - np.array([0.0, 0.01]))) <= ue) and np.all(ue < 1e-9), ue
+    # g takes |x|: -inf is refused as an infinite x
+    with pytest.raises(ValueError, match=r"^x = inf is out of range; valid: 0 <= x < inf$"):
+        prof.g(-np.inf)
