@@ -943,3 +943,32 @@ def test_worn_tip_g_and_slope_within_its_flat_and_at_a_large_flat():
             assert_close(g[2], gm(am), 1e-13, "worn g")
             assert_close(s[2], mp.diff(gm, am), 1e-13, "worn g'")
             assert_close(F[2], 2 * Em * (am * gm(am) - mp.quad(gm, [bm, am])), 1e-13, "worn F0")
+
+
+def test_flat_punch_curve_against_kendall_and_its_radius_checked():
+    """The punch's equilibrium: it lets go at d = -Delta l(a) = -sqrt(2 pi a dgamma/E*) with
+    F = -sqrt(8 pi a^3 E* dgamma) (Kendall 1971), typed here at 30 digits (a few roundings:
+    1e-14), for a in [0, radius], both ends included; a outside, NaN or not a number is named.
+    The sphere's a is in [0, R): a = 0 gives d = F = 0, a = R is refused."""
+    E, dg, rad = 3e6, 0.05, 1e-6
+    c = ad.AdhesiveContact(ad.FlatPunch(rad), E, dg)
+    a = np.array([0.25e-6, 0.5e-6, 1e-6])
+    d, F = c.depth(a), c.force(a)
+    with mp.workdps(DPS):
+        Em, gm = mp.mpf(E), mp.mpf(dg)
+        for i, x in enumerate(a):
+            am = mp.mpf(float(x))
+            assert_close(d[i], -mp.sqrt(2 * mp.pi * am * gm / Em), 1e-14, "punch d")
+            assert_close(F[i], -mp.sqrt(8 * mp.pi * am**3 * Em * gm), 1e-14, "punch F")
+    assert c.depth(0.0) == 0 and c.force(0.0) == 0
+    assert c.depth(rad) == d[2] and c.force(rad) == F[2]
+    for bad, msg in ((-1e-9, r"^a = -1e-09 is out of range; valid: 0 <= a <= 1e-06$"),
+                     (2e-6, r"^a = 2e-06 is out of range; valid: 0 <= a <= 1e-06$"),
+                     (float("nan"), r"^a = nan .*not NaN"), ("x", r"^a = 'x' is not a number")):
+        for fn in (c.depth, c.force):
+            with pytest.raises(ValueError, match=msg):
+                fn(bad)
+    s = ad.AdhesiveContact(ad.Sphere(1e-6), E, dg)
+    assert s.depth(0.0) == 0 and s.force(0.0) == 0
+    with pytest.raises(ValueError, match=r"^a = 1e-06 is out of range; valid: 0 <= a < 1e-06$"):
+        s.depth(1e-6)
