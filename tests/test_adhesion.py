@@ -972,3 +972,23 @@ def test_flat_punch_curve_against_kendall_and_its_radius_checked():
     assert s.depth(0.0) == 0 and s.force(0.0) == 0
     with pytest.raises(ValueError, match=r"^a = 1e-06 is out of range; valid: 0 <= a < 1e-06$"):
         s.depth(1e-6)
+
+
+def test_pull_off_without_adhesion_and_the_punch_from_a_given_radius():
+    """Delta gamma = 0: no pull-off, every figure exactly 0 and the method says so. A closed
+    form (paraboloid; the punch, from any a_from too) reports 8 eps and "closed form"; the
+    punch's figures are Kendall's typed at 30 digits (1e-14), its radius exactly."""
+    eps = np.finfo(float).eps
+    p = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.0).pull_off()
+    assert (p.force, p.depth, p.contact_radius, p.rel_error, p.method) == (
+        0.0, 0.0, 0.0, 0.0, "no adhesion")
+    q = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.05).pull_off()
+    assert q.rel_error == 8 * eps and q.method == "closed form"
+    E, dg, rad = 3e6, 0.05, 1e-6
+    for a_from in (None, 0.5e-6):
+        k = ad.AdhesiveContact(ad.FlatPunch(rad), E, dg).pull_off(a_from=a_from)
+        assert k.rel_error == 8 * eps and k.method == "closed form" and k.contact_radius == rad
+        with mp.workdps(DPS):
+            Em, gm, am = mp.mpf(E), mp.mpf(dg), mp.mpf(rad)
+            assert_close(k.force, -mp.sqrt(8 * mp.pi * am**3 * Em * gm), 1e-14, "punch F_c")
+            assert_close(k.depth, -mp.sqrt(2 * mp.pi * am * gm / Em), 1e-14, "punch d_c")
