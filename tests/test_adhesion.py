@@ -874,3 +874,121 @@ def test_worn_tip_within_its_flat_has_no_depth():
     a = 2.2e-8
     assert np.all(w.pressure0([0.0, 1e-8], a, 3e6) > 0)
     assert np.all(w.displacement0_outside([3e-8, 1e-7], a) > 0)
+
+
+# --- triadh: survivors of adhesion.py's mutation run of 2026-11-27 17:22 UTC -------------
+
+
+def test_shape_inputs_named_and_taken_as_floats():
+    """Cone's theta, PowerLaw's c_n and n, FlatPunch's radius: a bad one named with its value
+    and the valid range (theta < pi/2, not 2 pi), and each kept as a Python float under its
+    own name."""
+    for make, msg in ((lambda: ad.Cone(2.0), r"^theta = 2\.0 .*0 < theta < 1\.5707963267948966$"),
+                      (lambda: ad.Cone(-1.0), r"^theta = -1\.0 "),
+                      (lambda: ad.PowerLaw(-1.0, 2.0), r"^c_n = -1\.0 .*c_n > 0"),
+                      (lambda: ad.PowerLaw(1.0, 0.3), r"^n = 0\.3 .*0\.5 < n"),
+                      (lambda: ad.FlatPunch(-1e-6), r"^radius = -1e-06 .*radius > 0")):
+        with pytest.raises(ValueError, match=msg):
+            make()
+    f32 = np.float32
+    c = ad.Cone(f32(0.3))
+    assert type(c.theta) is float and c.theta == float(f32(0.3))
+    p = ad.PowerLaw(f32(2.5), f32(1.5))
+    assert type(p.c_n) is float and p.c_n == float(f32(2.5))
+    assert type(p.n) is float and p.n == 1.5
+    k = ad.FlatPunch(f32(1e-6))
+    assert type(k.radius) is float and k.radius == float(f32(1e-6))
+
+
+def test_cone_g_slope_has_the_shape_of_a():
+    """The cone's g'(a) = (pi/2) tan(theta) (from (5.38)) is the same at every a, returned with
+    a's shape, in float64 (typed here at 30 digits: a few roundings, 1e-15)."""
+    th = 0.3
+    with mp.workdps(DPS):
+        ref = mp.pi / 2 * mp.tan(mp.mpf(th))
+    for a in (np.array([[1e-9, 2e-9, 5e-8]]), np.array([[1, 2, 3]], np.float32)):
+        s = ad.Cone(th).g_slope(a)  # float64 for a in float32 too (not rounded to 1e-7)
+        assert s.shape == (1, 3) and s.dtype == np.float64
+        for v in s.ravel():
+            assert_close(v, ref, 1e-15, "cone g'")
+
+
+def test_flat_punch_height_is_float64_zeros_of_r_shape():
+    """The punch's face f(r) = 0 [m]: float64 zeros of r's shape, for r in integers, bools or
+    float32 too (a float32 r is not kept as float32)."""
+    k = ad.FlatPunch(1e-6)
+    for r in ([1, 2], [True, False], np.array([1e-7, 2e-7], np.float32)):
+        h = k.height(r)
+        assert h.dtype == np.float64 and h.shape == (2,) and np.all(h == 0), r
+
+
+def test_worn_tip_g_and_slope_within_its_flat_and_at_a_large_flat():
+    """Within the flat (a <= b, a = b included) the worn tip has g = g' = F0 = 0: the slope's
+    infinite value belongs to a = b+ only. A flat wider than sqrt(2) m (b = 2 m, R = 10 m)
+    gives no warning (the placeholder radius of the entries a <= b stays above b); above the
+    flat g, g' and F0 against (5.52) worked by hand, g = a sqrt(a^2 - b^2)/R (f' = r/R beyond b),
+    at 30 digits: g' by mpmath's numerical derivative, F0 = 2 E* int_0^a (g(a) - g(x)) dx
+    (5.57) by mpmath's quadrature (a few roundings of the float forms: 1e-13)."""
+    for R, b in ((1e-6, 2e-8), (10.0, 2.0)):
+        w = ad.Worn(R, b)
+        a = np.array([0.5 * b, b, 1.5 * b])
+        g, s, F = w.g(a), w.g_slope(a), w.force0(a, 3e6)
+        assert np.all(g[:2] == 0) and np.all(s[:2] == 0) and np.all(F[:2] == 0), (R, b)
+        with mp.workdps(DPS):
+            Rm, bm, am, Em = mp.mpf(R), mp.mpf(b), mp.mpf(float(a[2])), mp.mpf(3e6)
+
+            def gm(x, Rm=Rm, bm=bm):
+                return x * mp.sqrt(x**2 - bm**2) / Rm if x > bm else mp.mpf(0)
+
+            assert_close(g[2], gm(am), 1e-13, "worn g")
+            assert_close(s[2], mp.diff(gm, am), 1e-13, "worn g'")
+            assert_close(F[2], 2 * Em * (am * gm(am) - mp.quad(gm, [bm, am])), 1e-13, "worn F0")
+
+
+def test_flat_punch_curve_against_kendall_and_its_radius_checked():
+    """The punch's equilibrium: it lets go at d = -Delta l(a) = -sqrt(2 pi a dgamma/E*) with
+    F = -sqrt(8 pi a^3 E* dgamma) (Kendall 1971), typed here at 30 digits (a few roundings:
+    1e-14), for a in [0, radius], both ends included; a outside, NaN or not a number is named.
+    The sphere's a is in [0, R): a = 0 gives d = F = 0, a = R is refused."""
+    E, dg, rad = 3e6, 0.05, 1e-6
+    c = ad.AdhesiveContact(ad.FlatPunch(rad), E, dg)
+    a = np.array([0.25e-6, 0.5e-6, 1e-6])
+    d, F = c.depth(a), c.force(a)
+    with mp.workdps(DPS):
+        Em, gm = mp.mpf(E), mp.mpf(dg)
+        for i, x in enumerate(a):
+            am = mp.mpf(float(x))
+            assert_close(d[i], -mp.sqrt(2 * mp.pi * am * gm / Em), 1e-14, "punch d")
+            assert_close(F[i], -mp.sqrt(8 * mp.pi * am**3 * Em * gm), 1e-14, "punch F")
+    assert c.depth(0.0) == 0 and c.force(0.0) == 0
+    assert c.depth(rad) == d[2] and c.force(rad) == F[2]
+    for bad, msg in ((-1e-9, r"^a = -1e-09 is out of range; valid: 0 <= a <= 1e-06$"),
+                     (2e-6, r"^a = 2e-06 is out of range; valid: 0 <= a <= 1e-06$"),
+                     (float("nan"), r"^a = nan .*not NaN"), ("x", r"^a = 'x' is not a number")):
+        for fn in (c.depth, c.force):
+            with pytest.raises(ValueError, match=msg):
+                fn(bad)
+    s = ad.AdhesiveContact(ad.Sphere(1e-6), E, dg)
+    assert s.depth(0.0) == 0 and s.force(0.0) == 0
+    with pytest.raises(ValueError, match=r"^a = 1e-06 is out of range; valid: 0 <= a < 1e-06$"):
+        s.depth(1e-6)
+
+
+def test_pull_off_without_adhesion_and_the_punch_from_a_given_radius():
+    """Delta gamma = 0: no pull-off, every figure exactly 0 and the method says so. A closed
+    form (paraboloid; the punch, from any a_from too) reports 8 eps and "closed form"; the
+    punch's figures are Kendall's typed at 30 digits (1e-14), its radius exactly."""
+    eps = np.finfo(float).eps
+    p = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.0).pull_off()
+    assert (p.force, p.depth, p.contact_radius, p.rel_error, p.method) == (
+        0.0, 0.0, 0.0, 0.0, "no adhesion")
+    q = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.05).pull_off()
+    assert q.rel_error == 8 * eps and q.method == "closed form"
+    E, dg, rad = 3e6, 0.05, 1e-6
+    for a_from in (None, 0.5e-6):
+        k = ad.AdhesiveContact(ad.FlatPunch(rad), E, dg).pull_off(a_from=a_from)
+        assert k.rel_error == 8 * eps and k.method == "closed form" and k.contact_radius == rad
+        with mp.workdps(DPS):
+            Em, gm, am = mp.mpf(E), mp.mpf(dg), mp.mpf(rad)
+            assert_close(k.force, -mp.sqrt(8 * mp.pi * am**3 * Em * gm), 1e-14, "punch F_c")
+            assert_close(k.depth, -mp.sqrt(2 * mp.pi * am * gm / Em), 1e-14, "punch d_c")
