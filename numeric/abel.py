@@ -136,7 +136,8 @@ def _transform(direction, name, values, dx, edge, degree, kink=None):
     if not np.isfinite(y).all():
         as_float(name, y)  # NaN: its message
         i = tuple(int(k) for k in np.argwhere(~np.isfinite(y))[0])
-        raise ValueError(f"{name}{list(i)} = {y[i]!r} is out of range; valid: finite numbers")
+        raise ValueError(f"{name}{list(i)} = {float(y[i])!r} is out of range; valid: finite "
+                         "numbers")
     h = dx if isinstance(dx, float) and 0 < dx < np.inf else float(positive("dx", dx))
     _check_degree(degree)
     N = y.shape[-1]
@@ -150,7 +151,8 @@ def _transform(direction, name, values, dx, edge, degree, kink=None):
         if beyond.any():
             where = tuple(int(k) for k in np.argwhere(beyond)[0])
             where = where[:-1] + (where[-1] + first_out,)
-            raise ValueError(f"{name}{list(where)} = {y[where]!r} at x = {where[-1] * h!r} "
+            raise ValueError(f"{name}{list(where)} = {float(y[where])!r} at x = "
+                             f"{where[-1] * h!r} "
                              f"is beyond edge = {a!r}; valid: 0 at and beyond the edge")
         if tail.size and np.any(tail):
             y = y.copy()

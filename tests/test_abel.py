@@ -1018,3 +1018,74 @@ def test_rows_after_an_all_zero_row_are_transformed():
     assert np.all(rows[[0, 2]] == 0) and p.any()
     assert np.max(np.abs(rows[1] - p)) <= 1e-13 * scale
     assert np.max(np.abs(rows[3] - 2 * p)) <= 2e-13 * scale
+
+
+def test_every_refusal_of_the_abel_api_is_one_line_naming_its_input():
+    """Each refusal of the four public functions, matched in full (promise 1: the input, its
+    value and what is valid), and the ends of each range accepted: 2 samples (p(0) of a
+    one-piece line load is 2 q_0/(pi dx), Hertz with a = dx), N = 2 for the matrices, degree 1
+    and 9, a kink just inside the last interval. Found by the mutation run of abel.py
+    (2026-11-27): the validation's mutants survived the tests of the numbers; the messages of
+    a non-finite sample once printed np.float64(inf)."""
+    q = np.maximum(25 - np.arange(8.0) ** 2, 0)
+    refusals = [
+        (lambda: abel.pressure_from_line_load(q, 1.0, degree=10),
+         "degree = 10 is out of range; valid: an integer 1 <= degree <= 9"),
+        (lambda: abel.pressure_from_line_load(q, 1.0, degree=0),
+         "degree = 0 is out of range; valid: an integer 1 <= degree <= 9"),
+        (lambda: abel.pressure_from_line_load([1.0], 1.0),
+         "q has shape (1,); valid: at least 2 samples along the last axis (x_i = i*dx, "
+         "i = 0..N-1)"),
+        (lambda: abel.line_load_from_pressure([1.0], 1.0),
+         "p has shape (1,); valid: at least 2 samples along the last axis (x_i = i*dx, "
+         "i = 0..N-1)"),
+        (lambda: abel.pressure_from_line_load(np.array([[1.0, 0, 0, 0], [1.0, 0, 0, np.inf]]),
+                                              1.0),
+         "q[1, 3] = inf is out of range; valid: finite numbers"),
+        (lambda: abel.line_load_from_pressure(np.array([1.0, np.nan, 0]), 1.0),
+         "p[1] = nan is out of range; valid: a number, not NaN"),
+        (lambda: abel.pressure_from_line_load(q, np.inf),
+         "dx = inf is out of range; valid: dx > 0 and finite"),
+        (lambda: abel.line_load_from_pressure([1.0, 0], 0),
+         "dx = 0.0 is out of range; valid: dx > 0 and finite"),
+        (lambda: abel.pressure_from_line_load(q, 1.0, edge=np.nan),
+         "edge = nan is out of range; valid: a number, not NaN"),
+        (lambda: abel.pressure_from_line_load(
+            np.array([[3.0, 2, 1, 0, 0, 0], [3.0, 2, 1, 0, 0, 1e-3]]), 0.5, edge=1.5),
+         "q[1, 5] = 0.001 at x = 2.5 is beyond edge = 1.5; valid: 0 at and beyond the edge"),
+        (lambda: abel.pressure_from_line_load(q, 1.0, kink=7.0),
+         "kink = 7.0 is out of range; valid: 0 <= kink < (N-1)*dx = 7.0"),
+        (lambda: abel.pressure_from_line_load(q, 0.5, kink=3.5),
+         "kink = 3.5 is out of range; valid: 0 <= kink < (N-1)*dx = 3.5"),
+        (lambda: abel.pressure_from_line_load(q, 1.0, kink=np.nan),
+         "kink = nan is out of range; valid: a number, not NaN"),
+        (lambda: abel.pressure_matrix(2.5, 1.0, edge=3.0),
+         "N = 2.5 is out of range; valid: an integer N >= 2"),
+        (lambda: abel.pressure_matrix(1, 1.0, edge=3.0),
+         "N = 1 is out of range; valid: an integer N >= 2"),
+        (lambda: abel.line_load_matrix(True, 1.0, edge=3.0),
+         "N = True is out of range; valid: an integer N >= 2"),
+        (lambda: abel.pressure_matrix(8, -1.0, edge=3.0),
+         "dx = -1.0 is out of range; valid: dx > 0 and finite"),
+        (lambda: abel.line_load_matrix(8, 1.0, edge=3.0, degree=10),
+         "degree = 10 is out of range; valid: an integer 1 <= degree <= 9"),
+        (lambda: abel.line_load_matrix(8, 1.0, edge=np.nan),
+         "edge = nan is out of range; valid: a number, not NaN"),
+        (lambda: abel.pressure_matrix(8, 1.0, edge=3.0, kink=3.0),
+         "kink = 3.0 is out of range; valid: 0 <= kink < edge = 3.0"),
+        (lambda: abel.pressure_matrix(8, 1.0, edge=3.5, kink=np.nan),
+         "kink = nan is out of range; valid: a number, not NaN"),
+    ] + [(lambda b=b: abel.pressure_matrix(8, 1.0, edge=3.5, kink=b),
+          f"kink = {b!r} is a grid point, where p is infinite: the matrix cannot hold it; use "
+          "pressure_from_line_load, or a grid without a sample at the kink")
+         for b in (0.0, 2.0)]
+    for call, message in refusals:
+        with pytest.raises(ValueError) as e:
+            call()
+        assert str(e.value) == message
+    p2 = abel.pressure_from_line_load([1.0, 0.0], 1.0)
+    assert abs(p2[0] - 2 / np.pi) <= 4e-16 and p2[1] == 0
+    assert abel.pressure_matrix(2, 1.0, edge=1.0).shape == (2, 2)
+    for degree in (1, 9):
+        assert np.isfinite(abel.pressure_from_line_load(q, 1.0, degree=degree)).all()
+    assert abel.pressure_from_line_load(q, 1.0, kink=6.99).shape == q.shape
