@@ -213,7 +213,8 @@ def stresses(x, y, z, a, b, p0, nu, rtol=DEFAULT_RTOL):
     x, y : float or array_like
         Coordinates on the surface [m] from the centre of the contact, x along a, y along b.
     z : float or array_like
-        Depth [m], z >= 0.
+        Depth [m], z >= 0; max(|x|, |y|, z) <= ``MAX_DISTANCE`` a (1e20 a, where the
+        stresses are below 1e-40 p0; farther points are refused, naming them).
     a, b : float or array_like
         Semi-axes of the contact ellipse [m], a >= b > 0.
     p0 : float or array_like

@@ -164,7 +164,7 @@ class Solution:
     _a_coarse: float = field(repr=False)
     _r_max: float = field(default=0.0, repr=False)  # the profile's, for the third resolution
     _load: float | None = field(default=None, repr=False)  # the force, if solved at one
-    _third: tuple | None = field(default=None, repr=False)  # (Rep, a), made on first use
+    _third: tuple | None = field(default=None, repr=False, compare=False)  # (Rep, a), a cache
 
     @property
     def unloaded(self) -> bool:

@@ -95,7 +95,9 @@ class Rep:
         keep |= np.isin(self.knots, self.edges)
         r = self.knots[keep]
         seg = self.seg_index(r)
-        f = np.array([float(self.segments[j](x)) for j, x in zip(seg, r, strict=True)])
+        f = np.empty(len(r))
+        for j in np.unique(seg):  # each segment's spline at its own knots, at once
+            f[seg == j] = self.segments[j](r[seg == j])
         out = build(r, f, self.edges[1:-1], self.k, None, self.m_theta)
         out.table_nodes = max(8, self.table_nodes // 2)
         return out
