@@ -84,7 +84,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._mdr import operators, solve, tables
 from hertzmdr.numeric._mdr.resolution import Grid, Samples
 from hertzmdr.numeric._mdr.spline import Rep
-from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
+from hertzmdr.numeric._validate import as_float, between, nonnegative, positive, result
 
 __all__ = ["Profile", "Solution", "ForceDepthCurve", "DEFAULT_RTOL", "RTOL_RANGE"]
 
@@ -126,6 +126,13 @@ def _check_rtol(rtol) -> float:
         raise ValueError(f"rtol = {rtol!r} is out of range; valid: {lo:g} <= rtol <= {hi:g} "
                          "(what the numerical MDR can deliver: mdr.RTOL_RANGE)")
     return value
+
+
+def _check_k(k) -> int:
+    """The spline degree k: 1, 3 or 5 (an integer; a bool or a float is refused)."""
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k not in (1, 3, 5):
+        raise ValueError(f"k = {k!r} is out of range; valid: 1, 3, 5")
+    return int(k)
 
 
 @dataclass
@@ -291,7 +298,7 @@ def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     """g(|x|) [m] from the tables of ``fine``; with ``return_error`` also a bound [m]: the
     envelope of the difference from ``coarse`` over half a coarse sample spacing plus
     64 eps |g| of rounding."""
-    x = nonnegative("x", np.abs(as_float("x", x)))
+    x = np.abs(between("x", x, -np.inf, np.inf))  # g is even: any finite x
     flat = x.ravel()
     g = tables.g(fine, flat)
     if not return_error:
@@ -366,19 +373,18 @@ class Profile:
             raise ValueError("r must start at 0 and increase strictly")
         bp = np.asarray(sorted(breakpoints), float)
         if np.any((bp <= 0) | (bp >= r[-1])) or not np.all(np.isin(bp, r)):
-            raise ValueError(f"breakpoints {list(bp)} must be samples strictly inside "
+            raise ValueError(f"breakpoints {bp.tolist()} must be samples strictly inside "
                              f"(0, {r[-1]})")
         ends = np.concatenate([[0], np.searchsorted(r, bp), [len(r) - 1]])
         short = np.flatnonzero(np.diff(ends) < 2)
         if short.size:  # its coarse representation would be its fine one: no error bound
             j = short[0]
-            raise ValueError(f"breakpoints {list(bp)} leave one sample interval between "
+            raise ValueError(f"breakpoints {bp.tolist()} leave one sample interval between "
                              f"r = {r[ends[j]]:.6g} and {r[ends[j + 1]]:.6g}; valid: at least "
                              "two intervals (three samples) in every piece between 0, the "
                              "breakpoints and r[-1] (the error bound compares a piece's samples "
                              "with every other one of them)")
-        if not np.isin(k, (1, 3, 5)):
-            raise ValueError(f"k = {k} is out of range; valid: 1, 3, 5")
+        k = _check_k(k)
         return cls(Samples(r, f - f[0], bp, k, smoothing), float(r[-1]), f"{len(r)} samples")
 
     @classmethod
@@ -389,16 +395,17 @@ class Profile:
 
         Each :meth:`solve` samples the callable on grids of n, 2n, 4n, ... intervals per
         segment (up to ``n_max``; each grid is kept for later solves) until the error
-        estimate meets its ``rtol``; ``breakpoints`` are radii [m] of kinks.
+        estimate meets its ``rtol``; ``breakpoints`` are radii [m] of kinks; ``k`` is the
+        spline degree (1, 3 or 5, as :meth:`from_samples`).
         """
         r_max = float(positive("r_max", r_max))
         bp = np.asarray(sorted(breakpoints), float)
         if np.any((bp <= 0) | (bp >= r_max)):
-            raise ValueError(f"breakpoints {list(bp)} must lie in (0, {r_max})")
+            raise ValueError(f"breakpoints {bp.tolist()} must lie in (0, {r_max})")
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 4 <= n <= n_max:
             raise ValueError(f"n = {n!r} is out of range; valid: an integer 4 <= n <= n_max = "
                              f"{n_max}")
-        grid = Grid(f, r_max, bp, int(n), k, int(n_max))
+        grid = Grid(f, r_max, bp, int(n), _check_k(k), int(n_max))
         grid.pair(0)  # sample now: a callable that fails should fail here
         return cls(grid, r_max, f"callable, {n} to {n_max} intervals a segment")
 
