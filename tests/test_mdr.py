@@ -1165,3 +1165,31 @@ def test_callable_profile_from_its_first_grid_to_n_max():
     with pytest.raises(ValueError, match=r"^breakpoints \[0\.5\] must be samples strictly "):
         nmdr.Profile.from_samples(np.linspace(0.0, 1.0, 4), np.linspace(0.0, 1.0, 4),
                                   breakpoints=[0.5])
+
+
+@pytest.mark.parametrize("lam", [1.0, 1e-6, 1e6])
+def test_g_and_displacement_bounds_cover_and_stay_tight_at_every_scale(lam):
+    """f = 2 lam (r/lam)^2.5 on 201 samples at a = lam/2, for lengths of 1 m, 1 um and
+    1000 km: the bounds of g (Solution.g) and u_z (Solution.displacement, inside and outside
+    the contact) cover the closed forms' errors (g = kappa 2 lam (x/lam)^2.5 (5.52); u = d -
+    f(r) inside, powerlaw.surface_displacement outside (5.60)) and stay below 1e-6 of lam
+    (g) and of d (u_z): measured at most 1.1e-7 lam and 2.4e-7 d (both at the axis, where
+    the envelope looks half a coarse spacing out), else 2e-11 ... 4e-10. Each bound is a
+    length: a term divided by d or by |g| instead of multiplied would grow as 1/lam^2."""
+    n = 2.5
+    kappa = float(npl.kappa(n))
+    r = np.linspace(0.0, lam, 201)
+    prof = nmdr.Profile.from_samples(r, 2 * lam * (r / lam) ** n)
+    dd = kappa * 2 * lam * 0.5**n
+    sol = prof.solve(depth=dd, E_star=E)
+    a_ = sol.contact_radius
+    x = np.array([0.0, 0.05, 0.3, 0.61, 1.0]) * a_
+    g, g_err = sol.g(x, return_error=True)
+    assert np.all(np.abs(g - kappa * 2 * lam * (x / lam) ** n) <= g_err), g_err
+    assert np.all(g_err < 1e-6 * lam), g_err / lam
+    ro = np.array([0.0, 0.2, 0.8, 1.0, 1.3, 3.0]) * a_
+    u, u_err = sol.displacement(ro, return_error=True)
+    ref = np.where(ro <= a_, dd - 2 * lam * (ro / lam) ** n,
+                   npl.surface_displacement(ro, dd, 2 * lam ** (1 - n), n))
+    assert np.all(np.abs(u - ref) <= u_err), (np.abs(u - ref), u_err)
+    assert np.all(u_err < 1e-6 * dd), u_err / dd
