@@ -1251,3 +1251,46 @@ def test_pressure_is_the_same_with_and_without_its_bound():
     p, err = sol.pressure(rr, return_error=True)
     assert np.array_equal(sol.pressure(rr), p)
     assert np.all(np.abs(p - npl.pressure(rr, dd, 2.0, n, E)) <= err), err
+
+
+def test_sampled_profile_refines_its_quadrature_only_while_that_halves_the_bound():
+    """A sampled profile's splines cannot be refined; its quadrature goes to the next level
+    (resolution.QUADRATURE_LEVELS) only while that at least halves the bound, else the last
+    level is kept (Profile.solve, _at_depths). f = 2 r^n, a = 1/2, rtol = RTOL_RANGE[0]:
+    2 r^2.5 on 201 samples under force control, level 1 lowers the bound 1.8 times (9.7e-11
+    to 5.4e-11, measured): not enough, level 0 is kept (8 Gauss points a panel); on 2001
+    samples 19 times, to 1.8e-12: rtol met; 2 r^1.5 on 401 samples, a curve: 1.003 times,
+    level 0 kept. Each kept bound covers the closed forms' errors (measured at most 0.09 of
+    it)."""
+    def case(n, N):
+        r = np.linspace(0.0, 1.0, N + 1)
+        dd = float(npl.kappa(n)) * 2 * 0.5**n
+        return nmdr.Profile.from_samples(r, 2 * r**n), dd, float(npl.force(dd, 2.0, n, E))
+
+    lo = nmdr.RTOL_RANGE[0]
+    prof, dd, F = case(2.5, 200)
+    s = prof.solve(force=F, E_star=E, rtol=lo)
+    assert s.why_not_met == ("a sampled profile cannot be refined past its 201 samples; its "
+                             f"estimate is {s.rel_error:.1e} with 8 Gauss points a panel")
+    assert s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
+    prof, dd, F = case(2.5, 2000)
+    s = prof.solve(force=F, E_star=E, rtol=lo)
+    assert s.met and s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
+    prof, dd, F = case(1.5, 400)
+    c = prof.force_depth_curve([dd], E_star=E, rtol=lo)
+    assert c.why_not_met == ["a sampled profile cannot be refined past its 401 samples; its "
+                             f"estimate is {c.rel_error[0]:.1e} with 8 Gauss points a panel"]
+    assert c.rel_error[0] >= abs(c.force[0] / F - 1)
+
+
+def test_smoothing_fits_a_spline_through_the_samples():
+    """smoothing= is used: with a heavy smoothing (lam = 1e6; scipy's make_smoothing_spline
+    tends to the least-squares line as lam grows) samples of r^2 on 41 points become the
+    line of slope beta (np.polyfit: 1 to rounding), whose g is beta pi x / 2 (5.52):
+    measured 2.5e-5 off (the O(1/lam) curvature left), asserted to 1e-4; interpolated, g
+    would be 2 x^2."""
+    r = np.linspace(0.0, 1.0, 41)
+    beta = np.polyfit(r, r**2, 1)[0]
+    x = np.array([0.1, 0.5, 0.9])
+    g = nmdr.Profile.from_samples(r, r**2, smoothing=1e6).g(x)
+    assert np.all(np.abs(g / (beta * np.pi / 2 * x) - 1) < 1e-4), g / (beta * np.pi / 2 * x) - 1
