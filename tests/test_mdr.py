@@ -1260,8 +1260,8 @@ def test_sampled_profile_refines_its_quadrature_only_while_that_halves_the_bound
     2 r^2.5 on 201 samples under force control, level 1 lowers the bound 1.8 times (9.7e-11
     to 5.4e-11, measured): not enough, level 0 is kept (8 Gauss points a panel); on 2001
     samples 19 times, to 1.8e-12: rtol met; 2 r^1.5 on 401 samples, a curve: 1.003 times,
-    level 0 kept. Each kept bound covers the closed forms' errors (measured at most 0.09 of
-    it)."""
+    level 0 kept; and two cases of 2 ... 3 times. Each kept bound covers the closed forms'
+    errors (measured at most 0.09 of it)."""
     def case(n, N):
         r = np.linspace(0.0, 1.0, N + 1)
         dd = float(npl.kappa(n)) * 2 * 0.5**n
@@ -1281,6 +1281,16 @@ def test_sampled_profile_refines_its_quadrature_only_while_that_halves_the_bound
     assert c.why_not_met == ["a sampled profile cannot be refined past its 401 samples; its "
                              f"estimate is {c.rel_error[0]:.1e} with 8 Gauss points a panel"]
     assert c.rel_error[0] >= abs(c.force[0] / F - 1)
+    # between 2 and 3 times: 2 r^1.5 on 551 samples under force control (2.6, measured),
+    # level 1 kept; 2 r^3.5 on 151 samples, a curve (2.8): level 1 kept and rtol met
+    prof, dd, F = case(1.5, 550)
+    s = prof.solve(force=F, E_star=E, rtol=lo)
+    assert s.why_not_met == ("a sampled profile cannot be refined past its 551 samples; its "
+                             f"estimate is {s.rel_error:.1e} with 12 Gauss points a panel")
+    assert s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
+    prof, dd, F = case(3.5, 150)
+    c = prof.force_depth_curve([dd], E_star=E, rtol=lo)
+    assert c.met[0] and c.rel_error[0] >= abs(c.force[0] / F - 1)
 
 
 def test_smoothing_fits_a_spline_through_the_samples():
