@@ -55,10 +55,12 @@ Method (all lengths in m, pressures in Pa, forces in N):
   shows the pair converging at an order below 1 (the splines near a singular f'', as f ~
   r^1.5 at the axis: h^0.5), the difference is divided by (rho - 1), rho the ratio of the
   two differences (Richardson); where they neither shrink nor change sign (above ``STALLED``
-  of the mean pressure), p has not converged and the bound is +inf. ``rtol`` has one
+  of the mean pressure), p has not converged and the bound is +inf. Within rel_error a of
+  the edge it adds p(a - 2 rel_error a): the true p ~ sqrt(a_true - r) may be nonzero
+  where every resolution's radius stops short of a_true and gives 0. ``rtol`` has one
   meaning: the target of ``rel_error``, in ``RTOL_RANGE`` (default ``DEFAULT_RTOL``). A
   callable's grid is doubled until the bound meets it; a sampled profile's quadrature is
-  refined while that lowers the bound (its splines cannot be refined). ``Solution.met``
+  refined while that at least halves the bound (its splines cannot be refined). ``Solution.met``
   says whether it was met and ``why_not_met`` why not.
 
 Layout: this module is the public face (``Profile``, ``Solution``, ``ForceDepthCurve``, the
