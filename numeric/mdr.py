@@ -48,8 +48,11 @@ Method (all lengths in m, pressures in Pa, forces in N):
   differences, an upper estimate of the error of the coarse solution (so a conservative bound
   for the returned, fine one), and (2) the envelope of the differences of g and of its
   integral on radii within two coarse sample spacings of a, put through the linearized
-  (5.55) and (5.57) (the differences at a alone can vanish by accident), plus a rounding
-  floor (64 + 4 N) eps (the spline's derivative loses about log10(N) digits). The pressure's
+  (5.55) and (5.57) (the differences at a alone can vanish by accident), plus, for a
+  smoothed profile, its own error, which both resolutions share (eps, the largest residual
+  of the smoothing inside the contact: |dF| <= 2 E* a eps by the comparison principle,
+  ``solve.smoothing``), plus a rounding floor (64 + 4 N) eps (the spline's derivative loses
+  about log10(N) digits). The pressure's
   bound (``return_error=True``) adds the Abel integral of |q - q_coarse| and a rounding bound
   (a kink term's parameter (r/b)^2 near 1); where a third resolution (half the coarse one)
   shows the pair converging at an order below 1 (the splines near a singular f'', as f ~
@@ -310,8 +313,9 @@ class Solution:
 
 def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     """g(|x|) [m] from the tables of ``fine``; with ``return_error`` also a bound [m]: the
-    envelope of the difference from ``coarse`` over half a coarse sample spacing plus
-    64 eps |g| of rounding."""
+    envelope of the difference from ``coarse`` over half a coarse sample spacing, twice a
+    smoothed profile's own error on [0, x] (``Rep.smoothing_error``; ``solve.smoothing``
+    says why twice) and 64 eps |g| of rounding."""
     x = np.abs(between("x", x, -np.inf, np.inf))  # g is even: any finite x
     flat = x.ravel()
     g = tables.g(fine, flat)
@@ -321,7 +325,8 @@ def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     def diff(xx):
         return tables.g(fine, xx) - tables.g(coarse, xx)
 
-    err = operators.envelope(diff, flat, coarse.knots) + 64 * np.finfo(float).eps * np.abs(g)
+    err = (operators.envelope(diff, flat, coarse.knots) + 2 * fine.smoothing_error(flat)
+           + 64 * np.finfo(float).eps * np.abs(g))
     return result(g.reshape(x.shape)), result(err.reshape(x.shape))
 
 
