@@ -629,7 +629,7 @@ def _series(name, value, n_steps=None):
     bad = ~np.isfinite(arr)
     if bad.any():
         i = int(np.argmax(bad))
-        raise ValueError(f"{name}[{i}] = {arr[i]!r} is out of range; valid: finite")
+        raise ValueError(f"{name}[{i}] = {float(arr[i])!r} is out of range; valid: finite")
     return arr
 
 
@@ -813,7 +813,7 @@ def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=
     for name, arr in (("depth", dep), ("normal_force", frc)):
         if arr is not None and np.any(arr < 0):
             i = int(np.argmax(arr < 0))
-            raise ValueError(f"{name}[{i}] = {arr[i]!r} is out of range; valid: >= 0")
+            raise ValueError(f"{name}[{i}] = {float(arr[i])!r} is out of range; valid: >= 0")
     steps = (dep if dep is not None else frc).size
     uc = None if u_x is None else _series("u_x", u_x, steps)
     Fc = None if F_x is None else _series("F_x", F_x, steps)

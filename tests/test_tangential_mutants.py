@@ -1,0 +1,243 @@
+"""Tangential contact: the cases the mutation run of numeric/tangential.py found untested
+(issue 11): every refusal as one anchored line, inputs taken as floats, mu = 0 and mu = 1,
+the flat punch's closed forms, the Masing loop point by point, the history solver's grid
+(trapezoid weights, contact and stick edges, scale invariance) and its force control against
+a bisection of the springs' sum."""
+
+import re
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from hertzmdr.numeric import hertz
+from hertzmdr.numeric import tangential as tg
+
+E_STEEL, NU = 210e9, 0.3
+G_STEEL = E_STEEL / (2 * (1 + NU))
+E_STAR = E_STEEL / (2 * (1 - NU**2))  # two steel bodies (5.26)
+G_STAR = 2 * G_STEEL / (2 - NU)  # 1/G* = 2 (2 - nu)/(4 G), Mindlin's two equal bodies
+R, F_N, MU = 0.01, 100.0, 0.6
+A = float(hertz.contact_radius_from_force(F_N, R, E_STAR))
+EPS = np.finfo(float).eps
+
+
+def _sphere(mu=MU, prof=None):
+    return tg.Contact(prof or tg.Paraboloid(R), A, E_STAR, G_STAR, mu)
+
+
+def _refused(call, message):
+    """``call`` raises one ValueError whose message is exactly ``message``."""
+    with pytest.raises(ValueError) as err:
+        call()
+    assert str(err.value) == message, str(err.value)
+    assert "\n" not in str(err.value)
+
+
+def _hist(**kw):
+    args = dict(E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=2 * A, depth=[A * A / R],
+                u_x=[0.0], n_grid=100)
+    args.update(kw)
+    return tg.history(kw.pop("g", tg.Paraboloid(R)), **{k: v for k, v in args.items()
+                                                          if k != "g"})
+
+
+def test_every_refusal_of_the_tangential_api_is_one_anchored_line():
+    """Each check names its input, the value and what is valid, exactly (case included)."""
+    _refused(lambda: tg.effective_modulus(-1.0, NU, G_STEEL, NU),
+             "G1 = -1.0 is out of range; valid: G1 > 0")
+    _refused(lambda: tg.effective_modulus(G_STEEL, NU, 0.0, NU),
+             "G2 = 0.0 is out of range; valid: G2 > 0")
+    _refused(lambda: tg.effective_modulus(np.inf, NU, np.inf, NU),
+             "G1 = G2 = inf: two rigid bodies have no tangential compliance; valid: at least "
+             "one finite shear modulus")
+    _refused(lambda: tg.effective_modulus(G_STEEL, 0.7, G_STEEL, NU),
+             "nu1 = 0.7 is out of range; valid: -1 < nu1 <= 0.5")
+    _refused(lambda: tg.effective_modulus(G_STEEL, NU, G_STEEL, -1.0),
+             "nu2 = -1.0 is out of range; valid: -1 < nu2 <= 0.5")
+    _refused(lambda: tg.Paraboloid(-1.0), "R = -1.0 is out of range; valid: R > 0 and finite")
+    _refused(lambda: tg.PowerLaw(0.0, 2.0),
+             "c_n = 0.0 is out of range; valid: c_n > 0 and finite")
+    _refused(lambda: tg.PowerLaw(1.0, -2.0), "n = -2.0 is out of range; valid: n > 0 and finite")
+    _refused(lambda: tg.FlatPunch(-1e-7),
+             "depth = -1e-07 is out of range; valid: depth > 0 and finite")
+    _refused(lambda: tg.Contact("sphere", A, E_STAR, G_STAR, MU),
+             "profile = 'sphere' is not one of ['cone', 'flat_punch', 'paraboloid', "
+             "'power_law'] (tangential.Paraboloid(R=...), Cone(theta=...), PowerLaw(c_n=..., "
+             "n=...), FlatPunch(depth=...)); for any other profile use history()")
+    for i, name in enumerate(("a", "E_star", "G_star")):
+        args = [A, E_STAR, G_STAR, MU]
+        args[i] = -2.0
+        _refused(lambda args=args: tg.Contact(tg.Paraboloid(R), *args),
+                 f"{name} = -2.0 is out of range; valid: {name} > 0 and finite")
+    _refused(lambda: _sphere(-0.1), "mu = -0.1 is out of range; valid: 0 <= mu < inf")
+    ct = _sphere()
+    lim = ct.sliding_force
+    for meth in ("stick_radius", "force"):
+        _refused(lambda meth=meth: getattr(ct, meth)(np.nan),
+                 "u_x = nan is out of range; valid: a number, not NaN")
+    _refused(lambda: ct.traction(-1.0, 1e-9), "r = -1.0 is out of range; valid: 0 <= r < inf")
+    _refused(lambda: ct.traction(0.0, np.nan),
+             "u_x = nan is out of range; valid: a number, not NaN")
+    for meth, name in (("displacement", "F_x"), ("stick_radius_from_force", "F_x"),
+                       ("energy", "F_amp"), ("energy_small", "F_amp"), ("loop", "F_amp")):
+        _refused(lambda meth=meth: getattr(ct, meth)(np.nan),
+                 f"{name} = nan is out of range; valid: a number, not NaN")
+        _refused(lambda meth=meth: getattr(ct, meth)(2 * lim),
+                 f"{name} = {2 * lim!r} exceeds the sliding force mu F_N = {lim!r} N "
+                 f"(mu = {MU}, F_N = {ct.normal_force!r} N); valid: |{name}| <= mu F_N")
+    for bad in (True, 5, 2, 6.0):
+        _refused(lambda bad=bad: ct.loop(0.5 * lim, bad),
+                 f"n_points = {bad!r} is out of range; valid: an even integer >= 4")
+
+    def hist(**kw):
+        return lambda: _hist(**kw)
+
+    for name in ("E_star", "G_star", "x_max"):
+        _refused(hist(**{name: 0.0}), f"{name} = 0.0 is out of range; valid: {name} > 0 and finite")
+    _refused(hist(mu=-1.0), "mu = -1.0 is out of range; valid: 0 <= mu < inf")
+    for bad in (True, 7, 6, 10.0):
+        _refused(hist(n_grid=bad),
+                 f"n_grid = {bad!r} is out of range; valid: an even integer >= 8")
+    _refused(hist(normal_force=[1.0]), "give exactly one of depth= and normal_force=")
+    _refused(hist(depth=None), "give exactly one of depth= and normal_force=")
+    _refused(hist(F_x=[0.0]), "give exactly one of u_x= and F_x=")
+    _refused(hist(depth=[[1e-7]]), "depth must be a 1-D sequence of states; got shape (1, 1)")
+    _refused(hist(depth=None, normal_force=[[1.0]]),
+             "normal_force must be a 1-D sequence of states; got shape (1, 1)")
+    _refused(hist(depth=[0.0, 1e-7, -1e-7], u_x=[0, 0, 0]),
+             "depth[2] = -1e-07 is out of range; valid: >= 0")
+    _refused(hist(depth=None, normal_force=[0.0, -1.0], u_x=[0, 0]),
+             "normal_force[1] = -1.0 is out of range; valid: >= 0")
+    _refused(hist(depth=[0.0, np.inf], u_x=[0, 0]), "depth[1] = inf is out of range; valid: finite")
+    _refused(hist(depth=[0.0, np.nan], u_x=[0, 0]),
+             "depth[1] = nan is out of range; valid: a number, not NaN")
+    _refused(hist(depth=[0.0, 1e-7], u_x=[0.0]), "u_x has 1 states, the normal history has 2")
+    _refused(hist(depth=[0.0, 1e-7], u_x=None, F_x=[0, 0, 0]),
+             "F_x has 3 states, the normal history has 2")
+    _refused(hist(u_x=[np.inf]), "u_x[0] = inf is out of range; valid: finite")
+    _refused(hist(u_x=None, F_x=[-np.inf]), "F_x[0] = -inf is out of range; valid: finite")
+    _refused(hist(g=3.0), "g = 3.0 is neither a callable g(x) [m] nor a profile with a .g method")
+    monotone = "g(x) must be finite and non-decreasing on [0, x_max]"
+    _refused(hist(g=lambda x: 0.0 * x[:-1]), monotone)  # wrong shape, finite, non-decreasing
+    _refused(hist(g=lambda x: np.where(x > A, np.nan, 0.0)), monotone)  # NaN alone
+    _refused(hist(g=lambda x: -x), monotone)  # decreasing alone
+    _refused(hist(depth=[1e-7, 4 * A * A / R + 1e-9], u_x=[0, 0]),
+             f"depth[1] = {4 * A * A / R + 1e-9!r} m reaches beyond x_max = {2 * A!r} m; "
+             "valid: a larger x_max")
+    _refused(hist(depth=None, normal_force=[0.0, 1e9], u_x=[0, 0]),
+             f"normal_force[1] = 1000000000.0 N needs a contact wider than the grid "
+             f"(x_max = {2 * A!r} m); valid: a larger x_max")
+    ok = _hist(depth=[0.0, 2e-7], u_x=[0.0, 1e-9])
+    total = MU * float(ok.normal_force[-1])
+    with pytest.raises(ValueError) as err:
+        _hist(depth=[0.0, 2e-7], u_x=None, F_x=[0.0, 1.01 * total])
+    m = re.fullmatch(r"F_x\[1\] = (\S+) N exceeds the sliding force mu F_N = (\S+) N of that "
+                     r"step; valid: \|F_x\| <= mu F_N", str(err.value))
+    assert m and float(m[1]) == 1.01 * total, str(err.value)
+    assert float(m[2]) == pytest.approx(total, rel=1e-14)  # the springs' sum of mu q_z
+
+
+def test_inputs_are_taken_as_floats():
+    """Profiles and contacts store plain floats; integer radii are squared as floats (an int64
+    x**2 would wrap beyond 9.2e18 silently)."""
+    assert type(tg.Paraboloid(np.array(0.01)).R) is float
+    assert type(tg.Cone(1).theta) is float
+    pl = tg.PowerLaw(np.array(50.0), np.array(2))
+    assert type(pl.c_n) is float and type(pl.n) is float
+    assert type(tg.FlatPunch(np.array(1e-7)).depth) is float
+    assert type(_sphere(np.array(0.6)).mu) is float
+    assert tg.Paraboloid(1.0).g([4_000_000_000]) == 1.6e19  # exact in binary
+
+
+def _cattaneo(u, mu, a=A):
+    """Cattaneo-Mindlin in the MDR's terms (mpmath): F = mu F_N (1 - (1 - u/u*)^(3/2)),
+    u* = mu (E*/G*) d with d = a^2/R (Popov and Hess, the onset of sliding)."""
+    with mp.workdps(30):
+        d = mp.mpf(a) ** 2 / R
+        fn = 4 * mp.mpf(E_STAR) * mp.mpf(a) ** 3 / (3 * R)
+        ustar = mu * mp.mpf(E_STAR) / mp.mpf(G_STAR) * d
+        t = min(abs(mp.mpf(u)) / ustar, 1)
+        return float(mp.sign(u) * mu * fn * (1 - (1 - t) ** mp.mpf(1.5))), float(ustar)
+
+
+def test_mu_one_follows_cattaneo_and_mu_zero_is_zero_in_every_shape():
+    """mu = 1 (not a special case) against Cattaneo; mu = 0: float zeros of the input's shape
+    from every method, also on the cone's axis where the pressure is infinite (0, not NaN)."""
+    one = _sphere(1.0)
+    for frac in (0.1, 0.5, 0.9):
+        ref, ustar = _cattaneo(frac * _cattaneo(0, 1.0)[1], 1.0)
+        # 1e-13: the closed form in float against 30 digits, a few roundings of (1 - u/u*)
+        assert float(one.force(frac * ustar)) == pytest.approx(ref, rel=1e-13)
+        assert float(one.displacement(ref)) == pytest.approx(frac * ustar, rel=1e-12)
+        assert float(one.stick_radius(frac * ustar)) == pytest.approx(
+            A * (1 - frac) ** 0.5, rel=1e-13)
+        assert float(one.stick_radius_from_force(ref)) == pytest.approx(
+            A * (1 - frac) ** 0.5, rel=1e-12)
+    assert float(one.energy(0.5 * one.sliding_force)) > 0
+    assert float(one.energy_small(0.5 * one.sliding_force)) > 0
+    for prof in (tg.Paraboloid(R), tg.Cone(0.1), tg.PowerLaw(300.0, 1.5)):
+        zero = _sphere(0.0, prof)
+        x3 = np.array([0.0, 1e-9, 1e-6])
+        for out in (zero.force(x3), zero.stick_radius(x3), zero.displacement(x3 * 0),
+                    zero.stick_radius_from_force(x3 * 0), zero.energy(x3 * 0),
+                    zero.energy_small(x3 * 0), zero.traction(x3 * 0, 1e-9)):
+            assert out.dtype == float and out.shape == (3,) and np.all(out == 0), (prof, out)
+
+
+def test_flat_punch_closed_forms():
+    """Flat punch: u = F_x (2 - nu)/(4 G a) for two equal bodies (Mindlin's punch compliance
+    (2 - nu)/(8 G a) each), the stick radius is a (no partial slip), nothing dissipated, the
+    traction 0 from the rim on (finite there, where the stick form is singular)."""
+    ct = _sphere(prof=tg.FlatPunch(1e-7))
+    F = np.array([0.0, 0.3, 0.9]) * ct.sliding_force
+    # 1e-15: one division each way
+    assert np.allclose(ct.displacement(F), F * (2 - NU) / (4 * G_STEEL * A), rtol=1e-14, atol=0)
+    c = ct.stick_radius_from_force(F)
+    assert c.shape == (3,) and c.dtype == float and np.all(c == A)
+    assert float(ct.stick_radius_from_force(0.5 * ct.sliding_force)) == A
+    for meth in (ct.energy, ct.energy_small):
+        W = meth(F)
+        assert W.shape == (3,) and W.dtype == float and np.all(W == 0)
+    q = ct.traction(np.array([0.0, A, 2 * A]), 0.5 * ct.slide_onset)
+    assert q[0] > 0 and q[1] == 0 and q[2] == 0
+
+
+def test_traction_is_zero_outside_and_the_slip_value_on_the_axis_at_full_slip():
+    """Outside the contact the traction is 0; once all slides, mu p(r) (Hertz at the centre)."""
+    ct = _sphere()
+    assert np.all(ct.traction(np.array([A, 1.5 * A]), 0.5 * ct.slide_onset) == 0)
+    p0 = 3 * F_N / (2 * np.pi * A * A)  # Hertz's central pressure
+    assert float(ct.traction(0.0, 2 * ct.slide_onset)) == pytest.approx(MU * p0, rel=1e-14)
+    cone = _sphere(prof=tg.Cone(0.1))
+    q = cone.traction(np.array([0.0, 0.5 * A]), 2 * cone.slide_onset)
+    assert q[0] == np.inf and np.isfinite(q[1])
+
+
+def test_force_a_rounding_beyond_the_sliding_force_gives_the_onset():
+    """|F_x| within 4 ulp beyond mu F_N is taken as mu F_N: the onset, not NaN, both signs."""
+    ct = _sphere()
+    lim = ct.sliding_force
+    for sign in (1, -1):
+        F = sign * lim * (1 + 2 * EPS)
+        # the closed form at mu F_N exactly against the onset: a few ulp of rounding
+        assert float(ct.displacement(F)) == pytest.approx(sign * ct.slide_onset, rel=8 * EPS)
+        assert float(ct.stick_radius_from_force(F)) == 0.0
+
+
+def test_loop_point_by_point_against_masing_and_cattaneo():
+    """Every point of the loop: u from u* to -u* and back, F = F_a - 2 F_mono((u* - u)/2)
+    down and its mirror up, F_mono Cattaneo's (mpmath); 1000 points by default, 4 allowed."""
+    ct = _sphere()
+    Fa = 0.7 * ct.sliding_force
+    ustar = float(ct.displacement(Fa))
+    for n, (u, F) in ((1000, ct.loop(Fa)), (4, ct.loop(Fa, 4)), (10, ct.loop(Fa, np.int64(10)))):
+        assert u.shape == F.shape == (n,)
+        down = np.linspace(ustar, -ustar, n // 2)
+        # 1e-15 of u*: u = u* - 2 u* s rounds once or twice
+        assert np.allclose(u, np.concatenate([down, -down]), rtol=0, atol=4 * EPS * ustar)
+        for k in range(n):
+            sign = 1 if k < n // 2 else -1
+            ref = sign * (Fa - 2 * _cattaneo((ustar - sign * u[k]) / 2, MU)[0])
+            # 1e-12 of F_a: the closed forms' rounding near the turning points
+            assert F[k] == pytest.approx(ref, abs=1e-12 * Fa), (n, k)
