@@ -241,3 +241,134 @@ def test_loop_point_by_point_against_masing_and_cattaneo():
             ref = sign * (Fa - 2 * _cattaneo((ustar - sign * u[k]) / 2, MU)[0])
             # 1e-12 of F_a: the closed forms' rounding near the turning points
             assert F[k] == pytest.approx(ref, abs=1e-12 * Fa), (n, k)
+
+
+def _worn(x, b=0.3 * A):
+    """A sphere worn flat to radius b: g = 0 for |x| <= b (a flat piece of g, allowed)."""
+    x = np.abs(np.asarray(x, float))
+    return np.where(x > b, (x - b) * (x + b) / R, 0.0)
+
+
+@pytest.mark.parametrize("g", [tg.Paraboloid(R).g, _worn], ids=["sphere", "worn"])
+def test_history_grid_trapezoid_and_contact_edge(g):
+    """On a coarse grid (8 intervals, the fewest allowed), state by state: the normal force is
+    the trapezoid rule of E* (d - g)+ on the symmetric line [-x_max, x_max] (np.trapezoid),
+    the contact radius the root of the piecewise linear interpolant of g (np.interp), also for
+    no contact, a contact inside the first interval, one in the last and one at x_max; with no
+    contact nothing slides and the stick radius is 0."""
+    X = 2 * A
+    x = np.linspace(0, X, 9)
+    gx = g(x)
+    h = X / 8
+    depths = [0.0, float(g(x[2] + 0.4 * h)) if g is _worn else float(g(0.4 * h)),
+              float(g(x[3] + 0.3 * h)), 0.5 * (gx[-2] + gx[-1]), float(gx[-1])]
+    res = tg.history(g, E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=X, depth=depths,
+                     u_x=[0.0, 1e-12, 2e-12, 3e-12, 4e-12], n_grid=8, estimate_error=False)
+    for k, d in enumerate(depths):
+        q = E_STAR * np.maximum(d - gx, 0.0)
+        # 1e-14: two summations of 9 terms in a different order
+        assert res.normal_force[k] == pytest.approx(2 * np.trapezoid(q, x), rel=1e-14, abs=0)
+        # the worn g is 0 on nodes 0 and 1: a contact (d > 0) reaches beyond node 1
+        first = 1 if g is _worn else 0
+        a = float(np.interp(d, gx[first:], x[first:])) if d > 0 else 0.0
+        assert res.contact_radius[k] == pytest.approx(a, rel=1e-14, abs=0), k
+    assert not res.sliding[0] and res.stick_radius[0] == 0.0
+    assert res.sliding.dtype == bool and res.stuck.dtype == bool
+
+
+def _full_slip_history(mu=MU, scale=1.0, n=200):
+    """Depth-controlled sphere to u* and beyond, back to -u* and beyond; force-controlled copy
+    to +-mu F_N exactly (from the first run's normal force)."""
+    d = A * A / R
+    X = 1.5 * A
+    on = mu * E_STAR * d / G_STAR  # the MDR's onset of sliding mu (E*/G*) d
+    kw = dict(E_star=scale * E_STAR, G_star=scale * G_STAR, mu=mu, x_max=X, n_grid=n)
+    u = [0.0, 0.3 * on, 2 * on, -2 * on, -0.5 * on]
+    res = tg.history(tg.Paraboloid(R), depth=[d] * 5, u_x=u, **kw)
+    total = mu * float(res.normal_force[0])
+    F = [0.0, 0.5 * total, total, -total, 0.2 * total]
+    return res, tg.history(tg.Paraboloid(R), depth=[d] * 5, F_x=F, **kw), on, total
+
+
+def test_history_full_slip_by_displacement_and_by_force():
+    """Sliding: every spring slides, the stick radius is 0, F_x = +-mu F_N; driven by the
+    force +-mu F_N exactly it slides too, at the displacements +-u* of the grid's springs
+    (u* the MDR's onset within the grid's error, second order: (h/a)^2 ~ 6e-5 here)."""
+    res, byF, on, total = _full_slip_history()
+    for r in (res, byF):
+        assert list(r.sliding) == [False, False, True, True, False]
+        assert r.stick_radius[2] == 0.0 and r.stick_radius[3] == 0.0
+        assert r.F_x[2] == pytest.approx(total, rel=1e-13)
+        assert r.F_x[3] == pytest.approx(-total, rel=1e-13)
+    assert byF.u_x[2] == pytest.approx(on, rel=2e-3)
+    assert byF.u_x[3] == pytest.approx(-on, rel=2e-3)
+    assert byF.u_x[2] - byF.u_x[3] == pytest.approx(2 * on, rel=2e-3)
+    # the final state: q_z = E* (d - g)+ on the grid; stuck where |q_x| < mu q_z
+    d = A * A / R
+    assert np.allclose(res.q_z, E_STAR * np.maximum(d - res.x**2 / R, 0), rtol=1e-13, atol=0)
+    assert np.array_equal(res.stuck, (res.q_z > 0) & (np.abs(res.q_x) < MU * res.q_z))
+    assert res.stuck.any() and not res.stuck.all()
+
+
+def test_history_is_invariant_under_the_scale_of_the_moduli():
+    """Linear elasticity with Coulomb friction: multiplying E* and G* by s multiplies every
+    force and energy by s and leaves every length alone (here s = 1e-9: a gel in nN);
+    sub-unit line loads must not be treated as zero. Both drivers, with normal load changes."""
+    s = 1e-9
+    for drive in ("u", "F"):
+        ref, gel = (_full_slip_history(scale=k) for k in (1.0, s))
+        ref, gel = (ref[0], gel[0]) if drive == "u" else (ref[1], gel[1])
+        for name in ("depth", "contact_radius", "u_x", "stick_radius"):
+            # 1e-12: the same arithmetic, scaled; the force drive's root rounds differently
+            assert np.allclose(getattr(gel, name), getattr(ref, name), rtol=1e-9,
+                               atol=1e-12 * A), (drive, name)
+        for name in ("normal_force", "F_x", "dissipated"):
+            assert np.allclose(getattr(gel, name), s * getattr(ref, name), rtol=1e-9,
+                               atol=1e-12 * s * F_N * A), (drive, name)
+        assert np.array_equal(gel.sliding, ref.sliding) and np.array_equal(gel.stuck, ref.stuck)
+    d = A * A / R
+    steps = dict(depth=[0.5 * d, d, d, 1.4 * d, 1.4 * d, 0.7 * d],
+                 u_x=np.array([0.0, 0.2, 0.5, 0.5, 0.9, -0.4]) * MU * E_STAR * d / G_STAR)
+    ref, gel = (tg.history(_worn, E_star=k * E_STAR, G_star=k * G_STAR, mu=MU, x_max=2 * A,
+                           n_grid=100, **steps) for k in (1.0, s))
+    for name in ("contact_radius", "stick_radius", "u_x"):
+        assert np.allclose(getattr(gel, name), getattr(ref, name), rtol=1e-9, atol=0), name
+    for name in ("normal_force", "F_x", "dissipated"):
+        assert np.allclose(getattr(gel, name), s * getattr(ref, name), rtol=1e-9, atol=0), name
+
+
+def test_history_zero_normal_force_states():
+    """F_N = 0: no contact, depth 0, no force, and under force control u_x stays (no spring)."""
+    F = MU * F_N
+    res = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.5 * A,
+                     normal_force=[0.0, F_N, 0.0], F_x=[0.0, 0.5 * F, 0.0], n_grid=100)
+    assert res.depth[0] == res.depth[2] == 0.0
+    assert res.normal_force[0] == res.normal_force[2] == 0.0
+    assert res.u_x[2] == res.u_x[1] > 0 and res.contact_radius[2] == 0.0
+    assert not res.sliding[2] and res.stick_radius[2] == 0.0
+    assert res.x.size == 101
+
+
+def test_history_default_grid_and_the_smallest_one():
+    d = A * A / R
+    res = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.5 * A,
+                     depth=[d], u_x=[0.0], estimate_error=False)
+    assert res.x.size == 1001
+    small = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.5 * A,
+                       depth=[d], u_x=[0.0], n_grid=8, estimate_error=False)
+    assert small.x.size == 9
+
+
+def test_history_tiny_contact_inside_the_first_interval():
+    """A contact narrower than one interval (one spring) sticks at small u (stick radius = the
+    contact radius) and slides beyond its onset (sliding, stick radius 0)."""
+    h = 1.5 * A / 100
+    d = (0.4 * h) ** 2 / R
+    on = MU * E_STAR * d / G_STAR
+    res = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.5 * A,
+                     depth=[d, d, d], u_x=[0.0, 1e-3 * on, 3 * on], n_grid=100,
+                     estimate_error=False)
+    c1 = float(np.interp(d, res.x[:2] ** 2 / R, res.x[:2]))
+    assert res.contact_radius[1] == pytest.approx(c1, rel=1e-14)
+    assert res.stick_radius[1] == res.contact_radius[1] and not res.sliding[1]
+    assert res.sliding[2] and res.stick_radius[2] == 0.0
