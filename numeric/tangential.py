@@ -324,9 +324,6 @@ class FlatPunch:
     def __post_init__(self):
         object.__setattr__(self, "depth", float(positive("depth", self.depth)))
 
-    def g(self, x):
-        return np.zeros_like(np.asarray(x, float))
-
     def normal_force(self, a, E_star):
         return gen.powerlaw_punch_force(E_star, a, self.depth)  # (5.11)
 
@@ -613,6 +610,11 @@ def _traction(x, q_x, a):
 
 
 def _g_callable(g) -> Callable[[np.ndarray], np.ndarray]:
+    if isinstance(g, FlatPunch):  # its g(x) is 0 inside its radius, which it does not hold
+        raise ValueError(f"g = {g!r} holds no radius, and a flat punch's g(x) (0 inside its "
+                         "radius a, a wall beyond) needs it; valid: a callable g(x) [m] with "
+                         "its wall at x = a, or Contact(FlatPunch(...), a=...) for the closed "
+                         "forms")
     if hasattr(g, "g") and callable(g.g):  # a closed-form profile or an mdr.Profile
         return g.g
     if callable(g):

@@ -118,6 +118,11 @@ def test_every_refusal_of_the_tangential_api_is_one_anchored_line():
     _refused(hist(u_x=[np.inf]), "u_x[0] = inf is out of range; valid: finite")
     _refused(hist(u_x=None, F_x=[-np.inf]), "F_x[0] = -inf is out of range; valid: finite")
     _refused(hist(g=3.0), "g = 3.0 is neither a callable g(x) [m] nor a profile with a .g method")
+    # the flat punch's g needs its radius: refused as such (was: a depth "beyond x_max")
+    _refused(hist(g=tg.FlatPunch(1e-7)),
+             "g = FlatPunch(depth=1e-07) holds no radius, and a flat punch's g(x) (0 inside its "
+             "radius a, a wall beyond) needs it; valid: a callable g(x) [m] with its wall at "
+             "x = a, or Contact(FlatPunch(...), a=...) for the closed forms")
     monotone = "g(x) must be finite and non-decreasing on [0, x_max]"
     _refused(hist(g=lambda x: 0.0 * x[:-1]), monotone)  # wrong shape, finite, non-decreasing
     _refused(hist(g=lambda x: np.where(x > A, np.nan, 0.0)), monotone)  # NaN alone
@@ -460,3 +465,56 @@ def test_solve_shift_against_bisection_of_the_spring_sum():
         for s in (1, -1):
             D, full = tg._solve_shift(f, cap, w, m, G_STAR, s * total, total, 0)
             assert full and D == (hi if s > 0 else lo)
+
+
+def test_powerlaw_nearly_stuck_traction_is_the_same_in_one_call():
+    """The Gauss-Legendre stick traction (c >= 2a/3, c/2 < r < c) of several radii in one
+    call equals each radius alone (vectorized: one sum per radius)."""
+    ct = _sphere(prof=tg.PowerLaw(2e9, 4.0))
+    u = 0.05 * ct.slide_onset
+    c = float(ct.stick_radius(u))
+    assert c >= 2 * A / 3
+    r = np.array([0.55, 0.7, 0.9, 0.99]) * c
+    one = np.array([float(ct.traction(ri, u)) for ri in r])
+    # the same sums in the same order: equal to the last bit
+    assert np.array_equal(ct.traction(r, u), one)
+
+
+def test_history_normal_force_up_to_the_grid_capacity():
+    """Force control: a force between the springs' sums at d = g(x_{n-1}) and d = g(x_max)
+    (the last interval) is carried, with the contact edge in the last interval; beyond
+    g(x_max)'s sum it is refused."""
+    X = 2 * A
+    x = np.linspace(0, X, 9)
+    kw = dict(E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=X, n_grid=8, estimate_error=False)
+    caps = tg.history(tg.Paraboloid(R), depth=[x[-2] ** 2 / R, X * X / R], u_x=[0, 0], **kw)
+    F = 0.5 * (caps.normal_force[0] + caps.normal_force[1])
+    res = tg.history(tg.Paraboloid(R), normal_force=[F], u_x=[0.0], **kw)
+    assert res.normal_force[0] == pytest.approx(F, rel=1e-14)
+    assert x[-2] < res.contact_radius[0] < X
+    with pytest.raises(ValueError, match=r"^normal_force\[0\] = .* needs a contact wider"):
+        tg.history(tg.Paraboloid(R), normal_force=[caps.normal_force[1] * 1.001], u_x=[0.0],
+                   **kw)
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-9], ids=["steel", "gel"])
+def test_history_small_stick_zone_is_the_root_of_the_interpolated_limit(scale):
+    """Constant depth, fresh loading: every stuck spring carries G* u, so the stick edge is
+    where the linear interpolant of the nodes' limits mu q_z meets G* u (np.interp), also
+    when it lies in the first or second interval; in steel and in gel units (1e-9 Pa scale,
+    sub-unit line loads)."""
+    d = A * A / R
+    n, X = 100, 1.5 * A
+    h = X / n
+    x = np.linspace(0, X, n + 1)
+    cap = scale * MU * E_STAR * np.maximum(d - x * x / R, 0)
+    on = MU * E_STAR * d / G_STAR
+    for c in (0.5 * h, 1.5 * h, 2.5 * h, 7.3 * h):
+        u = on * (1 - (c / A) ** 2)  # Cattaneo: c = a sqrt(1 - u/u*)
+        res = tg.history(tg.Paraboloid(R), E_star=scale * E_STAR, G_star=scale * G_STAR, mu=MU,
+                         x_max=X, depth=[d, d], u_x=[0.0, u], n_grid=n, estimate_error=False)
+        inside = cap > 0
+        level = scale * G_STAR * u
+        ref = float(np.interp(level, cap[inside][::-1], x[inside][::-1]))
+        # 1e-12: the same interpolation, rounded differently
+        assert res.stick_radius[1] == pytest.approx(ref, rel=1e-12), c / h
