@@ -558,3 +558,28 @@ def test_history_stick_edge_through_springs_of_varying_shear_is_exact_for_the_co
     assert res.sliding[1] and not res.sliding[3]
     # 1e-12: linear interpolation of linear data, a few roundings of differences of ~d
     assert res.stick_radius[3] == pytest.approx(x_e, rel=1e-12)
+
+
+@pytest.mark.parametrize("u1", [0.2, 0.9])
+def test_history_springs_landing_exactly_on_their_limits(u1):
+    """A flat-ended profile (g = 0 to b = 0.8 a, slope 0.05 beyond) at depth d slid to u1 u*,
+    pressed to 1.5 d, then pulled by G* D = mu E* d/2 exactly: the springs that had slid land
+    on their new limits to rounding, so which of them count as stuck is rounding's choice. By
+    hand the stick zone ends between x = b + (1 - u1) d/0.05 (the springs that stuck
+    throughout) and the contact radius; the edge is taken at a node there (finite, not beyond
+    the contact), whatever the rounding."""
+    a, slope = 1e-4, 0.05
+    b, d = 0.8 * a, 1e-6
+
+    def g(x):
+        x = np.abs(x)
+        return np.where(x > b, slope * (x - b), 0.0)
+
+    on = MU * E_STAR * d / G_STAR
+    X = b + 4.5 * d / slope
+    res = tg.history(g, E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=X, n_grid=100,
+                     depth=[d, d, 1.5 * d, 1.5 * d], u_x=np.array([0, u1, u1, u1 + 0.5]) * on,
+                     estimate_error=False)
+    lo = b + (1 - u1) * d / slope  # stuck throughout: u1 mu E* d < mu E* (d - g) at step 2
+    h = X / 100
+    assert lo - h <= res.stick_radius[3] <= res.contact_radius[3], (lo / a, res.stick_radius / a)
