@@ -776,7 +776,8 @@ def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=
     ----------
     g : callable or profile
         The MDR profile g(x) [m] (5.52): a vectorized callable, a closed-form profile
-        (:class:`Paraboloid`, ...) or an :class:`hertzmdr.numeric.mdr.Profile` (sampled).
+        (:class:`Paraboloid`, :class:`Cone`, :class:`PowerLaw`; not :class:`FlatPunch`, which
+        holds no radius) or an :class:`hertzmdr.numeric.mdr.Profile` (sampled).
         Non-decreasing on [0, x_max].
     E_star, G_star : float
         Effective normal (5.26) and tangential moduli [Pa], > 0.
