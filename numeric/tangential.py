@@ -601,12 +601,17 @@ class History:
 
 
 def _traction(x, q_x, a):
-    """(5.59) of the tangential line load q_x [N/m] on the grid x [m] in a contact of radius a."""
+    """(5.59) of the tangential line load q_x [N/m] on the grid x [m] in a contact of radius a.
+
+    The edge of q_x's support is left to abel (the root of the cubic through its last four
+    non-zero samples: q_x = +-mu q_z vanishes like a - x): the solver's a is the root of
+    the linear interpolant of g, O(h^2) off, which cost 9e-5 of mu p(0) at full slip on 100
+    intervals, where the cubic is exact (mu E* (d - x^2/R) for the sphere)."""
     from hertzmdr.numeric import abel
 
     if a <= 0:
         return np.zeros_like(x)
-    return abel.pressure_from_line_load(np.where(x < a, q_x, 0.0), float(x[1] - x[0]), edge=a)
+    return abel.pressure_from_line_load(np.where(x < a, q_x, 0.0), float(x[1] - x[0]))
 
 
 def _g_callable(g) -> Callable[[np.ndarray], np.ndarray]:

@@ -583,3 +583,19 @@ def test_history_springs_landing_exactly_on_their_limits(u1):
     lo = b + (1 - u1) * d / slope  # stuck throughout: u1 mu E* d < mu E* (d - g) at step 2
     h = X / 100
     assert lo - h <= res.stick_radius[3] <= res.contact_radius[3], (lo / a, res.stick_radius / a)
+
+
+@pytest.mark.parametrize("n", [100, 1000])
+def test_history_traction_at_full_slip_is_mu_times_hertz(n):
+    """Everything slides: q_x = mu q_z = mu E* (d - x^2/R), a parabola whose inverse (5.59)
+    is mu times Hertz's pressure. abel finds its edge from the samples (the cubic through the
+    last four is exact for it): to 1e-10 of mu p0 (measured 2e-13). Given the solver's
+    contact radius (linear interpolation of g, O(h^2) off) as the edge it was 9e-5 on 100
+    intervals, 3e-6 on 1000."""
+    d = A * A / R
+    on = MU * E_STAR * d / G_STAR
+    res = tg.history(tg.Paraboloid(R), E_star=E_STAR, G_star=G_STAR, mu=MU, x_max=1.5 * A,
+                     n_grid=n, depth=[d, d], u_x=[0.0, 2 * on], estimate_error=False)
+    p0 = 3 * F_N / (2 * np.pi * A * A)
+    exact = MU * p0 * np.sqrt(np.maximum(1 - (res.x / A) ** 2, 0))
+    assert np.max(np.abs(res.traction() - exact)) <= 1e-10 * MU * p0
