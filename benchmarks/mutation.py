@@ -203,7 +203,7 @@ MODULES: dict[str, list[str]] = {
     "ellipse_stress.py": _ELLIPSE_STRESS_TESTS,
     "force_law.py": ["tests/test_force_law.py"],
     "adhesion.py": ["tests/test_adhesion.py"],
-    "tangential.py": ["tests/test_tangential.py"],
+    "tangential.py": ["tests/test_tangential.py", "tests/test_tangential_mutants.py"],
     "fit.py": ["tests/test_fit.py", "tests/test_fit_sampled.py", "tests/test_fit_breakpoints.py"],
     "fit_adhesive.py": [f"tests/test_fit_adhesive_{t}.py" for t in (
         "sphere", "cone", "powerlaw", "sampled")] + ["tests/test_fit_jkr.py"],
