@@ -313,9 +313,9 @@ class Solution:
 
 def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     """g(|x|) [m] from the tables of ``fine``; with ``return_error`` also a bound [m]: the
-    envelope of the difference from ``coarse`` over half a coarse sample spacing, twice a
-    smoothed profile's own error on [0, x] (``Rep.smoothing_error``; ``solve.smoothing``
-    says why twice) and 64 eps |g| of rounding."""
+    envelope of the difference from ``coarse`` over half a coarse sample spacing, four times
+    a smoothed profile's own error on [0, x] (``Rep.smoothing_error``; ``solve.smoothing``
+    says why four) and 64 eps |g| of rounding."""
     x = np.abs(between("x", x, -np.inf, np.inf))  # g is even: any finite x
     flat = x.ravel()
     g = tables.g(fine, flat)
@@ -325,7 +325,7 @@ def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     def diff(xx):
         return tables.g(fine, xx) - tables.g(coarse, xx)
 
-    err = (operators.envelope(diff, flat, coarse.knots) + 2 * fine.smoothing_error(flat)
+    err = (operators.envelope(diff, flat, coarse.knots) + 4 * fine.smoothing_error(flat)
            + 64 * np.finfo(float).eps * np.abs(g))
     return result(g.reshape(x.shape)), result(err.reshape(x.shape))
 
