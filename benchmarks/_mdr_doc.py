@@ -138,9 +138,9 @@ SMOOTHING_BOUND = (
     "to 1.0e-6), and the bound adds "
     "the smoothing's own error: with eps the largest residual |f_i - s(r_i)| inside the "
     "contact, |dF| <= 2 E* a eps (a profile between s - eps and s + eps gives a force between "
-    "those at d - eps and d + eps), |dd| <= eps at a given force, and 2 eps / (a g'(a)) for "
+    "those at d - eps and d + eps), |dd| <= eps at a given force, and 4 eps / (a g'(a)) for "
     "the contact radius (`numeric/_mdr/solve.py::smoothing`). The residual holds the noise "
-    "too, so the bound overstates the error 6 to 73 times in that table. "
+    "too, so the bound overstates the error 8 to 96 times in that table. "
     "`tests/test_mdr.py::test_noisy_samples_bound_covers_the_error` checks force, contact "
     "radius, depth and g against Hertz on three draws of the noise.\n")
 
