@@ -828,7 +828,7 @@ class AdhesiveContact:
         low = po.depth if control == "depth" else po.force
         bad = value < low
         if bad.any():
-            v = value[bad].flat[0] if value.ndim else float(value)
+            v = float(value[bad].flat[0]) if value.ndim else float(value)
             raise ValueError(f"{control} = {v!r} is below the pull-off {control} {low!r}: no "
                              "contact")
         if self._punch:  # the punch's contact radius is its own, at every load in contact

@@ -1160,3 +1160,79 @@ def test_cycle_with_jumps_on_loading_and_unloading(control):
     W = (4 * Ws[1] - Ws[0]) / 3
     assert abs(cyc.hysteresis / W - 1) <= cyc.hysteresis_error / cyc.hysteresis < 1e-5, (
         cyc.hysteresis, W, cyc.hysteresis_error)
+
+
+def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
+    """Each refusal of AdhesiveContact's state and cycle API, matched in full: the input's
+    name, its value (a float, never np.float64(...); the first bad element of an array) and
+    what is valid."""
+    import re
+
+    c = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.04)
+    d_c, F_c = c.pull_off("depth").depth, c.pull_off("force").force
+    sep = min(0.0, c.cycle(1e-7, "depth", 20).jumps[-1].after[0])
+    cases = [
+        (lambda: c.contact_radius(), "give exactly one of depth= and force="),
+        (lambda: c.contact_radius(depth=1e-8, force=1e-9), "give exactly one of depth= and "
+                                                            "force="),
+        (lambda: c.contact_radius(depth=-1.0),
+         f"depth = -1.0 is below the pull-off depth {d_c!r}: no contact"),
+        (lambda: c.contact_radius(force=np.array([1e-9, -1.0, -2.0])),
+         f"force = -1.0 is below the pull-off force {F_c!r}: no contact"),
+        (lambda: c.contact_radius(depth="x"), "depth = 'x' is not a number or an array of "
+                                              "numbers"),
+        (lambda: c.equilibrium(depth="q"), "depth = 'q' is not a number or an array of numbers"),
+        (lambda: c.equilibrium(force="q"), "force = 'q' is not a number or an array of numbers"),
+        (lambda: c.cycle(1e-7, points=19), "points = 19 is out of range; valid: an integer >= 20"),
+        (lambda: c.cycle(1e-7, points=20.5), "points = 20.5 is out of range; valid: an integer "
+                                             ">= 20"),
+        (lambda: c.cycle(-1.0), "to = -1.0 is out of range; valid: to > 0 and finite"),
+        (lambda: c.cycle(1e-7, start=0.0),
+         f"start = 0.0 m is in contact; valid: start <= {sep!r} m (below the touch and the "
+         "pull-off depth)"),
+        (lambda: c.pressure_at_depth(0.0, "x"), "d = 'x' is not a number or an array of numbers"),
+        (lambda: c.surface_displacement_at_depth(0.0, "y"), "d = 'y' is not a number or an array "
+                                                            "of numbers"),
+        (lambda: c.pressure(-1.0, 1e-7), "r = -1.0 is out of range; valid: 0 <= r < inf"),
+        (lambda: c.surface_displacement(-1.0, 1e-7), "r = -1.0 is out of range; valid: 0 <= r "
+                                                     "< inf"),
+        (lambda: ad.AdhesiveContact(3, 1, 1), "shape = 3 is not an adhesion.Shape (Paraboloid, "
+                                              "Cone, PowerLaw, FlatPunch, Sphere, Worn)"),
+        (lambda: ad.Sampled(3), "profile = 3 is not a hertzmdr.numeric.mdr.Profile"),
+        (lambda: ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 0.04).contact_radius(depth=1.0),
+         "depth = 1 m is not reached below the largest contact radius the profile describes, "
+         "a = 1e-06 m"),
+        (lambda: ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 0.04).contact_radius(force=1.0),
+         "force = 1 N is not reached below the largest contact radius the profile describes, "
+         "a = 1e-06 m"),
+    ]
+    for fn, msg in cases:
+        with pytest.raises(ValueError, match="^" + re.escape(msg) + "$"):
+            fn()
+    # 20 points: the smallest cycle; an array of forces keeps its shape
+    assert len(c.cycle(1e-7, points=20).depth) == 20
+    assert c.contact_radius(force=np.array([[0.0, 1e-9]])).shape == (1, 2)
+
+
+def test_pressure_at_and_beyond_the_edge():
+    """At r = a the adhesive pressure is -inf (the edge term ~ 1/sqrt(a - r)), beyond it 0;
+    without adhesion it is 0 at the edge (not NaN: Hertz's pressure vanishes there); a flat
+    punch's edge is infinite with the sign of its depth. Inside, the cone's adhesive
+    pressure integrates to the force F(a) (r = a sin t takes the 1/sqrt edge away; 200
+    Gauss-Legendre nodes; the cone's p ~ ln r at the apex leaves r ln r there: measured
+    3e-10, 1e-8 asked)."""
+    a = 1e-7
+    for shape in (ad.Paraboloid(1e-6), ad.Cone(0.3), ad.Sphere(1e-6)):
+        for dg, edge in ((0.04, -np.inf), (0.0, 0.0)):
+            p = ad.AdhesiveContact(shape, 3e6, dg).pressure(np.array([a, 1.5 * a]), a)
+            assert p[0] == edge and p[1] == 0.0, (shape, dg, p)
+    k = ad.AdhesiveContact(ad.FlatPunch(a), 3e6, 0.04)
+    for d, edge in ((1e-9, np.inf), (-1e-9, -np.inf)):
+        p = k.pressure_at_depth(np.array([0.0, a, 2 * a]), d)
+        assert p[1] == edge and p[2] == 0.0 and np.sign(p[0]) == np.sign(d)
+    c = ad.AdhesiveContact(ad.Cone(0.3), 3e6, 0.04)
+    t, w = np.polynomial.legendre.leggauss(200)
+    t, w = np.pi / 4 * (t + 1), np.pi / 4 * w
+    r = a * np.sin(t)
+    F = np.sum(w * c.pressure(r, a) * 2 * np.pi * r * a * np.cos(t))
+    assert abs(F / c.force(a) - 1) < 1e-8
