@@ -1236,3 +1236,42 @@ def test_pressure_at_and_beyond_the_edge():
     r = a * np.sin(t)
     F = np.sum(w * c.pressure(r, a) * 2 * np.pi * r * a * np.cos(t))
     assert abs(F / c.force(a) - 1) < 1e-8
+
+
+def test_sampled_worn_tip_with_its_kink_against_the_worn_shape():
+    """A worn tip (R = 1 um, flat b = 120 nm) given as samples with its kink as a breakpoint:
+    piecewise quadratic, so the quintic spline is exact on both sides and the numerical MDR
+    (kink terms of g' included) reproduces the derived Worn shape (its forms checked at 30
+    digits in test_pull_off_by_mpmath_minimization): g and g' to 1e-13, the pull-off under
+    both controls within its rel_error (under depth control exactly at the kink, a = b),
+    the cycles' jumps and hysteresis to 1e-12 (roots and Gauss-Legendre: measured 5e-14),
+    and the surface displacement inside, d - f(r) on the spline."""
+    from hertzmdr.numeric import mdr
+
+    E, dg, R, b = 3e6, 0.04, 1e-6, 1.2e-7
+    r = np.concatenate([np.linspace(0, b, 25), np.linspace(b, 1e-6, 177)[1:]])
+    s = ad.Sampled(mdr.Profile.from_samples(r, np.maximum(r**2 - b**2, 0) / (2 * R),
+                                            breakpoints=[b]))
+    assert s.kinks == (b,)
+    c, ref = ad.AdhesiveContact(s, E, dg), ad.AdhesiveContact(ad.Worn(R, b), E, dg)
+    a = np.array([1.5 * b, 3 * b])
+    assert abs(float(s.g(0.5 * b))) < 1e-13 * float(ref.shape.g(3 * b))
+    assert np.allclose(s.g(a), ref.shape.g(a), rtol=1e-13, atol=0)
+    assert np.allclose(s.g_slope(a), ref.shape.g_slope(a), rtol=1e-13, atol=0)
+    for control, jumps in (("force", ["jump into contact", "pull-off"]),
+                           ("depth", ["jump into contact", "jump", "pull-off"])):
+        po, pr = c.pull_off(control), ref.pull_off(control)
+        assert max(abs(po.force / pr.force - 1),
+                   abs(po.contact_radius / pr.contact_radius - 1)) <= po.rel_error < 1e-8
+        if control == "depth":
+            assert po.contact_radius == b
+        cy, cr = c.cycle(5e-8, control, 200), ref.cycle(5e-8, control, 200)
+        assert [j.kind for j in cy.jumps] == [j.kind for j in cr.jumps] == jumps
+        for j, k in zip(cy.jumps[1:], cr.jumps[1:], strict=True):
+            assert np.allclose(j.before + j.after, k.before + k.after, rtol=1e-12, atol=1e-22)
+        assert abs(cy.hysteresis / cr.hysteresis - 1) < 1e-12
+        assert cy.hysteresis_error < 1e-12 * cy.hysteresis
+    d = 2e-8
+    x = np.array([0.5 * b, 2 * b])
+    u, u_ref = c.surface_displacement_at_depth(x, d), ref.surface_displacement_at_depth(x, d)
+    assert np.allclose(u, u_ref, rtol=1e-11, atol=0)
