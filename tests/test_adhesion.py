@@ -1275,3 +1275,29 @@ def test_sampled_worn_tip_with_its_kink_against_the_worn_shape():
     x = np.array([0.5 * b, 2 * b])
     u, u_ref = c.surface_displacement_at_depth(x, d), ref.surface_displacement_at_depth(x, d)
     assert np.allclose(u, u_ref, rtol=1e-11, atol=0)
+
+
+@pytest.mark.parametrize("control", ad.CONTROLS)
+def test_cycle_that_stops_at_or_below_the_maximum(control):
+    """The terraced tip loaded to the value of its maximum (taken from the loading jump of a
+    deeper cycle) or to half of it: no jump on loading; the top of the path is that value
+    (at the maximum itself, 1e-13) on the inner branch (a at most the maximum's), then
+    unloading down that branch to the pull-off. Out of contact F = 0 and a = 0; the path
+    is flagged loading up to its top and unloading after it."""
+    c = _terrace()
+    deep = c.cycle(1e-7 if control == "depth" else 2e-7, control, 200)
+    k = 0 if control == "depth" else 1
+    m = deep.jumps[1].before
+    for to in (m[k], 0.5 * m[k]):
+        cyc = c.cycle(to, control, 200)
+        assert [j.kind for j in cyc.jumps] == ["jump into contact", "pull-off"]
+        top = cyc.depth.max() if control == "depth" else cyc.force.max()
+        assert abs(top / to - 1) < 1e-13
+        assert cyc.contact_radius.max() <= m[2] * (1 + 1e-12)
+        # out of contact: no force, no radius; the flag: loading up to the top, then not
+        assert cyc.control == control and np.all(cyc.contact_radius >= 0)
+        free = cyc.contact_radius == 0
+        assert np.all(cyc.force[free] == 0) and free[0] and free[-1]
+        i_top = int(np.argmax(cyc.depth if control == "depth" else cyc.force))
+        assert cyc.loading.dtype == bool and np.all(cyc.loading[:i_top + 1])
+        assert not np.any(cyc.loading[i_top + 1:])
