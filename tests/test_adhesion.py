@@ -1205,6 +1205,9 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
         (lambda: ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 0.04).contact_radius(force=1.0),
          "force = 1 N is not reached below the largest contact radius the profile describes, "
          "a = 1e-06 m"),
+        # adhesion so strong that d(a) < 0 on the whole cap: the touch finds no stable state
+        (lambda: ad.AdhesiveContact(ad.Sphere(1e-8), 1e6, 10.0).cycle(1e-9, "depth", 20),
+         "no stable state at depth = 0.0 below a = 9.99999999e-09 m"),
     ]
     for fn, msg in cases:
         with pytest.raises(ValueError, match="^" + re.escape(msg) + "$"):
