@@ -1055,6 +1055,7 @@ def test_worn_tip_lets_go_at_its_kink_under_depth_control():
         assert c.force(other) < po.force  # but lower in F
     part = c.pull_off("depth", a_from=1.4e-7)
     assert part.contact_radius == b and part.method == "bracketed root of dd/da (1 minima)"
+    assert c.pull_off("depth") == po  # a pull-off from a given a_from is not kept as the default
     with pytest.raises(ValueError, match=r"^no pull-off under depth control below "
                                          r"a = 1e-07 m$"):
         c.pull_off("depth", a_from=1e-7)
