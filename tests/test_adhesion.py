@@ -1213,8 +1213,11 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
     for fn, msg in cases:
         with pytest.raises(ValueError, match="^" + re.escape(msg) + "$"):
             fn()
-    # 20 points: the smallest cycle; an array of forces keeps its shape
+    # 20 points: the smallest cycle; by default 1000 under depth control; an array of
+    # forces keeps its shape
     assert len(c.cycle(1e-7, points=20).depth) == 20
+    default = c.cycle(1e-7)
+    assert len(default.depth) == 1000 and default.control == "depth"
     assert c.contact_radius(force=np.array([[0.0, 1e-9]])).shape == (1, 2)
 
 
