@@ -1308,3 +1308,17 @@ def test_cycle_that_stops_at_or_below_the_maximum(control):
         i_top = int(np.argmax(cyc.depth if control == "depth" else cyc.force))
         assert cyc.loading.dtype == bool and np.all(cyc.loading[:i_top + 1])
         assert not np.any(cyc.loading[i_top + 1:])
+
+
+@pytest.mark.parametrize("control, to", [("depth", 2e-3), ("force", 1.0)])
+def test_cycle_beyond_the_far_end_of_the_scan(control, to):
+    """A worn tip pushed past the scan's far end (100 pull-off scales, 36 um here): the
+    minima are scanned again up to the top, and unloading lets go at the same pull-off as
+    pull_off (its state to 1e-14: the same bracketed root)."""
+    c = ad.AdhesiveContact(ad.Worn(1e-6, 5e-9), 3e6, 0.04)
+    cyc = c.cycle(to, control, 100)
+    assert cyc.contact_radius.max() > c._far()
+    assert [j.kind for j in cyc.jumps] == ["jump into contact", "pull-off"]
+    po = c.pull_off(control)
+    assert np.allclose(cyc.jumps[-1].before, (po.depth, po.force, po.contact_radius),
+                       rtol=1e-14, atol=0)
