@@ -1218,6 +1218,11 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
     assert len(c.cycle(1e-7, points=20).depth) == 20
     default = c.cycle(1e-7)
     assert len(default.depth) == 1000 and default.control == "depth"
+    # the default start: below 0 and the separation depth by a fifth of the depth range
+    low = min(0.0, default.jumps[-1].after[0])
+    assert default.depth[0] == default.depth[-1] == pytest.approx(
+        low - 0.2 * (default.depth.max() - low), rel=1e-15)
+    assert c.cycle(1e-7, "depth", 20, start=sep).depth[0] == sep  # the limit itself is valid
     assert c.contact_radius(force=np.array([[0.0, 1e-9]])).shape == (1, 2)
 
 
