@@ -789,7 +789,14 @@ class AdhesiveContact:
         method = f"bracketed root of {which} ({len(mins)} minima)"
         twin = self.shape.companion()
         if twin is not None:  # the numerical MDR: the coarse-vs-fine difference of the result
-            other = AdhesiveContact(twin, self.E_star, self.dgamma)._pull_off(control, a_from)
+            try:
+                other = AdhesiveContact(twin, self.E_star, self.dgamma)._pull_off(control, a_from)
+            except ValueError:  # no estimate without the coarse solution: say so, not "none"
+                raise ValueError(
+                    f"pull-off under {control} control below a = {a_hi!r} m: the samples have a "
+                    f"minimum at a = {a_c!r} m, the coarse samples (every other one) none, so "
+                    "it has no error estimate; give more samples, or declare the profile's "
+                    "kinks (breakpoints=)") from None
             err += max(abs(other.force - F_c) / abs(F_c),
                        abs(other.contact_radius - a_c) / a_c)
             method += ", numerical MDR (error: coarse vs fine samples)"

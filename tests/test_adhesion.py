@@ -1327,3 +1327,20 @@ def test_cycle_beyond_the_far_end_of_the_scan(control, to):
     po = c.pull_off(control)
     assert np.allclose(cyc.jumps[-1].before, (po.depth, po.force, po.contact_radius),
                        rtol=1e-14, atol=0)
+
+
+def test_sampled_pull_off_without_a_coarse_minimum_says_so():
+    """A worn tip sampled without its kink declared, from a_from = 200 nm: the samples'
+    spline rounds the corner at b = 120 nm into a shallow minimum that every other sample
+    misses, so the pull-off has no coarse-vs-fine estimate: one line saying so (it said
+    "no pull-off below a = 2e-07 m", though the fine samples have one)."""
+    from hertzmdr.numeric import mdr
+
+    b, r = 1.2e-7, np.linspace(0, 1e-6, 401)
+    c = ad.AdhesiveContact(
+        ad.Sampled(mdr.Profile.from_samples(r, np.maximum(r**2 - b**2, 0) / 2e-6)), 3e6, 0.04)
+    with pytest.raises(ValueError, match=r"^pull-off under force control below a = 2e-07 m: "
+                       r"the samples have a minimum at a = 1\.2\d*e-07 m, the coarse samples "
+                       r"\(every other one\) none, so it has no error estimate; give more "
+                       r"samples, or declare the profile's kinks \(breakpoints=\)$"):
+        c.pull_off("force", a_from=2e-7)
