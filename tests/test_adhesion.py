@@ -1216,6 +1216,7 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
     # 20 points: the smallest cycle; by default 1000 under depth control; an array of
     # forces keeps its shape
     assert len(c.cycle(1e-7, points=20).depth) == 20
+    assert len(c.cycle(1e-7, points=101).depth) == 101  # an odd number of contact points
     default = c.cycle(1e-7)
     assert len(default.depth) == 1000 and default.control == "depth"
     # the default start: below 0 and the separation depth by a fifth of the depth range
