@@ -38,7 +38,7 @@ minimum (the global minimum of F(a), resp. d(a), below the loaded state).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 
 import numpy as np
@@ -600,7 +600,8 @@ class Cycle:
         The work done on the contact over the cycle, the closed integral of F dd [J] (>= 0:
         the energy dissipated by the jumps).
     hysteresis_error : float
-        Its estimated absolute error [J] (two Gauss-Legendre orders per branch).
+        Its estimated absolute error [J] (two Gauss-Legendre orders per branch; for a
+        sampled profile plus the difference from the same cycle on its coarse samples).
     control : str
         "depth" or "force".
     """
@@ -1032,8 +1033,17 @@ class AdhesiveContact:
         if start > min(0.0, d_sep):
             raise ValueError(f"start = {start!r} m is in contact; valid: start <= "
                              f"{min(0.0, d_sep)!r} m (below the touch and the pull-off depth)")
-        return self._assemble(control, int(points), start, d_sep, branches_load, branches_un,
-                              jumps)
+        cyc = self._assemble(control, int(points), start, d_sep, branches_load, branches_un,
+                             jumps)
+        twin = self.shape.companion()
+        if twin is not None and self.dgamma > 0:
+            # the numerical MDR: the curve itself (its pull-off radius above all, where
+            # W moves at first order) carries the samples' error, which the quadrature's
+            # estimate does not see: add the coarse-vs-fine difference, as pull_off does
+            other = AdhesiveContact(twin, self.E_star, self.dgamma).cycle(to, control, 20)
+            cyc = replace(cyc, hysteresis_error=cyc.hysteresis_error
+                          + abs(other.hysteresis - cyc.hysteresis))
+        return cyc
 
     def _state(self, a):
         return (float(self.depth(a)), float(self.force(a)), float(a))

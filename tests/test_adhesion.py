@@ -577,7 +577,10 @@ def test_sampled_cycle_shares_the_profile_integrals_along_each_branch():
     assert np.max(np.abs(cyc.force[m] - F_ref)) <= 1e-11 * np.max(np.abs(F_ref))
     closed = ad.AdhesiveContact(ad.PowerLaw(c_n, 2.5), E, dg).cycle(10e-9, "depth", 400)
     assert abs(cyc.hysteresis / closed.hysteresis - 1) < 1e-7
-    assert cyc.hysteresis_error <= 1e-12 * cyc.hysteresis  # Gauss-Legendre, 40 vs 80 nodes
+    # promise 2: the estimate bounds the difference from the closed form (measured 2.1e-12;
+    # the quadrature's 40-vs-80-node part alone is 7e-15, the coarse samples' cycle 2e-11)
+    assert (abs(cyc.hysteresis / closed.hysteresis - 1)
+            <= (cyc.hysteresis_error + closed.hysteresis_error) / cyc.hysteresis < 1e-9)
 
 
 @pytest.mark.parametrize("name", ["cone", "paraboloid"])
@@ -1110,9 +1113,9 @@ def test_cycle_with_jumps_on_loading_and_unloading(control):
     hysteresis against the trapezoid rule of the closed F dd along the branches (in d, on
     4000 and 8000 points each, extrapolated: the two differ by 1e-7 relative, the
     extrapolation by < 1e-8 from 32000 points) plus F times the depth of each jump at
-    constant force: within its estimate (promise 2; measured 3e-7 and 1e-7 against the
-    estimates 5e-6 and 5e-7: the profile's f'' jumps at the terrace's edges, so the
-    Gauss-Legendre rule converges slowly there, which its 40-vs-80-node estimate sees)."""
+    constant force: within its estimate (promise 2; measured 3e-7 and 1e-7; the estimate, 6e-3
+    relative, is mostly the coarse-vs-fine difference of the sampled curve: every other one
+    of 201 samples across the terrace's edges, where f'' jumps)."""
     c = _terrace()
     to = 1e-7 if control == "depth" else 2e-7
     cyc = c.cycle(to, control, 400)
@@ -1159,7 +1162,7 @@ def test_cycle_with_jumps_on_loading_and_unloading(control):
             W += float(np.sum((F[1:] + F[:-1]) / 2 * np.diff(d)))
         Ws.append(W)
     W = (4 * Ws[1] - Ws[0]) / 3
-    assert abs(cyc.hysteresis / W - 1) <= cyc.hysteresis_error / cyc.hysteresis < 1e-5, (
+    assert abs(cyc.hysteresis / W - 1) <= cyc.hysteresis_error / cyc.hysteresis < 1e-2, (
         cyc.hysteresis, W, cyc.hysteresis_error)
 
 
@@ -1283,7 +1286,7 @@ def test_sampled_worn_tip_with_its_kink_against_the_worn_shape():
         for j, k in zip(cy.jumps[1:], cr.jumps[1:], strict=True):
             assert np.allclose(j.before + j.after, k.before + k.after, rtol=1e-12, atol=1e-22)
         assert abs(cy.hysteresis / cr.hysteresis - 1) < 1e-12
-        assert cy.hysteresis_error < 1e-12 * cy.hysteresis
+        assert cy.hysteresis_error < 1e-9 * cy.hysteresis
     d = 2e-8
     x = np.array([0.5 * b, 2 * b])
     u, u_ref = c.surface_displacement_at_depth(x, d), ref.surface_displacement_at_depth(x, d)
@@ -1345,3 +1348,27 @@ def test_sampled_pull_off_without_a_coarse_minimum_says_so():
                        r"\(every other one\) none, so it has no error estimate; give more "
                        r"samples, or declare the profile's kinks \(breakpoints=\)$"):
         c.pull_off("force", a_from=2e-7)
+
+
+def test_sampled_cycle_hysteresis_error_bounds_its_error():
+    """Promise 2 for a sampled profile's cycle: the hysteresis of the sampled worn tip (kink
+    declared) under force control against the closed integral of F dd along the derived worn
+    curve by mpmath at 30 digits (from the jump into contact to the pull-off: the jumps at
+    F = 0 and at the pull-off do no work). Its error, 5e-14 relative, comes from the
+    sampled curve (the pull-off radius moves W at first order), not from the quadrature
+    (40 vs 80 nodes: 5e-15): the estimate adds the coarse-vs-fine difference of W (it did
+    not, and reported 4.8e-15)."""
+    from hertzmdr.numeric import mdr
+
+    E, dg, R, b = 3e6, 0.04, 1e-6, 1.2e-7
+    r = np.concatenate([np.linspace(0, b, 25), np.linspace(b, 1e-6, 177)[1:]])
+    s = ad.Sampled(mdr.Profile.from_samples(r, np.maximum(r**2 - b**2, 0) / (2 * R),
+                                            breakpoints=[b]))
+    cyc = ad.AdhesiveContact(s, E, dg).cycle(5e-8, "force", 200)
+    _, _, d_fn, F_fn = _mp_curves(ad.Worn(R, b))
+    with mp.workdps(DPS):
+        a_in = mp.findroot(F_fn, mp.mpf(cyc.jumps[0].after[2]))
+        a_c = _mp_min(F_fn, mp.mpf(cyc.jumps[-1].before[2]))
+        W = mp.quad(lambda a: F_fn(a) * mp.diff(d_fn, a), [a_in, a_c])
+        err = abs(cyc.hysteresis / W - 1)
+    assert err <= cyc.hysteresis_error / cyc.hysteresis < 1e-9, (err, cyc.hysteresis_error)
