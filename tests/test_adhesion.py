@@ -1228,6 +1228,11 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
         low - 0.2 * (default.depth.max() - low), rel=1e-15)
     assert c.cycle(1e-7, "depth", 20, start=sep).depth[0] == sep  # the limit itself is valid
     assert c.contact_radius(force=np.array([[0.0, 1e-9]])).shape == (1, 2)
+    sph = ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 0.04)
+    assert sph.contact_radius(depth=np.array([[1e-8, 2e-8]])).shape == (1, 2)
+    # the pull-off value itself is in contact, at the pull-off radius
+    assert c.contact_radius(force=F_c) == pytest.approx(c.pull_off("force").contact_radius,
+                                                        rel=1e-7)
 
 
 def test_pressure_at_and_beyond_the_edge():
@@ -1372,3 +1377,18 @@ def test_sampled_cycle_hysteresis_error_bounds_its_error():
         W = mp.quad(lambda a: F_fn(a) * mp.diff(d_fn, a), [a_in, a_c])
         err = abs(cyc.hysteresis / W - 1)
     assert err <= cyc.hysteresis_error / cyc.hysteresis < 1e-9, (err, cyc.hysteresis_error)
+
+
+def test_flat_punch_equilibrium_at_a_depth_and_at_a_force():
+    """The punch keeps its radius at every load above its pull-off: F = 2 E* a d (5.11) at a
+    depth and d = F/(2 E* a) at a force, typed here (one rounding each: 1e-15), for a float
+    (the radius a float too) and for an array (its shape kept)."""
+    E, dg, rad = 3e6, 0.05, 1e-6
+    k = ad.AdhesiveContact(ad.FlatPunch(rad), E, dg)
+    assert type(k.contact_radius(depth=1e-8)) is float
+    a, d, F = k.equilibrium(depth=1e-8)
+    assert a == rad and d == 1e-8 and F == pytest.approx(2 * E * rad * 1e-8, rel=1e-15)
+    a, d, F = k.equilibrium(force=np.array([1e-3, 2e-3]))
+    assert np.all(a == rad) and a.shape == (2,)
+    assert np.allclose(F, [1e-3, 2e-3], rtol=0, atol=0)
+    assert np.allclose(d, np.array([1e-3, 2e-3]) / (2 * E * rad), rtol=1e-15, atol=0)
