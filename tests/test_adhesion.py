@@ -1392,3 +1392,30 @@ def test_flat_punch_equilibrium_at_a_depth_and_at_a_force():
     assert np.all(a == rad) and a.shape == (2,)
     assert np.allclose(F, [1e-3, 2e-3], rtol=0, atol=0)
     assert np.allclose(d, np.array([1e-3, 2e-3]) / (2 * E * rad), rtol=1e-15, atol=0)
+
+
+def test_equilibrium_and_mean_pressure_of_the_paraboloid_by_jkr():
+    """The stable state at a depth and at a force returns the depth (force) asked for and
+    the other on the curve at its radius: JKR's F(a) = 4 E* a^3/(3R) - sqrt(8 pi dgamma E*
+    a^3) and d(a) = a^2/R - sqrt(2 pi a dgamma/E*), typed at 30 digits (a root to a few
+    eps: 1e-13); the mean pressure at a force is F/(pi a^2) of that state. The punch's
+    pressure at a radius is that at its pull-off depth: -inf at the edge."""
+    E, R, dg = 3e6, 1e-6, 0.05
+    c = ad.AdhesiveContact(ad.Paraboloid(R), E, dg)
+    with mp.workdps(DPS):
+        Em, Rm, gm = mp.mpf(E), mp.mpf(R), mp.mpf(dg)
+        for kw in ({"depth": 2e-8}, {"force": 1e-7}):
+            a, d, F = c.equilibrium(**kw)
+            am = mp.mpf(float(a))
+            assert_close(F, 4 * Em * am**3 / (3 * Rm) - mp.sqrt(8 * mp.pi * gm * Em * am**3),
+                         1e-13, f"F at {kw}")
+            assert_close(d, am**2 / Rm - mp.sqrt(2 * mp.pi * am * gm / Em), 1e-13, f"d at {kw}")
+            assert (d if "depth" in kw else F) == pytest.approx(next(iter(kw.values())),
+                                                                 rel=1e-13)
+        a, _, F = c.equilibrium(force=1e-7)
+        assert_close(float(c.mean_pressure(force=1e-7)),
+                     mp.mpf(float(F)) / (mp.pi * mp.mpf(float(a))**2),
+                     1e-15, "mean pressure at a force")
+    k = ad.AdhesiveContact(ad.FlatPunch(1e-6), E, dg)
+    p = k.pressure(np.array([0.0, 1e-6]), 1e-6)
+    assert p[1] == -np.inf and p[0] < 0
