@@ -1405,8 +1405,8 @@ def test_equilibrium_and_mean_pressure_of_the_paraboloid_by_jkr():
     with mp.workdps(DPS):
         Em, Rm, gm = mp.mpf(E), mp.mpf(R), mp.mpf(dg)
         for kw in ({"depth": 2e-8}, {"force": 1e-7}):
-            a, d, F = c.equilibrium(**kw)
-            am = mp.mpf(float(a))
+            a, d, F = (float(x) for x in c.equilibrium(**kw))
+            am = mp.mpf(a)
             assert_close(F, 4 * Em * am**3 / (3 * Rm) - mp.sqrt(8 * mp.pi * gm * Em * am**3),
                          1e-13, f"F at {kw}")
             assert_close(d, am**2 / Rm - mp.sqrt(2 * mp.pi * am * gm / Em), 1e-13, f"d at {kw}")
