@@ -1227,6 +1227,15 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
     assert default.depth[0] == default.depth[-1] == pytest.approx(
         low - 0.2 * (default.depth.max() - low), rel=1e-15)
     assert c.cycle(1e-7, "depth", 20, start=sep).depth[0] == sep  # the limit itself is valid
+    # a cone under force control lets go at d > 0 (dF/da = 0 at a g' = 3/2 Delta l, so d =
+    # g - Delta l = Delta l/2 for g ~ a): the start is below the touch, d = 0
+    cone = ad.AdhesiveContact(ad.Cone(0.3), 3e6, 0.04)
+    cyc = cone.cycle(1e-7, "force", 40)
+    assert cyc.jumps[-1].after[0] > 0
+    assert cyc.depth[0] == pytest.approx(-0.2 * cyc.depth.max(), rel=1e-15)
+    with pytest.raises(ValueError, match=r"^start = 5e-08 m is in contact; valid: start <= "
+                                         r"0\.0 m \(below the touch and the pull-off depth\)$"):
+        cone.cycle(1e-7, "force", 40, start=5e-8)
     assert c.contact_radius(force=np.array([[0.0, 1e-9]])).shape == (1, 2)
     sph = ad.AdhesiveContact(ad.Sphere(1e-6), 3e6, 0.04)
     assert sph.contact_radius(depth=np.array([[1e-8, 2e-8]])).shape == (1, 2)
