@@ -1227,6 +1227,16 @@ def test_every_refusal_of_the_contact_api_is_one_line_naming_its_input():
     assert default.depth[0] == default.depth[-1] == pytest.approx(
         low - 0.2 * (default.depth.max() - low), rel=1e-15)
     assert c.cycle(1e-7, "depth", 20, start=sep).depth[0] == sep  # the limit itself is valid
+    # the default start of a cycle with four jumps: from the last one, the pull-off
+    t = _terrace().cycle(1e-7, "depth", 100)
+    low = min(0.0, t.jumps[-1].after[0])
+    assert len(t.jumps) == 4 and t.depth[0] == pytest.approx(low - 0.2 * (1e-7 - low),
+                                                             rel=1e-14)
+    # no adhesion: no jumps, the retract from the touch d = 0 down to the start, no work
+    z = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.0).cycle(1e-8, "depth", 40)
+    assert z.jumps == [] and z.depth.max() == pytest.approx(1e-8, rel=1e-14)
+    assert z.depth[0] == z.depth[-1] == pytest.approx(-0.2e-8, rel=1e-14)
+    assert abs(z.hysteresis) <= z.hysteresis_error < 1e-12 * 1e-8 * np.max(z.force)
     # a cone under force control lets go at d > 0 (dF/da = 0 at a g' = 3/2 Delta l, so d =
     # g - Delta l = Delta l/2 for g ~ a): the start is below the touch, d = 0
     cone = ad.AdhesiveContact(ad.Cone(0.3), 3e6, 0.04)
