@@ -332,10 +332,11 @@ def write_docs(res, abel_section, docs_dir):
     axes[1].loglog(Nw, [w["k3"]["F"] for w in res["worn"]], "o-", label="worn, no breakpoint, k=3")
     axes[1].loglog(Nw, [w["k1"]["F"] for w in res["worn"]], "s-", label="worn, no breakpoint, k=1")
     out.append("### noisy samples (sphere R = 1, d = 0.25, GCV smoothing spline)\n\n"
-               "| N | noise | F error | estimate |\n|---|---|---|---|\n")
+               "| N | noise | F error | estimate | bounds it |\n|---|---|---|---|---|\n")
     for sigma, rows in res["noisy"].items():
         for e in rows:
-            out.append(f"| {e['N']} | {float(sigma):g} | {e['F']:.1e} | {e['est']:.1e} |\n")
+            out.append(f"| {e['N']} | {float(sigma):g} | {e['F']:.1e} | {e['est']:.1e} | "
+                       f"{'yes' if e['est'] >= e['F'] else 'NO'} |\n")
         axes[1].loglog([e["N"] for e in rows], [e["F"] for e in rows], "^--",
                        label=f"noise {float(sigma):g}")
     axes[1].set_xlabel("samples N")

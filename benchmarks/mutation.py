@@ -73,6 +73,8 @@ NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
 RUNS = ROOT / "benchmarks" / "mutation_runs"
 #: the notes on numeric/scene/ (a file of their own: the scene layer's runs are separate)
 SCENE_NOTES = ROOT / "benchmarks" / "mutation_notes_scene.toml"
+#: the notes on the fits (fit.py, fit_*.py: a file of their own, written apart from the others)
+FIT_NOTES = ROOT / "benchmarks" / "mutation_notes_fit.toml"
 #: folders besides tests/ that the tests read (the example scenes, docs/scenes.md)
 EXTRA = ("examples", "docs")
 #: the oracle memo of a run (tests/oracle.py's memo), in its scratch folder
@@ -201,7 +203,7 @@ MODULES: dict[str, list[str]] = {
     "ellipse_stress.py": _ELLIPSE_STRESS_TESTS,
     "force_law.py": ["tests/test_force_law.py"],
     "adhesion.py": ["tests/test_adhesion.py"],
-    "tangential.py": ["tests/test_tangential.py"],
+    "tangential.py": ["tests/test_tangential.py", "tests/test_tangential_mutants.py"],
     "fit.py": ["tests/test_fit.py", "tests/test_fit_sampled.py", "tests/test_fit_breakpoints.py"],
     "fit_adhesive.py": [f"tests/test_fit_adhesive_{t}.py" for t in (
         "sphere", "cone", "powerlaw", "sampled")] + ["tests/test_fit_jkr.py"],
@@ -348,12 +350,13 @@ def function_lines(path: Path) -> dict[str, int]:
 @functools.cache
 def _notes_files() -> tuple[dict, ...]:
     """The parsed notes files, read once a run (find_note asks for them per survivor)."""
-    return tuple(tomllib.loads(path.read_text()) for path in (NOTES, SCENE_NOTES)
+    return tuple(tomllib.loads(path.read_text()) for path in (NOTES, SCENE_NOTES, FIT_NOTES)
                  if path.exists())
 
 
 def load_notes(kind: str = "equivalent") -> list[dict]:
-    """The notes of benchmarks/mutation_notes.toml and mutation_notes_scene.toml: "equivalent"
+    """The notes of benchmarks/mutation_notes.toml, mutation_notes_scene.toml and
+    mutation_notes_fit.toml: "equivalent"
     (survivors that cannot be killed, with the reason), "since" (survivors of a module's last
     run killed by a test added after it), "text" (a line whose text-only mutants are
     presentation), "killed" (survivors of earlier runs and the tests added) or "finding"

@@ -48,17 +48,22 @@ Method (all lengths in m, pressures in Pa, forces in N):
   differences, an upper estimate of the error of the coarse solution (so a conservative bound
   for the returned, fine one), and (2) the envelope of the differences of g and of its
   integral on radii within two coarse sample spacings of a, put through the linearized
-  (5.55) and (5.57) (the differences at a alone can vanish by accident), plus a rounding
-  floor (64 + 4 N) eps (the spline's derivative loses about log10(N) digits). The pressure's
+  (5.55) and (5.57) (the differences at a alone can vanish by accident), plus, for a
+  smoothed profile, its own error, which both resolutions share (eps, the largest residual
+  of the smoothing inside the contact: |dF| <= 2 E* a eps by the comparison principle,
+  ``solve.smoothing``), plus a rounding floor (64 + 4 N) eps (the spline's derivative loses
+  about log10(N) digits). The pressure's
   bound (``return_error=True``) adds the Abel integral of |q - q_coarse| and a rounding bound
   (a kink term's parameter (r/b)^2 near 1); where a third resolution (half the coarse one)
   shows the pair converging at an order below 1 (the splines near a singular f'', as f ~
   r^1.5 at the axis: h^0.5), the difference is divided by (rho - 1), rho the ratio of the
   two differences (Richardson); where they neither shrink nor change sign (above ``STALLED``
-  of the mean pressure), p has not converged and the bound is +inf. ``rtol`` has one
+  of the mean pressure), p has not converged and the bound is +inf. Within rel_error a of
+  the edge it adds p(a - 2 rel_error a): the true p ~ sqrt(a_true - r) may be nonzero
+  where every resolution's radius stops short of a_true and gives 0. ``rtol`` has one
   meaning: the target of ``rel_error``, in ``RTOL_RANGE`` (default ``DEFAULT_RTOL``). A
   callable's grid is doubled until the bound meets it; a sampled profile's quadrature is
-  refined while that lowers the bound (its splines cannot be refined). ``Solution.met``
+  refined while that at least halves the bound (its splines cannot be refined). ``Solution.met``
   says whether it was met and ``why_not_met`` why not.
 
 Layout: this module is the public face (``Profile``, ``Solution``, ``ForceDepthCurve``, the
@@ -84,7 +89,7 @@ from hertzmdr.numeric import _generated as gen
 from hertzmdr.numeric._mdr import operators, solve, tables
 from hertzmdr.numeric._mdr.resolution import Grid, Samples
 from hertzmdr.numeric._mdr.spline import Rep
-from hertzmdr.numeric._validate import as_float, nonnegative, positive, result
+from hertzmdr.numeric._validate import as_float, between, nonnegative, positive, result
 
 __all__ = ["Profile", "Solution", "ForceDepthCurve", "DEFAULT_RTOL", "RTOL_RANGE"]
 
@@ -126,6 +131,13 @@ def _check_rtol(rtol) -> float:
         raise ValueError(f"rtol = {rtol!r} is out of range; valid: {lo:g} <= rtol <= {hi:g} "
                          "(what the numerical MDR can deliver: mdr.RTOL_RANGE)")
     return value
+
+
+def _check_k(k) -> int:
+    """The spline degree k: 1, 3 or 5 (an integer; a bool or a float is refused)."""
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k not in (1, 3, 5):
+        raise ValueError(f"k = {k!r} is out of range; valid: 1, 3, 5")
+    return int(k)
 
 
 @dataclass
@@ -198,7 +210,9 @@ class Solution:
         r = 0 under a conical tip. With ``return_error=True`` also returns a bound of the
         absolute error per point [Pa]: coarse-vs-fine difference, the Abel integral of the
         tables' difference (divided by rho - 1 where a third resolution shows an order below
-        1, rho = 2^order) and a rounding bound (module docstring); tests/test_mdr.py and
+        1, rho = 2^order), a rounding bound (module docstring) and, within rel_error a of
+        the edge, p(a - 2 rel_error a) (the true p ~ sqrt(a_true - r) there may be nonzero
+        where every resolution gives 0); tests/test_mdr.py and
         tests/test_mdr_bounds.py check it against 30-digit references, near kinks too.
         """
         r = nonnegative("r", r)
@@ -237,6 +251,16 @@ class Solution:
                            & (est > STALLED * self.force / (np.pi * a * a)))
                 est[stalled] = np.inf
             err = est + operators.rounding(self._rep, flat, p, a, E)
+        # the edge: a is known to da = rel_error a, and where the three resolutions' radii
+        # all lie on one side of the true one (f = 2 r^2.5 on 40 samples: all below it) they
+        # all give p = 0 on [a, a_true) while the true p ~ C sqrt(a_true - r) is not: the bound
+        # was 0 at r = a with a true error of 3.6e4 Pa (p(0.999 a) = 5.5e6 Pa). Within da of a
+        # the error is at most C sqrt(2 da) = p(a - 2 da), added there
+        da = self.rel_error * a
+        near = np.abs(flat - a) <= da
+        if near.any():
+            err[near] += operators.pressure(self._rep, np.array([max(a - 2 * da, 0.0)]), a, E,
+                                            6, conical)[0]
         err[np.isinf(p)] = np.inf
         return result(p.reshape(r.shape)), result(err.reshape(r.shape))
 
@@ -289,9 +313,10 @@ class Solution:
 
 def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     """g(|x|) [m] from the tables of ``fine``; with ``return_error`` also a bound [m]: the
-    envelope of the difference from ``coarse`` over half a coarse sample spacing plus
-    64 eps |g| of rounding."""
-    x = nonnegative("x", np.abs(as_float("x", x)))
+    envelope of the difference from ``coarse`` over half a coarse sample spacing, twice a
+    smoothed profile's own error on [0, x] (``Rep.smoothing_error``; ``solve.smoothing``
+    says why twice) and 64 eps |g| of rounding."""
+    x = np.abs(between("x", x, -np.inf, np.inf))  # g is even: any finite x
     flat = x.ravel()
     g = tables.g(fine, flat)
     if not return_error:
@@ -300,7 +325,8 @@ def _g(fine: Rep, coarse: Rep, x, return_error: bool):
     def diff(xx):
         return tables.g(fine, xx) - tables.g(coarse, xx)
 
-    err = operators.envelope(diff, flat, coarse.knots) + 64 * np.finfo(float).eps * np.abs(g)
+    err = (operators.envelope(diff, flat, coarse.knots) + 2 * fine.smoothing_error(flat)
+           + 64 * np.finfo(float).eps * np.abs(g))
     return result(g.reshape(x.shape)), result(err.reshape(x.shape))
 
 
@@ -366,19 +392,18 @@ class Profile:
             raise ValueError("r must start at 0 and increase strictly")
         bp = np.asarray(sorted(breakpoints), float)
         if np.any((bp <= 0) | (bp >= r[-1])) or not np.all(np.isin(bp, r)):
-            raise ValueError(f"breakpoints {list(bp)} must be samples strictly inside "
+            raise ValueError(f"breakpoints {bp.tolist()} must be samples strictly inside "
                              f"(0, {r[-1]})")
         ends = np.concatenate([[0], np.searchsorted(r, bp), [len(r) - 1]])
         short = np.flatnonzero(np.diff(ends) < 2)
         if short.size:  # its coarse representation would be its fine one: no error bound
             j = short[0]
-            raise ValueError(f"breakpoints {list(bp)} leave one sample interval between "
+            raise ValueError(f"breakpoints {bp.tolist()} leave one sample interval between "
                              f"r = {r[ends[j]]:.6g} and {r[ends[j + 1]]:.6g}; valid: at least "
                              "two intervals (three samples) in every piece between 0, the "
                              "breakpoints and r[-1] (the error bound compares a piece's samples "
                              "with every other one of them)")
-        if not np.isin(k, (1, 3, 5)):
-            raise ValueError(f"k = {k} is out of range; valid: 1, 3, 5")
+        k = _check_k(k)
         return cls(Samples(r, f - f[0], bp, k, smoothing), float(r[-1]), f"{len(r)} samples")
 
     @classmethod
@@ -389,16 +414,17 @@ class Profile:
 
         Each :meth:`solve` samples the callable on grids of n, 2n, 4n, ... intervals per
         segment (up to ``n_max``; each grid is kept for later solves) until the error
-        estimate meets its ``rtol``; ``breakpoints`` are radii [m] of kinks.
+        estimate meets its ``rtol``; ``breakpoints`` are radii [m] of kinks; ``k`` is the
+        spline degree (1, 3 or 5, as :meth:`from_samples`).
         """
         r_max = float(positive("r_max", r_max))
         bp = np.asarray(sorted(breakpoints), float)
         if np.any((bp <= 0) | (bp >= r_max)):
-            raise ValueError(f"breakpoints {list(bp)} must lie in (0, {r_max})")
+            raise ValueError(f"breakpoints {bp.tolist()} must lie in (0, {r_max})")
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 4 <= n <= n_max:
             raise ValueError(f"n = {n!r} is out of range; valid: an integer 4 <= n <= n_max = "
                              f"{n_max}")
-        grid = Grid(f, r_max, bp, int(n), k, int(n_max))
+        grid = Grid(f, r_max, bp, int(n), _check_k(k), int(n_max))
         grid.pair(0)  # sample now: a callable that fails should fail here
         return cls(grid, r_max, f"callable, {n} to {n_max} intervals a segment")
 

@@ -1089,3 +1089,48 @@ def test_every_refusal_of_the_abel_api_is_one_line_naming_its_input():
     for degree in (1, 9):
         assert np.isfinite(abel.pressure_from_line_load(q, 1.0, degree=degree)).all()
     assert abel.pressure_from_line_load(q, 1.0, kink=6.99).shape == q.shape
+
+
+# --- trimdrabel: abel.py's survivors of the 17:33 run (rounding-level tails, units, the cache)
+
+
+def test_units_rounding_tails_zero_rows_and_the_kink_check_of_the_matrix():
+    """Hertz in SI units (E* = 1e11 Pa, R = 1 cm, a = 0.1 mm: q = E* (a^2 - x^2)/R (5.58), up
+    to 1e5 N/m, on 61 samples, dx = a/40): the pressure is (2 E*/(pi R)) sqrt(a^2 - r^2)
+    (5.15) to 1e-12 of p0 (measured 8e-15: the quintic pieces hold the parabola); a tail of
+    rounding-level values beyond the edge (1e-14 of max |q|, below the 1e-12 the transform
+    counts as 0) gives the same pressure bitwise, while a tail of 1e-6 of it is refused, in
+    these units and in units 2^-40 (9e-13) as large; rows of zeros with an edge transform to
+    zeros. A non-number is refused by name. pressure_matrix's refusal of a kink on a sample
+    answers for that kink: off a sample, on one, off again (each answer cached under its own
+    (K, A, beta, degree))."""
+    E_, R, a_ = 1e11, 1e-2, 1e-4
+    dx, N = a_ / 40, 61
+    x = np.arange(N) * dx
+    q = np.where(x < a_, E_ * (a_ * a_ - x * x) / R, 0.0)
+    p = abel.pressure_from_line_load(q, dx, edge=a_)
+    ref = np.where(x < a_, 2 * E_ / (np.pi * R) * np.sqrt(np.clip(a_ * a_ - x * x, 0, None)), 0)
+    assert np.max(np.abs(p - ref)) < 1e-12 * ref[0]
+    for unit in (1.0, 2.0**-40):  # a power of 2: the transform scales bitwise
+        tail = q * unit
+        tail[41:] = 1e-14 * np.max(tail) * np.cos(np.arange(N - 41))
+        assert np.array_equal(abel.pressure_from_line_load(tail, dx, edge=a_), p * unit)
+        tail[45] = 1e-6 * np.max(tail)
+        with pytest.raises(ValueError, match=r"^q\[45\] = .* at x = .* is beyond edge = "):
+            abel.pressure_from_line_load(tail, dx, edge=a_)
+    assert not abel.pressure_from_line_load(np.zeros((2, N)), dx, edge=a_).any()
+    assert not abel.line_load_from_pressure(np.zeros((2, N)), dx, edge=a_).any()
+    for f, name in ((abel.pressure_from_line_load, "q"), (abel.line_load_from_pressure, "p")):
+        with pytest.raises(ValueError, match=rf"^{name} = 'abc' is not a number or an array of "
+                                             r"numbers$"):
+            f("abc", dx)
+    on = (r"^kink = 5e-05 is a grid point, where p is infinite: the matrix cannot hold it; "
+          r"use pressure_from_line_load, or a grid without a sample at the kink$")
+    for kink in (a_ / 2 + dx / 3, a_ / 2, a_ / 2 - dx / 3):
+        if kink == a_ / 2:
+            with pytest.raises(ValueError, match=on):
+                abel.pressure_matrix(N, dx, edge=a_, kink=kink)
+        else:
+            M = abel.pressure_matrix(N, dx, edge=a_, kink=kink)
+            assert np.allclose(M @ q, abel.pressure_from_line_load(q, dx, edge=a_, kink=kink),
+                               rtol=1e-12, atol=1e-12 * ref[0])

@@ -558,3 +558,96 @@ def test_cli_missing_files(tmp_path, capsys):
     assert "no such file" in capsys.readouterr().err
     assert main(["fit", str(EXAMPLE_CURVE), "--scene", str(EXAMPLE_SCENE), "--z0", "3 s"]) == 2
     assert "--z0/--sigma" in capsys.readouterr().err
+
+
+def test_every_tip_s_jacobian_ratios_and_description():
+    """Each tip's pieces the fit reads besides the force (issue 11's survivors of fit.py):
+    - ``_unit``, the Levenberg-Marquardt model at E* = 1: its dF/dE* is ``basis`` and its
+      dF/dz_0 the central difference of ``basis`` in z_0 (step h = 1e-5 of the depth: the
+      truncation (h/d)^2 ~ 1e-10 relative, the rounding eps d/h ~ 2e-11; 1e-7 allows for the
+      sampled tip's table, a cubic Hermite spline whose derivative is the table's own slope);
+    - ``ratios``, the limits the fit warns about, against numeric/'s contact radii
+      (hertz, sphere, powerlaw, the punch's a; the cone's tan(theta); the pyramid adds
+      1/sides; the sampled sphere's a from mdr's force-depth curve: its rel_error, 1e-8);
+    - the pyramid's description: F = K E* d^2 with K its equal-force cone's force at d = 1 m,
+      E* = 1 Pa (5.40); and a sampled tip keeps the rtol it is given."""
+    from hertzmdr.numeric import fit, force_law
+
+    R_s = 5e-6
+    r = np.linspace(0, 0.6 * R_s, 201)
+    sampled = fit.SampledTip.from_samples(r, R_s - np.sqrt(R_s**2 - r**2), rtol=1e-4)
+    assert sampled.rtol == 1e-4
+    tips = {name: tip for name, (tip, _, _) in TIPS.items()}
+    tips["pyramid"] = Pyramid(alpha=1.2, sides=3)
+    tips["sampled"] = sampled
+    z0, d = 1.0e-6, 2.0e-7
+    z = z0 + d * np.array([-0.5, 0.25, 0.5, 1.0])
+    for name, tip in tips.items():
+        g, h = tip._unit(z, z0)
+        assert np.array_equal(g, tip.basis(z, z0)), name
+        step = 1e-5 * d
+        fd = (tip.basis(z, z0 + step) - tip.basis(z, z0 - step)) / (2 * step)
+        assert h[0] == 0 and fd[0] == 0, name  # out of contact: no force, no slope
+        assert np.allclose(h[1:], fd[1:], rtol=1e-7, atol=0), (name, h, fd)
+    a_of = {"paraboloid": hertz.contact_radius(d, 50e-6) / 50e-6,
+            "exact_sphere": sphere.contact_radius(d, 5e-6) / 5e-6}
+    for name, ratio in a_of.items():
+        assert tips[name].ratios(d) == pytest.approx({"a/R": ratio}, rel=1e-12), name
+    assert tips["cone"].ratios(d) == pytest.approx({"tan(theta)": np.tan(0.09)}, rel=1e-15)
+    assert tips["flat_punch"].ratios(d) == pytest.approx({"d/a": d / 3e-6}, rel=1e-15)
+    assert tips["power_law"].ratios(d) == pytest.approx(
+        {"d/a": d / powerlaw.contact_radius(d, 1e9, 3.0)}, rel=1e-12)
+    pyr = tips["pyramid"]
+    assert pyr.ratios(d) == pytest.approx({"tan(theta)": np.tan(pyr.cone.theta),
+                                           "1/sides": 1 / 3}, rel=1e-15)
+    a_mdr = sampled.profile.force_depth_curve(np.array([d]), E_star=1.0).contact_radius[0]
+    assert sampled.ratios(d) == pytest.approx({"d/a": d / a_mdr}, rel=1e-8)
+    assert sampled.ratios(d)["d/a"] == pytest.approx(d / sphere.contact_radius(d, R_s),
+                                                     rel=1e-6)
+    K = float(pyr.force(1.0, 1.0, 0.0, 0.0, 0.0))  # the cone's force at d = 1 m, E* = 1 Pa
+    assert K == pytest.approx(float(force_law.cone(pyr.cone.theta, 1.0).K), rel=1e-12)
+    assert f"F = {K:.6g} E* d^2" in pyr.describe()
+
+
+def test_sphere_lam_paths_each_converge_in_their_steps(monkeypatch):
+    """lam_from_depth's two iterations apart (fit.py's survivors: a broken fast path or
+    bracket falls back to a slower path with the same root, so only the steps show it): from
+    the start table, the fast path's plain Newton steps stop within LAM_FAST_STEPS (2 measured,
+    d/R over 17 decades); the safeguarded iteration from the bracket's lower end, from 1e6 and
+    1e-3 times it, in at most 6 steps (4 to 6 measured: Newton's quadratic convergence, no
+    bisection). Each root against mpmath.findroot at 30 digits to 4 ulp (as
+    test_sphere_lam_by_newton: the root's condition number is between 1/2 and 1), with the
+    returned slope dd/dlam = R (tanh + lam sech^2) at the last iterate but one (3 ulp)."""
+    from hertzmdr.numeric import fit
+
+    R = 5e-6
+    delta = np.logspace(-12, 5, 35)
+    dd = delta * R
+    calls = [0]
+    depth = gen.fit_sphere_depth
+
+    def counted(*args):
+        calls[0] += 1
+        return depth(*args)
+
+    monkeypatch.setattr(gen, "fit_sphere_depth", counted)
+    x, y = fit._lam_table()
+    calls[0] = 0
+    fast = fit._lam_newton(dd, R, np.exp(np.interp(np.log(delta), x, y)))
+    assert fast is not None and calls[0] <= fit.LAM_FAST_STEPS
+    lo = np.maximum(np.sqrt(delta), delta)
+    runs = [fast]
+    for start in (lo, 1e6 * lo, 1e-3 * lo):
+        calls[0] = 0
+        runs.append(fit._lam_safeguarded(dd, R, start, lo))
+        assert calls[0] <= 6, calls[0]
+    eps = np.finfo(float).eps
+    with mp.workdps(DPS):
+        for k, dl in enumerate(delta):
+            ref = mp.findroot(lambda v, dl=dl: v * mp.tanh(v) - mp.mpf(dl),
+                              mp.sqrt(mp.mpf(dl)) if dl < 1 else mp.mpf(dl))
+            for lam, slope, (prev, _) in runs:
+                assert abs(mp.mpf(lam[k]) / ref - 1) <= 4 * eps, (dl, lam[k], ref)
+                p = mp.mpf(prev[k])
+                ref_s = mp.mpf(R) * (mp.tanh(p) + p / mp.cosh(p) ** 2)
+                assert abs(mp.mpf(slope[k]) / ref_s - 1) <= 3 * eps, (dl, slope[k], ref_s)

@@ -5,8 +5,8 @@ At given depths (``curve``, every depth at once): g(a) = d by safeguarded Newton
 tables of g and g' and F from the table of integral g; under force control (``pair``)
 g(a) = d by Newton on g and g' by quadrature and the monotone F(a) by Brent's method. The
 bound is the larger of the coarse-vs-fine differences and the envelope of the differences of
-g and of its integral around a put through the linearized (5.55) and (5.57), plus a rounding
-floor.
+g and of its integral around a put through the linearized (5.55) and (5.57), plus a smoothed
+profile's own error (``smoothing``) and a rounding floor.
 """
 
 from __future__ import annotations
@@ -110,7 +110,26 @@ def pair(coarse: Rep, fine: Rep, r_max: float, depth: float | None, load: float 
         dev = max(da, (slope * da + Dg) / d)
     # 3. rounding: f' of a spline through N samples loses about log10(N) digits
     floor = (64 + 4 * len(fine.knots)) * _EPS
-    return d, a, F, dc, ac, max(diff, dev) + floor
+    smooth = float(smoothing(fine, np.array([a]), np.array([d]), np.array([F]),
+                             np.array([slope]), E_star)[0])
+    return d, a, F, dc, ac, max(diff, dev) + smooth + floor
+
+
+def smoothing(fine: Rep, a: np.ndarray, d: np.ndarray, F: np.ndarray, slope: np.ndarray,
+              E_star: float) -> np.ndarray:
+    """The bound's share [1] of a smoothed profile's own error (0 when interpolating), which
+    the coarse-vs-fine comparison cannot see (both are smoothed alike), from eps, the error
+    estimate ``Rep.smoothing_error`` on [0, a], at contact radii a [m], depths d [m], forces
+    F [N] and a g'(a) = ``slope`` [m]. f lying between s - eps and s + eps on [0, a], F(d)
+    lies between F_s(d - eps) and F_s(d + eps) (the force grows with the indenter: the
+    comparison principle), so |dF| <= 2 E* a eps (dF/dd = 2 E* a, (5.57)) and, at a given
+    force, |dd| <= eps; a moves by dg/g'(a) (5.55), with |dg| <= 2 eps for an error growing
+    like r^2 (the MDR takes c r^2 to 2 c x^2; c r to (pi/2) c x)."""
+    eps = fine.smoothing_error(a)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = np.maximum(2 * E_star * a * eps / F, eps / d)
+        out = np.maximum(out, np.where(slope > 0, 2 * eps / slope, np.inf))
+    return np.where(eps > 0, out, 0.0)
 
 
 def one(rep: Rep, r_max: float, depth: float | None, load: float | None, E_star: float,
@@ -203,7 +222,8 @@ def curve(coarse: Rep, fine: Rep, r_max: float, depths: np.ndarray, E_star: floa
     fine a [m] and F [N], the coarse a [m], and the bound of the relative error of a and F
     per depth, made as :func:`pair` makes it (coarse-vs-fine differences; the envelope of the
     differences of g and its integral on 9 radii within two coarse sample spacings of a, put
-    through the linearized (5.55), (5.57); the rounding floor). The tables' interpolation
+    through the linearized (5.55), (5.57); a smoothed profile's own error, ``smoothing``;
+    the rounding floor). The tables' interpolation
     error is part of both representations' values; the coarse tables have half the nodes
     (an error 2^6 times larger for the quintic splines), so the comparison covers it."""
     a = radii(fine, r_max, depths)
@@ -222,4 +242,5 @@ def curve(coarse: Rep, fine: Rep, r_max: float, depths: np.ndarray, E_star: floa
     with np.errstate(divide="ignore"):
         dev = np.maximum(np.where(slope > 0, Dg / slope, np.inf), 2 * E_star * DG / F)
     floor = (64 + 4 * len(fine.knots)) * _EPS
-    return a, F, ac, np.maximum(diff, dev) + floor
+    smooth = smoothing(fine, a, depths, F, slope, E_star)
+    return a, F, ac, np.maximum(diff, dev) + smooth + floor
