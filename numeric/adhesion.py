@@ -1070,12 +1070,19 @@ class AdhesiveContact:
         return min(cands) if smallest else max(cands)
 
     def _branch_points(self, branches, n):
-        total = sum(abs(b - a) for a, b in branches) or 1.0
-        out = []
-        for a, b in branches:
-            k = max(2, int(round(n * abs(b - a) / total)))
-            out.append(np.linspace(a, b, k))
-        return out
+        """Radii along each branch, n in all: both ends of every branch, the rest shared in
+        proportion to the branches' lengths (largest remainders), so that a path has the
+        points asked for (n >= 2 per branch; more branches than n/2 get 2 each)."""
+        lengths = np.array([abs(b - a) for a, b in branches], float)
+        k = np.full(len(branches), 2)
+        extra = n - 2 * len(branches)
+        if extra > 0:
+            total = lengths.sum()
+            share = extra * (lengths / total if total > 0 else np.full(len(k), 1 / len(k)))
+            k += np.floor(share).astype(int)
+            rest = extra - int(np.floor(share).sum())
+            k[np.argsort(np.floor(share) - share, kind="stable")[:rest]] += 1
+        return [np.linspace(a, b, int(m)) for (a, b), m in zip(branches, k, strict=True)]
 
     def _branch(self, a, b):
         """(d, F, dd/da) as functions of arrays of radii in the branch [min(a, b), max(a, b)].
@@ -1151,9 +1158,10 @@ class AdhesiveContact:
             d, F, _ = ev(aa)
             add(d, F, aa, True)
         for aa, ev in zip(unload, ev_un, strict=True):
-            aa = aa[aa > 0]
-            d, F, _ = ev(aa)
-            add(d, F, aa, False)
+            pos = aa[aa > 0]
+            d, F, _ = ev(pos)
+            z = np.zeros(aa.size - pos.size)  # a = 0 (no adhesion, down to the touch): d = F = 0
+            add(np.concatenate([d, z]), np.concatenate([F, z]), np.concatenate([pos, z]), False)
         dr = np.linspace(d_sep, start, n_free)
         add(dr, 0 * dr, 0 * dr, False)
         w_load, e_load = self._work(branches_load, ev_load)

@@ -1438,3 +1438,20 @@ def test_equilibrium_and_mean_pressure_of_the_paraboloid_by_jkr():
     k = ad.AdhesiveContact(ad.FlatPunch(1e-6), E, dg)
     p = k.pressure(np.array([0.0, 1e-6]), 1e-6)
     assert p[1] == -np.inf and p[0] < 0
+
+
+@pytest.mark.parametrize("points", [20, 21, 37, 101])
+def test_cycle_has_the_points_asked_for(points):
+    """A cycle's path has exactly ``points`` points, jumps included, however many branches
+    share them (the terraced tip: two loading and two unloading branches under depth
+    control; the worn tip: two unloading branches) and without adhesion (the retract ends at
+    the touch, a = 0, which is a point of the path). It had 22 for 20 asked (each branch's
+    rounded share, at least 2, summed past the total) and 19 without adhesion (a = 0
+    dropped)."""
+    cases = [(_terrace(), 1e-7, "depth"), (_terrace(), 2e-7, "force"),
+             (ad.AdhesiveContact(ad.Worn(1e-6, 1.2e-7), 3e6, 0.04), 5e-8, "depth"),
+             (ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.0), 1e-8, "depth")]
+    for c, to, control in cases:
+        cyc = c.cycle(to, control, points)
+        assert len(cyc.depth) == len(cyc.force) == len(cyc.contact_radius) == points, (c, control)
+        assert len(cyc.loading) == points
