@@ -38,7 +38,7 @@ minimum (the global minimum of F(a), resp. d(a), below the loaded state).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 
 import numpy as np
@@ -600,7 +600,8 @@ class Cycle:
         The work done on the contact over the cycle, the closed integral of F dd [J] (>= 0:
         the energy dissipated by the jumps).
     hysteresis_error : float
-        Its estimated absolute error [J] (two Gauss-Legendre orders per branch).
+        Its estimated absolute error [J] (two Gauss-Legendre orders per branch; for a
+        sampled profile plus the difference from the same cycle on its coarse samples).
     control : str
         "depth" or "force".
     """
@@ -789,7 +790,14 @@ class AdhesiveContact:
         method = f"bracketed root of {which} ({len(mins)} minima)"
         twin = self.shape.companion()
         if twin is not None:  # the numerical MDR: the coarse-vs-fine difference of the result
-            other = AdhesiveContact(twin, self.E_star, self.dgamma)._pull_off(control, a_from)
+            try:
+                other = AdhesiveContact(twin, self.E_star, self.dgamma)._pull_off(control, a_from)
+            except ValueError:  # no estimate without the coarse solution: say so, not "none"
+                raise ValueError(
+                    f"pull-off under {control} control below a = {a_hi!r} m: the samples have a "
+                    f"minimum at a = {a_c!r} m, the coarse samples (every other one) none, so "
+                    "it has no error estimate; give more samples, or declare the profile's "
+                    "kinks (breakpoints=)") from None
             err += max(abs(other.force - F_c) / abs(F_c),
                        abs(other.contact_radius - a_c) / a_c)
             method += ", numerical MDR (error: coarse vs fine samples)"
@@ -828,7 +836,7 @@ class AdhesiveContact:
         low = po.depth if control == "depth" else po.force
         bad = value < low
         if bad.any():
-            v = value[bad].flat[0] if value.ndim else float(value)
+            v = float(value[bad].flat[0]) if value.ndim else float(value)
             raise ValueError(f"{control} = {v!r} is below the pull-off {control} {low!r}: no "
                              "contact")
         if self._punch:  # the punch's contact radius is its own, at every load in contact
@@ -1025,8 +1033,17 @@ class AdhesiveContact:
         if start > min(0.0, d_sep):
             raise ValueError(f"start = {start!r} m is in contact; valid: start <= "
                              f"{min(0.0, d_sep)!r} m (below the touch and the pull-off depth)")
-        return self._assemble(control, int(points), start, d_sep, branches_load, branches_un,
-                              jumps)
+        cyc = self._assemble(control, int(points), start, d_sep, branches_load, branches_un,
+                             jumps)
+        twin = self.shape.companion()
+        if twin is not None and self.dgamma > 0:
+            # the numerical MDR: the curve itself (its pull-off radius above all, where
+            # W moves at first order) carries the samples' error, which the quadrature's
+            # estimate does not see: add the coarse-vs-fine difference, as pull_off does
+            other = AdhesiveContact(twin, self.E_star, self.dgamma).cycle(to, control, 20)
+            cyc = replace(cyc, hysteresis_error=cyc.hysteresis_error
+                          + abs(other.hysteresis - cyc.hysteresis))
+        return cyc
 
     def _state(self, a):
         return (float(self.depth(a)), float(self.force(a)), float(a))
@@ -1053,12 +1070,19 @@ class AdhesiveContact:
         return min(cands) if smallest else max(cands)
 
     def _branch_points(self, branches, n):
-        total = sum(abs(b - a) for a, b in branches) or 1.0
-        out = []
-        for a, b in branches:
-            k = max(2, int(round(n * abs(b - a) / total)))
-            out.append(np.linspace(a, b, k))
-        return out
+        """Radii along each branch, n in all: both ends of every branch, the rest shared in
+        proportion to the branches' lengths (largest remainders), so that a path has the
+        points asked for (n >= 2 per branch; more branches than n/2 get 2 each)."""
+        lengths = np.array([abs(b - a) for a, b in branches], float)
+        k = np.full(len(branches), 2)
+        extra = n - 2 * len(branches)
+        if extra > 0:
+            total = lengths.sum()
+            share = extra * (lengths / total if total > 0 else np.full(len(k), 1 / len(k)))
+            k += np.floor(share).astype(int)
+            rest = extra - int(np.floor(share).sum())
+            k[np.argsort(np.floor(share) - share, kind="stable")[:rest]] += 1
+        return [np.linspace(a, b, int(m)) for (a, b), m in zip(branches, k, strict=True)]
 
     def _branch(self, a, b):
         """(d, F, dd/da) as functions of arrays of radii in the branch [min(a, b), max(a, b)].
@@ -1134,9 +1158,10 @@ class AdhesiveContact:
             d, F, _ = ev(aa)
             add(d, F, aa, True)
         for aa, ev in zip(unload, ev_un, strict=True):
-            aa = aa[aa > 0]
-            d, F, _ = ev(aa)
-            add(d, F, aa, False)
+            pos = aa[aa > 0]
+            d, F, _ = ev(pos)
+            z = np.zeros(aa.size - pos.size)  # a = 0 (no adhesion, down to the touch): d = F = 0
+            add(np.concatenate([d, z]), np.concatenate([F, z]), np.concatenate([pos, z]), False)
         dr = np.linspace(d_sep, start, n_free)
         add(dr, 0 * dr, 0 * dr, False)
         w_load, e_load = self._work(branches_load, ev_load)
