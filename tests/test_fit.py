@@ -651,3 +651,99 @@ def test_sphere_lam_paths_each_converge_in_their_steps(monkeypatch):
                 p = mp.mpf(prev[k])
                 ref_s = mp.mpf(R) * (mp.tanh(p) + p / mp.cosh(p) ** 2)
                 assert abs(mp.mpf(slope[k]) / ref_s - 1) <= 3 * eps, (dl, slope[k], ref_s)
+
+
+def test_tips_take_floats_and_name_their_inputs():
+    """Every tip stores its parameters as floats (integers given) and refuses a bad one in one
+    line that starts with the parameter's name and its value (fit.py's survivors: the names
+    in the attribute and the message)."""
+    from hertzmdr.numeric import fit
+
+    for tip, attrs in ((Paraboloid(R=50), {"R": 50.0}), (ExactSphere(R=5), {"R": 5.0}),
+                       (Cone(theta=1), {"theta": 1.0}), (FlatPunch(a=3), {"a": 3.0}),
+                       (PowerLaw(c_n=2, n=3), {"c_n": 2.0, "n": 3.0}),
+                       (Pyramid(alpha=1, sides=4), {"alpha": 1.0, "sides": 4})):
+        for name, value in attrs.items():
+            got = getattr(tip, name)
+            assert got == value and type(got) is type(value), (tip, name, got)
+    assert PowerLaw(c_n=2, n=3).kappa_n == pytest.approx(powerlaw.kappa(3.0), rel=1e-15)
+    for make, start in ((lambda: Paraboloid(R=0.0), "R = 0.0 "),
+                        (lambda: ExactSphere(R=-1.0), "R = -1.0 "),
+                        (lambda: Cone(theta=2.0), "theta = 2.0 "),
+                        (lambda: FlatPunch(a=-1.0), "a = -1.0 "),
+                        (lambda: PowerLaw(c_n=0.0, n=1.0), "c_n = 0.0 "),
+                        (lambda: PowerLaw(c_n=1.0, n=-2.0), "n = -2.0 "),
+                        (lambda: Pyramid(alpha=2.0), "alpha = 2.0 ")):
+        with pytest.raises(ValueError) as info:
+            make()
+        msg = str(info.value)
+        assert msg.startswith(start) and "\n" not in msg, msg
+    with pytest.raises(ValueError, match=r"^sides = 5 is out of range; valid: 3, 4, 6, "):
+        Pyramid(alpha=1.0, sides=5)
+    r = np.linspace(0, 3e-6, 101)
+    prof = fit.SampledTip.from_samples(r, r**2 / 1e-5).profile
+    with pytest.raises(ValueError, match=r"^rtol = 1\.0 "):
+        fit.SampledTip(prof, rtol=1.0)
+
+
+def test_sampled_tip_force_and_jacobian_against_the_sphere():
+    """A sampled spherical cap (R = 5 um, 201 samples to 0.6 R): the tip's force E* Phi(d) +
+    F_0 + s_0 z and its derivatives (Phi, -E* 2 a) at depths up to 2 um, against the exact
+    sphere's closed forms (numeric/sphere.py: F(d) and a(d) of (5.55), (5.57)), each within the
+    point's own rel_error (the numerical MDR's bound, at most 1e-7 here) plus 1e-12 for the
+    sum; zero force and slope out of contact; describe() in full; a depth past the samples'
+    reach refused in one line naming it (ratios and the force alike)."""
+    from hertzmdr.numeric import fit
+
+    R, E, F0, s0, z0 = 5e-6, 2e6, 1e-9, 1e-4, 1e-6
+    r = np.linspace(0, 0.6 * R, 201)
+    tip = fit.SampledTip.from_samples(r, R - np.sqrt(R**2 - r**2))
+    d = np.array([-1e-7, 0.0, 1e-8, 3e-7, 1e-6, 2e-6])
+    z = z0 + d
+    _, _, err = tip._exact(z, z0)
+    F = tip.force(E, z, z0, F0, s0)
+    dE, dz0 = tip.derivatives(E, z, z0)
+    inside = d > 0
+    ref_F = np.where(inside, sphere.force(np.maximum(d, 1e-30), R, E), 0.0)
+    ref_a = np.where(inside, sphere.contact_radius(np.maximum(d, 1e-30), R), 0.0)
+    assert np.all(err[inside] <= 1e-7) and np.all(err[~inside] == 0)
+    assert np.all(np.abs(F - (ref_F + F0 + s0 * z)) <= err * ref_F + 1e-12 * (F0 + s0 * z))
+    assert np.all(np.abs(dE * E - ref_F) <= err * ref_F)
+    assert np.all(np.abs(dz0 + 2 * E * ref_a) <= err * 2 * E * ref_a)
+    assert dE[~inside].tolist() == [0.0, 0.0] and dz0[~inside].tolist() == [0.0, 0.0]
+    assert tip.describe() == "sampled tip (201 samples, r_max = 3e-06 m), numerical MDR"
+    deep = 2 * tip.d_limit
+    for call in (lambda: tip.ratios(deep), lambda: tip.force(E, np.array([z0 + deep]), z0,
+                                                             F0, s0)):
+        with pytest.raises(ValueError, match=rf"^the indentation d = {deep:.6g} m is deeper"):
+            call()
+
+
+def test_exact_sphere_warm_start_takes_one_step(monkeypatch):
+    """ExactSphere._unit with a fit's state: after a call at z_0, a call at z_0 shifted by
+    1e-7 of the depths starts every point from lam + shift/(dd/dlam) (first order in the
+    shift: ~1e-14 of lam off), so the fast path stops after one Newton step; its values equal
+    the stateless call's to 4 ulp (the same root), and the state holds the new lam, slope and
+    z_0. A start shifted the wrong way (2e-7 off) would take two steps."""
+    tip = ExactSphere(R=5e-6)
+    z0, z = 1.0e-6, 1.0e-6 + np.linspace(1e-8, 2e-6, 50)
+    state = {}
+    tip._unit(z, z0, state)
+    assert set(state) == {"lam", "slope", "z0"} and state["z0"] == z0
+    calls = [0]
+    depth = gen.fit_sphere_depth
+
+    def counted(*args):
+        calls[0] += 1
+        return depth(*args)
+
+    monkeypatch.setattr(gen, "fit_sphere_depth", counted)
+    z1 = z0 - 1e-7 * 1e-8
+    g, h = tip._unit(z, z1, state)
+    assert calls[0] == 1
+    g0, h0 = tip._unit(z, z1)
+    assert np.allclose(g, g0, rtol=4 * np.finfo(float).eps, atol=0)
+    assert np.allclose(h, h0, rtol=4 * np.finfo(float).eps, atol=0)
+    assert state["z0"] == z1
+    assert np.allclose(state["lam"], lam_from_depth(z - z1, 5e-6), rtol=4 * np.finfo(float).eps,
+                       atol=0)
