@@ -75,8 +75,9 @@ RUNS = ROOT / "benchmarks" / "mutation_runs"
 SCENE_NOTES = ROOT / "benchmarks" / "mutation_notes_scene.toml"
 #: the notes on the fits (fit.py, fit_*.py: a file of their own, written apart from the others)
 FIT_NOTES = ROOT / "benchmarks" / "mutation_notes_fit.toml"
-#: folders besides tests/ that the tests read (the example scenes, docs/scenes.md)
-EXTRA = ("examples", "docs")
+#: folders besides tests/ that the tests read (the example scenes, docs/scenes.md, the
+#: benchmarks' scripts test_fit_batch.py imports)
+EXTRA = ("examples", "docs", "benchmarks")
 #: the oracle memo of a run (tests/oracle.py's memo), in its scratch folder
 MEMO = "oracle_memo.jsonl"
 PACKAGE = "hertzmdr/numeric"  # the import path of numeric/ (see [tool.setuptools.package-dir])
