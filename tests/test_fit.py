@@ -667,6 +667,7 @@ def test_tips_take_floats_and_name_their_inputs():
             got = getattr(tip, name)
             assert got == value and type(got) is type(value), (tip, name, got)
     assert PowerLaw(c_n=2, n=3).kappa_n == pytest.approx(powerlaw.kappa(3.0), rel=1e-15)
+    assert Cone(theta=1.5).theta == 1.5  # steep cones are in range: 0 < theta < pi/2
     for make, start in ((lambda: Paraboloid(R=0.0), "R = 0.0 "),
                         (lambda: ExactSphere(R=-1.0), "R = -1.0 "),
                         (lambda: Cone(theta=2.0), "theta = 2.0 "),
