@@ -108,13 +108,10 @@ class _Tip(ABC):
         ``state``: a dict one fit owns across its evaluations (the exact sphere's warm start)."""
         return self.derivatives(1.0, z, z0)
 
-    #: whether :meth:`_unit` is a table (a sampled tip): the fit then ends on :meth:`_exact`
+    #: whether :meth:`_unit` is a table (a sampled tip): the fit then ends on the tip's
+    #: ``_exact`` (the model and the bound of its relative error per point; only a tabulated
+    #: tip has one, :meth:`SampledTip._exact`)
     tabulated = False
-
-    def _exact(self, z, z0):
-        """:meth:`_unit` and a bound of its relative error per point (0: a closed form)."""
-        g, h = self._unit(z, z0)
-        return g, h, np.zeros(np.shape(g))
 
     @abstractmethod
     def ratios(self, d_max: float) -> dict[str, float]:
@@ -875,7 +872,7 @@ def _jump(z, r, F):
 
 
 def _polish(tip, z, F, w, p, free=None):
-    """Gauss-Newton steps from p on the exact model of a tabulated tip (:meth:`_Tip._exact`):
+    """Gauss-Newton steps from p on the exact model of a tabulated tip (:meth:`SampledTip._exact`):
     (parameters, weighted residuals, bounds of the parameters' shifts by the model's error,
     the model's (dF/dE*, dF/dz_0 at E* = 1) at the returned z_0).
 

@@ -99,6 +99,11 @@ def test_noise_free_recovery_within_the_mdr_bound(kind):
         (res.values - truth, res.model_error)
     # and the bound is not vacuous: below 1e-6 relative for E*
     assert res.model_error[0] < 1e-6 * E_TRUE
+    # the table says it, each figure in its place, and (no sigma given) the residuals' std
+    table = res.table().splitlines()
+    assert table[5] == (f"the tip's MDR error moves E* by at most {res.model_error[0]:.3g} Pa "
+                        f"and z_0 by {res.model_error[1]:.3g} m")
+    assert table[6].startswith(f"residuals' std = {np.sqrt(res.reduced_chi2):.4g} N, ")
 
 
 def test_worn_tip_without_breakpoint_has_a_larger_honest_bound():
