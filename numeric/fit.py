@@ -295,10 +295,10 @@ class ExactSphere(_Tip):
     def __post_init__(self):
         object.__setattr__(self, "R", float(positive("R", self.R)))
 
-    def _lam(self, z, z0, start=None):
+    def _lam(self, z, z0):
         """(lam, a = R tanh(lam)) at the positions z: a from Newton's last step, shared by the
         force, dF/dE* and dF/dz_0 = -2 E* a."""
-        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R, start,
+        return lam_from_depth(np.maximum(np.asarray(z, float) - z0, 0.0), self.R,
                               with_radius=True)
 
     def force(self, E_star, z, z0, F0, s0):
