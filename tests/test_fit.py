@@ -748,3 +748,34 @@ def test_exact_sphere_warm_start_takes_one_step(monkeypatch):
     assert state["z0"] == z1
     assert np.allclose(state["lam"], lam_from_depth(z - z1, 5e-6), rtol=4 * np.finfo(float).eps,
                        atol=0)
+
+
+@pytest.mark.parametrize("weights", ["unit", "varying"])
+def test_linear_scan_and_start_on_a_noise_free_curve(weights):
+    """The start of every fit (fit.py's survivors of _linear_scan and _start): on a
+    noise-free Hertz curve (400 points, half in contact), the linear least squares at the true
+    contact point recover E*, F_0 and s_0 to 1e-9 (the normal equations of unit-norm columns:
+    condition ~1e2, and the solve and the residuals in float64) with a residual sum below
+    1e-18 of sum (F/w)^2; at a trial beyond the curve's last point no point is in contact
+    (NaN, not a number from a dummy system); weights (sigma per point, here 1 to 3) give the
+    same coefficients; and _start's best contact point lies within one refine step of the
+    truth ((hi - lo)/((N_SCAN - 1)(N_REFINE - 1)) apart), with E* within 1 % (the
+    linearisation at a trial a fraction of a step off)."""
+    from hertzmdr.numeric import fit
+
+    tip = TIPS["paraboloid"][0]
+    z, F = synthetic("paraboloid")
+    w = np.ones_like(z) if weights == "unit" else 1.0 + 2.0 * np.linspace(0, 1, z.size) ** 2
+    trials = np.array([Z0_TRUE - 1e-7, Z0_TRUE, z[-1] + 1e-6])
+    params, rss = fit._linear_scan(tip, z, F, w, trials)
+    E, t, F0, s0 = params[1]
+    assert t == Z0_TRUE
+    assert abs(E / E_TRUE - 1) < 1e-9 and abs(F0 / F0_TRUE - 1) < 1e-9
+    assert abs(s0 / S0_TRUE - 1) < 1e-9, (E, F0, s0)
+    assert rss[1] < 1e-18 * np.sum((F / w) ** 2)
+    assert rss[0] > 1e-6 * np.sum((F / w) ** 2)  # a wrong contact point fits worse
+    assert np.isnan(rss[2]) and np.isnan(params[2, 0])
+    p = fit._start(tip, z, F, w, None)
+    lo, hi = z[0] - 0.1 * np.ptp(z), z[-fit.MIN_CONTACT_POINTS - 1]
+    step = (hi - lo) / (fit.N_SCAN - 1) / (fit.N_REFINE - 1)
+    assert abs(p[1] - Z0_TRUE) <= step and abs(p[0] / E_TRUE - 1) < 1e-2, (p, step)
