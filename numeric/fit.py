@@ -774,7 +774,8 @@ def _curve(z, F, sigma):
     order = np.argsort(z, kind="stable")
     z, F, w = z[order], F[order], w[order]
     if not np.ptp(z) > 0:
-        raise ValueError(f"z spans no range (every z = {z[0]!r}): the curve has one position")
+        raise ValueError(f"z spans no range (every z = {float(z[0])!r}): the curve has one "
+                         "position")
     return z, F, w
 
 

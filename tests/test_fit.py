@@ -779,3 +779,39 @@ def test_linear_scan_and_start_on_a_noise_free_curve(weights):
     lo, hi = z[0] - 0.1 * np.ptp(z), z[-fit.MIN_CONTACT_POINTS - 1]
     step = (hi - lo) / (fit.N_SCAN - 1) / (fit.N_REFINE - 1)
     assert abs(p[1] - Z0_TRUE) <= step and abs(p[0] / E_TRUE - 1) < 1e-2, (p, step)
+
+
+def test_every_refusal_of_a_curve_in_one_line():
+    """fit_curve's input checks (fit.py's _curve survivors), each message in full: shapes,
+    too few points (6 is enough, 5 not), a NaN (as_float's refusal), the first infinite z or F
+    named with its index, sigma not positive, one position only (printed as a float: it was
+    np.float64(1e-06)); the curve sorted by z and sigma broadcast."""
+    z, F = synthetic("paraboloid", n=40)
+    tip = TIPS["paraboloid"][0]
+    cases = [
+        ((z[:, None], F), "z and F must be 1-D arrays of the same length; got shapes (40, 1) "
+                          "and (40,)"),
+        ((z, F[:-1]), "z and F must be 1-D arrays of the same length; got shapes (40,) and "
+                      "(39,)"),
+        ((z[:5], F[:5]), "the curve has 5 points; at least 6 are needed (four parameters and "
+                         "two degrees of freedom)"),
+        ((np.r_[z[:3], np.nan, z[4:]], F), "z[3] = nan is out of range; valid: a number, not "
+                                           "NaN"),
+        ((np.r_[z[:3], -np.inf, z[4:]], F), "z[3] = -inf is out of range; valid: a finite "
+                                            "number"),
+        ((z, np.r_[F[:7], np.inf, F[8:]]), "F[7] = inf is out of range; valid: a finite number"),
+        ((np.full(40, 1e-6), F), "z spans no range (every z = 1e-06): the curve has one "
+                                 "position"),
+    ]
+    for (zz, FF), msg in cases:
+        with pytest.raises(ValueError) as info:
+            fit_curve(zz, FF, tip)
+        assert str(info.value) == msg
+    with pytest.raises(ValueError, match=r"^sigma = -1\.0 is out of range; valid: sigma > 0"):
+        fit_curve(z, F, tip, sigma=-1.0)
+    z6 = np.linspace(Z0_TRUE - 2e-7, Z0_TRUE + 4e-7, 6)
+    from hertzmdr.numeric import fit
+    z6s, _, w6 = fit._curve(z6, z6 * 0 + 1.0, None)  # 6 points pass the count check
+    assert z6s.size == 6 and np.all(w6 == 1.0)  # no sigma: unit weights
+    zs, Fs, ws = fit._curve(z[::-1], F[::-1], 2.0)  # sorted by z; sigma broadcast
+    assert np.array_equal(zs, z) and np.array_equal(Fs, F) and np.all(ws == 2.0)
