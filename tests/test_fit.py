@@ -609,6 +609,20 @@ def test_every_tip_s_jacobian_ratios_and_description():
     assert f"F = {K:.6g} E* d^2" in pyr.describe()
 
 
+def depth_calls(monkeypatch) -> list[int]:
+    """Count the calls of fit_sphere_depth (one per Newton step of lam_from_depth's paths):
+    the returned list's one element, reset by the caller."""
+    calls = [0]
+    depth = gen.fit_sphere_depth
+
+    def counted(*args):
+        calls[0] += 1
+        return depth(*args)
+
+    monkeypatch.setattr(gen, "fit_sphere_depth", counted)
+    return calls
+
+
 def test_sphere_lam_paths_each_converge_in_their_steps(monkeypatch):
     """lam_from_depth's two iterations apart (fit.py's survivors: a broken fast path or
     bracket falls back to a slower path with the same root, so only the steps show it): from
@@ -623,14 +637,7 @@ def test_sphere_lam_paths_each_converge_in_their_steps(monkeypatch):
     R = 5e-6
     delta = np.logspace(-12, 5, 35)
     dd = delta * R
-    calls = [0]
-    depth = gen.fit_sphere_depth
-
-    def counted(*args):
-        calls[0] += 1
-        return depth(*args)
-
-    monkeypatch.setattr(gen, "fit_sphere_depth", counted)
+    calls = depth_calls(monkeypatch)
     x, y = fit._lam_table()
     calls[0] = 0
     fast = fit._lam_newton(dd, R, np.exp(np.interp(np.log(delta), x, y)))
@@ -731,14 +738,7 @@ def test_exact_sphere_warm_start_takes_one_step(monkeypatch):
     state = {}
     tip._unit(z, z0, state)
     assert set(state) == {"lam", "slope", "z0"} and state["z0"] == z0
-    calls = [0]
-    depth = gen.fit_sphere_depth
-
-    def counted(*args):
-        calls[0] += 1
-        return depth(*args)
-
-    monkeypatch.setattr(gen, "fit_sphere_depth", counted)
+    calls = depth_calls(monkeypatch)
     z1 = z0 - 1e-7 * 1e-8
     g, h = tip._unit(z, z1, state)
     assert calls[0] == 1
