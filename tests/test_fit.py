@@ -758,9 +758,9 @@ def test_linear_scan_and_start_on_a_noise_free_curve(weights):
     condition ~1e2, and the solve and the residuals in float64) with a residual sum below
     1e-18 of sum (F/w)^2; at a trial beyond the curve's last point no point is in contact
     (NaN, not a number from a dummy system); weights (sigma per point, here 1 to 3) give the
-    same coefficients; and _start's best contact point lies within one refine step of the
-    truth ((hi - lo)/((N_SCAN - 1)(N_REFINE - 1)) apart), with E* within 1 % (the
-    linearisation at a trial a fraction of a step off)."""
+    same coefficients; and _start's best contact point, for a truth half-way between two
+    scan trials, lies within one refine step of it ((hi - lo)/((N_SCAN - 1)(N_REFINE - 1))),
+    with E* within 1 % (the linearisation at a trial a fraction of a step off)."""
     from hertzmdr.numeric import fit
 
     tip = TIPS["paraboloid"][0]
@@ -775,10 +775,16 @@ def test_linear_scan_and_start_on_a_noise_free_curve(weights):
     assert rss[1] < 1e-18 * np.sum((F / w) ** 2)
     assert rss[0] > 1e-6 * np.sum((F / w) ** 2)  # a wrong contact point fits worse
     assert np.isnan(rss[2]) and np.isnan(params[2, 0])
-    p = fit._start(tip, z, F, w, None)
+    # _start: a contact point half-way between two of the scan's trials (the same z, so the
+    # same trials), which only the refinement between the best one's neighbours can reach
     lo, hi = z[0] - 0.1 * np.ptp(z), z[-fit.MIN_CONTACT_POINTS - 1]
-    step = (hi - lo) / (fit.N_SCAN - 1) / (fit.N_REFINE - 1)
-    assert abs(p[1] - Z0_TRUE) <= step and abs(p[0] / E_TRUE - 1) < 1e-2, (p, step)
+    coarse = (hi - lo) / (fit.N_SCAN - 1)
+    trials = np.linspace(lo, hi, fit.N_SCAN)
+    z0 = trials[np.argmin(np.abs(trials - Z0_TRUE))] + 0.5 * coarse
+    F2 = hertz.force(np.maximum(z - z0, 0.0), 50e-6, E_TRUE) + F0_TRUE + S0_TRUE * z
+    p = fit._start(tip, z, F2, w, None)
+    step = coarse / (fit.N_REFINE - 1)
+    assert abs(p[1] - z0) <= step and abs(p[0] / E_TRUE - 1) < 1e-2, (p, z0, step)
 
 
 def test_every_refusal_of_a_curve_in_one_line():
