@@ -140,6 +140,19 @@ def _check_k(k) -> int:
     return int(k)
 
 
+def _check_smoothing(smoothing) -> float | str | None:
+    """None (interpolate), "gcv", or the smoothing spline's parameter lam >= 0 (finite; a
+    bool is refused)."""
+    if smoothing is None or (isinstance(smoothing, str) and smoothing == "gcv"):
+        return smoothing
+    if (not isinstance(smoothing, bool) and isinstance(smoothing, (int, float, np.integer,
+                                                                   np.floating))
+            and np.isfinite(smoothing) and smoothing >= 0):
+        return float(smoothing)
+    raise ValueError(f"smoothing = {smoothing!r} is out of range; valid: None, \"gcv\" or a "
+                     "finite number >= 0 (the smoothing spline's lam)")
+
+
 @dataclass
 class Solution:
     """The MDR solution at one depth. Lengths in m, force in N, pressure in Pa.
@@ -404,7 +417,8 @@ class Profile:
                              "breakpoints and r[-1] (the error bound compares a piece's samples "
                              "with every other one of them)")
         k = _check_k(k)
-        return cls(Samples(r, f - f[0], bp, k, smoothing), float(r[-1]), f"{len(r)} samples")
+        return cls(Samples(r, f - f[0], bp, k, _check_smoothing(smoothing)), float(r[-1]),
+                   f"{len(r)} samples")
 
     @classmethod
     def from_callable(cls, f: Callable[[np.ndarray], np.ndarray], r_max: float, *,

@@ -1350,3 +1350,17 @@ def test_g_bound_of_a_heavily_smoothed_profile(lam):
     x = np.array([0.1, 0.3, 0.5, 0.7, 0.9])
     g, err = nmdr.Profile.from_samples(r, r**2, smoothing=lam).g(x, return_error=True)
     assert np.all(np.abs(g - 2 * x**2) <= err), (np.abs(g - 2 * x**2), err)
+
+
+def test_smoothing_refusals_in_one_line():
+    """smoothing= takes None, "gcv" or lam >= 0 (finite); anything else is refused in one line
+    naming it (it was scipy's "could not convert string to float" for "GCV", its own message
+    for a negative lam, and True smoothed with lam = 1)."""
+    r = np.linspace(0.0, 1.0, 41)
+    for bad in ("GCV", -1.0, float("nan"), float("inf"), True, [1.0]):
+        with pytest.raises(ValueError) as info:
+            nmdr.Profile.from_samples(r, r**2, smoothing=bad)
+        assert str(info.value) == (f"smoothing = {bad!r} is out of range; valid: None, \"gcv\" "
+                                   "or a finite number >= 0 (the smoothing spline's lam)")
+    for ok in (0.0, 2, np.float64(1e-3), "gcv", None):
+        nmdr.Profile.from_samples(r, r**2, smoothing=ok)
