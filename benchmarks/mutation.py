@@ -264,12 +264,31 @@ def workdir(module: str) -> str:
     return module.replace("/", "_").replace(",", "+").replace(".py", "")
 
 
-def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> Path:
+def scratch(module: str, tests: list[str], base: Path, resume: bool = False,
+            refresh: bool = False) -> Path:
     """A fresh scratch folder laying out numeric/ as hertzmdr/numeric for mutmut; with
     ``resume``, the folder of a run of the same module and tests stopped before its end is
     kept (mutmut then checks only the mutants it has no result for, and those of functions
-    changed since)."""
+    changed since). With ``refresh``, the folder of a run, finished or not, is kept with its
+    results and tests, and gets today's numeric/: mutmut compares each function's hash with
+    the one it ran, and checks again only the mutants of functions changed since (with the
+    run's tests; a changed test selection would make it check every mutant again)."""
     work = base / workdir(module)
+    if refresh:
+        if not (work / "mutants").is_dir():
+            raise SystemExit(f"--refresh: no run of numeric/{module} in {work} to refresh")
+        cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
+        sel = "pytest_add_cli_args_test_selection"
+        write_config(work, {**mutmut_config(module, tests), sel: cfg[sel]})
+        shutil.rmtree(work / PACKAGE)
+        copy_sources(work, module)
+        for folder in ("tests", *EXTRA):  # this checkout's (the run may have been made in another)
+            (work / folder).unlink(missing_ok=True)
+            (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
+        (work / "result.json").unlink(missing_ok=True)
+        print(f"  --refresh: numeric/{module} with today's source and the {len(cfg[sel])} "
+              "tests its run began with", flush=True)
+        return work
     if resume and (work / "mutants").is_dir() and not (work / "result.json").exists():
         cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
         if cfg == mutmut_config(module, tests):
@@ -291,15 +310,20 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False) -> 
             return work
     shutil.rmtree(work, ignore_errors=True)
     (work / "hertzmdr").mkdir(parents=True)
+    copy_sources(work, module)
+    for folder in ("tests", *EXTRA):
+        (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
+    write_config(work, mutmut_config(module, tests))
+    return work
+
+
+def copy_sources(work: Path, module: str) -> None:
+    """numeric/ copied to the scratch folder as hertzmdr/numeric, ``module`` undecorated."""
     shutil.copytree(NUMERIC, work / PACKAGE, ignore=shutil.ignore_patterns("__pycache__"))
     for part in module.split(","):
         target = work / PACKAGE / part
         for path in [target] if target.is_file() else sorted(target.rglob("*.py")):
             undecorate(path)
-    for folder in ("tests", *EXTRA):
-        (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
-    write_config(work, mutmut_config(module, tests))
-    return work
 
 
 def write_config(work: Path, cfg: dict) -> None:
@@ -442,8 +466,8 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
 
 
 def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
-               resume: bool = False) -> Run:
-    work = scratch(module, tests, base, resume)
+               resume: bool = False, refresh: bool = False) -> Run:
+    work = scratch(module, tests, base, resume, refresh)
     # the tests of the run (a resumed run keeps those it began with: see scratch)
     cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
     tests = list(cfg["pytest_add_cli_args_test_selection"])
@@ -463,7 +487,9 @@ def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
     counts, survivors = survivors_of(work, module, notes)
     again = " ".join(["benchmarks/mutation.py", "--module", module, "--tests", *tests])
     date = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
-    if resumed:  # the time is that of the part run now
+    if refresh:  # the time is that of the part run now
+        date += " (refreshed)"
+    elif resumed:
         date += " (resumed)"
     run = Run(module, tests, again, seconds, date, counts, survivors)
     (work / "result.json").write_text(json.dumps(asdict(run), indent=1))
@@ -632,6 +658,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--work", type=Path, default=ROOT / "build" / "mutation")
     ap.add_argument("--resume", action="store_true",
                     help="continue a module's run stopped before its end (same tests)")
+    ap.add_argument("--refresh", action="store_true",
+                    help="run a module's last run again on today's source: only the mutants "
+                    "of functions changed since are checked again (the run's tests)")
     ap.add_argument("--report-only", action="store_true",
                     help="write the report from the last run of each module (in --work)")
     args = ap.parse_args(argv)
@@ -662,11 +691,12 @@ def main(argv: list[str] | None = None) -> int:
                 runs.append(run)
             continue
         print(f"mutating numeric/{m} with {' '.join(tests)} ...", flush=True)
-        runs.append(run_module(m, tests, args.work.resolve(), notes, args.resume))
+        runs.append(run_module(m, tests, args.work.resolve(), notes, args.resume,
+                                args.refresh))
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
-    shown = [a for a in argv if a not in ("--report-only", "--resume")]
+    shown = [a for a in argv if a not in ("--report-only", "--resume", "--refresh")]
     if "--work" in shown:  # a scratch folder is no part of the command that makes the page
         i = shown.index("--work")
         del shown[i:i + 2]
