@@ -67,14 +67,12 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 NUMERIC = ROOT / "numeric"
+#: the notes on survivors; mutation_notes_*.toml beside it hold those of the scene layer
+#: and of each fitting module (files of their own, written apart from the others)
 NOTES = ROOT / "benchmarks" / "mutation_notes.toml"
 # the last run of each module, one JSON file each (committed: --report-only assembles the page
 # from them when build/mutation/ holds no newer run of the module)
 RUNS = ROOT / "benchmarks" / "mutation_runs"
-#: the notes on numeric/scene/ (a file of their own: the scene layer's runs are separate)
-SCENE_NOTES = ROOT / "benchmarks" / "mutation_notes_scene.toml"
-#: the notes on the fits (fit.py, fit_*.py: a file of their own, written apart from the others)
-FIT_NOTES = ROOT / "benchmarks" / "mutation_notes_fit.toml"
 #: folders besides tests/ that the tests read (the example scenes, docs/scenes.md, the
 #: benchmarks' scripts test_fit_batch.py imports)
 EXTRA = ("examples", "docs", "benchmarks")
@@ -375,13 +373,13 @@ def function_lines(path: Path) -> dict[str, int]:
 @functools.cache
 def _notes_files() -> tuple[dict, ...]:
     """The parsed notes files, read once a run (find_note asks for them per survivor)."""
-    return tuple(tomllib.loads(path.read_text()) for path in (NOTES, SCENE_NOTES, FIT_NOTES)
-                 if path.exists())
+    return tuple(tomllib.loads(path.read_text())
+                 for path in sorted(NOTES.parent.glob("mutation_notes*.toml")))
 
 
 def load_notes(kind: str = "equivalent") -> list[dict]:
-    """The notes of benchmarks/mutation_notes.toml, mutation_notes_scene.toml and
-    mutation_notes_fit.toml: "equivalent"
+    """The notes of benchmarks/mutation_notes*.toml (one file for the scene layer, one for
+    each fitting module, one for the rest): "equivalent"
     (survivors that cannot be killed, with the reason), "since" (survivors of a module's last
     run killed by a test added after it), "text" (a line whose text-only mutants are
     presentation), "killed" (survivors of earlier runs and the tests added) or "finding"
