@@ -511,6 +511,12 @@ POLISH_STEPS = 4
 POLISH_TOL = 1e-12
 #: ... or below this fraction of every parameter's standard error (a noisy curve)
 POLISH_SIGMA = 1e-3
+#: a singular value of the column-scaled Jacobian below this fraction of the largest is a
+#: direction of the parameters the curve does not determine (_covariance)
+SINGULAR_TOL = 1e-12
+#: ... and a parameter with more than this part of its unit vector along such a direction is
+#: undetermined (error inf); a determined one has rounding there only (~1e-16)
+NULL_TOL = 1e-8
 
 
 @dataclass(frozen=True, eq=False)
@@ -693,9 +699,11 @@ class FitResult(_Fitted):
         The tip the curve was fitted with.
     values, errors
         (E* [Pa], z_0 [m], F_0 [N], s_0 [N/m]) and their standard errors, in the order of
-        :data:`PARAMETERS`.
+        :data:`PARAMETERS`; inf for a parameter the curve does not determine (a singular
+        Jacobian, with its warning: e.g. a cone's contact point and baseline when every point
+        is in contact, the tip's force then a parabola of z like the baseline's terms).
     correlation
-        4 x 4 correlation matrix of the parameters.
+        4 x 4 correlation matrix of the parameters (NaN for an undetermined one).
     E, E_error
         The sample's Young's modulus [Pa] and its standard error, when its Poisson's ratio was
         given (``None`` otherwise).
@@ -916,15 +924,25 @@ def _covariance(J):
 
     The SVD of the small triangular factor R of J = QR (its singular values are J's): the
     same (J^T J)^-1 = V S^-2 V^T as the SVD of J, at a fraction of its cost for a tall J.
+    A singular J (singular values below SINGULAR_TOL of the largest: directions along which
+    the model does not change) leaves the parameters with a part along those directions
+    undetermined by the curve: their variance is inf and their covariances NaN (the
+    pseudo-inverse's finite figure would drop that direction and report an error far below
+    the true one); the others keep theirs (the pseudo-inverse's variance of a parameter
+    orthogonal to the null space is that of an estimable function, exact).
     """
     norms = np.linalg.norm(J, axis=0)
     norms = np.where(norms > 0, norms, 1.0)
     r = np.linalg.qr(J / norms, mode="r")
     _, s, vt = np.linalg.svd(r)
-    full = s[-1] > s[0] * 1e-12
-    s_inv = np.where(s > s[0] * 1e-12, 1 / s, 0.0)
-    cov = (vt.T * s_inv**2) @ vt
-    return cov / np.outer(norms, norms), bool(full)
+    keep = s > s[0] * SINGULAR_TOL
+    s_inv = np.where(keep, 1 / s, 0.0)
+    cov = (vt.T * s_inv**2) @ vt / np.outer(norms, norms)
+    loose = np.any(np.abs(vt[~keep]) > NULL_TOL, axis=0)
+    cov[loose, :] = np.nan
+    cov[:, loose] = np.nan
+    cov[loose, loose] = np.inf
+    return cov, bool(keep.all())
 
 
 def _sample_modulus(E_star, err, nu, tip_modulus, tip_nu):
@@ -1099,7 +1117,9 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
                     f"({noise:.3g} N)")
     cov = np.zeros((len(PARAMETERS), len(PARAMETERS)))  # the fixed parameters' rows: 0
     cov_free, full_rank = _covariance(jacobian(p)[:, free])
-    cov[np.ix_(free, free)] = cov_free * chi2
+    # an undetermined parameter's variance stays inf (not inf * 0 = NaN on a curve fitted to
+    # zero residuals)
+    cov[np.ix_(free, free)] = np.where(np.isinf(cov_free), np.inf, cov_free * chi2)
     err = np.sqrt(np.diag(cov))
     if not p[0] >= MODULUS_SIGNIFICANCE * err[0]:
         _no_contact(f"the fitted E* = {p[0]:.3g} Pa is below {MODULUS_SIGNIFICANCE:g} of its "
