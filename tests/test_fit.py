@@ -11,6 +11,7 @@ size the reported standard errors cover the truth at the nominal 68 %.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import mpmath as mp
@@ -985,3 +986,87 @@ def test_undetermined_parameters_have_error_inf():
                                              r"\S+ Pa is below 3 of its standard errors "
                                              r"\(inf Pa\)"):
         fit_curve(z, Fp, FlatPunch(a=3e-6))
+
+
+def test_jump_sentence_and_its_threshold():
+    """_jump on residuals made here: the sentence in full (the step, the two neighbouring
+    positions, its size over the robust noise of neighbouring differences, 1.4826 times their
+    median absolute deviation, computed here by the statistics module); a step of 15 median
+    absolute deviations is named (the threshold is JUMP_SIGNIFICANCE = 8 standard deviations,
+    11.9 of them) and a step of 10 is not; residuals with a trend are measured around their
+    median difference; 4 residuals (3 differences) are enough."""
+    import statistics
+
+    from hertzmdr.numeric import fit
+
+    n = 60
+    z = np.linspace(0.0, 1e-6, n)
+    noise = np.random.default_rng(9).normal(0.0, 1e-12, n)
+    d0 = np.diff(noise)
+    mad = statistics.median(abs(x - statistics.median(d0)) for x in d0)
+    # a ramp of 3e-12 N a point: 3 times the noise's differences, the step on top of it
+    for trend, k, factor in ((0.0, 40, 15.0), (0.0, 25, -15.0), (3e-12, 40, 15.0)):
+        r = noise + trend * np.arange(n)
+        r[k:] += factor * mad
+        dr = np.diff(r)
+        scale = 1.4826 * statistics.median(abs(x - statistics.median(dr)) for x in dr)
+        size = dr[k - 1]
+        assert fit._jump(z, r, np.zeros(n)) == (
+            f"a jump of the force by {size:.3g} N between z = {z[k - 1]:.6g} m and "
+            f"{z[k]:.6g} m ({abs(size) / scale:.3g} times the noise of neighbouring "
+            "differences): a snap-in, a breakthrough or a glitch the smooth model cannot "
+            "follow; the fit is biased by it (fit the curve on one side of it)")
+        if not trend:  # (with a trend the step is measured from 0, not from the median)
+            r[k:] += (10.0 / factor - 1.0) * factor * mad  # a step of 10 only
+            assert fit._jump(z, r, np.zeros(n)) is None
+    r4 = np.array([0.0, 0.01, -0.01, 10.0])
+    assert fit._jump(np.arange(4.0), r4, np.zeros(4)).startswith("a jump of the force by 10 N")
+    assert fit._jump(np.arange(3.0), r4[:3], np.zeros(3)) is None  # 2 differences: no noise
+
+
+def test_no_contact_by_the_tip_s_force_names_its_figures():
+    """A contact point fixed 4 points before the end of a curve that touches half-way: the
+    linear least squares there (numpy's lstsq on the weighted columns dF/dE*, 1, z: another
+    route) leaves a tip's force at the deepest point below 5 standard deviations of the
+    residuals at that point (sigma 3 there, 1 elsewhere), and the refusal names both figures;
+    a noise-free straight line fits to rounding, its noise then the forces' rounding
+    eps max|F| (4.4e-25 N here), not a zero that any force would pass."""
+    tip = TIPS["paraboloid"][0]
+    z, F = synthetic("paraboloid")
+    w = np.ones(z.size)
+    w[-1] = 3.0
+    z0 = z[-5]
+    g = tip.basis(z, z0)
+    A = np.column_stack([g, np.ones_like(z), z]) / w[:, None]
+    n = np.linalg.norm(A, axis=0)  # unit columns: g is ~1e-14 of the others' size
+    coef = np.linalg.lstsq(A / n, F / w, rcond=None)[0] / n
+    rss = float(np.sum((F / w - A @ coef) ** 2))
+    tip_force = coef[0] * g[-1]
+    noise = math.sqrt(rss / (z.size - 3)) * w[-1]
+    assert 0 < tip_force < 5 * noise
+    with pytest.raises(NoContactError) as info:
+        fit_curve(z, F, tip, sigma=w, fixed_z0=z0)
+    assert str(info.value) == (
+        f"no contact in the curve: the tip's force at the deepest point, {tip_force:.3g} N, is "
+        f"below 5 standard deviations of the residuals ({noise:.3g} N); check that z increases "
+        "into the sample and F is the force on the tip (positive in compression)")
+    zl = np.linspace(0.0, 1e-6, 200)
+    Fl = 1e-9 + 1e-3 * zl
+    floor = np.finfo(float).eps * float(np.abs(Fl).max())
+    with pytest.raises(NoContactError, match=r"standard deviations of the residuals \("
+                                             + re.escape(f"{floor:.3g}") + r" N\)"):
+        fit_curve(zl, Fl, Paraboloid(R=5e-6))
+
+
+def test_inputs_are_named_in_their_refusals():
+    """Each array input refused by its own name: a NaN force, a guess, a fixed contact point
+    and a fixed baseline that are not numbers."""
+    z, F = synthetic("paraboloid", n=40)
+    tip = TIPS["paraboloid"][0]
+    with pytest.raises(ValueError) as info:
+        fit_curve(z, np.r_[F[:3], np.nan, F[4:]], tip)
+    assert str(info.value) == "F[3] = nan is out of range; valid: a number, not NaN"
+    for kw, name in (({"z0": "x"}, "z0"), ({"fixed_z0": "x"}, "fixed_z0"),
+                     ({"fixed_baseline": ("x", 1.0)}, "fixed_baseline")):
+        with pytest.raises(ValueError, match=f"^{name} = "):
+            fit_curve(z, F, tip, **kw)
