@@ -880,10 +880,11 @@ def _jump(z, r, F):
             "biased by it (fit the curve on one side of it)")
 
 
-def _polish(tip, z, F, w, p, free=None):
+def _polish(tip, z, F, w, p, free):
     """Gauss-Newton steps from p on the exact model of a tabulated tip (:meth:`SampledTip._exact`):
     (parameters, weighted residuals, bounds of the parameters' shifts by the model's error,
-    the model's (dF/dE*, dF/dz_0 at E* = 1) at the returned z_0).
+    the model's (dF/dE*, dF/dz_0 at E* = 1) at the returned z_0); ``free`` is the bool mask
+    of the fitted parameters (the fixed ones are not moved).
 
     Each step is -pinv(J) r at the current parameters. The loop ends when the step the last
     evaluation proposes is below POLISH_TOL of every parameter's scale or below POLISH_SIGMA
@@ -896,7 +897,6 @@ def _polish(tip, z, F, w, p, free=None):
     propagated linearly: |dp_k| <= sum_i |A_ki| |dF_i|/w_i, A = pinv(J), |dF_i| <= rel_error_i
     E* Phi_i the MDR's bound at point i.
     """
-    free = np.ones(len(p), bool) if free is None else free
     big, last = np.ptp(F) or 1.0, np.inf
     scale = np.array([abs(p[0]), np.ptp(z), big, big / np.ptp(z)])[free]
     for it in range(POLISH_STEPS + 1):

@@ -951,6 +951,11 @@ def test_no_contact_reasons_in_one_line():
         "no contact in the curve: no contact point makes the force rise with a positive "
         "modulus; check that z increases into the sample and F is the force on the tip "
         "(positive in compression)")
+    # the same with the contact point free: a force that bends down (concave) has E* < 0 at
+    # every trial of the scan
+    with pytest.raises(NoContactError) as info2:
+        fit_curve(z, F0_TRUE - 1e3 * z**2, tip)
+    assert str(info2.value) == str(info.value)
 
 
 def test_undetermined_parameters_have_error_inf():
