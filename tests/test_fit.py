@@ -435,6 +435,16 @@ def test_warnings():
     fit = fit_curve(z, F, Paraboloid(R=50e-6))
     assert len(fit.warnings) == 1, fit.warnings
     assert fit.warnings[0].startswith("contact point poorly determined"), fit.warnings
+    # the same curve in pN: sigma(z_0) and the sentence's figures are the same, while the
+    # force's errors (F_0's in N) are 1e-3 of theirs
+    e1, dm = fit.errors[1], fit.max_depth
+    fit = fit_curve(z, 1e-3 * F, Paraboloid(R=50e-6))
+    assert fit.warnings == (f"contact point poorly determined: sigma(z_0) = {e1:.3g} m is "
+                            f"{100 * e1 / dm:.3g} % of the deepest indentation {dm:.3g} m",)
+    # a contact point between the first two positions is not before the first
+    z = Z0_TRUE + np.linspace(-0.5, 198.5, 200) * 1e-9
+    F = hertz.force(np.maximum(z - Z0_TRUE, 0), 50e-6, E_TRUE) + F0_TRUE
+    assert fit_curve(z, F, Paraboloid(R=50e-6)).warnings == ()
 
 
 def test_jump_is_a_warning():
@@ -448,6 +458,10 @@ def test_jump_is_a_warning():
     assert len(fit.warnings) == 1 and fit.warnings[0].startswith("a jump of the force by -5"), \
         fit.warnings
     assert f"between z = {z[k - 1]:.6g} m" in fit.warnings[0]
+    # weighted, the step is still named in newtons
+    fit = fit_curve(z, F, TIPS["paraboloid"][0], sigma=1e-11)
+    assert re.match(r"a jump of the force by -5(\.\d+)?e-10 N between", fit.warnings[0]), \
+        fit.warnings
 
 
 def test_sample_modulus_in_fit():
@@ -991,7 +1005,7 @@ def test_undetermined_parameters_have_error_inf():
     assert len(fit.warnings) == 3
     Fp = 2 * 3e-6 * E_TRUE * (z - Z0_TRUE) + F0_TRUE + S0_TRUE * z
     with pytest.raises(NoContactError, match=r"^no contact in the curve: the fitted E\* = "
-                                             r"\S+ Pa is below 3 of its standard errors "
+                                             r"[0-9.]+e\+06 Pa is below 3 of its standard errors "
                                              r"\(inf Pa\)"):
         fit_curve(z, Fp, FlatPunch(a=3e-6))
 
