@@ -21,7 +21,7 @@ class Clock:
     next of ``costs`` (the last one repeats)."""
 
     def __init__(self, costs):
-        self.now = 0.0
+        self.now = 64.0  # not 0: a time is a difference of two readings
         self.costs = list(costs)
         self.calls = 0
 
@@ -127,9 +127,10 @@ def test_measure_with_setup_times_only_the_call(clock):
     # rounds go on until both 2 rounds and 1 s of calls: 4 rounds of 1/4 s
     assert t.first == 0.25 and t.rounds == (0.25,) * 4 and t.number == 1
     assert len(made) == 1 + 4
-    # max_time stops them (at least one round): 1 s calls, max_time 1.5 s -> 2 rounds
+    # max_time stops them (at least one round): 1 s calls, max_time 2 s -> no round begins
+    # once 2 s are spent
     c = clock(1.0)
-    t = _timing.measure(c.work, _timing.Budget(repeats=5, min_time=0.0, max_time=1.5),
+    t = _timing.measure(c.work, _timing.Budget(repeats=5, min_time=0.0, max_time=2.0),
                         setup=lambda: None)
     assert t.rounds == (1.0, 1.0)
     # a call slower than max_time still gets its one round
@@ -145,6 +146,7 @@ def test_timing_statistics():
     # linear interpolation between order statistics: position q * (n - 1) in (1, 2, 3, 4)
     assert t.quantile(0.0) == 1.0 and t.quantile(1.0) == 4.0
     assert t.quantile(0.5) == 2.5 and t.quantile(0.25) == 1.75 and t.quantile(2 / 3) == 3.0
+    assert t.quantile(0.875) == 3.625  # between the last two: position 2.625
     one = _timing.Timing(first=1.0, rounds=(5.0,), number=3)
     assert one.quantile(0.5) == 5.0 and one.quantile(1.0) == 5.0  # one round: no neighbour
     for q in (-0.25, 1.5, math.nan):
@@ -177,10 +179,10 @@ def test_compare_plans_each_and_stops_at_max_time(clock):
     assert t["a"].rounds == (0.25, 0.25) and t["b"].rounds == (0.0625, 0.0625)
     assert t["a"].first == 0.25 and len(spent["a"]) == 2 + 2 * 2
     assert _timing.ratio(t["a"], t["b"]) == 4.0 and _timing.ratio(t["b"], t["a"]) == 0.25
-    # max_time: no new round once the slower has spent it (a: 1 s a round, max 1.5 s -> 2)
+    # max_time: no new round once the slower has spent it (a: 1 s a round, max 2 s -> 2)
     spent = {"a": [], "b": []}
     t = _timing.compare({"a": fn("a", 1.0), "b": fn("b", 0.0625)},
-                        _timing.Budget(repeats=5, min_time=0.0, max_time=1.5))
+                        _timing.Budget(repeats=5, min_time=0.0, max_time=2.0))
     assert len(t["a"].rounds) == len(t["b"].rounds) == 2
 
 
@@ -206,6 +208,7 @@ def test_in_fork_discards_the_child_cache_and_reports_its_errors():
         return sorted(cache)
 
     assert _timing.in_fork(fill, "x") == ["x"] and cache == {}
+    assert _timing.in_fork(lambda k, v=0: (k, v), "x", v=2) == ("x", 2)  # keywords too
 
     def fail():
         raise ValueError("from the child")
@@ -249,3 +252,30 @@ def test_conditions_name_the_machine_and_the_threads(monkeypatch):
                      None)
     if model:
         assert line.startswith(f"Measured on: {model}, ")
+
+
+def test_machine_reads_the_cpu_model_or_falls_back(monkeypatch):
+    import io
+    import platform
+
+    def cpuinfo(text):
+        def fake_open(path, *args, **kwargs):
+            if path != "/proc/cpuinfo":
+                raise AssertionError(path)
+            if text is None:
+                raise OSError("no /proc")
+            return io.StringIO(text)
+        monkeypatch.setattr(_timing, "open", fake_open, raising=False)
+
+    # the model name is all after the first colon, colons in it kept
+    cpuinfo("processor\t: 0\nmodel name\t: Fake CPU: rev 2 @ 1:2\nmodel name\t: second\n")
+    assert _timing.machine().startswith(f"Fake CPU: rev 2 @ 1:2, {os.cpu_count()} cores; ")
+    # no /proc/cpuinfo (or no model name in it): platform's processor, else its machine
+    monkeypatch.setattr(platform, "processor", lambda: "")
+    monkeypatch.setattr(platform, "machine", lambda: "fake-arch")
+    for text in (None, "processor\t: 0\n"):
+        cpuinfo(text)
+        assert _timing.machine().startswith(f"fake-arch, {os.cpu_count()} cores; ")
+    monkeypatch.setattr(platform, "processor", lambda: "fake-processor")
+    cpuinfo(None)
+    assert _timing.machine().startswith("fake-processor, ")
