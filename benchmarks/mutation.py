@@ -192,8 +192,9 @@ MODULES: dict[str, list[str]] = {
     "_mdr": _MDR_TESTS,
     "abel.py": ["tests/test_abel.py"],
     "_abel": ["tests/test_abel.py"],
-    "accuracy.py": ["tests/test_cli.py", "tests/test_domains.py"],
-    "cli.py": ["tests/test_cli.py"],
+    # `hertzmdr accuracy` and the command line: one run (one stats pass) for the three, whose
+    # tests are the same two files
+    "accuracy.py,_accuracy_cases.py,cli.py": ["tests/test_cli.py", "tests/test_domains.py"],
     "impact.py": ["tests/test_impact.py"],
     "motion.py": ["tests/test_impact.py"],
     "bem.py": ["tests/test_bem.py"],
@@ -209,7 +210,6 @@ MODULES: dict[str, list[str]] = {
     "fit_batch.py": ["tests/test_fit_batch.py"],
     "fit_io.py": ["tests/test_fit_batch.py", "tests/test_fit_scene.py",
                   "tests/test_fit_breakpoints.py"],
-    "_accuracy_cases.py": ["tests/test_cli.py", "tests/test_domains.py"],
     # the timing of the benchmarks and `hertzmdr accuracy`, on a fake clock (the benchmarks'
     # quick runs, which also use it, take about 70 s of CPU a mutant)
     "_timing.py": ["tests/test_timing.py"],
