@@ -208,7 +208,7 @@ MODULES: dict[str, list[str]] = {
     "fit_adhesive.py": [f"tests/test_fit_adhesive_{t}.py" for t in (
         "sphere", "cone", "powerlaw", "sampled")] + ["tests/test_fit_jkr.py"],
     "fit_batch.py": ["tests/test_fit_batch.py"],
-    "fit_io.py": ["tests/test_fit_batch.py", "tests/test_fit_scene.py",
+    "fit_io.py": ["tests/test_fit_io.py", "tests/test_fit_batch.py", "tests/test_fit_scene.py",
                   "tests/test_fit_breakpoints.py"],
     # the timing of the benchmarks and `hertzmdr accuracy`, on a fake clock (the benchmarks'
     # quick runs, which also use it, take about 70 s of CPU a mutant)

@@ -100,11 +100,12 @@ def _numbers(path, rows, first, scales) -> np.ndarray:
             raise CurveError(f"{path}:{lineno}: {','.join(row)!r} is not "
                              f"{'two' if width == 2 else len(scales)} numbers"
                              f"{' after the curve name' if first else ''}") from None
-    arr = np.array(data, dtype=float).reshape(-1, len(scales))
+    with np.errstate(over="ignore"):  # a value the unit takes beyond float: refused below
+        arr = np.array(data, dtype=float).reshape(-1, len(scales)) * np.asarray(scales)
     if not np.isfinite(arr).all():
         bad = int(np.argwhere(~np.isfinite(arr))[0][0])
         raise CurveError(f"{path}:{rows[bad][0]}: a value is not finite")
-    return arr * np.asarray(scales)
+    return arr
 
 
 def read_curve(path) -> tuple[np.ndarray, np.ndarray]:
@@ -166,7 +167,8 @@ def read_columns(path, columns=None, units=None) -> tuple[np.ndarray, np.ndarray
         except ValueError:
             raise CurveError(f"{path}:{lineno}: {','.join(row)!r}: the position and force are "
                              "not numbers") from None
-    arr = np.array(data, dtype=float).reshape(-1, 2) * np.asarray(scales)
+    with np.errstate(over="ignore"):  # a value the unit takes beyond float: refused below
+        arr = np.array(data, dtype=float).reshape(-1, 2) * np.asarray(scales)
     if not np.isfinite(arr).all():
         bad = int(np.argwhere(~np.isfinite(arr))[0][0])
         raise CurveError(f"{path}:{rows[bad][0]}: a value is not finite")

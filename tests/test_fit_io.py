@@ -1,0 +1,230 @@
+"""numeric/fit_io.py: the curve files of ``hertzmdr fit``, read or refused in one line, and the
+fit of a depth range.
+
+Every refusal is checked in full (the file, the line, the value and what is valid: promise 1);
+the units are checked by the SI value of a known number; a depth range's fit is checked to be
+the fit of exactly the points in the range of its own contact point, closed at both ends.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from hertzmdr.numeric import fit, fit_io, mdr
+from hertzmdr.numeric.fit_io import CurveError
+
+
+def write(tmp_path, text, name="c.csv"):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def refused(match_path, call, *args, **kwargs) -> str:
+    with pytest.raises(CurveError) as info:
+        call(*args, **kwargs)
+    msg = str(info.value)
+    assert msg.startswith(f"{match_path}") and "\n" not in msg, msg
+    return msg
+
+
+# -- read_curve: one curve, two columns with units ------------------------------------------
+def test_read_curve_scales_each_column_by_its_unit(tmp_path):
+    path = write(tmp_path, "\ufeff# comment\n\n#z [m], F [N]\nz [um], F [nN]\n"
+                 "1.5, 2\n-0.25, 4e3\n")
+    z, F = fit_io.read_curve(path)
+    # 1 um = 1e-6 m, 1 nN = 1e-9 N: each value times its column's unit, nothing else
+    assert z.tolist() == [1.5 * 1e-6, -0.25 * 1e-6] and F.tolist() == [2 * 1e-9, 4e3 * 1e-9]
+    z, F = fit_io.read_curve(write(tmp_path, "height [nm], Force [pN]\n3, 5\n"))
+    assert z.tolist() == [3 * 1e-9] and F.tolist() == [5 * 1e-12]
+
+
+def test_read_curve_refusals_name_the_file_the_line_and_what_is_valid(tmp_path):
+    # the header is on line 3 (after a comment and an empty line): every message counts lines
+    # of the file, comments included
+    def curve(header, *rows):
+        return write(tmp_path, "# a comment\n\n" + header + "\n" + "".join(r + "\n" for r in rows))
+
+    p = curve("z [um], F [nN], x [m]", "1, 2, 3")
+    assert refused(p, fit_io.read_curve, p) == (
+        f"{p}:3: the header must name two columns, position and force, with units, e.g. "
+        "`z [um], F [nN]`; got 3")
+    p = curve("z um, F [nN]", "1, 2")
+    assert refused(p, fit_io.read_curve, p) == (
+        f"{p}:3: column 'z um' must be a name and a unit in brackets, e.g. `z [um]`")
+    p = curve("z [um], F nN", "1, 2")
+    assert refused(p, fit_io.read_curve, p) == (
+        f"{p}:3: column 'F nN' must be a name and a unit in brackets, e.g. `F [nN]`")
+    p = curve("z [nN], F [nN]", "1, 2")
+    assert refused(p, fit_io.read_curve, p) == (
+        f"{p}:3: column 'z [nN]': '1 nN' has the unit nanonewton, which is not a length "
+        "(convertible to m)")
+    p = curve("z [um], F [um]", "1, 2")
+    assert refused(p, fit_io.read_curve, p).startswith(
+        f"{p}:3: column 'F [um]': '1 um' has the unit micrometer, which is not a force")
+    p = curve("z [um], F [nN]", "1, 2", "3, 4, 5")
+    assert refused(p, fit_io.read_curve, p) == f"{p}:5: 3 values; each line has 2"
+    p = curve("z [um], F [nN]", "1, 2", "3, x")
+    assert refused(p, fit_io.read_curve, p) == f"{p}:5: '3, x' is not two numbers"
+    # the first value that is not finite, by its line: the third point's position (an inf
+    # later too)
+    p = curve("z [um], F [nN]", "1, 2", "3, 4", "inf, 5", "6, nan")
+    assert refused(p, fit_io.read_curve, p) == f"{p}:6: a value is not finite"
+    p = curve("z [um], F [nN]", "1, 2", "3, 4", "5, -inf")
+    assert refused(p, fit_io.read_curve, p) == f"{p}:6: a value is not finite"
+    # finite as written, beyond float in SI units: refused too, never an inf returned
+    p = curve("z [km], F [nN]", "1, 2", "1e306, 4")
+    assert refused(p, fit_io.read_curve, p) == f"{p}:5: a value is not finite"
+    p = write(tmp_path, "# only\n# comments\n", "empty.csv")
+    assert refused(p, fit_io.read_curve, p) == f"{p}: no header line (e.g. `z [um], F [nN]`)"
+    p = tmp_path / "missing.csv"
+    assert refused(p, fit_io.read_curve, p) == f"{p}: no such file"
+    p = tmp_path / "latin1.csv"
+    p.write_bytes(b"z [\xb5m], F [nN]\n1, 2\n")
+    assert refused(p, fit_io.read_curve, p).startswith(f"{p}: cannot read the file (")
+
+
+# -- read_columns: a scene's [fit] columns and units ----------------------------------------
+def test_read_columns_picks_and_scales(tmp_path):
+    p = write(tmp_path, "F[nN],curve,z[um]\n2,a,1.5\n4e3,b,-0.25\n")
+    z, F = fit_io.read_columns(p, ("z", "F"))
+    assert z.tolist() == [1.5 * 1e-6, -0.25 * 1e-6] and F.tolist() == [2 * 1e-9, 4e3 * 1e-9]
+    bare = write(tmp_path, "t, height, force\n0, 3, 5\n1, 7, 9\n", "bare.csv")
+    z, F = fit_io.read_columns(bare, ("height", "force"), (1e-9, 1e-12))
+    assert z.tolist() == [3 * 1e-9, 7 * 1e-9] and F.tolist() == [5 * 1e-12, 9 * 1e-12]
+    two = write(tmp_path, "h, f\n3, 5\n", "two.csv")
+    z, F = fit_io.read_columns(two, None, (1e-9, 1e-12))  # units alone: the file has two
+    assert z.tolist() == [3 * 1e-9] and F.tolist() == [5 * 1e-12]
+    # neither: read_curve's rules
+    plain = write(tmp_path, "z [nm], F [pN]\n1, 2\n", "plain.csv")
+    assert [a.tolist() for a in fit_io.read_columns(plain)] == [[1 * 1e-9], [2 * 1e-12]]
+
+
+def test_read_columns_refusals_in_one_line(tmp_path):
+    p = write(tmp_path, "# c\nz [nm], z [nm], F [nN]\n1, 2, 3\n")
+    assert refused(p, fit_io.read_columns, p, ("z", "F")) == (
+        f"{p}:2: the position column 'z' of [fit] columns is twice in the header (its names: "
+        "'z', 'z', 'F')")
+    p = write(tmp_path, "z [nm], F [nN]\n1, 2\n")
+    assert refused(p, fit_io.read_columns, p, ("z", "Force")) == (
+        f"{p}:1: the force column 'Force' of [fit] columns is not in the header (its names: "
+        "'z', 'F')")
+    assert refused(p, fit_io.read_columns, p, ("z", "F"), (1e-9, 1e-9)) == (
+        f"{p}:1: column 'z [nm]' gives its unit, and so does [fit] units: give it once")
+    p3 = write(tmp_path, "z, F, t\n1, 2, 3\n", "three.csv")
+    assert refused(p3, fit_io.read_columns, p3, None, (1e-9, 1e-9)) == (
+        f"{p3}:1: the header names 3 columns; without [fit] columns the file has two, "
+        "position and force")
+    # a column of the header given without a unit and none in [fit]: read_curve's message
+    bare = write(tmp_path, "t, z, F\n0, 1, 2\n", "bare.csv")
+    assert refused(bare, fit_io.read_columns, bare, ("z", "F")) == (
+        f"{bare}:1: column 'z' must be a name and a unit in brackets, e.g. `z [um]`")
+    assert refused(bare, fit_io.read_columns, bare, ("t", "F")) == (
+        f"{bare}:1: column 't' must be a name and a unit in brackets, e.g. `z [um]`")
+    unit = write(tmp_path, "t, z [nm], F [nm]\n0, 1, 2\n", "unit.csv")
+    assert refused(unit, fit_io.read_columns, unit, ("z", "F")) == (
+        f"{unit}:1: column 'F [nm]': '1 nm' has the unit nanometer, which is not a force "
+        "(convertible to N)")
+    # a name is all before the first bracket: a cell with two brackets is no name and unit
+    two = write(tmp_path, "z [x] [um], F [nN]\n1, 2\n", "brackets.csv")
+    assert refused(two, fit_io.read_columns, two, ("z", "F")) == (
+        f"{two}:1: column 'z [x] [um]' must be a name and a unit in brackets, e.g. `z [um]`")
+    rows = write(tmp_path, "t, z, F\n0, 1, 2\n0, 1\n", "rows.csv")
+    assert refused(rows, fit_io.read_columns, rows, ("z", "F"), (1e-9, 1e-9)) == (
+        f"{rows}:3: 2 values; each line has 3")
+    words = write(tmp_path, "t, z, F\n0, 1, 2\nx, 1, y\n", "words.csv")
+    assert refused(words, fit_io.read_columns, words, ("z", "F"), (1e-9, 1e-9)) == (
+        f"{words}:3: 'x, 1, y': the position and force are not numbers")
+    inf = write(tmp_path, "t, z, F\n0, 1, 2\n0, 3, 4\n0, 5, inf\n0, nan, 1\n", "inf.csv")
+    assert refused(inf, fit_io.read_columns, inf, ("z", "F"), (1e-9, 1e-9)) == (
+        f"{inf}:4: a value is not finite")
+    # a unit so large that a finite value overflows: still one line, not inf
+    big = write(tmp_path, "z, F\n1e300, 2\n", "big.csv")
+    assert refused(big, fit_io.read_columns, big, None, (1e10, 1.0)) == (
+        f"{big}:2: a value is not finite")
+
+
+def test_profile_tip_uses_the_scenes_spline_degree():
+    """The sampled tip of a scene's profile body has the spline degree the scene's numerical
+    MDR uses (3 below 20 samples, 5 from 20): its g(x) is that of mdr.Profile with that k."""
+    for n, k in ((10, 3), (25, 5)):
+        r = np.linspace(0.0, 1e-6, n)
+        f = 1e-7 * (r / 1e-6) ** 4  # a quartic: the degree-3 and degree-5 splines differ
+        tip = fit_io.TIP_SHAPES["profile"]({"r": r.tolist(), "f": f.tolist()})
+        x = np.array([0.37e-6, 0.81e-6])
+        want = mdr.Profile.from_samples(r.tolist(), f.tolist(), k=k).g(x)
+        other = mdr.Profile.from_samples(r.tolist(), f.tolist(), k=8 - k).g(x)
+        assert np.array_equal(tip.profile.g(x), want) and not np.array_equal(want, other)
+
+
+# -- fit_in_range ------------------------------------------------------------------------------
+R_TIP, E_STAR = 1e-6, 1e6  # m, Pa
+
+
+def hertz_curve(z, z_true, stiff_from=math.inf):
+    """Hertz's force 4/3 E* sqrt(R) d^1.5 of a paraboloid (5.57) beyond z_true; from
+    ``stiff_from`` deeper on, a much stiffer sample (a substrate) adds k (d - stiff_from)^2."""
+    d = np.maximum(z - z_true, 0.0)
+    F = 4 / 3 * E_STAR * math.sqrt(R_TIP) * d**1.5
+    return F + 1e6 * np.maximum(d - stiff_from, 0.0) ** 2  # k = 1e6 N/m^2
+
+
+def test_depth_range_closed_at_both_ends_and_exactly_min_points():
+    """With the contact point held (fixed_z0, a binary fraction) the range's points are those
+    with lo <= z - z_0 <= hi: both ends in, on a grid that has points exactly there."""
+    z = np.arange(-64, 192) * 2.0**-30  # m, about 1 nm apart; z - 0 is exact
+    F = hertz_curve(z, 0.0)
+    tip = fit.Paraboloid(R=R_TIP)
+    lo, hi = 16 * 2.0**-30, 40 * 2.0**-30
+    r = fit_io.fit_in_range(z, F, tip, (lo, hi), fixed_z0=0.0)
+    assert r.z_0 == 0.0 and r.F.size == 25  # 16, 17, ..., 40
+    assert r.z.min() == lo and r.z.max() == hi
+    # exactly MIN_POINTS points: fitted, not refused
+    hi = (16 + fit.MIN_POINTS - 1) * 2.0**-30
+    r = fit_io.fit_in_range(z, F, tip, (lo, hi), fixed_z0=0.0)
+    assert r.F.size == fit.MIN_POINTS
+    # one fewer: refused in one line naming the range, the contact point and the count
+    hi = (16 + fit.MIN_POINTS - 2) * 2.0**-30
+    with pytest.raises(CurveError) as info:
+        fit_io.fit_in_range(z, F, tip, (lo, hi), fixed_z0=0.0)
+    assert str(info.value) == (
+        f"[fit] depth_range [{lo:g}, {hi:g}] m of the contact point 0 m holds "
+        f"{fit.MIN_POINTS - 1} points; at least {fit.MIN_POINTS} are needed")
+
+
+def moving_curve():
+    """A curve whose deep part (a stiff substrate from 150 nm) pulls the whole curve's contact
+    point away from the shallow part's (to 31 nm): the range's points change after the first
+    fit."""
+    z = np.linspace(-200e-9, 400e-9, 301)
+    return z, hertz_curve(z, 0.0, stiff_from=150e-9)
+
+
+def test_depth_range_refits_until_its_points_settle():
+    z, F = moving_curve()
+    tip = fit.Paraboloid(R=R_TIP)
+    lo, hi = -100e-9, 120e-9
+    whole = fit.fit_curve(z, F, tip)
+    first = (z - whole.z_0 >= lo) & (z - whole.z_0 <= hi)
+    r = fit_io.fit_in_range(z, F, tip, (lo, hi))
+    keep = (z - r.z_0 >= lo) & (z - r.z_0 <= hi)
+    assert not np.array_equal(first, keep)  # the case moves: the first set is not the last
+    # a fixed point: exactly the points in the range of its own contact point
+    assert np.array_equal(r.z, z[keep]) and np.array_equal(r.F, F[keep])
+    # and the shallow part is Hertz's: E* and the contact point of the truth (the fit is of
+    # exact data, so to the solver's tolerance, far below 1e-6)
+    assert abs(r.values[0] / E_STAR - 1) < 1e-6 and abs(r.z_0) < 1e-6 * hi
+
+
+def test_depth_range_that_never_settles_is_one_line(monkeypatch):
+    z, F = moving_curve()
+    monkeypatch.setattr(fit_io, "RANGE_PASSES", 1)
+    lo, hi = -100e-9, 120e-9
+    with pytest.raises(CurveError) as info:
+        fit_io.fit_in_range(z, F, fit.Paraboloid(R=R_TIP), (lo, hi))
+    assert str(info.value) == (
+        "[fit] depth_range [-1e-07, 1.2e-07] m: the points in it still change after 1 fits "
+        "(the contact point moves with them); widen it")
