@@ -321,6 +321,35 @@ def report(result: fit.FitResult, scene_E: float | None = None) -> str:
     return "\n".join(lines)
 
 
+def _modulus(results):
+    """The modulus a batch reports: ("E", (E, its error) of a result) where the fits have a
+    Poisson's ratio (the first fitted one tells), else ("E*", (E*, its error)) [Pa]."""
+    ok = [r for r in results if r.ok]
+    if ok and ok[0].E is not None:
+        return "E", lambda r: (r.E, r.E_error)
+    return "E*", lambda r: (r.values[0], r.errors[0])
+
+
+def map_grids(results):
+    """The maps of a force map's fits, on the grid of their positions: ``(xs, ys, grids)``,
+    xs and ys the distinct x and y [m] of the curves (sorted), ``grids[k, i, j]`` the value at
+    (xs[j], ys[i]) of k = 0: the modulus [Pa] (E, or E* where the fits have no Poisson's
+    ratio), 1: its standard error [Pa], 2: the contact point z_0 [m] (the sample's
+    topography); NaN where the curve failed or no curve was measured."""
+    _, modulus = _modulus(results)
+    xs = np.unique([r.x for r in results])
+    ys = np.unique([r.y for r in results])
+    grids = np.full((3, ys.size, xs.size), np.nan)
+    for r in results:
+        if r.ok:
+            i, j = np.searchsorted(ys, r.y), np.searchsorted(xs, r.x)
+            grids[:, i, j] = (*modulus(r), r.values[1])
+    return xs, ys, grids
+
+
+# The two figures below are drawing only (what they draw is a result above: the fit,
+# map_grids, tested): mutation runs leave them out, as they do numeric/plots.py.
+# pragma: no mutate start
 def figure(result: fit.FitResult, path, title: str | None = None) -> Path:
     """Data, fit and residuals against the position, with the contact point marked (PNG)."""
     import matplotlib
@@ -363,20 +392,10 @@ def map_figure(results, path, title: str) -> Path:
     import matplotlib.pyplot as plt
 
     ok = [r for r in results if r.ok]
-    use_E = bool(ok) and ok[0].E is not None
-    label = "E" if use_E else "E*"
-
-    def modulus(r):
-        return (r.E, r.E_error) if use_E else (r.values[0], r.errors[0])
-
+    label, modulus = _modulus(results)
     ms = prefixed(max((abs(modulus(r)[0]) for r in ok), default=1.0))
     if results and results[0].x is not None:
-        xs = np.unique([r.x for r in results])
-        ys = np.unique([r.y for r in results])
-        grids = np.full((3, ys.size, xs.size), np.nan)
-        for r in ok:
-            i, j = np.searchsorted(ys, r.y), np.searchsorted(xs, r.x)
-            grids[:, i, j] = (*modulus(r), r.values[1])
+        xs, ys, grids = map_grids(results)
         ls = prefixed(float(max(np.abs(xs).max(), np.abs(ys).max())) or 1.0)
         zs = prefixed(float(np.nanmax(np.abs(grids[2]))) if ok else 1.0)
         fig, axes = plt.subplots(1, 3, figsize=(13.5, 4.2))
@@ -418,6 +437,9 @@ def map_figure(results, path, title: str) -> Path:
     return path
 
 
+# pragma: no mutate end
+
+
 def batch_summary(results, scene_E: float | None = None) -> str:
     """A few lines: curves fitted, failed and with warnings; the modulus over the fitted ones."""
     ok = [r for r in results if r.ok]
@@ -425,10 +447,8 @@ def batch_summary(results, scene_E: float | None = None) -> str:
     lines = [f"{len(results)} curves: {len(ok)} fitted ({warned} with warnings), "
              f"{len(results) - len(ok)} failed"]
     if ok:
-        use_E = ok[0].E is not None
-        name = "E" if use_E else "E*"
-        vals = np.array([r.E if use_E else r.values[0] for r in ok])
-        errs = np.array([r.E_error if use_E else r.errors[0] for r in ok])
+        name, modulus = _modulus(results)
+        vals, errs = np.array([modulus(r) for r in ok]).T
         lines.append(f"{name}: median {engineering(float(np.median(vals)), 'Pa')}, from "
                      f"{engineering(float(vals.min()), 'Pa')} to "
                      f"{engineering(float(vals.max()), 'Pa')}; median standard error "

@@ -228,3 +228,56 @@ def test_depth_range_that_never_settles_is_one_line(monkeypatch):
     assert str(info.value) == (
         "[fit] depth_range [-1e-07, 1.2e-07] m: the points in it still change after 1 fits "
         "(the contact point moves with them); widen it")
+
+
+# -- a batch's maps and summary ---------------------------------------------------------------
+def result(x, y, ok=True, E=None, E_error=None, values=(0.0, 0.0), errors=(0.0, 0.0),
+           dgamma=None, warnings=()):
+    from types import SimpleNamespace
+
+    return SimpleNamespace(x=x, y=y, ok=ok, E=E, E_error=E_error, values=values, errors=errors,
+                           dgamma=dgamma, warnings=warnings)
+
+
+def test_map_grids_put_each_fit_at_its_position():
+    # a 3 x 2 map given out of order, one curve failed, one position never measured
+    rs = [result(2e-6, 1e-6, E=5e3, E_error=50.0, values=(4e3, 7e-9)),
+          result(0.0, 0.0, E=1e3, E_error=10.0, values=(9e2, 1e-9)),
+          result(1e-6, 0.0, ok=False, E=None),
+          result(0.0, 1e-6, E=3e3, E_error=30.0, values=(2e3, 3e-9)),
+          result(2e-6, 0.0, E=2e3, E_error=20.0, values=(1e3, 2e-9))]
+    xs, ys, grids = fit_io.map_grids(rs)
+    assert xs.tolist() == [0.0, 1e-6, 2e-6] and ys.tolist() == [0.0, 1e-6]
+    nan = math.nan
+    want = np.array([[[1e3, nan, 2e3], [3e3, nan, 5e3]],      # E [Pa]: row y, column x
+                     [[10.0, nan, 20.0], [30.0, nan, 50.0]],   # its standard error [Pa]
+                     [[1e-9, nan, 2e-9], [3e-9, nan, 7e-9]]])  # z_0 [m]
+    np.testing.assert_array_equal(grids, want)
+    # without a Poisson's ratio (E is None): E* and its error, values[0] and errors[0]
+    rs = [result(0.0, 0.0, values=(9e2, 1e-9), errors=(8.0, 1e-11)),
+          result(1e-6, 0.0, values=(4e2, 2e-9), errors=(3.0, 1e-11))]
+    xs, ys, grids = fit_io.map_grids(rs)
+    np.testing.assert_array_equal(grids[:, 0, :], [[9e2, 4e2], [8.0, 3.0], [1e-9, 2e-9]])
+    assert fit_io._modulus(rs)[0] == "E*" and fit_io._modulus(
+        [result(0, 0, ok=False), result(0, 1, E=1.0, E_error=0.1)])[0] == "E"
+
+
+def test_batch_summary_counts_and_spans():
+    rs = [result(None, None, E=1e3, E_error=10.0), result(None, None, ok=False),
+          result(None, None, E=4e3, E_error=40.0, warnings=("w",)),
+          result(None, None, E=2e3, E_error=30.0)]
+    assert fit_io.batch_summary(rs, scene_E=2.5e3) == (
+        "4 curves: 3 fitted (1 with warnings), 1 failed\n"
+        "E: median 2 kPa, from 1 kPa to 4 kPa; median standard error 30 Pa\n"
+        "the scene's sample E = 2.5 kPa (not used)")
+    rs = [result(None, None, values=(1e3, 0.0), errors=(10.0, 0.0), dgamma=0.01),
+          result(None, None, values=(3e3, 0.0), errors=(20.0, 0.0), dgamma=0.03)]
+    for r, e in zip(rs, (0.001, 0.003), strict=True):
+        r.dgamma_error = e
+    assert fit_io.batch_summary(rs) == (
+        "2 curves: 2 fitted (0 with warnings), 0 failed\n"
+        "E*: median 2 kPa, from 1 kPa to 3 kPa; median standard error 15 Pa\n"
+        "work of adhesion: median 0.02 J/m^2, from 0.01 to 0.03 J/m^2; median standard "
+        "error 0.002 J/m^2")
+    assert fit_io.batch_summary([result(None, None, ok=False)]) == (
+        "1 curves: 0 fitted (0 with warnings), 1 failed")
