@@ -464,14 +464,16 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
 
 
 def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
-               resume: bool = False, refresh: bool = False) -> Run:
+               resume: bool = False, refresh: bool = False, workers: int = 1) -> Run:
     work = scratch(module, tests, base, resume, refresh)
     # the tests of the run (a resumed run keeps those it began with: see scratch)
     cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
     tests = list(cfg["pytest_add_cli_args_test_selection"])
     resumed = (work / "run.log").exists()
     mutmut = str(Path(sys.executable).with_name("mutmut"))
-    cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", "1"]
+    # one worker on a shared machine (a loaded machine trips mutmut's wall-time limit: false
+    # timeouts); more on an idle one
+    cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", str(workers)]
     t = time.perf_counter()
     with open(work / "run.log", "a" if resumed else "w") as log:
         proc = subprocess.run(cmd, cwd=work, stdout=log, stderr=subprocess.STDOUT,
@@ -659,9 +661,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--refresh", action="store_true",
                     help="run a module's last run again on today's source: only the mutants "
                     "of functions changed since are checked again (the run's tests)")
+    ap.add_argument("--workers", type=int, default=1,
+                    help="mutants checked at once (default 1; more only on an idle machine)")
     ap.add_argument("--report-only", action="store_true",
                     help="write the report from the last run of each module (in --work)")
     args = ap.parse_args(argv)
+    if args.workers < 1:
+        ap.error(f"--workers {args.workers}: at least 1")
     if args.tests and len(args.tests) != len(args.module):
         ap.error("give one --tests list after each --module")
     if args.module:
@@ -690,14 +696,15 @@ def main(argv: list[str] | None = None) -> int:
             continue
         print(f"mutating numeric/{m} with {' '.join(tests)} ...", flush=True)
         runs.append(run_module(m, tests, args.work.resolve(), notes, args.resume,
-                                args.refresh))
+                                args.refresh, args.workers))
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
     shown = [a for a in argv if a not in ("--report-only", "--resume", "--refresh")]
-    if "--work" in shown:  # a scratch folder is no part of the command that makes the page
-        i = shown.index("--work")
-        del shown[i:i + 2]
+    for opt in ("--work", "--workers"):  # a scratch folder, the machine: not the page's
+        if opt in shown:
+            i = shown.index(opt)
+            del shown[i:i + 2]
     text = report(runs, shown, total, args.report_only)
     if missing:
         text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)
