@@ -269,8 +269,9 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False,
     kept (mutmut then checks only the mutants it has no result for, and those of functions
     changed since). With ``refresh``, the folder of a run, finished or not, is kept with its
     results and tests, and gets today's numeric/: mutmut compares each function's hash with
-    the one it ran, and checks again only the mutants of functions changed since (with the
-    run's tests; a changed test selection would make it check every mutant again)."""
+    the one it ran, and checks again only the mutants of functions changed since, and those
+    that had no tests (with the run's tests, whose map of functions it makes again; a changed
+    test selection would make it check every mutant again)."""
     work = base / workdir(module)
     if refresh:
         if not (work / "mutants").is_dir():
@@ -280,6 +281,15 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False,
         write_config(work, {**mutmut_config(module, tests), sel: cfg[sel]})
         shutil.rmtree(work / PACKAGE)
         copy_sources(work, module)
+        # the tests' map of functions is made again (a function added since has no tests in
+        # the old one), and the mutants it had no tests for are checked again with it
+        (work / "mutants" / "mutmut-stats.json").unlink(missing_ok=True)
+        for meta in (work / "mutants").rglob("*.py.meta"):
+            data = json.loads(meta.read_text())
+            codes = data["exit_code_by_key"]
+            data["exit_code_by_key"] = {k: None if STATUS.get(c) == "no tests" else c
+                                        for k, c in codes.items()}
+            meta.write_text(json.dumps(data))
         for folder in ("tests", *EXTRA):  # this checkout's (the run may have been made in another)
             (work / folder).unlink(missing_ok=True)
             (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
