@@ -140,7 +140,7 @@ def test_every_curve_failing_exits_1(tmp_path, capsys):
     ("curve [um], z [nm], F [nN]\n", "the curve's name, without a unit"),
     ("x [um], y [um], z [nm], F [nN]\n", "no points after the header"),
     ("x [um], y [um], z [nm], F [nN]\n1, 2, 3\n", ":2: 3 values; each line has 4"),
-    ("curve, z [nm], F [nN]\na, 1, b\n", ":2: 'a, 1, b' is not 2 numbers after the curve name"),
+    ("curve, z [nm], F [nN]\na, 1, b\n", ":2: 'a, 1, b' is not two numbers after the curve name"),
 ])
 def test_bad_map_is_one_line_and_exit_2(tmp_path, capsys, text, message):
     (tmp_path / "m.csv").write_text(text)
