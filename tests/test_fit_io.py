@@ -33,8 +33,10 @@ def refused(match_path, call, *args, **kwargs) -> str:
 
 # -- read_curve: one curve, two columns with units ------------------------------------------
 def test_read_curve_scales_each_column_by_its_unit(tmp_path):
-    path = write(tmp_path, "\ufeff# comment\n\n#z [m], F [N]\nz [um], F [nN]\n"
-                 "1.5, 2\n-0.25, 4e3\n")
+    # a byte-order mark, comments (one indented), an empty line before the header; a comment
+    # between the points
+    path = write(tmp_path, "\ufeff# comment\n\n   #z [m], F [N]\nz [um], F [nN]\n"
+                 "1.5, 2\n  # 7, 8\n-0.25, 4e3\n")
     z, F = fit_io.read_curve(path)
     # 1 um = 1e-6 m, 1 nN = 1e-9 N: each value times its column's unit, nothing else
     assert z.tolist() == [1.5 * 1e-6, -0.25 * 1e-6] and F.tolist() == [2 * 1e-9, 4e3 * 1e-9]
@@ -380,3 +382,46 @@ def test_report_in_full():
                                 "warning: w1\nwarning: w2")
     r.E = None  # no Poisson's ratio: no E to compare
     assert "sample E" not in fit_io.report(r, scene_E=2e3)
+
+
+# -- the tip of a scene -------------------------------------------------------------------------
+def scene_file(tmp_path, tip, sample='shape = "flat"\nE = "20 kPa"\nnu = 0.5'):
+    path = tmp_path / "s.toml"
+    path.write_text('effects = ["force"]\n[load]\ndepth = "1 um"\n'
+                    f'[[body]]\nname = "tip"\n{tip}\n[[body]]\nname = "gel"\n{sample}\n')
+    return path
+
+
+def test_tip_from_scene_returns_the_tip_and_both_materials(tmp_path):
+    p = scene_file(tmp_path, 'shape = "sphere"\nradius = "2 um"\nE = "170 GPa"\nnu = 0.28')
+    tip, nu, E, tip_E, tip_nu = fit_io.tip_from_scene(p)
+    assert repr(tip) == repr(fit.Paraboloid(R=2e-6))
+    assert (nu, E, tip_E, tip_nu) == (0.5, 20e3, 170e9, 0.28)
+    p = scene_file(tmp_path, 'shape = "cone"\nangle = "70 deg"\nrigid = true')
+    tip, nu, E, tip_E, tip_nu = fit_io.tip_from_scene(p)
+    assert repr(tip) == repr(fit.Cone(theta=math.radians(70)))
+    assert (tip_E, tip_nu) == (None, None)
+
+
+@pytest.mark.parametrize("tip,sample,words", [
+    ('shape = "flat"\nE = "1 GPa"\nnu = 0.3', 'shape = "flat"\nE = "20 kPa"\nnu = 0.5',
+     "body: a fit needs one flat body (the sample) and one tip; this scene has 2 flat bodies"),
+    ('shape = "sphere"\nradius = "2 um"\nE = "1 GPa"\nnu = 0.3', 'shape = "flat"\nrigid = true',
+     "body (gel): the sample is rigid; give its E and nu (E is shown for comparison, nu "
+     "converts E* to E)"),
+    ('shape = "cylinder"\nradius = "2 um"\nlength = "1 mm"\nrigid = true', None,
+     "body (tip).shape: 'cylinder' has no fit model yet; tips: sphere, exact_sphere, cone, "
+     "pyramid, flat_punch, power_law, profile"),
+])
+def test_tip_from_scene_refusals(tmp_path, tip, sample, words):
+    p = scene_file(tmp_path, tip, *([sample] if sample else []))
+    assert refused(p, fit_io.tip_from_scene, p) == f"{p}: {words}"
+
+
+def test_tip_from_scene_names_the_tip_a_model_refuses(tmp_path, monkeypatch):
+    def refuse(p):
+        raise ValueError("R = 2e-06 m: a test refusal")
+
+    monkeypatch.setitem(fit_io.TIP_SHAPES, "sphere", refuse)
+    p = scene_file(tmp_path, 'shape = "sphere"\nradius = "2 um"\nrigid = true')
+    assert refused(p, fit_io.tip_from_scene, p) == f"{p}: body (tip): R = 2e-06 m: a test refusal"
