@@ -195,7 +195,7 @@ def stub_fit(monkeypatch):
     state = SimpleNamespace(calls=[], raises={})
 
     def fake(z, F, tip, **kw):
-        state.calls.append(kw)
+        state.calls.append((tip, kw))
         k = int(round(float(z[0])))
         if k < 0:
             raise state.raises[k]
@@ -272,10 +272,12 @@ def test_each_field_carried_from_the_fit(stub_fit):
     curves = _stub_curves(6, bad=(2, 3, 4))
     stub_fit.raises = {-1: ValueError("the first line\nthe second"), -2: ValueError(),
                        -3: ZeroDivisionError("float division by zero")}
-    res = fit_batch.fit_curves(curves, Paraboloid(25e-6), nu=0.4, sigma=1e-9, fixed_z0=2e-7,
+    tip = Paraboloid(25e-6)
+    res = fit_batch.fit_curves(curves, tip, nu=0.4, sigma=1e-9, fixed_z0=2e-7,
                                fixed_baseline=(1e-9, 0.0), workers=1)
     assert [r.name for r in res] == [c.name for c in curves]
-    for call in stub_fit.calls:
+    for got_tip, call in stub_fit.calls:
+        assert got_tip is tip
         assert call == {"nu": 0.4, "tip_modulus": None, "tip_nu": None, "z0": None,
                         "sigma": 1e-9, "fixed_z0": 2e-7, "fixed_baseline": (1e-9, 0.0)}
     assert [r.error for r in res[2:5]] == ["the first line", "ValueError",
@@ -311,6 +313,7 @@ def test_workers_and_tasks(stub_fit, inline_pool, monkeypatch):
     assert [r.name for r in res] == [f"c{k}" for k in range(n)]
     assert [r.ok for r in res] == [k != 3 for k in range(n)]
     assert res[7].values[0] == 1e6 + 7
+    assert all(got_tip is tip for got_tip, _ in stub_fit.calls)
     n = 1000  # 2 workers x 16 tasks of 32 curves (the last 8)
     fit_batch.fit_curves(_stub_curves(n, size=2), tip, workers=2)
     sizes = [len(t) for t in inline_pool[-1].tasks]
@@ -333,10 +336,10 @@ def test_serial_progress(stub_fit):
                          progress=lambda *a: seen.append(a))
     assert seen == [(1, 5, 0), (2, 5, 1), (3, 5, 1), (4, 5, 2), (5, 5, 2)]
     seen.clear()
-    n = 201  # total // 100 = 2: after every second curve, and the last
+    n = 301  # total // 100 = 3: after every third curve, and the last
     fit_batch.fit_curves(_stub_curves(n, bad=(0,), size=2), tip, workers=1,
                          progress=lambda *a: seen.append(a))
-    assert seen == [(k, n, 1) for k in range(2, n, 2)] + [(n, n, 1)]
+    assert seen == [(k, n, 1) for k in range(3, n, 3)] + [(n, n, 1)]
 
 
 def test_adhesive_batch():
