@@ -15,7 +15,8 @@ import multiprocessing
 import os
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -84,6 +85,13 @@ def _failed(curve: Curve, message: str, adhesion: bool = False) -> CurveFit:
                     int(np.size(curve.z)), 0, math.nan, (), message, dg, dg)
 
 
+def _one_line(exc: BaseException) -> str:
+    """An exception as a failed curve's message: a ValueError's text (the validators' own
+    messages), else its type and text; its first line only."""
+    msg = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
+    return msg.splitlines()[0] if msg else type(exc).__name__
+
+
 #: the adhesive fit's parameters (E*, z_0, Delta gamma, F_0, s_0) that CurveFit.values holds
 _ADHESIVE_BASE = [0, 1, 3, 4]
 
@@ -99,8 +107,7 @@ def _fit_one(curve: Curve, tip, options: dict) -> CurveFit:
         else:
             r = fit.fit_curve(curve.z, curve.F, tip, **options)
     except Exception as exc:  # noqa: BLE001 -- one curve's failure is its row, not the batch's
-        msg = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
-        return _failed(curve, msg.splitlines()[0] if msg else type(exc).__name__, adhesion)
+        return _failed(curve, _one_line(exc), adhesion)
     keep = _ADHESIVE_BASE if adhesion else slice(None)
     dg, dg_err = (float(r.values[2]), float(r.errors[2])) if adhesion else (None, None)
     return CurveFit(curve.name, curve.x, curve.y, tuple(map(float, r.values[keep])),
@@ -111,6 +118,17 @@ def _fit_one(curve: Curve, tip, options: dict) -> CurveFit:
 
 def _fit_chunk(curves: Sequence[Curve], tip, options: dict) -> list[CurveFit]:
     return [_fit_one(c, tip, options) for c in curves]
+
+
+def _submit(pool, *args) -> Future:
+    """A chunk's task; a pool broken before it was sent (a worker that died) gives a future
+    holding that error, failed like the tasks the pool had."""
+    try:
+        return pool.submit(_fit_chunk, *args)
+    except BrokenProcessPool as exc:
+        fut = Future()
+        fut.set_exception(exc)
+        return fut
 
 
 def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_nu=None,
@@ -140,7 +158,8 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     -------
     list of CurveFit
         In the order of ``curves``; a curve that could not be fitted has ``error`` set (its
-        message, one line) and NaN values.
+        message, one line) and NaN values; so has each curve of a worker process that ended
+        abruptly (killed, out of memory: ``BrokenProcessPool: ...``), never the batch.
     """
     if workers is None:
         workers = os.cpu_count() or 1
@@ -176,10 +195,15 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     ctx = multiprocessing.get_context("fork" if "fork" in methods else None)
     done = 0
     with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        futures = {pool.submit(_fit_chunk, curves[s:s + size], tip, options): s for s in starts}
+        futures = {_submit(pool, curves[s:s + size], tip, options): s for s in starts}
         for fut in as_completed(futures):
             s = futures[fut]
-            chunk = fut.result()
+            try:
+                chunk = fut.result()
+            except Exception as exc:  # noqa: BLE001 -- a worker that died (killed, out of
+                # memory; BrokenProcessPool) or a task that could not be sent: its curves fail
+                chunk = [_failed(c, _one_line(exc), bool(options.get("adhesion")))
+                         for c in curves[s:s + size]]
             results[s:s + len(chunk)] = chunk
             done += len(chunk)
             failed += sum(not r.ok for r in chunk)

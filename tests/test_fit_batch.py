@@ -444,3 +444,57 @@ def test_table_cells(tmp_path):
                       *fit_batch.TABLE_COLUMNS[k:]]
     assert got[1] == [*rows[0][:k], "0.05", "0.002", *rows[0][k:]]
     assert got[2] == [*rows[2][:k], "", "", *rows[2][k:]]
+
+
+@pytest.mark.skipif("fork" not in __import__("multiprocessing").get_all_start_methods(),
+                    reason="the stand-in fit reaches the workers by fork")
+def test_a_worker_that_dies_fails_its_curves(stub_fit, monkeypatch):
+    """A worker process that ends abruptly (killed, out of memory) fails the curves it held,
+    each with one line naming what happened, never the batch (it was a BrokenProcessPool
+    traceback): one result per curve, in order, the others fitted or failed alike, and the
+    progress reaches the end with every failure counted."""
+    import os
+
+    from hertzmdr.numeric import fit as fit_module
+
+    stub = fit_module.fit_curve
+
+    def dying(z, F, tip, **kw):
+        if float(z[0]) == 5:
+            os._exit(3)
+        return stub(z, F, tip, **kw)
+
+    monkeypatch.setattr(fit_module, "fit_curve", dying)
+    n = fit_batch.MIN_PARALLEL + 8
+    seen = []
+    res = fit_batch.fit_curves(_stub_curves(n), Paraboloid(25e-6), workers=2,
+                               progress=lambda *a: seen.append(a))
+    assert [r.name for r in res] == [f"c{k}" for k in range(n)]
+    lost = res[5]
+    assert not lost.ok and lost.error.startswith("BrokenProcessPool: ") and math.isnan(
+        lost.values[0]) and "\n" not in lost.error, lost.error
+    for k, r in enumerate(res):
+        assert (r.ok and r.values[0] == 1e6 + k) or r.error == lost.error, (k, r)
+    assert seen[-1] == (n, n, sum(not r.ok for r in res))
+
+
+def test_a_pool_broken_before_sending_fails_the_rest(stub_fit, monkeypatch):
+    """A worker that dies while tasks are still being sent breaks the pool: the tasks not sent
+    fail their curves with that one line (NaN work of adhesion in an adhesive batch)."""
+    from concurrent.futures.process import BrokenProcessPool
+
+    class Broken(_InlinePool):
+        def submit(self, fn, curves, *args):
+            if len(self.tasks) >= self.kw["max_workers"] - 2:  # workers 4: 2 sent
+                raise BrokenProcessPool("a worker died")
+            return super().submit(fn, curves, *args)
+
+    monkeypatch.setattr(fit_batch, "ProcessPoolExecutor", Broken)
+    n = fit_batch.MIN_PARALLEL
+    res = fit_batch.fit_curves(_stub_curves(n), Paraboloid(25e-6), workers=4)
+    sent = 2 * fit_batch.MIN_CHUNK
+    assert [r.ok for r in res] == [True] * sent + [False] * (n - sent)
+    assert {r.error for r in res[sent:]} == {"BrokenProcessPool: a worker died"}
+    assert res[sent - 1].values[0] == 1e6 + sent - 1 and res[sent - 1].dgamma is None
+    res = fit_batch.fit_curves(_stub_curves(n), Paraboloid(25e-6), adhesion=True, workers=2)
+    assert all(not r.ok and math.isnan(r.dgamma) for r in res)
