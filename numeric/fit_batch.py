@@ -163,7 +163,9 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     """
     if workers is None:
         workers = os.cpu_count() or 1
-    if not (isinstance(workers, int) and workers >= 1):
+    if isinstance(workers, np.integer):  # a count from numpy is a count
+        workers = int(workers)
+    if not (isinstance(workers, int) and not isinstance(workers, bool) and workers >= 1):
         raise ValueError(f"workers = {workers!r} is out of range; valid: an integer >= 1")
     options = {"nu": nu, "tip_modulus": tip_modulus, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
     if adhesion:

@@ -385,12 +385,16 @@ def test_adhesive_batch():
         fit_batch.fit_curves(curves, PowerLaw(2e-6, 0.4), adhesion=True)
 
 
-def test_workers_refused_in_one_line():
-    for bad in (0, -1, 2.5, "2"):
+def test_workers_refused_in_one_line(stub_fit):
+    """workers: an integer >= 1, numpy's too (np.int64(2) was refused as 'out of range' by a
+    message that asked for an integer); True is not a count (it was taken as 1)."""
+    res = fit_batch.fit_curves(_stub_curves(2), Paraboloid(25e-6), workers=np.int64(1))
+    assert [r.ok for r in res] == [True, True]
+    for bad, shown in ((0, "0"), (-1, "-1"), (2.5, "2.5"), ("2", "'2'"), (True, "True"),
+                       (np.int64(0), "0")):
         with pytest.raises(ValueError) as exc:
             fit_batch.fit_curves([], Paraboloid(25e-6), workers=bad)
-        assert str(exc.value) == (f"workers = {bad!r} is out of range; valid: an integer "
-                                  ">= 1")
+        assert str(exc.value) == f"workers = {shown} is out of range; valid: an integer >= 1"
 
 
 def test_progress_bar_throttled(monkeypatch):
