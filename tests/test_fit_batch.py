@@ -502,3 +502,22 @@ def test_a_pool_broken_before_sending_fails_the_rest(stub_fit, monkeypatch):
     assert res[sent - 1].values[0] == 1e6 + sent - 1 and res[sent - 1].dgamma is None
     res = fit_batch.fit_curves(_stub_curves(n), Paraboloid(25e-6), adhesion=True, workers=2)
     assert all(not r.ok and math.isnan(r.dgamma) for r in res)
+
+
+def test_table_is_utf8_in_any_locale(tmp_path):
+    """The table is UTF-8 whatever the locale's encoding: here ASCII (the C locale with
+    Python's UTF-8 mode and locale coercion off), as Windows' cp1252 would be another; a
+    curve's name with a µ and a message with a sigma are written and read back."""
+    import os
+    import subprocess
+
+    path = tmp_path / "t.csv"
+    code = ("import numpy as np; from hertzmdr.numeric import fit_batch as b; "
+            "c = b.Curve('x = 9.5 \\u00b5m', None, None, np.zeros(2), np.zeros(2)); "
+            f"b.write_table([b._failed(c, 'no contact: \\u03c3 = 0')], {str(path)!r})")
+    env = {**os.environ, "LC_ALL": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}
+    done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                          text=True)
+    assert done.returncode == 0, done.stderr
+    row = path.read_bytes().decode("utf-8").splitlines()[1]
+    assert row.startswith("x = 9.5 µm,") and row.endswith(",failed,no contact: σ = 0"), row
