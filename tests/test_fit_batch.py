@@ -305,8 +305,11 @@ def test_workers_and_tasks(stub_fit, inline_pool, monkeypatch):
     res = fit_batch.fit_curves(_stub_curves(n, bad=(3,)), tip, workers=2)
     (pool,) = inline_pool
     assert pool.kw["max_workers"] == 2
-    if "fork" in __import__("multiprocessing").get_all_start_methods():
-        assert pool.kw["mp_context"].get_start_method() == "fork"
+    import multiprocessing
+
+    if "fork" in multiprocessing.get_all_start_methods():  # asked for, not Python's default
+        # (which is forkserver on Linux from Python 3.14, spawn on macOS)
+        assert pool.kw["mp_context"] is multiprocessing.get_context("fork")
     # 32 curves over 2 x 16 tasks would be 1 each: MIN_CHUNK = 4 a task instead
     assert [len(t) for t in pool.tasks] == [fit_batch.MIN_CHUNK] * (n // fit_batch.MIN_CHUNK)
     assert sum(pool.tasks, []) == [f"c{k}" for k in range(n)]
