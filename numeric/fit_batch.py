@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from hertzmdr.numeric import fit
+from hertzmdr.numeric._validate import positive
 
 __all__ = ["Curve", "CurveFit", "fit_curves", "write_table", "TABLE_COLUMNS"]
 
@@ -160,6 +161,13 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
         In the order of ``curves``; a curve that could not be fitted has ``error`` set (its
         message, one line) and NaN values; so has each curve of a worker process that ended
         abruptly (killed, out of memory: ``BrokenProcessPool: ...``), never the batch.
+
+    Raises
+    ------
+    ValueError
+        For an option every curve shares (workers, nu, tip_modulus, tip_nu, sigma, fixed_z0,
+        fixed_baseline, a tip without an adhesive model): one message for the batch, before
+        any curve is fitted.
     """
     if workers is None:
         workers = os.cpu_count() or 1
@@ -177,7 +185,13 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
         fit_adhesive._check_tip(tip)  # one message for the batch, not one per curve
         options["adhesion"] = True
     else:
+        fit._fixed_values(fixed_z0, fixed_baseline)  # checked once, as below
         options.update(fixed_z0=fixed_z0, fixed_baseline=fixed_baseline)
+    # the options every curve shares, checked once: one message for the batch, not one per
+    # curve (the moduli's were checked only after each curve's fit, every curve fitted first)
+    fit._sample_modulus(0.0, 0.0, nu, tip_modulus, tip_nu)  # E* = 0: any tip is stiffer
+    if sigma is not None:
+        positive("sigma", sigma)
     total = len(curves)
     if total == 0:
         return []

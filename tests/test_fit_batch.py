@@ -524,3 +524,25 @@ def test_table_is_utf8_in_any_locale(tmp_path):
     assert done.returncode == 0, done.stderr
     row = path.read_bytes().decode("utf-8").splitlines()[1]
     assert row.startswith("x = 9.5 µm,") and row.endswith(",failed,no contact: σ = 0"), row
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"nu": 0.7}, "nu = 0.7 is out of range; valid: -1 < nu <= 0.5"),
+    ({"tip_modulus": 1e9}, "tip_modulus is given without nu"),
+    ({"nu": 0.3, "tip_modulus": -1.0}, "tip_modulus = -1.0 is out of range"),
+    ({"nu": 0.3, "tip_modulus": 1e9, "tip_nu": 0.6}, "tip_nu = 0.6 is out of range"),
+    ({"sigma": 0.0}, "sigma = 0.0 is out of range"),
+    ({"fixed_z0": math.nan}, "fixed_z0 = nan is out of range"),
+    ({"fixed_baseline": (1.0,)}, "fixed_baseline = (1.0,) is out of range"),
+])
+def test_shared_options_refused_once(stub_fit, options, message):
+    """The options every curve shares are checked before any fit: one ValueError for the
+    batch (a bad nu was a failed record per curve, each curve fitted first)."""
+    with pytest.raises(ValueError) as exc:
+        fit_batch.fit_curves(_stub_curves(3), Paraboloid(25e-6), workers=1, **options)
+    assert str(exc.value).startswith(message) and "\n" not in str(exc.value), exc.value
+    assert not stub_fit.calls
+    # a valid set passes, whatever the tip's modulus (any is above the E* = 0 it is checked at)
+    res = fit_batch.fit_curves(_stub_curves(1), Paraboloid(25e-6), workers=1, nu=0.3,
+                               tip_modulus=0.5, sigma=1e-9, fixed_z0=1e-7)
+    assert res[0].ok
