@@ -546,3 +546,11 @@ def test_shared_options_refused_once(stub_fit, options, message):
     res = fit_batch.fit_curves(_stub_curves(1), Paraboloid(25e-6), workers=1, nu=0.3,
                                tip_modulus=0.5, sigma=1e-9, fixed_z0=1e-7)
     assert res[0].ok
+
+
+def test_cli_shared_option_is_one_line_and_exit_2(capsys):
+    """hertzmdr fit MAP --sigma '0 nN': the batch's refusal is one line and exit 2 (as for one
+    curve), not a traceback."""
+    assert main(["fit", str(MAP), "--scene", str(MAP_SCENE), "--sigma", "0 nN"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "sigma = 0.0 is out of range" in err, err
