@@ -507,22 +507,25 @@ def test_a_pool_broken_before_sending_fails_the_rest(stub_fit, monkeypatch):
     assert all(not r.ok and math.isnan(r.dgamma) for r in res)
 
 
-def test_table_is_utf8_in_any_locale(tmp_path):
-    """The table is UTF-8 whatever the locale's encoding: here ASCII (the C locale with
-    Python's UTF-8 mode and locale coercion off), as Windows' cp1252 would be another; a
-    curve's name with a µ and a message with a sigma are written and read back."""
-    import os
-    import subprocess
+def test_table_is_utf8_with_crlf_on_any_platform(tmp_path, monkeypatch):
+    """The table is UTF-8 with the csv module's \\r\\n line ends wherever it is written: here
+    on a stand-in for Windows' defaults (the locale's encoding cp1252, \\n written as \\r\\n
+    when open() is not told newline=''), a curve's name with a µ and a message with a sigma
+    read back as written, and no \\r\\r\\n."""
 
-    path = tmp_path / "t.csv"
-    code = ("import numpy as np; from hertzmdr.numeric import fit_batch as b; "
-            "c = b.Curve('x = 9.5 \\u00b5m', None, None, np.zeros(2), np.zeros(2)); "
-            f"b.write_table([b._failed(c, 'no contact: \\u03c3 = 0')], {str(path)!r})")
-    env = {**os.environ, "LC_ALL": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}
-    done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
-                          text=True)
-    assert done.returncode == 0, done.stderr
-    row = path.read_bytes().decode("utf-8").splitlines()[1]
+    class WindowsPath(type(Path())):
+        def open(self, mode="r", buffering=-1, encoding=None, errors=None, newline=None):
+            if "b" not in mode:
+                encoding = "cp1252" if encoding is None else encoding
+                newline = "\r\n" if newline is None else newline
+            return super().open(mode, buffering, encoding, errors, newline)
+
+    monkeypatch.setattr(fit_batch, "Path", WindowsPath)
+    c = fit_batch.Curve("x = 9.5 µm", None, None, np.zeros(2), np.zeros(2))
+    path = fit_batch.write_table([fit_batch._failed(c, "no contact: σ = 0")], tmp_path / "t.csv")
+    data = path.read_bytes()
+    assert b"\r\r\n" not in data and data.count(b"\r\n") == 2, data
+    row = data.decode("utf-8").splitlines()[1]
     assert row.startswith("x = 9.5 µm,") and row.endswith(",failed,no contact: σ = 0"), row
 
 
