@@ -235,7 +235,7 @@ class ProgressBar:
     def __init__(self, stream, width: int = 30):
         self.stream, self.width = stream, width
         self.t0 = time.perf_counter()
-        self.last = -1.0
+        self.last = -math.inf  # never drawn: the first call draws, whatever the clock's origin
 
     def __call__(self, done: int, total: int, failed: int) -> None:
         now = time.perf_counter()

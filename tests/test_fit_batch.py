@@ -419,6 +419,14 @@ def test_progress_bar_throttled(monkeypatch):
     assert drawn == [True, False, True, False, True, True]
     assert out.getvalue().endswith(f"\rfitting [{'#' * 30}] 10/10 curves, 0 failed, 0.4 s\n")
     assert f"\rfitting [{'#' * 3}{'.' * 27}] 1/10 curves, 0 failed, 0.1 s\r" in out.getvalue()
+    # perf_counter's origin is undefined (only differences count): a bar made at -1.05 s draws
+    # its first call at -1 s too (it did not: its "never drawn" was the time -1 s)
+    clock[0] = -1.05
+    out = io.StringIO()
+    bar = fit_batch.ProgressBar(out)
+    clock[0] = -1.0
+    bar(1, 10, 0)
+    assert out.getvalue() == f"\rfitting [{'#' * 3}{'.' * 27}] 1/10 curves, 0 failed, 0.1 s"
 
 
 def test_table_cells(tmp_path):
