@@ -126,6 +126,10 @@ def test_read_columns_refusals_in_one_line(tmp_path):
         f"{bare}:1: column 'z' must be a name and a unit in brackets, e.g. `z [um]`")
     assert refused(bare, fit_io.read_columns, bare, ("t", "F")) == (
         f"{bare}:1: column 't' must be a name and a unit in brackets, e.g. `z [um]`")
+    # found by its name (all before the bracket), but no name and unit in brackets
+    extra = write(tmp_path, "t, z [nm], F [nN] each\n0, 1, 2\n", "extra.csv")
+    assert refused(extra, fit_io.read_columns, extra, ("z", "F")) == (
+        f"{extra}:1: column 'F [nN] each' must be a name and a unit in brackets, e.g. `F [nN]`")
     unit = write(tmp_path, "t, z [nm], F [nm]\n0, 1, 2\n", "unit.csv")
     assert refused(unit, fit_io.read_columns, unit, ("z", "F")) == (
         f"{unit}:1: column 'F [nm]': '1 nm' has the unit nanometer, which is not a force "
@@ -337,6 +341,16 @@ def test_read_batch_folder_and_maps(tmp_path):
     assert [(c.x, c.y, c.z.tolist()) for c in curves] == [
         (1 * 1e-6, 2 * 1e-6, [3 * 1e-9, 7 * 1e-9]), (0.0, 2 * 1e-6, [5 * 1e-9])]
     assert curves[0].name == "x = 1 µm, y = 2 µm"
+
+
+def test_is_batch_by_the_header_or_a_folder(tmp_path):
+    assert fit_io.is_batch(tmp_path)  # a folder
+    for header, batch in (("z [nm], F [nN]", False), ("curve, z [nm], F [nN]", True),
+                          ("x [um], y [um], z [nm], F [nN]", True), ("a, b, c, d, e", False)):
+        assert fit_io.is_batch(write(tmp_path, header + "\n", "h.csv")) is batch, header
+    # a file that cannot be read is no batch: the single-curve reader names its problem
+    assert fit_io.is_batch(tmp_path / "missing.csv") is False
+    assert fit_io.is_batch(write(tmp_path, "# only a comment\n", "c.csv")) is False
 
 
 @pytest.mark.parametrize("text,line", [
