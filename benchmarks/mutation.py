@@ -607,13 +607,19 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "Runs since 2026-11-27 16:00 UTC stop a mutant at 6 times its tests' CPU time in the "
         "run's first pass (pyproject.toml's `timeout_multiplier` 3, was mutmut's 15: two "
         "looping mutants of `stress.py` had held a run 89 min each); its *timeout* count is "
-        "of those.",
+        "of those. *(refreshed)*: the run was checked again on a later source with "
+        "`--refresh`: mutmut compares each function's hash with the one it ran and checks "
+        "again only the mutants of functions changed since and those that had no tests (the "
+        "run's test files, their map of functions made again); the time is that of the "
+        "refresh.",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
         "(a demonstration and figures: nothing they compute is a result, and their tests check "
-        "that they run). The scene layer, `numeric/scene/`, has its own page, "
-        "[mutation_scene.md](mutation_scene.md).",
+        "that they run), nor the drawing of `fit_io.py`'s two figures (a `# pragma: no mutate` "
+        "region: what they draw is computed and tested apart, `map_grids`). The notes on the "
+        "survivors are in `benchmarks/mutation_notes*.toml`. The scene layer, "
+        "`numeric/scene/`, has its own page, [mutation_scene.md](mutation_scene.md).",
         "",
         "| module | test files | mutants | " + " | ".join(columns) + " | time | run on |",
         "|---|---|---:|" + "---:|" * len(columns) + "---:|---|",
