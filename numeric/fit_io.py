@@ -18,6 +18,7 @@ or elastic). The scene's effects and load are not used. Its optional ``[fit]`` t
 from __future__ import annotations
 
 import csv
+import math
 import re
 from pathlib import Path
 
@@ -98,13 +99,14 @@ def _numbers(path, rows, first, scales) -> np.ndarray:
             data.append([float(v) for v in row[first:]])
         except ValueError:
             raise CurveError(f"{path}:{lineno}: {','.join(row)!r} is not "
-                             f"{'two' if width == 2 else len(scales)} numbers"
+                             f"{'two' if len(scales) == 2 else 'four'} numbers"
                              f"{' after the curve name' if first else ''}") from None
-    arr = np.array(data, dtype=float).reshape(-1, len(scales))
+    with np.errstate(over="ignore"):  # a value the unit takes beyond float: refused below
+        arr = np.array(data, dtype=float).reshape(-1, len(scales)) * np.asarray(scales)
     if not np.isfinite(arr).all():
         bad = int(np.argwhere(~np.isfinite(arr))[0][0])
         raise CurveError(f"{path}:{rows[bad][0]}: a value is not finite")
-    return arr * np.asarray(scales)
+    return arr
 
 
 def read_curve(path) -> tuple[np.ndarray, np.ndarray]:
@@ -128,6 +130,15 @@ def read_columns(path, columns=None, units=None) -> tuple[np.ndarray, np.ndarray
     unit of each, [m] and [N]) is for a header without units, e.g. ``z, F``; a header that has
     them and ``units`` too is refused (the unit is given once). Neither: :func:`read_curve`.
     """
+    if columns is not None and not (isinstance(columns, (list, tuple)) and len(columns) == 2
+                                    and all(isinstance(c, str) for c in columns)):
+        raise ValueError(f"columns = {columns!r}: the header names of the position and the "
+                         "force column, two strings")
+    if units is not None and not (isinstance(units, (list, tuple)) and len(units) == 2 and all(
+            isinstance(u, (int, float, np.integer, np.floating)) and not isinstance(u, bool)
+            and 0 < u < math.inf for u in units)):
+        raise ValueError(f"units = {units!r}: the size in SI units of one unit of the position "
+                         "[m] and of the force [N], two positive finite numbers")
     if columns is None and units is None:
         return read_curve(path)
     path = Path(path)
@@ -166,7 +177,8 @@ def read_columns(path, columns=None, units=None) -> tuple[np.ndarray, np.ndarray
         except ValueError:
             raise CurveError(f"{path}:{lineno}: {','.join(row)!r}: the position and force are "
                              "not numbers") from None
-    arr = np.array(data, dtype=float).reshape(-1, 2) * np.asarray(scales)
+    with np.errstate(over="ignore"):  # a value the unit takes beyond float: refused below
+        arr = np.array(data, dtype=float).reshape(-1, 2) * np.asarray(scales)
     if not np.isfinite(arr).all():
         bad = int(np.argwhere(~np.isfinite(arr))[0][0])
         raise CurveError(f"{path}:{rows[bad][0]}: a value is not finite")
@@ -319,6 +331,35 @@ def report(result: fit.FitResult, scene_E: float | None = None) -> str:
     return "\n".join(lines)
 
 
+def _modulus(results):
+    """The modulus a batch reports: ("E", (E, its error) of a result) where the fits have a
+    Poisson's ratio (the first fitted one tells), else ("E*", (E*, its error)) [Pa]."""
+    ok = [r for r in results if r.ok]
+    if ok and ok[0].E is not None:
+        return "E", lambda r: (r.E, r.E_error)
+    return "E*", lambda r: (r.values[0], r.errors[0])
+
+
+def map_grids(results):
+    """The maps of a force map's fits, on the grid of their positions: ``(xs, ys, grids)``,
+    xs and ys the distinct x and y [m] of the curves (sorted), ``grids[k, i, j]`` the value at
+    (xs[j], ys[i]) of k = 0: the modulus [Pa] (E, or E* where the fits have no Poisson's
+    ratio), 1: its standard error [Pa], 2: the contact point z_0 [m] (the sample's
+    topography); NaN where the curve failed or no curve was measured."""
+    _, modulus = _modulus(results)
+    xs = np.unique([r.x for r in results])
+    ys = np.unique([r.y for r in results])
+    grids = np.full((3, ys.size, xs.size), np.nan)
+    for r in results:
+        if r.ok:
+            i, j = np.searchsorted(ys, r.y), np.searchsorted(xs, r.x)
+            grids[:, i, j] = (*modulus(r), r.values[1])
+    return xs, ys, grids
+
+
+# The two figures below are drawing only (what they draw is a result above: the fit,
+# map_grids, tested): mutation runs leave them out, as they do numeric/plots.py.
+# pragma: no mutate start
 def figure(result: fit.FitResult, path, title: str | None = None) -> Path:
     """Data, fit and residuals against the position, with the contact point marked (PNG)."""
     import matplotlib
@@ -361,20 +402,10 @@ def map_figure(results, path, title: str) -> Path:
     import matplotlib.pyplot as plt
 
     ok = [r for r in results if r.ok]
-    use_E = bool(ok) and ok[0].E is not None
-    label = "E" if use_E else "E*"
-
-    def modulus(r):
-        return (r.E, r.E_error) if use_E else (r.values[0], r.errors[0])
-
+    label, modulus = _modulus(results)
     ms = prefixed(max((abs(modulus(r)[0]) for r in ok), default=1.0))
     if results and results[0].x is not None:
-        xs = np.unique([r.x for r in results])
-        ys = np.unique([r.y for r in results])
-        grids = np.full((3, ys.size, xs.size), np.nan)
-        for r in ok:
-            i, j = np.searchsorted(ys, r.y), np.searchsorted(xs, r.x)
-            grids[:, i, j] = (*modulus(r), r.values[1])
+        xs, ys, grids = map_grids(results)
         ls = prefixed(float(max(np.abs(xs).max(), np.abs(ys).max())) or 1.0)
         zs = prefixed(float(np.nanmax(np.abs(grids[2]))) if ok else 1.0)
         fig, axes = plt.subplots(1, 3, figsize=(13.5, 4.2))
@@ -416,6 +447,9 @@ def map_figure(results, path, title: str) -> Path:
     return path
 
 
+# pragma: no mutate end
+
+
 def batch_summary(results, scene_E: float | None = None) -> str:
     """A few lines: curves fitted, failed and with warnings; the modulus over the fitted ones."""
     ok = [r for r in results if r.ok]
@@ -423,10 +457,8 @@ def batch_summary(results, scene_E: float | None = None) -> str:
     lines = [f"{len(results)} curves: {len(ok)} fitted ({warned} with warnings), "
              f"{len(results) - len(ok)} failed"]
     if ok:
-        use_E = ok[0].E is not None
-        name = "E" if use_E else "E*"
-        vals = np.array([r.E if use_E else r.values[0] for r in ok])
-        errs = np.array([r.E_error if use_E else r.errors[0] for r in ok])
+        name, modulus = _modulus(results)
+        vals, errs = np.array([modulus(r) for r in ok]).T
         lines.append(f"{name}: median {engineering(float(np.median(vals)), 'Pa')}, from "
                      f"{engineering(float(vals.min()), 'Pa')} to "
                      f"{engineering(float(vals.max()), 'Pa')}; median standard error "

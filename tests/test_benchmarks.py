@@ -24,8 +24,6 @@ BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
 sys.path.insert(0, str(BENCH))
 import run_all  # noqa: E402  (benchmarks/ is a folder of scripts, not a package)
 
-from hertzmdr.numeric import _timing  # noqa: E402
-
 # `make test` runs this file on one worker (GROUPED, tests/conftest.py): one module fixture
 
 NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])")
@@ -160,55 +158,3 @@ def test_missing_peers_are_skipped_with_a_note(quick_run, tmp_path):
     assert "error" in json.loads((tmp_path / "bem.json").read_text())["tamaas"]
     assert "its row is skipped" in (tmp_path / "non_axisymmetric.md").read_text()
     assert_finite_tables(tmp_path / "non_axisymmetric.md")
-
-
-# the timing helper's bookkeeping (what is called how often, what is kept apart); never its
-# speed figures
-
-
-def test_measure_keeps_the_first_call_apart():
-    calls = []
-    t = _timing.measure(lambda: calls.append(1), _timing.Budget(repeats=3, min_time=0.0))
-    assert len(calls) == 1 + 3 and len(t.rounds) == 3 and t.number == 1  # first, then rounds
-    made = []
-    t = _timing.measure(lambda obj: obj.append(2), _timing.Budget(repeats=4, min_time=0.0),
-                        setup=lambda: made.append([]) or made[-1])
-    assert len(made) == 1 + 4 and all(m == [2] for m in made)  # a fresh object each call
-    assert t.spread[0] <= t.median <= t.spread[1]
-    assert t.quantile(0) == t.spread[0] and t.quantile(1) == t.spread[1]
-
-
-def test_budget_stops_slow_calls_early_and_checks_its_fields():
-    import time
-
-    t = _timing.measure(lambda: time.sleep(0.05),
-                        _timing.Budget(repeats=10, min_time=0.0, max_time=0.12))
-    assert 1 <= len(t.rounds) <= 3  # 0.05 s a round: no new round once 0.12 s are spent
-    for bad in (dict(repeats=0, min_time=0.0), dict(repeats=1, min_time=-1.0),
-                dict(repeats=1, min_time=1.0, max_time=0.5)):
-        with pytest.raises(ValueError, match="Budget"):
-            _timing.Budget(**bad)
-
-
-def test_compare_interleaves_and_ratios():
-    order = []
-    t = _timing.compare({"a": lambda: order.append("a"), "b": lambda: order.append("b")},
-                        _timing.Budget(repeats=3, min_time=0.0))
-    assert order == ["a", "b"] + ["a", "b"] * 3  # first calls, then the rounds alternate
-    assert _timing.ratio(t["a"], t["b"]) == t["a"].median / t["b"].median
-
-
-def test_in_fork_discards_the_child_cache_and_reports_its_errors():
-    cache = {}
-
-    def fill(key):
-        cache[key] = True
-        return sorted(cache)
-
-    assert _timing.in_fork(fill, "x") == ["x"] and cache == {}
-
-    def fail():
-        raise ValueError("from the child")
-
-    with pytest.raises(RuntimeError, match="from the child"):
-        _timing.in_fork(fail)
