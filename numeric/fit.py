@@ -983,6 +983,30 @@ def _fixed_values(fixed_z0, fixed_baseline):
     return np.isnan(vals), vals
 
 
+#: how much worse (in reduced chi^2) the fit with z_0 at the first position may be for the
+#: curve not to bound z_0: 9, three standard deviations (a cone on a curve without a baseline,
+#: noise 1e-4 to 1e-2 of the force, 8 draws each: 0.03 to 1.1)
+Z0_PROFILE = 9.0
+
+
+def _z0_unbounded(g0, z, F, w, p, free, rss, chi2):
+    """Whether the fit with z_0 held at the first position z[0] (the tip's unit force g0
+    there) is as good as the best one, p with its weighted residual sum rss: its rss within
+    Z0_PROFILE reduced chi^2 (chi2) of the best, z[0] within 3 standard deviations of z_0 on
+    its profile. Then ``(True, |E*(z_0 = z[0]) - E*|)``, else None. With z_0 fixed the model
+    is linear in the free E*, F_0, s_0: one weighted least-squares solve."""
+    cols = [k for k in (0, 2, 3) if free[k]]
+    basis = np.stack([g0, np.ones_like(z), z])  # dF/dE*, dF/dF_0, dF/ds_0
+    rhs = F - sum(p[k] * basis[(0, 2, 3).index(k)] for k in (0, 2, 3) if not free[k])
+    A = (basis[[(0, 2, 3).index(k) for k in cols]] / w).T
+    q, *_ = np.linalg.lstsq(A, rhs / w, rcond=None)
+    r = A @ q - rhs / w
+    if not float(r @ r) - rss <= Z0_PROFILE * chi2:
+        return None
+    E0 = q[cols.index(0)] if free[0] else p[0]
+    return True, abs(float(E0) - float(p[0]))
+
+
 def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=None,
               sigma=None, fixed_z0=None, fixed_baseline=None) -> FitResult:
     """Fit the force curve F(z) with a tip's force law, a contact point and a linear baseline.
@@ -1121,6 +1145,15 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     # zero residuals)
     cov[np.ix_(free, free)] = np.where(np.isinf(cov_free), np.inf, cov_free * chi2)
     err = np.sqrt(np.diag(cov))
+    unbounded = free[1] and p[1] >= z[0] and _z0_unbounded(unit(z[0])[0], z, F, w, p, free,
+                                                           float(res @ res), chi2)
+    if unbounded:
+        # the curve does not bound z_0 from below: the local covariance, regular where z_0
+        # sits among the first points, is then far too small (a cone on a curve without a
+        # baseline: 45 of its sigma off). z_0 and the baseline, which trades with it, get
+        # error inf; E* at least its change between the best fit and that with z_0 at z[0]
+        err[1:] = np.where(free[1:], np.inf, err[1:])
+        err[0] = max(err[0], unbounded[1]) if free[0] else err[0]
     if not p[0] >= MODULUS_SIGNIFICANCE * err[0]:
         _no_contact(f"the fitted E* = {p[0]:.3g} Pa is below {MODULUS_SIGNIFICANCE:g} of its "
                     f"standard errors ({err[0]:.3g} Pa)")
@@ -1133,6 +1166,11 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
     if err[1] > Z0_POOR * d_max:
         warn.append(f"contact point poorly determined: sigma(z_0) = {err[1]:.3g} m is "
                     f"{100 * err[1] / d_max:.3g} % of the deepest indentation {d_max:.3g} m")
+    if unbounded:
+        warn.append(f"contact point not bounded by the curve: with z_0 at the first position "
+                    f"{z[0]:.6g} m the fit is as good (chi^2 within {Z0_PROFILE:g} of its "
+                    "least), so z_0 may lie anywhere before it and the baseline with it (their "
+                    "errors: inf)")
     if p[1] < z[0]:
         warn.append(f"the contact point z_0 = {p[1]:.6g} m lies before the first position "
                     f"{z[0]:.6g} m: the baseline before contact is not measured")

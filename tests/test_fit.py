@@ -1010,6 +1010,29 @@ def test_undetermined_parameters_have_error_inf():
         fit_curve(z, Fp, FlatPunch(a=3e-6))
 
 
+def test_contact_point_not_bounded_by_a_curve_without_baseline():
+    """The same cone curve, every point in contact, with noise of 1e-4 and 1e-3 of the force
+    (draws that put the fitted z_0 among the first points, 1 to 5 of them before it): the
+    local covariance is then regular and reported sigma(z_0) about 5e-9 m with the truth
+    0.2 um away (24 to 45 sigma; promise 2). The fit with z_0 at the first position is as good
+    (chi^2 within Z0_PROFILE of its least: for a cone every z_0 before the data gives the same
+    quadratic), so z_0 and the baseline get error inf and a warning says why; E*'s error still
+    covers its truth."""
+    theta = 0.09
+    z = np.linspace(1.5e-6, 2e-6, 100)
+    truth = cone.force(z - Z0_TRUE, theta, E_TRUE) + F0_TRUE + S0_TRUE * z
+    for rel, seed in ((1e-4, 4), (1e-4, 5), (1e-3, 4), (1e-3, 5)):
+        noise = rel * float(truth.max())
+        F = truth + np.random.default_rng(seed).normal(0.0, noise, z.size)
+        fit = fit_curve(z, F, Cone(theta=theta), sigma=noise)
+        assert fit.values[1] > z[0]  # among the data: the case the local covariance misjudges
+        assert np.all(np.isinf(fit.errors[1:])), (rel, seed, fit.errors)
+        assert abs(fit.values[0] - E_TRUE) <= 5 * fit.errors[0], (rel, seed)
+        assert any(w_.startswith("contact point not bounded by the curve: with z_0 at the "
+                                 f"first position {z[0]:.6g} m the fit is as good (chi^2 "
+                                 "within 9 of its least)") for w_ in fit.warnings), fit.warnings
+
+
 def test_jump_sentence_and_its_threshold():
     """_jump on residuals made here: the sentence in full (the step, the two neighbouring
     positions, its size over the robust noise of neighbouring differences, 1.4826 times their
