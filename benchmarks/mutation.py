@@ -194,7 +194,8 @@ MODULES: dict[str, list[str]] = {
     "_abel": ["tests/test_abel.py"],
     # `hertzmdr accuracy` and its cases: one run (one stats pass) for the two, whose tests are
     # the same two files
-    "accuracy.py,_accuracy_cases.py": ["tests/test_cli.py", "tests/test_domains.py"],
+    "accuracy.py,_accuracy_cases.py": ["tests/test_accuracy.py", "tests/test_cli.py",
+                                       "tests/test_domains.py"],
     # the command line: its commands are tested by the files of what they run
     "cli.py": ["tests/test_cli.py", "tests/test_cli_bad_args.py", "tests/test_fit_scene.py",
                "tests/test_fit_batch.py", "tests/test_scene_echo.py", "tests/test_warnings.py"],

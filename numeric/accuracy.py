@@ -182,6 +182,9 @@ def main(out: Path, only: str | None = None, quick: bool = False) -> list[Measur
 
     budget = _timing.QUICK if quick else _timing.FULL
     qs = [q for q in quantities() if only is None or only in q.name]
+    if not qs:
+        raise ValueError(f"only = {only!r} matches no quantity; the names: "
+                         + "; ".join(q.name for q in quantities()))
     with tqdm(total=sum(len(q.ways()) for q in qs), desc="ways measured", unit="way",
               file=sys.stderr) as bar:
         results = [measure(q, lambda: bar.update(1), budget) for q in qs]

@@ -1,0 +1,116 @@
+"""numeric/accuracy.py, the report of what accuracy costs in time (``hertzmdr accuracy``).
+
+On made-up quantities whose errors are known exactly: the relative error of each way against
+its 60-digit truth (computed here by mpmath from the float the way returns), a way that fails
+reported as failing, the formatting of errors, digits and times at their boundaries, the
+headline's choice of the fastest way to 1e-12 and the most digits, and the whole report
+written by ``main``. Timings are never checked, only that each row has one.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import mpmath as mp
+import pytest
+
+from hertzmdr.numeric import _timing, accuracy
+from hertzmdr.numeric.accuracy import Measured, Quantity, Row, Way
+
+
+def third() -> Quantity:
+    """1/3 by four ways: float64 (error 2^-54 / (1/3) = 1.85e-17), a 2e-7 slip, a sign
+    slip (-1/3: error 2) and a failure (nan)."""
+    return Quantity("one third", "a made-up quantity", lambda: mp.mpf(1) / 3, lambda: [
+        Way("float", "float64", lambda: 1 / 3),
+        Way("slip", "2e-7", lambda: (1 + 2e-7) / 3),
+        Way("sign", "negated", lambda: -1 / 3),
+        Way("broken", "nan", lambda: math.nan),
+        Way("broken", "inf", lambda: math.inf),
+    ])
+
+
+def test_measure_reports_each_ways_relative_error():
+    calls = []
+    m = accuracy.measure(third(), lambda: calls.append(1), _timing.QUICK)
+    assert len(calls) == 5 and [(r.method, r.setting) for r in m.rows] == [
+        ("float", "float64"), ("slip", "2e-7"), ("sign", "negated"), ("broken", "nan"),
+        ("broken", "inf")]
+    with mp.workdps(60):  # the errors by mpmath from the floats the ways return
+        truth = mp.mpf(1) / 3
+        want = [float(abs((mp.mpf(v) - truth) / truth)) for v in (1 / 3, (1 + 2e-7) / 3)]
+    assert [r.rel_error for r in m.rows[:2]] == want
+    assert want[0] == pytest.approx(2.0**-54 * 3, rel=1e-12)  # the float's rounding of 1/3
+    assert m.rows[2].rel_error == 2.0  # -1/3 against 1/3
+    assert m.rows[3].rel_error == math.inf and m.rows[4].rel_error == math.inf
+    for r in m.rows:  # each has its time: a median within its spread
+        assert r.spread[0] <= r.seconds <= r.spread[1]
+
+
+def test_errors_digits_and_times_formatted_at_their_boundaries():
+    f = accuracy._fmt_err
+    assert f(math.nan) == f(math.inf) == "fails (inf or nan)"
+    assert f(1e-60) == "< 1e-50" and f(accuracy.FLOOR) == "1.0e-50" and f(1.26e-7) == "1.3e-07"
+    assert f(2.0) == "2.0e+00"
+    d = accuracy.digits
+    assert d(math.nan) == d(math.inf) == d(1.0) == d(2.0) == 0.0
+    assert d(1e-60) == 50.0 and d(accuracy.FLOOR) == 50.0  # -log10(1e-50) at the floor
+    assert d(0.5) == -math.log10(0.5) and d(1e-3) == 3.0 and 0 < d(0.999) < 1e-3
+    t = accuracy._fmt_time
+    assert [t(s) for s in (2.5, 1.0, 0.999, 1e-3, 2.5e-4, 1e-6, 3.5e-7, 1e-9, 5e-10, 0.0)] == [
+        "2.5 s", "1 s", "999 ms", "1 ms", "250 µs", "1 µs", "350 ns", "1 ns", "0.5 ns", "0 ns"]
+
+
+def results() -> list[Measured]:
+    q = third()
+    a = Measured(q, [Row("slow exact", "60 digits", 1e-60, 2e-3, (1e-3, 3e-3)),
+                     Row("fast exact", "float64", 1e-13, 2e-6, (1e-6, 3e-6)),
+                     Row("faster rough", "float64", 1e-9, 1e-6, (1e-6, 1e-6)),
+                     Row("broken", "nan", math.inf, 1e-7, (1e-7, 1e-7))])
+    b = Measured(Quantity("rough", "nothing reaches 1e-12", q.truth, q.ways),
+                 [Row("rough", "float64", 2e-5, 1e-6, (1e-6, 2e-6)),
+                  Row("rougher", "float64", 3e-2, 1e-6, (1e-6, 1e-6))])
+    return [a, b]
+
+
+def test_markdown_headline_and_tables():
+    text = accuracy.markdown(results(), "acc.png", _timing.QUICK)
+    lines = text.splitlines()
+    assert "![error against time](acc.png)" in lines
+    assert "up to 2 rounds of at least 0 s together" in text
+    head = lines.index("| quantity | fastest way to 1e-12 | its time | most digits | at what cost |")
+    # the fastest way with an error at most 1e-12 (not the faster rough one), the most digits
+    # (the least error; a tie would go to the faster)
+    assert lines[head + 2] == ("| one third | fast exact (float64) | 2 µs | 50 (slow exact, "
+                               "60 digits) | 2 ms |")
+    assert lines[head + 3] == "| rough | none | - | 5 (rough, float64) | 1 µs |"
+    table = lines.index("## one third") + 1  # then the description and the table
+    rows = lines[table + 5:table + 9]  # by time, fastest first (after the header and rule)
+    assert rows == ["| broken | nan | fails (inf or nan) | 0.0 | 100 ns | 100 ns - 100 ns |",
+                    "| faster rough | float64 | 1.0e-09 | 9.0 | 1 µs | 1 µs - 1 µs |",
+                    "| fast exact | float64 | 1.0e-13 | 13.0 | 2 µs | 1 µs - 3 µs |",
+                    "| slow exact | 60 digits | < 1e-50 | 50.0 | 2 ms | 1 ms - 3 ms |"]
+    assert "![error" not in accuracy.markdown(results(), None, _timing.QUICK)
+
+
+def test_main_writes_the_report_and_its_plot(tmp_path, monkeypatch):
+    monkeypatch.setattr(accuracy, "quantities", lambda: [third()])
+    record = tmp_path / "record.json"
+    record.write_text(json.dumps({"command": "python tests/domain_search.py --bulk",
+                                  "points_per_row": 7, "functions": 11, "parameters": 22,
+                                  "cases": 33, "failures": 0, "seconds": 44}))
+    monkeypatch.setattr(accuracy, "DOMAIN_SEARCH_RECORD", record)
+    monkeypatch.setattr(accuracy.domain_search_section, "__defaults__", (record,))
+    out = tmp_path / "sub" / "acc.md"
+    res = accuracy.main(out, quick=True)
+    assert [len(m.rows) for m in res] == [5]
+    text = out.read_text()
+    assert text.startswith("# What accuracy costs in time\n") and "(acc.png)" in text
+    assert (tmp_path / "sub" / "acc.png").stat().st_size > 1000
+    assert text.endswith("| 11 | 22 | 33 | 0 | 44 |\n")
+    assert "`python tests/domain_search.py --bulk` (7 random points per function" in text
+    with pytest.raises(ValueError, match=r"^only = 'no such' matches no quantity; the names: "
+                                         r"one third$"):
+        accuracy.main(out, only="no such", quick=True)
+    assert accuracy.domain_search_section(tmp_path / "missing.json") == ""
