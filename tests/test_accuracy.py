@@ -79,7 +79,8 @@ def test_markdown_headline_and_tables():
     lines = text.splitlines()
     assert "![error against time](acc.png)" in lines
     assert "up to 2 rounds of at least 0 s together" in text
-    head = lines.index("| quantity | fastest way to 1e-12 | its time | most digits | at what cost |")
+    head = lines.index("| quantity | fastest way to 1e-12 | its time | most digits | "
+                       "at what cost |")
     # the fastest way with an error at most 1e-12 (not the faster rough one), the most digits
     # (the least error; a tie would go to the faster)
     assert lines[head + 2] == ("| one third | fast exact (float64) | 2 µs | 50 (slow exact, "
