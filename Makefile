@@ -28,10 +28,11 @@ check: $(STAMP)
 # cores (pytest-xdist; `make test WORKERS=0` runs it in one process). loadgroup: the tests of
 # a file that share one costly module fixture (the benchmarks' quick run, the regenerated
 # files, the MDR's bound references: GROUPED in tests/conftest.py) run on one worker, so the
-# fixture is built once
+# fixture is built once. The 20 slowest tests are listed at the end: the suite's budget is
+# 10 minutes on 2 cores, and a test over 5 s belongs behind the sweep marker
 WORKERS ?= 2
 test: lint pyc
-	$(PY) -m pytest -q -n $(WORKERS) --dist loadgroup
+	$(PY) -m pytest -q -n $(WORKERS) --dist loadgroup --durations=20
 
 # the package's bytecode, written once: where PYTHONDONTWRITEBYTECODE is set (this machine, CI)
 # Python never writes it, and every process the tests start (workers, the benchmarks' scripts,

@@ -269,8 +269,9 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False,
     kept (mutmut then checks only the mutants it has no result for, and those of functions
     changed since). With ``refresh``, the folder of a run, finished or not, is kept with its
     results and tests, and gets today's numeric/: mutmut compares each function's hash with
-    the one it ran, and checks again only the mutants of functions changed since (with the
-    run's tests; a changed test selection would make it check every mutant again)."""
+    the one it ran, and checks again only the mutants of functions changed since, and those
+    that had no tests (with the run's tests, whose map of functions it makes again; a changed
+    test selection would make it check every mutant again)."""
     work = base / workdir(module)
     if refresh:
         if not (work / "mutants").is_dir():
@@ -280,6 +281,15 @@ def scratch(module: str, tests: list[str], base: Path, resume: bool = False,
         write_config(work, {**mutmut_config(module, tests), sel: cfg[sel]})
         shutil.rmtree(work / PACKAGE)
         copy_sources(work, module)
+        # the tests' map of functions is made again (a function added since has no tests in
+        # the old one), and the mutants it had no tests for are checked again with it
+        (work / "mutants" / "mutmut-stats.json").unlink(missing_ok=True)
+        for meta in (work / "mutants").rglob("*.py.meta"):
+            data = json.loads(meta.read_text())
+            codes = data["exit_code_by_key"]
+            data["exit_code_by_key"] = {k: None if STATUS.get(c) == "no tests" else c
+                                        for k, c in codes.items()}
+            meta.write_text(json.dumps(data))
         for folder in ("tests", *EXTRA):  # this checkout's (the run may have been made in another)
             (work / folder).unlink(missing_ok=True)
             (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
@@ -464,14 +474,16 @@ def survivors_of(work: Path, module: str, notes: list[dict]) -> tuple[dict, list
 
 
 def run_module(module: str, tests: list[str], base: Path, notes: list[dict],
-               resume: bool = False, refresh: bool = False) -> Run:
+               resume: bool = False, refresh: bool = False, workers: int = 1) -> Run:
     work = scratch(module, tests, base, resume, refresh)
     # the tests of the run (a resumed run keeps those it began with: see scratch)
     cfg = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
     tests = list(cfg["pytest_add_cli_args_test_selection"])
     resumed = (work / "run.log").exists()
     mutmut = str(Path(sys.executable).with_name("mutmut"))
-    cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", "1"]
+    # one worker on a shared machine (a loaded machine trips mutmut's wall-time limit: false
+    # timeouts); more on an idle one
+    cmd = ["nice", "-n", "19", mutmut, "run", "--max-children", str(workers)]
     t = time.perf_counter()
     with open(work / "run.log", "a" if resumed else "w") as log:
         proc = subprocess.run(cmd, cwd=work, stdout=log, stderr=subprocess.STDOUT,
@@ -595,13 +607,19 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "Runs since 2026-11-27 16:00 UTC stop a mutant at 6 times its tests' CPU time in the "
         "run's first pass (pyproject.toml's `timeout_multiplier` 3, was mutmut's 15: two "
         "looping mutants of `stress.py` had held a run 89 min each); its *timeout* count is "
-        "of those.",
+        "of those. *(refreshed)*: the run was checked again on a later source with "
+        "`--refresh`: mutmut compares each function's hash with the one it ran and checks "
+        "again only the mutants of functions changed since and those that had no tests (the "
+        "run's test files, their map of functions made again); the time is that of the "
+        "refresh.",
         "*no tests*: no test of those files calls the function. Generated modules "
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
         "(a demonstration and figures: nothing they compute is a result, and their tests check "
-        "that they run). The scene layer, `numeric/scene/`, has its own page, "
-        "[mutation_scene.md](mutation_scene.md).",
+        "that they run), nor the drawing of `fit_io.py`'s two figures (a `# pragma: no mutate` "
+        "region: what they draw is computed and tested apart, `map_grids`). The notes on the "
+        "survivors are in `benchmarks/mutation_notes*.toml`. The scene layer, "
+        "`numeric/scene/`, has its own page, [mutation_scene.md](mutation_scene.md).",
         "",
         "| module | test files | mutants | " + " | ".join(columns) + " | time | run on |",
         "|---|---|---:|" + "---:|" * len(columns) + "---:|---|",
@@ -659,9 +677,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--refresh", action="store_true",
                     help="run a module's last run again on today's source: only the mutants "
                     "of functions changed since are checked again (the run's tests)")
+    ap.add_argument("--workers", type=int, default=1,
+                    help="mutants checked at once (default 1; more only on an idle machine)")
     ap.add_argument("--report-only", action="store_true",
                     help="write the report from the last run of each module (in --work)")
     args = ap.parse_args(argv)
+    if args.workers < 1:
+        ap.error(f"--workers {args.workers}: at least 1")
     if args.tests and len(args.tests) != len(args.module):
         ap.error("give one --tests list after each --module")
     if args.module:
@@ -690,14 +712,15 @@ def main(argv: list[str] | None = None) -> int:
             continue
         print(f"mutating numeric/{m} with {' '.join(tests)} ...", flush=True)
         runs.append(run_module(m, tests, args.work.resolve(), notes, args.resume,
-                                args.refresh))
+                                args.refresh, args.workers))
         r = runs[-1]
         print(f"  {r.counts} in {r.seconds:.0f} s", flush=True)
     total = sum(r.seconds for r in runs) if args.report_only else time.perf_counter() - t0
     shown = [a for a in argv if a not in ("--report-only", "--resume", "--refresh")]
-    if "--work" in shown:  # a scratch folder is no part of the command that makes the page
-        i = shown.index("--work")
-        del shown[i:i + 2]
+    for opt in ("--work", "--workers"):  # a scratch folder, the machine: not the page's
+        if opt in shown:
+            i = shown.index(opt)
+            del shown[i:i + 2]
     text = report(runs, shown, total, args.report_only)
     if missing:
         text += ("\n## Not run\n\nNo run of " + ", ".join(f"`{m}`" for m in missing)

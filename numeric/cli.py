@@ -408,10 +408,14 @@ def cmd_fit_batch(args, table) -> int:
             fit_adhesive._check_tip(tip)
         except ValueError as exc:
             raise UsageError(f"--adhesion: {exc}") from None
-    results = fit_batch.fit_curves(curves, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu, z0=z0,
-                                   sigma=sigma, fixed_z0=opts.get("fixed_z0"),
-                                   fixed_baseline=opts.get("fixed_baseline"),
-                                   adhesion=args.adhesion, workers=args.workers, progress=bar)
+    try:  # the options every curve shares are checked once, for the batch
+        results = fit_batch.fit_curves(curves, tip, nu=nu, tip_modulus=tip_E, tip_nu=tip_nu,
+                                       z0=z0, sigma=sigma, fixed_z0=opts.get("fixed_z0"),
+                                       fixed_baseline=opts.get("fixed_baseline"),
+                                       adhesion=args.adhesion, workers=args.workers,
+                                       progress=bar)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
     results += [fit_batch._failed(fit_batch.Curve(name, None, None, np.zeros(0), np.zeros(0)),
                                   msg) for name, msg in unread]
     for r in results:

@@ -15,13 +15,15 @@ import multiprocessing
 import os
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from hertzmdr.numeric import fit
+from hertzmdr.numeric._validate import positive
 
 __all__ = ["Curve", "CurveFit", "fit_curves", "write_table", "TABLE_COLUMNS"]
 
@@ -84,6 +86,13 @@ def _failed(curve: Curve, message: str, adhesion: bool = False) -> CurveFit:
                     int(np.size(curve.z)), 0, math.nan, (), message, dg, dg)
 
 
+def _one_line(exc: BaseException) -> str:
+    """An exception as a failed curve's message: a ValueError's text (the validators' own
+    messages), else its type and text; its first line only."""
+    msg = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
+    return msg.splitlines()[0] if msg else type(exc).__name__
+
+
 #: the adhesive fit's parameters (E*, z_0, Delta gamma, F_0, s_0) that CurveFit.values holds
 _ADHESIVE_BASE = [0, 1, 3, 4]
 
@@ -99,8 +108,7 @@ def _fit_one(curve: Curve, tip, options: dict) -> CurveFit:
         else:
             r = fit.fit_curve(curve.z, curve.F, tip, **options)
     except Exception as exc:  # noqa: BLE001 -- one curve's failure is its row, not the batch's
-        msg = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
-        return _failed(curve, msg.splitlines()[0] if msg else type(exc).__name__, adhesion)
+        return _failed(curve, _one_line(exc), adhesion)
     keep = _ADHESIVE_BASE if adhesion else slice(None)
     dg, dg_err = (float(r.values[2]), float(r.errors[2])) if adhesion else (None, None)
     return CurveFit(curve.name, curve.x, curve.y, tuple(map(float, r.values[keep])),
@@ -111,6 +119,17 @@ def _fit_one(curve: Curve, tip, options: dict) -> CurveFit:
 
 def _fit_chunk(curves: Sequence[Curve], tip, options: dict) -> list[CurveFit]:
     return [_fit_one(c, tip, options) for c in curves]
+
+
+def _submit(pool, *args) -> Future:
+    """A chunk's task; a pool broken before it was sent (a worker that died) gives a future
+    holding that error, failed like the tasks the pool had."""
+    try:
+        return pool.submit(_fit_chunk, *args)
+    except BrokenProcessPool as exc:
+        fut = Future()
+        fut.set_exception(exc)
+        return fut
 
 
 def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_nu=None,
@@ -140,11 +159,21 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     -------
     list of CurveFit
         In the order of ``curves``; a curve that could not be fitted has ``error`` set (its
-        message, one line) and NaN values.
+        message, one line) and NaN values; so has each curve of a worker process that ended
+        abruptly (killed, out of memory: ``BrokenProcessPool: ...``), never the batch.
+
+    Raises
+    ------
+    ValueError
+        For an option every curve shares (workers, nu, tip_modulus, tip_nu, sigma, fixed_z0,
+        fixed_baseline, a tip without an adhesive model): one message for the batch, before
+        any curve is fitted.
     """
     if workers is None:
         workers = os.cpu_count() or 1
-    if not (isinstance(workers, int) and workers >= 1):
+    if isinstance(workers, np.integer):  # a count from numpy is a count
+        workers = int(workers)
+    if not (isinstance(workers, int) and not isinstance(workers, bool) and workers >= 1):
         raise ValueError(f"workers = {workers!r} is out of range; valid: an integer >= 1")
     options = {"nu": nu, "tip_modulus": tip_modulus, "tip_nu": tip_nu, "z0": z0, "sigma": sigma}
     if adhesion:
@@ -156,7 +185,13 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
         fit_adhesive._check_tip(tip)  # one message for the batch, not one per curve
         options["adhesion"] = True
     else:
+        fit._fixed_values(fixed_z0, fixed_baseline)  # checked once, as below
         options.update(fixed_z0=fixed_z0, fixed_baseline=fixed_baseline)
+    # the options every curve shares, checked once: one message for the batch, not one per
+    # curve (the moduli's were checked only after each curve's fit, every curve fitted first)
+    fit._sample_modulus(0.0, 0.0, nu, tip_modulus, tip_nu)  # E* = 0: any tip is stiffer
+    if sigma is not None:
+        positive("sigma", sigma)
     total = len(curves)
     if total == 0:
         return []
@@ -176,10 +211,15 @@ def fit_curves(curves: Sequence[Curve], tip, *, nu=None, tip_modulus=None, tip_n
     ctx = multiprocessing.get_context("fork" if "fork" in methods else None)
     done = 0
     with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        futures = {pool.submit(_fit_chunk, curves[s:s + size], tip, options): s for s in starts}
+        futures = {_submit(pool, curves[s:s + size], tip, options): s for s in starts}
         for fut in as_completed(futures):
             s = futures[fut]
-            chunk = fut.result()
+            try:
+                chunk = fut.result()
+            except Exception as exc:  # noqa: BLE001 -- a worker that died (killed, out of
+                # memory; BrokenProcessPool) or a task that could not be sent: its curves fail
+                chunk = [_failed(c, _one_line(exc), bool(options.get("adhesion")))
+                         for c in curves[s:s + size]]
             results[s:s + len(chunk)] = chunk
             done += len(chunk)
             failed += sum(not r.ok for r in chunk)
@@ -195,7 +235,7 @@ class ProgressBar:
     def __init__(self, stream, width: int = 30):
         self.stream, self.width = stream, width
         self.t0 = time.perf_counter()
-        self.last = -1.0
+        self.last = -math.inf  # never drawn: the first call draws, whatever the clock's origin
 
     def __call__(self, done: int, total: int, failed: int) -> None:
         now = time.perf_counter()

@@ -18,6 +18,7 @@ or elastic). The scene's effects and load are not used. Its optional ``[fit]`` t
 from __future__ import annotations
 
 import csv
+import math
 import re
 from pathlib import Path
 
@@ -98,7 +99,7 @@ def _numbers(path, rows, first, scales) -> np.ndarray:
             data.append([float(v) for v in row[first:]])
         except ValueError:
             raise CurveError(f"{path}:{lineno}: {','.join(row)!r} is not "
-                             f"{'two' if width == 2 else len(scales)} numbers"
+                             f"{'two' if len(scales) == 2 else 'four'} numbers"
                              f"{' after the curve name' if first else ''}") from None
     with np.errstate(over="ignore"):  # a value the unit takes beyond float: refused below
         arr = np.array(data, dtype=float).reshape(-1, len(scales)) * np.asarray(scales)
@@ -129,6 +130,15 @@ def read_columns(path, columns=None, units=None) -> tuple[np.ndarray, np.ndarray
     unit of each, [m] and [N]) is for a header without units, e.g. ``z, F``; a header that has
     them and ``units`` too is refused (the unit is given once). Neither: :func:`read_curve`.
     """
+    if columns is not None and not (isinstance(columns, (list, tuple)) and len(columns) == 2
+                                    and all(isinstance(c, str) for c in columns)):
+        raise ValueError(f"columns = {columns!r}: the header names of the position and the "
+                         "force column, two strings")
+    if units is not None and not (isinstance(units, (list, tuple)) and len(units) == 2 and all(
+            isinstance(u, (int, float, np.integer, np.floating)) and not isinstance(u, bool)
+            and 0 < u < math.inf for u in units)):
+        raise ValueError(f"units = {units!r}: the size in SI units of one unit of the position "
+                         "[m] and of the force [N], two positive finite numbers")
     if columns is None and units is None:
         return read_curve(path)
     path = Path(path)

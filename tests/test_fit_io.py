@@ -33,8 +33,10 @@ def refused(match_path, call, *args, **kwargs) -> str:
 
 # -- read_curve: one curve, two columns with units ------------------------------------------
 def test_read_curve_scales_each_column_by_its_unit(tmp_path):
-    path = write(tmp_path, "\ufeff# comment\n\n#z [m], F [N]\nz [um], F [nN]\n"
-                 "1.5, 2\n-0.25, 4e3\n")
+    # a byte-order mark, comments (one indented), an empty line before the header; a comment
+    # between the points
+    path = write(tmp_path, "\ufeff# comment\n\n   #z [m], F [N]\nz [um], F [nN]\n"
+                 "1.5, 2\n  # 7, 8\n-0.25, 4e3\n")
     z, F = fit_io.read_curve(path)
     # 1 um = 1e-6 m, 1 nN = 1e-9 N: each value times its column's unit, nothing else
     assert z.tolist() == [1.5 * 1e-6, -0.25 * 1e-6] and F.tolist() == [2 * 1e-9, 4e3 * 1e-9]
@@ -124,6 +126,10 @@ def test_read_columns_refusals_in_one_line(tmp_path):
         f"{bare}:1: column 'z' must be a name and a unit in brackets, e.g. `z [um]`")
     assert refused(bare, fit_io.read_columns, bare, ("t", "F")) == (
         f"{bare}:1: column 't' must be a name and a unit in brackets, e.g. `z [um]`")
+    # found by its name (all before the bracket), but no name and unit in brackets
+    extra = write(tmp_path, "t, z [nm], F [nN] each\n0, 1, 2\n", "extra.csv")
+    assert refused(extra, fit_io.read_columns, extra, ("z", "F")) == (
+        f"{extra}:1: column 'F [nN] each' must be a name and a unit in brackets, e.g. `F [nN]`")
     unit = write(tmp_path, "t, z [nm], F [nm]\n0, 1, 2\n", "unit.csv")
     assert refused(unit, fit_io.read_columns, unit, ("z", "F")) == (
         f"{unit}:1: column 'F [nm]': '1 nm' has the unit nanometer, which is not a force "
@@ -265,12 +271,12 @@ def test_map_grids_put_each_fit_at_its_position():
 def test_batch_summary_counts_and_spans():
     rs = [result(None, None, E=1e3, E_error=10.0), result(None, None, ok=False),
           result(None, None, E=4e3, E_error=40.0, warnings=("w",)),
-          result(None, None, E=2e3, E_error=30.0)]
+          result(None, None, E=2e3, E_error=31.4)]
     assert fit_io.batch_summary(rs, scene_E=2.5e3) == (
         "4 curves: 3 fitted (1 with warnings), 1 failed\n"
-        "E: median 2 kPa, from 1 kPa to 4 kPa; median standard error 30 Pa\n"
+        "E: median 2 kPa, from 1 kPa to 4 kPa; median standard error 31 Pa\n"
         "the scene's sample E = 2.5 kPa (not used)")
-    rs = [result(None, None, values=(1e3, 0.0), errors=(10.0, 0.0), dgamma=0.01),
+    rs = [result(None, None, values=(1e3, 0.0), errors=(10.5, 0.0), dgamma=0.01),
           result(None, None, values=(3e3, 0.0), errors=(20.0, 0.0), dgamma=0.03)]
     for r, e in zip(rs, (0.001, 0.003), strict=True):
         r.dgamma_error = e
@@ -281,3 +287,155 @@ def test_batch_summary_counts_and_spans():
         "error 0.002 J/m^2")
     assert fit_io.batch_summary([result(None, None, ok=False)]) == (
         "1 curves: 0 fitted (0 with warnings), 1 failed")
+    one = result(None, None, values=(1e3, 0.0), errors=(10.0, 0.0), dgamma=0.01)
+    one.dgamma_error = 0.001
+    assert fit_io.batch_summary([result(None, None, ok=False), one]).endswith(
+        "work of adhesion: median 0.01 J/m^2, from 0.01 to 0.01 J/m^2; median standard error "
+        "0.001 J/m^2")
+
+
+def test_read_columns_arguments_are_checked(tmp_path):
+    p = write(tmp_path, "z, F\n1, 2\n")
+    for columns in (("z", "F", "t"), ("z",), ("z", 1), "zF", 5):
+        with pytest.raises(ValueError, match=r"^columns = .*: the header names of the "
+                                             r"position and the force column, two strings$"):
+            fit_io.read_columns(p, columns)
+    for units in ((1e-9,), (1e-9, 0.0), (1e-9, math.inf), (math.nan, 1.0), (True, 1.0),
+                  ("nm", "nN"), 1e-9):
+        with pytest.raises(ValueError, match=r"^units = .*: the size in SI units of one unit "
+                                             r"of the position \[m\] and of the force \[N\], "
+                                             r"two positive finite numbers$"):
+            fit_io.read_columns(p, None, units)
+    z, F = fit_io.read_columns(p, ["z", "F"], [np.float64(1e-9), np.int64(1)])
+    assert z.tolist() == [1 * 1e-9] and F.tolist() == [2.0]
+
+
+# -- force maps --------------------------------------------------------------------------------
+def test_read_batch_folder_and_maps(tmp_path):
+    folder = tmp_path / "curves"
+    folder.mkdir()
+    (folder / "a_bad.csv").write_text("z [um]\n1\n")
+    (folder / "b.csv").write_text("z [nm], F [nN]\n1, 2\n3, 4\n")
+    (folder / "c.csv").write_text("z [nm], F [pN]\n5, 6\n")
+    (folder / "notes.txt").write_text("not a curve")
+    curves, failed = fit_io.read_batch(folder)
+    # every file after a failed one is read too; names are the stems, in name order
+    assert [c.name for c in curves] == ["b", "c"]
+    assert curves[0].z.tolist() == [1 * 1e-9, 3 * 1e-9] and curves[1].F.tolist() == [6 * 1e-12]
+    assert failed == [("a_bad", f"{folder / 'a_bad.csv'}:1: the header must name two columns, "
+                                "position and force, with units, e.g. `z [um], F [nN]`; got 1")]
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert refused(empty, fit_io.read_batch, empty) == (
+        f"{empty}: a folder of curves, but no *.csv file in it")
+    # a map of named curves, its lines in any order
+    m = write(tmp_path, "curve, z [nm], F [nN]\nb, 1, 2\na, 3, 4\nb, 5, 6\n", "named.csv")
+    curves, failed = fit_io.read_batch(m)
+    assert failed == [] and [(c.name, c.z.tolist(), c.F.tolist(), c.x) for c in curves] == [
+        ("b", [1 * 1e-9, 5 * 1e-9], [2 * 1e-9, 6 * 1e-9], None),
+        ("a", [3 * 1e-9], [4 * 1e-9], None)]
+    # a map by position
+    m = write(tmp_path, "x [um], y [um], z [nm], F [nN]\n1, 2, 3, 4\n0, 2, 5, 6\n1, 2, 7, 8\n",
+              "xy.csv")
+    curves, _ = fit_io.read_batch(m)
+    assert [(c.x, c.y, c.z.tolist()) for c in curves] == [
+        (1 * 1e-6, 2 * 1e-6, [3 * 1e-9, 7 * 1e-9]), (0.0, 2 * 1e-6, [5 * 1e-9])]
+    assert curves[0].name == "x = 1 µm, y = 2 µm"
+
+
+def test_is_batch_by_the_header_or_a_folder(tmp_path):
+    assert fit_io.is_batch(tmp_path)  # a folder
+    for header, batch in (("z [nm], F [nN]", False), ("curve, z [nm], F [nN]", True),
+                          ("x [um], y [um], z [nm], F [nN]", True), ("a, b, c, d, e", False)):
+        assert fit_io.is_batch(write(tmp_path, header + "\n", "h.csv")) is batch, header
+    # a file that cannot be read is no batch: the single-curve reader names its problem
+    assert fit_io.is_batch(tmp_path / "missing.csv") is False
+    assert fit_io.is_batch(write(tmp_path, "# only a comment\n", "c.csv")) is False
+
+
+@pytest.mark.parametrize("text,line", [
+    ("curve [nm], z [nm], F [nN]\na, 1, 2\n",
+     "1: the first of three columns is the curve's name, without a unit (e.g. `curve, z [nm], "
+     "F [nN]`); got 'curve [nm]'"),
+    ("curve, z nm, F [nN]\na, 1, 2\n",
+     "1: column 'z nm' must be a name and a unit in brackets, e.g. `z [um]`"),
+    ("curve, z [nm], F nN\na, 1, 2\n",
+     "1: column 'F nN' must be a name and a unit in brackets, e.g. `F [nN]`"),
+    ("curve, z [nm], F [nN]\na, 1, x\n", "2: 'a, 1, x' is not two numbers after the curve name"),
+    ("x um, y [um], z [nm], F [nN]\n", "1: column 'x um' must be a name and a unit in brackets, "
+     "e.g. `x [um]`"),
+    ("x [um], y um, z [nm], F [nN]\n", "1: column 'y um' must be a name and a unit in brackets, "
+     "e.g. `y [um]`"),
+    ("x [um], y [um], z nm, F [nN]\n", "1: column 'z nm' must be a name and a unit in "
+     "brackets, e.g. `z [nm]`"),
+    ("x [um], y [um], z [nm], F nN\n", "1: column 'F nN' must be a name and a unit in "
+     "brackets, e.g. `F [nN]`"),
+    ("x [um], y [um], z [nm], F [nm]\n", "1: column 'F [nm]': '1 nm' has the unit nanometer, "
+     "which is not a force (convertible to N)"),
+    ("x [um], y [um], z [nm], F [nN]\n1, 2, 3, 4, 5\n", "2: 5 values; each line has 4"),
+    ("x [um], y [um], z [nm], F [nN]\n1, 2, 3, x\n", "2: '1, 2, 3, x' is not four numbers"),
+    ("a, b, c, d, e\n", "1: a force map names three columns (`curve, z [nm], F [nN]`) or four "
+     "(`x [um], y [um], z [nm], F [nN]`); got 5"),
+])
+def test_read_batch_refusals(tmp_path, text, line):
+    m = write(tmp_path, text, "map.csv")
+    assert refused(m, fit_io.read_batch, m) == f"{m}:{line}"
+
+
+def test_report_in_full():
+    from types import SimpleNamespace
+
+    corr = np.array([[1.0, -0.25, 0.5], [-0.25, 1.0, 0.75], [0.5, 0.75, 1.0]])
+    r = SimpleNamespace(tip=SimpleNamespace(describe=lambda: "a tip"), table=lambda: "TABLE",
+                        correlation=corr, E=1234.5, E_error=56.78, warnings=("w1", "w2"))
+    assert fit_io.report(r, scene_E=2e3) == (
+        "tip: a tip\nTABLE\ncorrelation(E*, z_0) = -0.250\n"
+        "the scene's sample E = 2 kPa; fitted E = 1.2345 kPa ± 57 Pa\n"
+        "warning: w1\nwarning: w2")
+    assert fit_io.report(r) == ("tip: a tip\nTABLE\ncorrelation(E*, z_0) = -0.250\n"
+                                "warning: w1\nwarning: w2")
+    r.E = None  # no Poisson's ratio: no E to compare
+    assert "sample E" not in fit_io.report(r, scene_E=2e3)
+
+
+# -- the tip of a scene -------------------------------------------------------------------------
+def scene_file(tmp_path, tip, sample='shape = "flat"\nE = "20 kPa"\nnu = 0.5'):
+    path = tmp_path / "s.toml"
+    path.write_text('effects = ["force"]\n[load]\ndepth = "1 um"\n'
+                    f'[[body]]\nname = "tip"\n{tip}\n[[body]]\nname = "gel"\n{sample}\n')
+    return path
+
+
+def test_tip_from_scene_returns_the_tip_and_both_materials(tmp_path):
+    p = scene_file(tmp_path, 'shape = "sphere"\nradius = "2 um"\nE = "170 GPa"\nnu = 0.28')
+    tip, nu, E, tip_E, tip_nu = fit_io.tip_from_scene(p)
+    assert repr(tip) == repr(fit.Paraboloid(R=2e-6))
+    assert (nu, E, tip_E, tip_nu) == (0.5, 20e3, 170e9, 0.28)
+    p = scene_file(tmp_path, 'shape = "cone"\nangle = "70 deg"\nrigid = true')
+    tip, nu, E, tip_E, tip_nu = fit_io.tip_from_scene(p)
+    assert repr(tip) == repr(fit.Cone(theta=math.radians(70)))
+    assert (tip_E, tip_nu) == (None, None)
+
+
+@pytest.mark.parametrize("tip,sample,words", [
+    ('shape = "flat"\nE = "1 GPa"\nnu = 0.3', 'shape = "flat"\nE = "20 kPa"\nnu = 0.5',
+     "body: a fit needs one flat body (the sample) and one tip; this scene has 2 flat bodies"),
+    ('shape = "sphere"\nradius = "2 um"\nE = "1 GPa"\nnu = 0.3', 'shape = "flat"\nrigid = true',
+     "body (gel): the sample is rigid; give its E and nu (E is shown for comparison, nu "
+     "converts E* to E)"),
+    ('shape = "cylinder"\nradius = "2 um"\nlength = "1 mm"\nrigid = true', None,
+     "body (tip).shape: 'cylinder' has no fit model yet; tips: sphere, exact_sphere, cone, "
+     "pyramid, flat_punch, power_law, profile"),
+])
+def test_tip_from_scene_refusals(tmp_path, tip, sample, words):
+    p = scene_file(tmp_path, tip, *([sample] if sample else []))
+    assert refused(p, fit_io.tip_from_scene, p) == f"{p}: {words}"
+
+
+def test_tip_from_scene_names_the_tip_a_model_refuses(tmp_path, monkeypatch):
+    def refuse(p):
+        raise ValueError("R = 2e-06 m: a test refusal")
+
+    monkeypatch.setitem(fit_io.TIP_SHAPES, "sphere", refuse)
+    p = scene_file(tmp_path, 'shape = "sphere"\nradius = "2 um"\nrigid = true')
+    assert refused(p, fit_io.tip_from_scene, p) == f"{p}: body (tip): R = 2e-06 m: a test refusal"
