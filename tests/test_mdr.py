@@ -1364,3 +1364,30 @@ def test_smoothing_refusals_in_one_line():
                                    "or a finite number >= 0 (the smoothing spline's lam)")
     for ok in (0.0, 2, np.float64(1e-3), "gcv", None):
         nmdr.Profile.from_samples(r, r**2, smoothing=ok)
+
+
+def test_third_resolution_under_force_control_carries_the_force():
+    """The pressure's bound compares the coarse resolution with a third one, half of it,
+    "solved as this solution was": under force control that is at the same force. f = 2 r^n
+    on 40 samples (n = 1.5, 2.5), solved at the closed form's force for a = 1/2: the third
+    representation's radius carries that force to the root finder's tolerance (F(a3) on the
+    third tables, (5.55) with (5.57), against F: measured 7e-16), while the coarse radius,
+    the fallback where the third cannot be solved, is 1.4e-6 and 1.6e-5 a off the third's
+    and misses F by 5e-6 and 4e-5 (mdr.py's refreshed mutation run: the call with an
+    argument dropped fell back to it unseen). The bound there covers the closed form's
+    error."""
+    from hertzmdr.numeric._mdr import solve as msolve
+
+    for n in (1.5, 2.5):
+        r = np.linspace(0.0, 1.0, 41)
+        prof = nmdr.Profile.from_samples(r, 2 * r**n)
+        dd = float(npl.kappa(n)) * 2 * 0.5**n
+        F = float(npl.force(dd, 2.0, n, E))  # (5.57) of the power law, closed form
+        sol = prof.solve(force=F, E_star=E)
+        rr = sol.contact_radius * np.array([0.0, 0.3, 0.9, 0.999])
+        p, err = sol.pressure(rr, return_error=True)
+        assert np.all(np.abs(p - npl.pressure(rr, sol.depth, 2.0, n, E)) <= err), err
+        third, a3 = sol._halved()
+        # the root finder's tolerance on a moves F by F'(a) da, ~ 3 F da/a: 1e-10 leaves
+        # room for it and is 5e4 times below the fallback's miss
+        assert abs(msolve.force_of_radius(third, a3, E) / F - 1) < 1e-10, (n, a3)
