@@ -1391,3 +1391,21 @@ def test_third_resolution_under_force_control_carries_the_force():
         # the root finder's tolerance on a moves F by F'(a) da, ~ 3 F da/a: 1e-10 leaves
         # room for it and is 5e4 times below the fallback's miss
         assert abs(msolve.force_of_radius(third, a3, E) / F - 1) < 1e-10, (n, a3)
+
+
+def test_pressure_bound_where_the_third_resolution_cannot_be_solved():
+    """At a depth the fine and coarse samples reach but the third resolution (half the coarse
+    one) does not: f = 2 r^2.5 on 40 samples at d = g(r_max) (1 - 1e-9), a = r_max to 4e-10.
+    The third's radius falls back to the coarse one (Solution._halved's except branch) and
+    the pressure's bound is still made, and covers the closed form's error (powerlaw.pressure
+    at the solution's depth) at radii inside the contact (mdr.py's refreshed mutation run:
+    the fallback radius None survived: the third's pressure would raise a TypeError)."""
+    n = 2.5
+    r = np.linspace(0.0, 1.0, 41)
+    prof = nmdr.Profile.from_samples(r, 2 * r**n)
+    sol = prof.solve(depth=float(prof.g(1.0)) * (1 - 1e-9), E_star=E)
+    assert sol._halved()[1] == sol._a_coarse  # the fallback is the case tested
+    rr = sol.contact_radius * np.array([0.0, 0.3, 0.7, 0.95])
+    p, err = sol.pressure(rr, return_error=True)
+    assert np.all(np.isfinite(err)) and np.all(
+        np.abs(p - npl.pressure(rr, sol.depth, 2.0, n, E)) <= err), err
