@@ -1364,3 +1364,69 @@ def test_smoothing_refusals_in_one_line():
                                    "or a finite number >= 0 (the smoothing spline's lam)")
     for ok in (0.0, 2, np.float64(1e-3), "gcv", None):
         nmdr.Profile.from_samples(r, r**2, smoothing=ok)
+
+
+def test_third_resolution_under_force_control_carries_the_force():
+    """The pressure's bound compares the coarse resolution with a third one, half of it,
+    "solved as this solution was": under force control that is at the same force. f = 2 r^n
+    on 40 samples (n = 1.5, 2.5), solved at the closed form's force for a = 1/2: the third
+    representation's radius carries that force to the root finder's tolerance (F(a3) on the
+    third tables, (5.55) with (5.57), against F: measured 7e-16), while the coarse radius,
+    the fallback where the third cannot be solved, is 1.4e-6 and 1.6e-5 a off the third's
+    and misses F by 5e-6 and 4e-5 (mdr.py's refreshed mutation run: the call with an
+    argument dropped fell back to it unseen). The bound there covers the closed form's
+    error."""
+    from hertzmdr.numeric._mdr import solve as msolve
+
+    for n in (1.5, 2.5):
+        r = np.linspace(0.0, 1.0, 41)
+        prof = nmdr.Profile.from_samples(r, 2 * r**n)
+        dd = float(npl.kappa(n)) * 2 * 0.5**n
+        F = float(npl.force(dd, 2.0, n, E))  # (5.57) of the power law, closed form
+        sol = prof.solve(force=F, E_star=E)
+        rr = sol.contact_radius * np.array([0.0, 0.3, 0.9, 0.999])
+        p, err = sol.pressure(rr, return_error=True)
+        assert np.all(np.abs(p - npl.pressure(rr, sol.depth, 2.0, n, E)) <= err), err
+        third, a3 = sol._halved()
+        # the root finder's tolerance on a moves F by F'(a) da, ~ 3 F da/a: 1e-10 leaves
+        # room for it and is 5e4 times below the fallback's miss
+        assert abs(msolve.force_of_radius(third, a3, E) / F - 1) < 1e-10, (n, a3)
+
+
+def test_pressure_bound_where_the_third_resolution_cannot_be_solved():
+    """At a depth the fine and coarse samples reach but the third resolution (half the coarse
+    one) does not: f = 2 r^2.5 on 40 samples at d = g(r_max) (1 - 1e-9), a = r_max to 4e-10.
+    The third's radius falls back to the coarse one (Solution._halved's except branch) and
+    the pressure's bound is still made, and covers the closed form's error (powerlaw.pressure
+    at the solution's depth) at radii inside the contact (mdr.py's refreshed mutation run:
+    the fallback radius None survived: the third's pressure would raise a TypeError)."""
+    n = 2.5
+    r = np.linspace(0.0, 1.0, 41)
+    prof = nmdr.Profile.from_samples(r, 2 * r**n)
+    sol = prof.solve(depth=float(prof.g(1.0)) * (1 - 1e-9), E_star=E)
+    assert sol._halved()[1] == sol._a_coarse  # the fallback is the case tested
+    rr = sol.contact_radius * np.array([0.0, 0.3, 0.7, 0.95])
+    p, err = sol.pressure(rr, return_error=True)
+    assert np.all(np.isfinite(err)) and np.all(
+        np.abs(p - npl.pressure(rr, sol.depth, 2.0, n, E)) <= err), err
+
+
+@pytest.mark.parametrize("lam", [1e-4, 1e-3, 1e-2])
+def test_rel_error_of_a_smoothed_profile_covers_hertz(lam):
+    """A smoothed profile's own error enters rel_error (solve.smoothing: the coarse-vs-fine
+    difference cannot see it, both are smoothed alike). r^2 on 41 samples smoothed with
+    lam = 1e-4 ... 1e-2 (R = 1/2), at d = 0.18 and at Hertz's force for it: a, F and d
+    against Hertz (a = sqrt(R d), F = (4/3) E* sqrt(R) d^1.5, (5.15)-(5.17)) are within
+    rel_error, measured 11 to 225 times below it (1000 leaves room; a bound without the
+    smoothing term, or with it subtracted, fails: mdr's refreshed _mdr run)."""
+    r = np.linspace(0.0, 1.0, 41)
+    d0, R_ = 0.18, 0.5
+    FH = 4 / 3 * E * np.sqrt(R_) * d0**1.5  # Hertz's force at d0
+    prof = nmdr.Profile.from_samples(r, r**2, smoothing=lam)
+    for kw in ({"depth": d0}, {"force": FH}):
+        sol = prof.solve(E_star=E, **kw)
+        d = sol.depth
+        true = max(abs(sol.contact_radius / np.sqrt(R_ * d) - 1),
+                   abs(sol.force / (4 / 3 * E * np.sqrt(R_) * d**1.5) - 1),
+                   abs(d / d0 - 1) if "force" in kw else 0.0)
+        assert true <= sol.rel_error <= 1000 * true, (kw, true, sol.rel_error)
