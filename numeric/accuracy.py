@@ -199,10 +199,12 @@ def main(out: Path, only: str | None = None, quick: bool = False) -> list[Measur
 DOMAIN_SEARCH_RECORD = Path(__file__).resolve().parent.parent / "docs" / "domain_search.json"
 
 
-def domain_search_section(record: Path = DOMAIN_SEARCH_RECORD) -> str:
-    """The docs/accuracy.md section on the documented-domain search, from its record."""
+def domain_search_section(record: Path | None = None) -> str:
+    """The docs/accuracy.md section on the documented-domain search, from its record
+    (default: :data:`DOMAIN_SEARCH_RECORD`)."""
     import json
 
+    record = DOMAIN_SEARCH_RECORD if record is None else record
     if not record.exists():
         return ""
     c = json.loads(record.read_text())

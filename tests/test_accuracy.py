@@ -102,7 +102,6 @@ def test_main_writes_the_report_and_its_plot(tmp_path, monkeypatch):
                                   "points_per_row": 7, "functions": 11, "parameters": 22,
                                   "cases": 33, "failures": 0, "seconds": 44}))
     monkeypatch.setattr(accuracy, "DOMAIN_SEARCH_RECORD", record)
-    monkeypatch.setattr(accuracy.domain_search_section, "__defaults__", (record,))
     out = tmp_path / "sub" / "acc.md"
     res = accuracy.main(out, quick=True)
     assert [len(m.rows) for m in res] == [5]
