@@ -1152,7 +1152,11 @@ def fit_curve(z, F, tip: _Tip, *, nu=None, tip_modulus=None, tip_nu=None, z0=Non
         # sits among the first points, is then far too small (a cone on a curve without a
         # baseline: 45 of its sigma off). z_0 and the baseline, which trades with it, get
         # error inf; E* at least its change between the best fit and that with z_0 at z[0]
-        err[1:] = np.where(free[1:], np.inf, err[1:])
+        for k in (1, 2, 3):
+            if free[k]:  # as an undetermined parameter: variance inf, covariances NaN
+                cov[k, :] = cov[:, k] = np.nan
+                cov[k, k] = np.inf
+        err = np.sqrt(np.diag(cov))
         err[0] = max(err[0], unbounded[1]) if free[0] else err[0]
     if not p[0] >= MODULUS_SIGNIFICANCE * err[0]:
         _no_contact(f"the fitted E* = {p[0]:.3g} Pa is below {MODULUS_SIGNIFICANCE:g} of its "

@@ -1027,6 +1027,7 @@ def test_contact_point_not_bounded_by_a_curve_without_baseline():
         fit = fit_curve(z, F, Cone(theta=theta), sigma=noise)
         assert fit.values[1] > z[0]  # among the data: the case the local covariance misjudges
         assert np.all(np.isinf(fit.errors[1:])), (rel, seed, fit.errors)
+        assert np.isnan(fit.correlation[1:]).all() and np.isnan(fit.correlation[:, 1:]).all()
         assert abs(fit.values[0] - E_TRUE) <= 5 * fit.errors[0], (rel, seed)
         assert any(w_.startswith("contact point not bounded by the curve: with z_0 at the "
                                  f"first position {z[0]:.6g} m the fit is as good (chi^2 "
