@@ -1455,3 +1455,46 @@ def test_cycle_has_the_points_asked_for(points):
         cyc = c.cycle(to, control, points)
         assert len(cyc.depth) == len(cyc.force) == len(cyc.contact_radius) == points, (c, control)
         assert len(cyc.loading) == points
+
+
+def _largest_remainders(lengths, n):
+    """Hamilton's apportionment in exact rationals (fractions.Fraction of the float lengths):
+    2 points per branch, the rest shared in proportion to the lengths, the leftover points
+    to the largest remainders, the earlier branch first on a tie; 2 each when n < 2 per
+    branch; equal shares when every branch has zero length."""
+    from fractions import Fraction
+
+    extra = n - 2 * len(lengths)
+    if extra <= 0:
+        return [2] * len(lengths)
+    fl = [Fraction(x) for x in lengths]
+    total = sum(fl)
+    share = [extra * (x / total if total else Fraction(1, len(fl))) for x in fl]
+    k = [2 + math.floor(s) for s in share]
+    rest = extra - sum(math.floor(s) for s in share)
+    order = sorted(range(len(fl)), key=lambda i: (-(share[i] - math.floor(share[i])), i))
+    for i in order[:rest]:
+        k[i] += 1
+    return k
+
+
+def test_branch_points_shared_by_largest_remainders():
+    """A cycle's radii along its branches (AdhesiveContact._branch_points): both ends of each
+    branch and the rest shared in proportion to the branches' lengths (nanometre branches, a
+    total below 1 m, one of them run downwards as on unloading), by the largest remainders
+    with ties to the earlier branch (a stable sort: the path does not depend on numpy's sort
+    algorithm), 2 each when there are fewer than 2 per branch, equal shares for branches of
+    zero length. Against Hamilton's apportionment in exact rationals and hand-worked counts
+    (13 points on lengths 1 and 3 nm: 2 + 2.25 and 2 + 6.75, the leftover to the 0.75)."""
+    c = ad.AdhesiveContact(ad.Paraboloid(1e-6), 3e6, 0.04)
+    two = [(2e-9, 3e-9), (6e-9, 3e-9)]
+    ties = [(1e-9, 2e-9)] * 3 + [(1e-9, 3e-9)] * 2
+    flat = [(1e-9, 1e-9), (2e-9, 2e-9)]
+    cases = [(two, 13, [4, 9]), (two, 5, [2, 3]), (two, 4, [2, 2]), (two, 3, [2, 2]),
+             (ties, 13, [3, 2, 2, 3, 3]), (flat, 7, [4, 3])]
+    for branches, n, want in cases:
+        got = c._branch_points(branches, n)
+        lengths = [abs(b - a) for a, b in branches]
+        assert [len(x) for x in got] == want == _largest_remainders(lengths, n), (branches, n)
+        for (a, b), x in zip(branches, got, strict=True):
+            assert x[0] == a and x[-1] == b  # both ends of every branch
