@@ -1300,11 +1300,16 @@ def test_sampled_profile_refines_its_quadrature_only_while_that_halves_the_bound
         return nmdr.Profile.from_samples(r, 2 * r**n), dd, float(npl.force(dd, 2.0, n, E))
 
     lo = nmdr.RTOL_RANGE[0]
-    prof, dd, F = case(2.5, 200)
-    s = prof.solve(force=F, E_star=E, rtol=lo)
-    assert s.why_not_met == ("a sampled profile cannot be refined past its 201 samples; its "
-                             f"estimate is {s.rel_error:.1e} with 8 Gauss points a panel")
-    assert s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
+
+    def not_refined(n, N, points):  # under force control: rtol not met, the bound covers
+        prof, dd, F = case(n, N)
+        s = prof.solve(force=F, E_star=E, rtol=lo)
+        assert s.why_not_met == (f"a sampled profile cannot be refined past its {N + 1} "
+                                 f"samples; its estimate is {s.rel_error:.1e} with {points} "
+                                 "Gauss points a panel")
+        assert s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
+
+    not_refined(2.5, 200, 8)
     prof, dd, F = case(2.5, 2000)
     s = prof.solve(force=F, E_star=E, rtol=lo)
     assert s.met and s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
@@ -1315,11 +1320,7 @@ def test_sampled_profile_refines_its_quadrature_only_while_that_halves_the_bound
     assert c.rel_error[0] >= abs(c.force[0] / F - 1)
     # between 2 and 3 times: 2 r^1.5 on 551 samples under force control (2.6, measured),
     # level 1 kept; 2 r^3.5 on 151 samples, a curve (2.8): level 1 kept and rtol met
-    prof, dd, F = case(1.5, 550)
-    s = prof.solve(force=F, E_star=E, rtol=lo)
-    assert s.why_not_met == ("a sampled profile cannot be refined past its 551 samples; its "
-                             f"estimate is {s.rel_error:.1e} with 12 Gauss points a panel")
-    assert s.rel_error >= max(abs(s.depth / dd - 1), abs(s.contact_radius / 0.5 - 1))
+    not_refined(1.5, 550, 12)
     prof, dd, F = case(3.5, 150)
     c = prof.force_depth_curve([dd], E_star=E, rtol=lo)
     assert c.met[0] and c.rel_error[0] >= abs(c.force[0] / F - 1)
