@@ -42,6 +42,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from hertzmdr.numeric import fit as hfit
 from hertzmdr.numeric import scene
 
 from kernels import hertz_reference, tau_rz_rings, uz_axisymmetric
@@ -649,6 +650,33 @@ CASES.update({
                        ("depth", "force", "contact_area", "mean_pressure", "stiffness",
                         "effective_modulus", "max_pressure")),
 })
+def pyramid_cone(sides, half_angle):
+    """tan(theta) of the cone f = r tan(theta) whose force is the pyramid's. The pyramid's
+    cross-section at depth d is n r_i^2 tan(pi/n), r_i = d tan(alpha) its inradius (alpha the
+    half-angle between the axis and a face's centre-line); the equal-area cone's radius is
+    d tan(alpha_A), tan^2(alpha_A) = n tan^2(alpha) tan(pi/n)/pi, its slope 1/tan(alpha_A).
+    The cone's force (5.40) goes as 1/tan(theta), and the pyramid's is the BEM's beta_n
+    (docs/pyramid.md: measured data, the one input taken from the package) times the
+    equal-area cone's. (Berkovich, 3 faces at 65.27 deg: 3 sqrt(3) tan^2(alpha) d^2 = 24.50 d^2,
+    ISO 14577's projected area.)"""
+    n, alpha = sides, mp.radians(mp.mpf(half_angle))
+    tan_area = mp.sqrt(n * mp.tan(alpha) ** 2 * mp.tan(mp.pi / n) / mp.pi)
+    return 1 / (tan_area * mp.mpf(hfit.PYRAMID_BEM_FACTOR[n][0]))
+
+
+CASES.update({
+    # a Berkovich indenter (preset) under a force, and a four-sided pyramid of given faces and
+    # half-angle under a depth: the cone of the pyramid's force law (pyramid_cone)
+    "pyramid": Case([body("pyramid", preset="berkovich"), body("flat", GLASS)], {"force": 0.05},
+                    None, lambda: PowerLaw(e_star(GLASS), pyramid_cone(3, "65.27"), 1),
+                    AXI + ("force_law",), nu=0.22),
+    "pyramid_sides": Case([body("pyramid", sides=4, half_angle=math.radians(60.0)),
+                           body("flat", STEEL)], {"depth": 2e-7}, None,
+                          lambda: PowerLaw(e_star(STEEL), pyramid_cone(4, "60"), 1),
+                          AXI + ("force_law",)),
+})
+
+
 for _dist, _n in (("uniform", 0), ("hertzian", 0.5), ("punch", -0.5)):
     CASES[f"pressure_{_dist}"] = Case(
         [body("flat", GLASS), body("flat")],
@@ -1225,7 +1253,10 @@ SLOW = {("profile", "axis_stresses"), ("power_law", "max_shear"),
     # the Gaussian estimate's (the same exact-ellipse stresses) with HERTZMDR_SWEEP=full
     ("elliptic_gaussian", e) for e in ELLIPSE_STRESS} | {
     (k, e) for k in ("cone", "flat_punch", "worn", "profile") for e in STRESS_GRID
-    if k == "profile" or e == "von_mises_field"}
+    if k == "profile" or e == "von_mises_field"} | {
+    # a pyramid's stresses are its cone's (the cone's case checks them, all but its
+    # von_mises_field, in every run)
+    (k, e) for k in ("pyramid", "pyramid_sides") for e in ("axis_stresses", *STRESS_GRID)}
 
 
 def pairs():
