@@ -1339,6 +1339,30 @@ def test_smoothing_fits_a_spline_through_the_samples():
     assert np.all(np.abs(g) < 1e-4 * 2 * x**2), g / (2 * x**2)
 
 
+def test_smoothing_with_a_breakpoint():
+    """smoothing= on a profile with a breakpoint (spline.smoothed on both kinds of segment):
+    samples of r^2 on 41 points, breakpoint 0.5. The segment from the axis is the restriction
+    of the smoothing spline of the mirrored samples (scipy's make_smoothing_spline on
+    -r..r, evaluated directly here; the package interpolates it with clamped ends): equal to
+    1e-12 (measured 6e-17 at lam = 1e-3). The outer segment, smoothed with lam = 1e6, is the
+    least-squares line of its samples (np.polyfit) to O(1/lam): within 1e-4 (measured 1.4e-5;
+    r^2 is 0.04 from that line, so a segment smoothed by GCV or interpolated fails)."""
+    from scipy.interpolate import make_smoothing_spline
+
+    r = np.linspace(0.0, 1.0, 41)
+    inner, outer = r[r <= 0.5], r >= 0.5
+    x0, x1 = np.linspace(0.0, 0.5, 51), np.linspace(0.5, 1.0, 51)
+    fine = nmdr.Profile.from_samples(r, r**2, smoothing=1e-3,
+                                     breakpoints=(0.5,))._source.pair(0)[1]
+    mirrored = make_smoothing_spline(np.concatenate([-inner[:0:-1], inner]),
+                                     np.concatenate([inner[:0:-1], inner]) ** 2, lam=1e-3)
+    assert np.max(np.abs(fine.segments[0](x0) - mirrored(x0))) < 1e-12
+    fine = nmdr.Profile.from_samples(r, r**2, smoothing=1e6,
+                                     breakpoints=(0.5,))._source.pair(0)[1]
+    slope, at0 = np.polyfit(r[outer], r[outer] ** 2, 1)
+    assert np.max(np.abs(fine.segments[1](x1) - (at0 + slope * x1))) < 1e-4
+
+
 @pytest.mark.parametrize("lam", [1e-4, 1e-2, 1.0, 1e6])
 def test_g_bound_of_a_heavily_smoothed_profile(lam):
     """g's bound covers the error of a profile smoothed far from its samples (the finding of
