@@ -1339,6 +1339,32 @@ def test_smoothing_fits_a_spline_through_the_samples():
     assert np.all(np.abs(g) < 1e-4 * 2 * x**2), g / (2 * x**2)
 
 
+def test_rel_error_at_the_rounding_level():
+    """Where both representations reproduce the profile to rounding (r^2 on 30 samples, R =
+    1/2, at a = 0.01, 0.02 and 0.03 of r_max), the coarse-vs-fine difference is itself
+    rounding and the bound is mostly its floor ((64 + 4 N) eps = 4.1e-14): a, F and d of solve
+    (at the depth and at Hertz's force) and of force_depth_curve against Hertz (a = sqrt(R d),
+    F = (4/3) E* sqrt(R) d^1.5, mpmath at 30 digits) are within rel_error (measured errors
+    8e-16 to 1.2e-14, bounds 5.9e-14 to 3.4e-13; the floor subtracted instead of added leaves
+    -2e-16 at a = 0.02 under depth control, -2.3e-14 at a = 0.03 under force control)."""
+    r = np.linspace(0.0, 1.0, 30)
+    R_ = 0.5
+    prof = nmdr.Profile.from_samples(r, r**2)
+    depths = np.array([0.01, 0.02, 0.03]) ** 2 / R_
+    curve = prof.force_depth_curve(depths, E_star=E)
+    for i, depth in enumerate(depths):
+        with mp.workdps(30):
+            a_ref = mp.sqrt(R_ * mp.mpf(float(depth)))
+            F_ref = mp.mpf(4) / 3 * E * mp.sqrt(R_) * mp.mpf(float(depth)) ** 1.5
+        at_depth = prof.solve(depth=float(depth), E_star=E)
+        at_force = prof.solve(force=float(F_ref), E_star=E)
+        for sol in (at_depth, at_force, curve):
+            a, F, dd, bound = (np.atleast_1d(v)[i if sol is curve else 0] for v in (
+                sol.contact_radius, sol.force, sol.depth, sol.rel_error))
+            true = max(abs(a / a_ref - 1), abs(F / F_ref - 1), abs(dd / depth - 1))
+            assert true <= bound, (depth, float(true), bound)
+
+
 def test_smoothing_with_a_breakpoint():
     """smoothing= on a profile with a breakpoint (spline.smoothed on both kinds of segment):
     samples of r^2 on 41 points, breakpoint 0.5. The segment from the axis is the restriction
