@@ -738,11 +738,15 @@ def fit_curve(z, F, tip: _fit.Paraboloid | _fit.Cone | _fit.ExactSphere | _fit.P
     Returns
     -------
     AdhesiveFitResult
+        Values and standard errors (the linearised covariance times the residual variance).
+        A curve without a jump-off that does not bound its contact point (a fit with z_0 held
+        elsewhere is as good, :func:`_z0_unbounded`) reports z_0, Delta gamma, F_0 and s_0 with
+        error inf and E*'s error at least its change among those fits, with a warning.
 
     Raises
     ------
     hertzmdr.numeric.fit.NoContactError
-        When the curve shows no contact.
+        When the curve shows no contact, or E* is below 3 of its standard errors.
     ValueError
         For invalid input, naming it, its value and the valid range.
     """
