@@ -143,14 +143,14 @@ def test_power_law_singular_at_the_centre(tmp_path, capsys, n):
     """f = c r^n with n <= 1: the pressure is unbounded at r = 0 (g'(x)/x = n kappa c x^(n-2)
     is not integrable at 0): max_pressure is refused with the reason, and the largest stresses
     are +inf at the tip (x, z) = (0, 0)."""
-    tip = {"shape": "power_law", "coefficient": 1.0, "exponent": n}
-    eff = run(tip, {"depth": 1e-6}, ["max_shear", "max_von_mises"])["effects"]
-    assert eff["max_von_mises"]["value"] == {"value": math.inf, "x": 0.0, "z": 0.0}
     path = tmp_path / "s.toml"
     path.write_text(SCENE.replace('["force"]', '["max_pressure"]').format(
         body=f'shape = "power_law"\ncoefficient = 1.0\nexponent = {n}'))
     assert main(["run", str(path)]) == 2
     assert "singular at the centre" in capsys.readouterr().err
+    tip = {"shape": "power_law", "coefficient": 1.0, "exponent": n}
+    eff = run(tip, {"depth": 1e-6}, ["max_shear", "max_von_mises"])["effects"]
+    assert eff["max_von_mises"]["value"] == {"value": math.inf, "x": 0.0, "z": 0.0}
 
 
 def test_cylinder_across_an_ellipsoid_is_a_sphere():
@@ -267,8 +267,7 @@ def test_defaults_of_punches():
 def test_sampled_profile_spline_degree():
     """A profile's spline is quintic from 20 samples (cubic below): 20 samples of f = c r^4,
     which a quintic reproduces, give the force of Problem 7(d) with n = 4 to 1e-12 (the
-    quadrature's and the estimate's 3e-13; a cubic's interpolation error is far larger); five
-    samples, too few for a quintic (six knots), still run, cubically."""
+    quadrature's and the estimate's 3e-13; a cubic's interpolation error is far larger)."""
     c, n, d = 1e15, 4, 1e-9
     r = [i * 1e-5 / 19 for i in range(20)]
     force = run({"shape": "profile", "r": r, "f": [c * x**n for x in r]}, {"depth": d},
@@ -278,8 +277,6 @@ def test_sampled_profile_spline_degree():
         a = (mp.mpf(d) / (k * c)) ** (mp.mpf(1) / n)
         ref = 2 * mp.mpf(E_STAR) * k * c * a ** (n + 1) * n / (n + 1)
     assert force == pytest.approx(float(ref), rel=1e-12, abs=0)
-    r = [0, 1e-6, 2e-6, 3e-6, 4e-6]
-    run({"shape": "profile", "r": r, "f": [x * x / 0.02 for x in r]}, {"depth": 1e-10}, ["force"])
 
 
 def test_sampled_profile_kink_as_breakpoint():
