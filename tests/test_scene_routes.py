@@ -1352,15 +1352,21 @@ def check_ellipse_stress(geometry, eff, effect):
 #: mirroring fails here as on the full grid. HERTZMDR_SWEEP=full keeps the scene's grid (and
 #: adds the off-axis point by rings, which needs the point nearest (a/2, a/2) of that grid).
 CI_GRID_SUPERPOSED = 7
+#: the same for a superposed axis_stresses (the scene's AXIS_POINTS_SUPERPOSED = 31: 30 depths
+#: 0 < z <= 3a): its check compares six of them, both ends included, with the route; 11 points
+#: (10 depths, a third of the work) keep the six, spread over the same 0 < z <= 3a, each by the
+#: same superposition and bound. HERTZMDR_SWEEP=full keeps the scene's 31.
+CI_AXIS_POINTS_SUPERPOSED = 11
 
 
 @pytest.mark.parametrize("case_id, effect", pairs())
 def test_effect_against_route(case_id, effect, monkeypatch):
     case = CASES[case_id]
-    if effect == "von_mises_field" and case_id in SUPERPOSED and not FULL:
+    if effect in ("von_mises_field", "axis_stresses") and case_id in SUPERPOSED and not FULL:
         from hertzmdr.numeric.scene.kinds import stresses
 
         monkeypatch.setattr(stresses, "GRID_SUPERPOSED", CI_GRID_SUPERPOSED)
+        monkeypatch.setattr(stresses, "AXIS_POINTS_SUPERPOSED", CI_AXIS_POINTS_SUPERPOSED)
     with mp.workdps(DPS):
         route = case.get()
         doc = doc_of(case_id, [effect])
