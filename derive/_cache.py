@@ -81,9 +81,9 @@ def _locked(path: Path) -> Iterator[None]:
             fcntl.flock(fh, fcntl.LOCK_UN)
 
 
-def _prune(folder: Path, keep: Path) -> None:
+def _prune(folder: Path, keep: Path, name: str = "relations") -> None:
     cutoff = time.time() - KEEP_DAYS * 86400
-    for old in folder.glob("relations-*"):
+    for old in folder.glob(f"{name}-*"):
         try:
             if old.stem != keep.stem and old.stat().st_atime < cutoff:
                 old.unlink()
@@ -91,10 +91,12 @@ def _prune(folder: Path, keep: Path) -> None:
             pass
 
 
-def cached(derive: Callable[[], object]) -> tuple[object, str]:
+def cached(derive: Callable[[], object], name: str = "relations") -> tuple[object, str]:
     """``derive()``'s result and where it came from ("cache", "derived" or "derived, cache
     off"). A cache that cannot be read or written (a read-only home, a truncated file) is
-    passed over: the relations are then derived, never half-read."""
+    passed over: the relations are then derived, never half-read. ``name`` tells the cached
+    results apart (file ``<name>-<key>.pickle``): the relations, and derivations outside them
+    that several processes repeat (derive/stress.py's axis stresses)."""
     how = mode()
     if how == "0":
         return derive(), "derived, cache off"
@@ -103,7 +105,7 @@ def cached(derive: Callable[[], object]) -> tuple[object, str]:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError:
         return derive(), f"derived, cache directory {folder} not writable"
-    path = folder / f"relations-{key()}.pickle"
+    path = folder / f"{name}-{key()}.pickle"
     with _locked(path.with_suffix(".lock")):
         if how == "1" and path.exists():
             try:
@@ -117,7 +119,7 @@ def cached(derive: Callable[[], object]) -> tuple[object, str]:
             with open(tmp, "wb") as fh:
                 pickle.dump(value, fh, protocol=pickle.HIGHEST_PROTOCOL)
             os.replace(tmp, path)  # readers see the whole file or none
-            _prune(folder, path)
+            _prune(folder, path, name)
         except OSError:
             tmp.unlink(missing_ok=True)
         return value, "derived"

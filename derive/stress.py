@@ -42,6 +42,7 @@ from functools import cache
 import mpmath as mp
 import sympy as sp
 
+from hertzmdr.derive import _cache
 from hertzmdr.derive import boussinesq as b
 from hertzmdr.derive.relation import Relation
 from hertzmdr.derive.symbols import F, a, nu, p0, r, symbol, unit_interval, z
@@ -72,7 +73,15 @@ def _mean_kernel(comp: str) -> sp.Expr:
 
 @cache
 def axis_stresses() -> dict[str, sp.Expr]:
-    """sigma_zz and sigma_xx = sigma_yy on the axis under the Hertz pressure, by (5.47)."""
+    """sigma_zz and sigma_xx = sigma_yy on the axis under the Hertz pressure, by (5.47).
+
+    Derived once (~1.5 s of CPU) and kept in the disk cache of derived relations
+    (:mod:`hertzmdr.derive._cache`, keyed by the derive sources; HERTZMDR_DERIVE_CACHE=0
+    derives afresh): the test workers, bench_stress.py and the domain search each needed it."""
+    return _cache.cached(_axis_stresses_derived, "stress-axis")[0]
+
+
+def _axis_stresses_derived() -> dict[str, sp.Expr]:
     c = sp.sqrt(a**2 + _z**2)
     R_t = c / sp.sqrt(1 + _t**2)  # R = z at t = a/z, R = c at t = 0
     out = {}

@@ -128,12 +128,22 @@ def hertz_reference(E_star, R, d):
     Matching the sphere d - r^2/(2R) needs d = p0 a U0/E* and a^2/(2R) = p0 a U1/E*, whence
     a^2 = 2 R d U1/U0 and p0 = d E*/(a U0); the force is the pressure integrated by quadrature.
     No derived formula enters. Call inside ``mp.workdps`` (at most 50 digits).
+
+    A pure function of its arguments and the working precision: its results are kept by them
+    (the sweeps check several functions at the same sampled points, and their inverses run the
+    same root finding on F, so each quadrature is done once).
     """
-    U0, U1 = _hertz_unit_constants()
-    a = mp.sqrt(2 * R * d * U1 / U0)
-    p0 = d * E_star / (a * U0)
-    F = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), a)
-    return a, p0, F
+    key = (E_star, R, d, mp.mp.prec)
+    if key not in _HERTZ_REFERENCES:
+        U0, U1 = _hertz_unit_constants()
+        a = mp.sqrt(2 * R * d * U1 / U0)
+        p0 = d * E_star / (a * U0)
+        F = force_axisymmetric(lambda r: p0 * mp.sqrt(1 - (r / a) ** 2), a)
+        _HERTZ_REFERENCES[key] = a, p0, F
+    return _HERTZ_REFERENCES[key]
+
+
+_HERTZ_REFERENCES: dict = {}
 
 
 

@@ -48,12 +48,21 @@ def U0():
         return 2 * mp.quad(lambda rho: mp.acosh(1 / rho), [0, 1])
 
 
+#: reference()'s results by (E*, d, theta, working precision): the sweep's checks of a, F and
+#: dF/dd sample the same points (same domains, same seed), and its two inverse checks run the
+#: same root finding, so each quadrature is done once (its value is a function of these alone)
+_REFERENCES: dict = {}
+
+
 def reference(E_star, d, theta):
     """(a, F) of the cone at depth d: a from the kernel constant, F by quadrature."""
-    tan = mp.tan(theta)
-    a = 2 * d / (tan * U0())
-    F = mp.quad(lambda r: E_star * tan / 2 * mp.acosh(a / r) * 2 * mp.pi * r, [0, a])
-    return a, F
+    key = (E_star, d, theta, mp.mp.prec)
+    if key not in _REFERENCES:
+        tan = mp.tan(theta)
+        a = 2 * d / (tan * U0())
+        F = mp.quad(lambda r: E_star * tan / 2 * mp.acosh(a / r) * 2 * mp.pi * r, [0, a])
+        _REFERENCES[key] = a, F
+    return _REFERENCES[key]
 
 
 def test_cone_by_kernel():

@@ -84,3 +84,16 @@ def test_the_command_line_names_a_bad_setting(tmp_path, var, value):
     assert out.stderr.strip().splitlines() == [
         next(line for line in out.stderr.splitlines() if var in line)]
     assert f"{var}={value!r}" in out.stderr
+
+
+def test_named_results_are_kept_apart(folder):
+    """A result cached under another name (derive/stress.py's axis stresses) has its own file:
+    it neither reads nor replaces the relations'."""
+    rel, rel_calls = counting(["relations"])
+    axis, axis_calls = counting(["axis"])
+    assert _cache.cached(rel) == (["relations"], "derived")
+    assert _cache.cached(axis, "stress-axis") == (["axis"], "derived")
+    assert _cache.cached(rel) == (["relations"], "cache")
+    assert _cache.cached(axis, "stress-axis") == (["axis"], "cache")
+    assert (len(rel_calls), len(axis_calls)) == (1, 1)
+    assert len(list(folder.glob("stress-axis-*.pickle"))) == 1

@@ -2,6 +2,7 @@
 
 import difflib
 import os
+import random
 import shutil
 import subprocess
 import sys
@@ -20,16 +21,30 @@ GENERATED = ["numeric/_generated.py", "numeric/_generated_mp.py", "docs/derivati
              "docs/errata.md", "numeric/c/hertzmdr_laws.h", "docs/c_laws_reference.md"]
 
 
-def test_generated_files_are_fresh(capsys):
-    """`python -m hertzmdr.derive --check`, through its entry point in this process (so that
-    the session derives everything once; the cached relations serve the other tests). The
-    committed files were printed by an earlier run, so passing also shows the output is
-    byte-identical on a re-run."""
-    from hertzmdr.derive.__main__ import main
+def test_generated_files_are_fresh(regenerated, monkeypatch, capsys):
+    """`python -m hertzmdr.derive --check`: its entry point in this process, on the texts that
+    ``targets()`` printed in the fresh process of ``regenerated`` (the printers are run once in
+    this file, not once here and again there: ~8 s of CPU each). It exits 0 on the committed
+    files, and 1 with the diff and the advice when one file is stale. The committed files were
+    printed by an earlier run, so passing also shows the output is byte-identical on a re-run
+    (and, the fixture's hash seed being drawn per run, under another hash seed each run)."""
+    from hertzmdr.derive import __main__ as cli
 
-    rc = main(["--check"])
-    out = capsys.readouterr()
-    assert rc == 0, out.out[-3000:] + out.err
+    out, _ = regenerated
+    texts = {ROOT / name: (out / name).read_text() for name in GENERATED}
+    monkeypatch.setattr(cli, "targets", lambda: dict(texts))
+    rc = cli.main(["--check"])
+    res = capsys.readouterr()
+    assert rc == 0, res.out[-3000:] + res.err
+    # the same check fails on one stale file, names it and shows the changed line
+    name = "docs/errata.md"
+    monkeypatch.setattr(cli, "targets", lambda: {**texts, ROOT / name: texts[ROOT / name]
+                                                 + "a line the committed file lacks\n"})
+    rc = cli.main(["--check"])
+    res = capsys.readouterr()
+    assert rc == 1
+    assert f"{name} (regenerated)" in res.out and "+a line the committed file lacks" in res.out
+    assert "1 generated file(s) stale" in res.err
 
 
 def stale(committed: Path, regenerated: Path) -> dict[str, str]:
@@ -50,7 +65,9 @@ def stale(committed: Path, regenerated: Path) -> dict[str, str]:
 def regenerated(tmp_path_factory):
     """Every generated file printed by a fresh interpreter into a temporary directory, with a
     hash seed other than this process's (set and dict orders that leak into the output would
-    differ), through the same ``targets()`` that ``python -m hertzmdr.derive`` writes."""
+    differ), through the same ``targets()`` that ``python -m hertzmdr.derive`` writes. The seed
+    is drawn per run (as this process's own is, unless PYTHONHASHSEED is set), so that the runs
+    together try many; it is named in every failure. Returns (folder, seed)."""
     out = tmp_path_factory.mktemp("regenerated")
     code = ("import sys; from pathlib import Path; "
             "from hertzmdr.derive.__main__ import ROOT, targets; out = Path(sys.argv[1])\n"
@@ -58,30 +75,36 @@ def regenerated(tmp_path_factory):
             "    dest = out / path.relative_to(ROOT)\n"
             "    dest.parent.mkdir(parents=True, exist_ok=True)\n"
             "    dest.write_text(text)\n")
-    seed = "1" if os.environ.get("PYTHONHASHSEED") != "1" else "2"
+    seed = str(random.SystemRandom().randrange(1, 2**32))
+    if seed == os.environ.get("PYTHONHASHSEED"):
+        seed = str(int(seed) % (2**32 - 1) + 1)
     # With HERTZMDR_SWEEP=full the cache of derived relations is off: this process derives
     # every relation afresh under another hash seed (the derivation's own determinism, ~2 min
     # of CPU). Otherwise it reads the cache (keyed by the derive sources), so that the printers
-    # run under another seed; that a derivation prints the committed files is then
-    # test_generated_files_are_fresh's check (in a fresh clone its relations are derived)
+    # run under another seed; in a fresh clone (no cache yet) it derives them and writes the
+    # cache, which this process's tests then read: that a derivation prints the committed
+    # files is checked there, once
     cache = "0" if FULL else "1"
     subprocess.run([sys.executable, "-c", code, str(out)], check=True,
                    env={**os.environ, "PYTHONHASHSEED": seed, "HERTZMDR_DERIVE_CACHE": cache})
     assert sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()) \
         == sorted(GENERATED), "the generator writes exactly the files listed here"
-    return out
+    return out, seed
 
 
 def test_regenerated_in_a_fresh_process_matches_the_committed_files(regenerated):
     """Deterministic across processes and hash seeds, and fresh: a subprocess prints exactly
     the committed text."""
-    diffs = stale(ROOT, regenerated)
-    assert not diffs, "stale or non-deterministic output:\n" + "\n".join(diffs.values())[:3000]
+    out, seed = regenerated
+    diffs = stale(ROOT, out)
+    assert not diffs, (f"stale or non-deterministic output (PYTHONHASHSEED={seed}):\n"
+                       + "\n".join(diffs.values())[:3000])
 
 
 def test_the_staleness_check_fails_on_an_edited_file(regenerated, tmp_path):
     """The comparison above can fail: a copy of the committed files with one number of the
     generated module changed is reported stale, that file only, with the change in its diff."""
+    regenerated, _ = regenerated
     for name in GENERATED:
         (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(ROOT / name, tmp_path / name)

@@ -53,10 +53,18 @@ def K1():
 
 
 def reference(E_star, R, a):
-    """(p0, F/L) of the line contact of half-width a; call inside mp.workdps."""
-    p0 = mp.pi * E_star * a / (2 * K1() * R)
-    F_L = mp.quad(lambda s: p0 * mp.sqrt(1 - (s / a) ** 2), [-a, a])
-    return p0, F_L
+    """(p0, F/L) of the line contact of half-width a; call inside mp.workdps. Kept by its
+    arguments and the working precision (a pure function of them): test_line_sweep checks two
+    functions at the same points and three inverses by the same root finding on F/L."""
+    key = (E_star, R, a, mp.mp.prec)
+    if key not in _REFERENCES:
+        p0 = mp.pi * E_star * a / (2 * K1() * R)
+        F_L = mp.quad(lambda s: p0 * mp.sqrt(1 - (s / a) ** 2), [-a, a])
+        _REFERENCES[key] = p0, F_L
+    return _REFERENCES[key]
+
+
+_REFERENCES: dict = {}
 
 
 def test_line_by_displacement_gradient():

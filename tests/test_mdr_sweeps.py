@@ -23,15 +23,26 @@ TOL = 1e-13
 
 
 def _pl_reference(n):
-    """(a, F) of f = R0 (r/R0)^n at depth d, by quadrature; call inside mp.workdps."""
+    """(a, F) of f = R0 (r/R0)^n at depth d, by quadrature; call inside mp.workdps.
+
+    Its values are kept by the arguments and the working precision (kappa_n's quadrature by
+    the precision alone): the sweep checks F, a and the inverse at the same sampled points
+    (same domains and seed), which redid kappa_n and the force quadrature at each of them."""
+    done = {}
+
     def ref(E, R0, strain):
-        c = R0 ** (1 - n)
-        d = strain * R0
-        k = kappa_reference(mp.mpf(n))
-        a = (d / (k * c)) ** (mp.mpf(1) / n)  # the root of g(a) = k c a^n = d (5.55)
-        # (5.57) in t = x/a and normalised by d: mp.quad's error criterion is absolute
-        F = 2 * E * a * d * mp.quad(lambda t: 1 - k * c * (a * t) ** n / d, [0, 1])
-        return a, F
+        key = (E, R0, strain, mp.mp.prec)
+        if key not in done:
+            if mp.mp.prec not in done:
+                done[mp.mp.prec] = kappa_reference(mp.mpf(n))
+            k = done[mp.mp.prec]
+            c = R0 ** (1 - n)
+            d = strain * R0
+            a = (d / (k * c)) ** (mp.mpf(1) / n)  # the root of g(a) = k c a^n = d (5.55)
+            # (5.57) in t = x/a and normalised by d: mp.quad's error criterion is absolute
+            F = 2 * E * a * d * mp.quad(lambda t: 1 - k * c * (a * t) ** n / d, [0, 1])
+            done[key] = a, F
+        return done[key]
     return ref
 
 
