@@ -419,8 +419,9 @@ def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
     # mutant, where a reason may be written for a whole line
     for n in [{**k, "reason": f"killed since this run by {k['test']} (added after it)"}
               for k in load_notes("since")] + notes:
-        # a note's optional "line" (the run's) tells apart lines of the same text
-        if n.get("line", s.line) != s.line:
+        # a note's optional "line" (the run's) tells apart lines of the same text, and its
+        # optional "file" (under numeric/) the files of a folder's run
+        if n.get("line", s.line) != s.line or n.get("file", s.file) != s.file:
             continue
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
