@@ -621,8 +621,9 @@ def report(runs: list[Run], argv: list[str], total: float, assembled: bool = Fal
         "(`_generated*.py`) are not mutated: they are checked against the derivations by "
         "`tests/test_generated.py` and by the mpmath oracles. Nor are `demo.py` and `plots.py` "
         "(a demonstration and figures: nothing they compute is a result, and their tests check "
-        "that they run), nor the drawing of `fit_io.py`'s two figures (a `# pragma: no mutate` "
-        "region: what they draw is computed and tested apart, `map_grids`). The notes on the "
+        "that they run), nor the drawing of `fit_io.py`'s two figures and of `accuracy.py`'s "
+        "(`# pragma: no mutate` regions: what they draw is computed and tested apart, "
+        "`map_grids` and the report's rows). The notes on the "
         "survivors are in `benchmarks/mutation_notes*.toml`. The scene layer, "
         "`numeric/scene/`, has its own page, [mutation_scene.md](mutation_scene.md).",
         "",

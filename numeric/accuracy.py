@@ -11,6 +11,15 @@ two rounds of one call: numbers that show the report is whole, not timings.
 The truths come from ``_generated_mp`` (the derived expressions printed for mpmath) at 60
 digits, or from 60-digit quadrature where there is no closed form; ``tests/`` verify those
 expressions against independent quadratures to >= 30 digits.
+
+Every way states the error it should have: its *bound*, from the method's error model (the
+roundings of a closed form, the cancellation a textbook form suffers, a series' first omitted
+term, a quadrature's tolerance) or the error estimate the method itself reports (hertzmdr's
+``rel_error``). The report prints it beside the measured error and marks a row whose error
+exceeds it; ``tests/test_accuracy.py`` checks every way's error against its bound. A way that
+demonstrates a failure (a textbook form's lost digits, an overflow) *predicts* its error: that
+error must then also be at least a hundredth of the bound, so the demonstration shows what it
+claims.
 """
 
 from __future__ import annotations
@@ -24,15 +33,24 @@ from hertzmdr.numeric import _timing
 
 TRUTH_DPS = 60
 FLOOR = 1e-50  # errors below this are shown as "< 1e-50" and drawn at this value
+#: a predicting way's error must be at least its bound divided by this
+PREDICTS_WITHIN = 100.0
 
 
 @dataclass(frozen=True)
 class Way:
-    """One way of computing a quantity."""
+    """One way of computing a quantity.
+
+    ``bound``: the relative error this way should have at most (a number from its error
+    model, or a function returning the error estimate the method reports; ``inf`` for a way
+    expected to fail). ``predicts``: the bound is also the size of the error (a demonstrated
+    failure), which must then be at least ``bound / PREDICTS_WITHIN``."""
 
     method: str  # "closed form", "SciPy quad", "mpmath quad", ...
     setting: str  # "float64", "epsrel=1e-8", "30 digits", ...
     run: Callable[[], object]
+    bound: float | Callable[[], float]
+    predicts: bool = False
 
 
 @dataclass(frozen=True)
@@ -41,6 +59,9 @@ class Quantity:
     description: str
     truth: Callable[[], object]  # called inside mpmath.workdps(TRUTH_DPS)
     ways: Callable[[], list[Way]]
+    #: the truth's own relative error, added to every way's bound (60 digits of a closed form
+    #: by default; a truth given as data or by a coarser quadrature says its own)
+    truth_error: float = 1e-55
 
 
 @dataclass
@@ -50,6 +71,19 @@ class Row:
     rel_error: float
     seconds: float  # median time per evaluation
     spread: tuple[float, float]  # min and max of the repeats, per evaluation
+    bound: float = float("inf")  # the way's bound, the truth's error included
+    predicts: bool = False
+
+    @property
+    def within(self) -> bool:
+        """Whether the measured error is within the bound (and, for a way that predicts its
+        error, at least the bound over PREDICTS_WITHIN)."""
+        e, b = self.rel_error, self.bound
+        if e != e:
+            return False
+        if self.predicts:
+            return b / PREDICTS_WITHIN <= e <= b
+        return e <= b
 
 
 @dataclass
@@ -58,7 +92,20 @@ class Measured:
     rows: list[Row] = field(default_factory=list)
 
 
-def measure(q: Quantity, progress=None, budget: _timing.Budget = _timing.FULL) -> Measured:
+def bound_of(way: Way, q: Quantity) -> float:
+    """The way's bound with the truth's own error added (a bound that is a function, the
+    method's reported error, is called here)."""
+    b = way.bound() if callable(way.bound) else way.bound
+    b = float(b)
+    if not b >= 0:  # nan or negative: a bound that bounds nothing
+        raise ValueError(f"{q.name}, {way.method} ({way.setting}): bound = {b!r}; valid: >= 0")
+    return b + q.truth_error
+
+
+def measure(q: Quantity, progress=None, budget: _timing.Budget | None = _timing.FULL
+            ) -> Measured:
+    """Each way's relative error against the truth, its bound and (unless ``budget`` is
+    None: the errors only, times 0) its time per evaluation."""
     import mpmath as mp
 
     with mp.workdps(TRUTH_DPS):
@@ -69,8 +116,13 @@ def measure(q: Quantity, progress=None, budget: _timing.Budget = _timing.FULL) -
         with mp.workdps(TRUTH_DPS):
             v = mp.mpf(value)
             err = float(abs((v - truth) / truth)) if mp.isfinite(v) else float("inf")
-        t = _timing.measure(way.run, budget)
-        out.rows.append(Row(way.method, way.setting, err, t.median, t.spread))
+        if budget is None:
+            seconds, spread = 0.0, (0.0, 0.0)
+        else:
+            t = _timing.measure(way.run, budget)
+            seconds, spread = t.median, t.spread
+        out.rows.append(Row(way.method, way.setting, err, seconds, spread, bound_of(way, q),
+                            way.predicts))
         if progress:
             progress()
     return out
@@ -80,6 +132,15 @@ def _fmt_err(e: float) -> str:
     if e != e or e == float("inf"):
         return "fails (inf or nan)"
     return f"< {FLOOR:.0e}" if e < FLOOR else f"{e:.1e}"
+
+
+def _fmt_bound(r: Row) -> str:
+    """The bound as an error is shown, "predicted" for a way that predicts its error, and the
+    mark of a row outside it."""
+    text = "fails" if r.bound == float("inf") else _fmt_err(r.bound)
+    if r.predicts:
+        text += " (predicted)"
+    return text if r.within else f"{text}, **outside its bound**"
 
 
 def _fmt_time(s: float) -> str:
@@ -106,9 +167,20 @@ def markdown(results: list[Measured], figure: str | None,
              "a 50-digit truth, and the median time per evaluation with the spread (min-max of "
              f"up to {budget.repeats} rounds of at least {budget.min_time:g} s together; the "
              "first call apart, not shown). *Digits* is -log10 of the error. Read it as: how many "
-             "digits can I have, and what does each digit cost.\n"]
+             "digits can I have, and what does each digit cost.\n",
+             "*Bound* is the error each way should have at most: from its error model (the "
+             "roundings of a closed form, the cancellation of a textbook form, a series' first "
+             "omitted term, a quadrature's tolerance) or the error estimate the method reports, "
+             "plus the truth's own error. *predicted*: a demonstrated failure, whose error "
+             "must also be at least a hundredth of the bound. A row whose error is outside is "
+             "marked **outside its bound**.\n"]
     if figure:
         lines.append(f"![error against time]({figure})\n")
+    rows = [r for m in results for r in m.rows]
+    outside = [r for r in rows if not r.within]
+    lines.append(f"{len(rows) - len(outside)} of {len(rows)} ways within their bounds"
+                 + (": **" + "; ".join(f"{r.method} ({r.setting})" for r in outside) + "** not"
+                    if outside else "") + ".\n")
     lines.append("## Headline\n")
     lines.append("| quantity | fastest way to 1e-12 | its time | most digits | at what cost |")
     lines.append("| --- | --- | --- | --- | --- |")
@@ -123,15 +195,20 @@ def markdown(results: list[Measured], figure: str | None,
                      f"{_fmt_time(best.seconds)} |")
     for m in results:
         lines.append(f"\n## {m.quantity.name}\n\n{m.quantity.description}\n")
-        lines.append("| method | setting | rel. error | digits | time per evaluation | spread |")
-        lines.append("| --- | --- | --- | --- | --- | --- |")
+        lines.append("| method | setting | rel. error | bound | digits | time per evaluation "
+                     "| spread |")
+        lines.append("| --- | --- | --- | --- | --- | --- | --- |")
         for r in sorted(m.rows, key=lambda r: r.seconds):
             lines.append(f"| {r.method} | {r.setting} | {_fmt_err(r.rel_error)} | "
+                         f"{_fmt_bound(r)} | "
                          f"{digits(r.rel_error):.1f} | {_fmt_time(r.seconds)} | "
                          f"{_fmt_time(r.spread[0])} - {_fmt_time(r.spread[1])} |")
     return "\n".join(lines) + "\n"
 
 
+# The figure below is drawing only (what it draws, the rows, is measured and tested above):
+# mutation runs leave it out, as they do numeric/plots.py and fit_io.py's figures.
+# pragma: no mutate start
 def plot(results: list[Measured], path: Path) -> None:
     import matplotlib
 
@@ -167,6 +244,9 @@ def plot(results: list[Measured], path: Path) -> None:
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
+
+
+# pragma: no mutate end
 
 
 def quantities() -> list[Quantity]:

@@ -244,6 +244,19 @@ def _rotate(x, y, srr, stt, szz, trz, rr=None):
     return np.moveaxis(out, (0, 1), (-2, -1))
 
 
+def _rotate_bound(x, y, err_rr, err_tt, err_zz, err_rz):
+    """Bounds of the Cartesian components' errors from bounds of the cylindrical ones: as
+    :func:`_rotate`, but sigma_xy = (sigma_rr - sigma_theta) s c gets the sum of their bounds
+    (the errors may have either sign), not their difference."""
+    e = np.abs(_rotate(x, y, err_rr, err_tt, err_zz, err_rz))
+    x, y = np.broadcast_arrays(x, y)
+    rr = np.hypot(x, y)
+    sc = np.zeros(rr.shape)
+    np.divide(np.abs(x * y), rr * rr, out=sc, where=rr > 0)
+    e[..., 0, 1] = e[..., 1, 0] = (np.abs(err_rr) + np.abs(err_tt)) * sc
+    return e
+
+
 def hertz_stress(x, y, z, a, p0, nu):
     """Stress tensor [Pa] at (x, y, z) under the Hertz pressure p0 (1 - r^2/a^2)^(1/2) (5.15).
 
@@ -456,12 +469,20 @@ def _kernels(nu, dx, dy, z):
 #: singular at the rim (1/sqrt(a - rho): flat punch, adhesive edge) turns into an error of order
 #: sqrt(eps) that the coarse-vs-fine difference does not see (both rules share it)
 _RIM_ULPS = 4
+#: the roundings of a superposed sum, in units of eps times the sum of its terms' sizes: each
+#: term (kernel, pressure, node and weights: a few tens of operations) carries about 10 eps of
+#: rounding and NumPy's pairwise summation adds log2 of the ~1e4 terms' count in eps/2; 16 eps
+#: bounds both. Where both rules have converged their difference is below this, and an estimate
+#: without it fell short of the actual error (2e-16 against 6e-19, relative, on the Hertz axis
+#: at z = a/50: numeric/_accuracy_cases.py's stress_superposition)
+_SUM_ROUNDINGS = 16
 
 
 def _superpose_point(r, z, a, nu, pressure, n_psi, level):
     """(sigma_rr, sigma_theta, sigma_zz, tau_rz) at (r, 0, z), z > 0, by rays from the field
     point's projection: source = (r + s cos psi, s sin psi), dA = s ds dpsi; and the change of
-    each when every source radius moves by _RIM_ULPS ulps (the rounding term of the error)."""
+    each when every source radius moves by _RIM_ULPS ulps (the rim's rounding term of the error),
+    and the sum of each integrand's absolute values (its roundings' scale)."""
     x01, _, w01 = _tanh_sinh(level)
     if r < a:
         # psi in [0, pi] by the symmetry y -> -y; the integrand is smooth and periodic in psi,
@@ -501,7 +522,8 @@ def _superpose_point(r, z, a, nu, pressure, n_psi, level):
     wts = p * s * ds * wpsi[:, None]
     dw = (moved - p) * s * ds * wpsi[:, None]
     return (tuple(float(np.sum(kk * wts)) for kk in k)
-            + tuple(float(np.sum(kk * dw)) for kk in k))
+            + tuple(float(np.sum(kk * dw)) for kk in k)
+            + tuple(float(np.sum(np.abs(kk * wts))) for kk in k))
 
 
 def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int = 5):
@@ -519,6 +541,7 @@ def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int =
     trapezoidal rule inside the contact (periodic, smooth integrand: geometric convergence) and
     Gauss-Legendre on a sine map outside it. The error estimate is the difference between this
     result and one with half the step in both rules (the finer one is returned), plus the
+    roundings of the sum (16 eps times the sum of its terms' sizes), plus the
     change of the finer one when every source radius moves by a few ulps: a pressure singular
     at the rim like 1/sqrt(a - r) turns the rounding of the nodes' radii into an error of order
     sqrt(eps) of the pressure's scale (5e-9 measured under the adhesive edge, five times the
@@ -554,17 +577,16 @@ def superposed_stress(x, y, z, pressure, a, nu, *, n_psi: int = 64, level: int =
     nu = float(poisson("nu", nu))
     x, y, z = np.broadcast_arrays(as_float("x", x), as_float("y", y), positive("z", z))
     flat = [np.ravel(v) for v in (x, y, z)]
-    out = np.empty((flat[0].size, 2, 8))
+    out = np.empty((flat[0].size, 2, 12))
     for i, (xi_, yi_, zi_) in enumerate(zip(*flat, strict=True)):
         r = float(np.hypot(xi_, yi_))
         out[i, 0] = _superpose_point(r, zi_, a, nu, pressure, n_psi, level)
         out[i, 1] = _superpose_point(r, zi_, a, nu, pressure, 2 * n_psi, level + 1)
     fine = out[:, 1, :4].reshape(x.shape + (4,))
-    err = (np.abs(out[:, 1, :4] - out[:, 0, :4])
-           + np.abs(out[:, 1, 4:])).reshape(x.shape + (4,))
+    err = (np.abs(out[:, 1, :4] - out[:, 0, :4]) + np.abs(out[:, 1, 4:8])
+           + _SUM_ROUNDINGS * np.finfo(float).eps * out[:, 1, 8:]).reshape(x.shape + (4,))
     sig = _rotate(x, y, *np.moveaxis(fine, -1, 0))
-    e = _rotate(x, y, *np.moveaxis(err, -1, 0))
-    return sig, np.abs(e)
+    return sig, _rotate_bound(x, y, *np.moveaxis(err, -1, 0))
 
 
 @dataclass(frozen=True)
