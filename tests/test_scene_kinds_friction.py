@@ -166,11 +166,14 @@ def test_sphere_under_a_tangential_load(load):
     assert q["rel_error"] == friction.TANGENTIAL_RTOL
 
 
-def test_sphere_oscillating_closed_forms():
+@pytest.mark.parametrize("points", [201, 101])
+def test_sphere_oscillating_closed_forms(monkeypatch, points):
     """+-30 N at 100 N, three cycles: the energy of a cycle against Mindlin-Deresiewicz, and
-    the loop as documented: the first loading on FIELD_POINTS // 4 = 50 displacements from 0
-    to u* (Mindlin's F(u)), then `cycles` copies of Masing's loop, 2 (FIELD_POINTS // 2) =
-    200 points from (u*, F*) down to (-u*, -F*) and back, F = F* - 2 F((u* - u)/2)."""
+    the loop as documented: the first loading on n1 = FIELD_POINTS // 4 displacements from 0
+    to u* (Mindlin's F(u)), then `cycles` copies of Masing's loop, 2 (FIELD_POINTS // 2)
+    points from (u*, F*) down to (-u*, -F*) and back, F = F* - 2 F((u* - u)/2). With
+    FIELD_POINTS = 201 and, monkeypatched, 101 (n1 = 50 is also linspace's default count)."""
+    monkeypatch.setattr(friction, "FIELD_POINTS", points)
     eff = run([SPHERE, FLAT], {"force": "100 N", "oscillating": {"amplitude": "30 N",
                                                                   "cycles": 3}},
               ["dissipated_energy", "hysteresis_loop"])
@@ -181,20 +184,22 @@ def test_sphere_oscillating_closed_forms():
                                                   "sphere)")
     loop = eff["hysteresis_loop"]
     u, F = np.asarray(loop["value"]["u"]), np.asarray(loop["value"]["F"])
-    assert u.shape == F.shape == (50 + 3 * 200,)
+    n1, half = points // 4, points // 2  # half: the points of each branch of the loop
+    assert u.shape == F.shape == (n1 + 3 * 2 * half,)
     us = float(m.u(30))
-    assert u[:50] == pytest.approx(np.linspace(0.0, us, 50), rel=1e-13, abs=0)
-    for k in (10, 30, 49):
+    assert u[:n1] == pytest.approx(np.linspace(0.0, us, n1), rel=1e-13, abs=0)
+    for k in (n1 // 5, n1 // 2, n1 - 1):
         close(F[k], m.force(u[k]), 1e-12)  # F(u) near sliding: 1 - u/u_s loses 1 digit
-    one = slice(50, 250)
-    assert u[50] == pytest.approx(us, rel=1e-13, abs=0)
-    assert F[50] == pytest.approx(30.0, rel=1e-13, abs=0)
-    assert u[149] == pytest.approx(-us, rel=1e-13, abs=0)
-    for k in (60, 120, 149):  # the unloading branch, by Masing's rule
+    assert u[n1] == pytest.approx(us, rel=1e-13, abs=0)
+    assert F[n1] == pytest.approx(30.0, rel=1e-13, abs=0)
+    assert u[n1 + half - 1] == pytest.approx(-us, rel=1e-13, abs=0)
+    for k in (n1 + 10, n1 + half // 2, n1 + half - 1):  # unloading, by Masing's rule
         close(F[k], 30 - 2 * m.force((us - u[k]) / 2), 1e-12)
-    for k in (170, 230):  # the reloading branch: the unloading one mirrored
+    for k in (n1 + half + 10, n1 + 2 * half - 10):  # reloading: the unloading one mirrored
         close(F[k], -(30 - 2 * m.force((us + u[k]) / 2)), 1e-12)
-    assert np.array_equal(u[one], u[250:450]) and np.array_equal(F[one], F[450:650])
+    one = slice(n1, n1 + 2 * half)
+    assert np.array_equal(u[one], u[n1 + 2 * half:n1 + 4 * half])
+    assert np.array_equal(F[one], F[n1 + 4 * half:])
     assert loop["rel_error"] == friction.TANGENTIAL_RTOL
     assert loop["method"].startswith("first loading, then Masing's branches")
 
@@ -291,46 +296,50 @@ def test_sampled_tangential_load_runs_two_states(springs, load):
     assert q["method"] == friction.SPRINGS + ", (5.59) of the springs' line load"
 
 
-def test_sampled_oscillation(springs):
+@pytest.mark.parametrize("points", [201, 101])
+def test_sampled_oscillation(springs, monkeypatch, points):
     """+-30 N at 100 N, two cycles, through the springs: the force path as documented (0 to
-    F* on FIELD_POINTS // 4 = 50 states, then F* to -F* and back on FIELD_POINTS // 2 = 100
-    each, the turning states shared); the effects at the first arrival at F* (state 49); the
+    F* on n1 = FIELD_POINTS // 4 states, then F* to -F* and back on n2 = FIELD_POINTS // 2
+    each, the turning states shared; FIELD_POINTS 201 and, monkeypatched, 101: n1 = 50 is
+    also linspace's default count); the effects at the first arrival at F* (state n1 - 1); the
     loop the first loading and the cycle repeated; the energy the friction work of the cycle
     against Mindlin-Deresiewicz; each rel_error the grid estimate of its run plus the
     state's; the traction from a run up to the first arrival on the same grid."""
+    monkeypatch.setattr(friction, "FIELD_POINTS", points)
+    n1, n2 = points // 4, points // 2
     eff = run([SAMPLED, FLAT], {"force": "100 N", "oscillating": {"amplitude": "30 N",
                                                                   "cycles": 2}},
               OSCILLATING + ["force"])
     m = Mindlin()
     st_rel = eff["force"]["rel_error"]
     H = _main_run(springs)
-    path = np.concatenate([np.linspace(0, 30, 50), np.linspace(30, -30, 100)[1:],
-                           np.linspace(-30, 30, 100)[1:]])
+    path = np.concatenate([np.linspace(0, 30, n1), np.linspace(30, -30, n2)[1:],
+                           np.linspace(-30, 30, n2)[1:]])
     assert np.array_equal(H.F_x, path)
     assert eff["tangential_force"]["value"] == 30.0
-    assert eff["tangential_displacement"]["value"] == H.u_x[49]
-    assert eff["stick_radius"]["value"] == H.stick_radius[49]
+    assert eff["tangential_displacement"]["value"] == H.u_x[n1 - 1]
+    assert eff["stick_radius"]["value"] == H.stick_radius[n1 - 1]
     close(eff["tangential_displacement"]["value"], m.u(30),
           eff["tangential_displacement"]["rel_error"])
     loop = eff["hysteresis_loop"]
-    assert np.array_equal(loop["value"]["F"], np.concatenate([path[:50], path[50:], path[50:]]))
-    assert np.array_equal(loop["value"]["u"], np.concatenate([H.u_x[:50], H.u_x[50:],
-                                                               H.u_x[50:]]))
+    assert np.array_equal(loop["value"]["F"], np.concatenate([path[:n1], path[n1:], path[n1:]]))
+    assert np.array_equal(loop["value"]["u"], np.concatenate([H.u_x[:n1], H.u_x[n1:],
+                                                               H.u_x[n1:]]))
     assert loop["rel_error"] == max(H.u_x_error / np.max(np.abs(H.u_x)),
                                     H.F_x_error / 30.0) + st_rel
     assert loop["method"] == (friction.SPRINGS + ": first loading, then one cycle of the springs "
                               "(repeated: a cycle returns every spring to its state)")
     W = eff["dissipated_energy"]
-    assert W["value"] == H.dissipated[-1] - H.dissipated[49]
+    assert W["value"] == H.dissipated[-1] - H.dissipated[n1 - 1]
     assert W["rel_error"] == 2 * H.dissipated_error / W["value"] + st_rel
     close(W["value"], m.energy(30), W["rel_error"])
-    # the traction at the first arrival: a run of the states 0..49 on the main run's grid
-    kw, H49 = springs[-1]
+    # the traction at the first arrival: a run of the states 0..n1 - 1 on the main grid
+    kw, H1st = springs[-1]
     assert kw["n_grid"] == SPRING_GRID and kw["x_max"] == H.x[-1]
-    assert np.array_equal(kw["F_x"], path[:50])
+    assert np.array_equal(kw["F_x"], path[:n1])
     q = eff["traction_profile"]
-    assert np.array_equal(q["value"]["q"], H49.traction()[H49.x <= H49.contact_radius[-1]])
-    assert q["rel_error"] == H49.traction_error / np.max(np.abs(q["value"]["q"])) + st_rel
+    assert np.array_equal(q["value"]["q"], H1st.traction()[H1st.x <= H1st.contact_radius[-1]])
+    assert q["rel_error"] == H1st.traction_error / np.max(np.abs(q["value"]["q"])) + st_rel
 
 
 def test_tangential_load_at_the_sliding_force(springs):
