@@ -593,3 +593,23 @@ def test_line_force_law_per_length():
     assert v["stiffness_K_per_length"] == pytest.approx(v["stiffness_K"] / 0.02, rel=1e-15, abs=0)
     assert eff["method"].startswith("F = K d^n, dF/dd = stiffness_K d^(n - 1)")
     assert "F/L = K_per_length d^n (N/m^2)" in eff["method"]
+
+
+def test_effect_refusal_names_the_scene_file(tmp_path):
+    """An effect asked without its load, in a scene read from a file, names that file (as
+    every other refusal does), for each way the tangential state of a constant normal load is
+    found: a closed form, the springs (a history gives every effect its load). It named
+    "<scene>" before."""
+    sphere = 'shape = "sphere"\nradius = "10 mm"'
+    sampled = (f'shape = "profile"\nr = {[float(x) for x in _RS[:9]]}\n'
+               f'f = {[float(x) for x in _RS[:9] ** 2 / (2 * R)]}')
+    cases = [(sphere, 'force = "100 N"\ntangential = {force = "10 N"}', "dissipated_energy"),
+             (sampled, 'force = "10 N"', "tangential_force")]
+    for tip, load, effect in cases:
+        path = tmp_path / "s.toml"
+        path.write_text(f'effects = ["{effect}"]\n[[body]]\n{tip}\nE = "210 GPa"\nnu = 0.3\n'
+                        '[[body]]\nshape = "flat"\nE = "210 GPa"\nnu = 0.3\n'
+                        f"[interface]\nfriction = 0.6\n[load]\n{load}\n", encoding="utf-8")
+        with pytest.raises(SceneError, match=f"effect '{effect}' needs") as info:
+            scene.load(path).run()
+        assert (info.value.where, info.value.key) == (str(path), "effects"), effect
