@@ -56,7 +56,7 @@ class TangentialState:
     springs are run), the tangential load (None when the scene gives only friction), its u_x
     [m] and F_x [N], the cycles of an oscillating load, and the springs' run (or None).
     ``sliding`` and ``stiffness`` are mu F [N] and 2 G* a [N/m] at the normal load, and
-    ``rel`` their relative error."""
+    ``rel`` their relative error; ``source`` the scene's file, named by the effects' refusals."""
 
     contact: object
     kind: str | None
@@ -67,6 +67,7 @@ class TangentialState:
     sliding: float = 0.0
     stiffness: float = 0.0
     rel: float = CLOSED_FORM_RTOL
+    source: str = "<scene>"
 
 
 def _rel(err, value) -> float:
@@ -109,7 +110,7 @@ class TangentialEffects:
         if prof is None:
             return self._spring_state(spec, st, mu)
         ct = tg.Contact(prof, float(self.a_at(d)), self.E_star, self.materials.G_star, mu)
-        base = dict(sliding=ct.sliding_force, stiffness=ct.stiffness)
+        base = dict(sliding=ct.sliding_force, stiffness=ct.stiffness, source=spec.source)
         if tl is None:
             return TangentialState(ct, None, None, None, 0, **base)
         try:
@@ -194,7 +195,7 @@ class TangentialEffects:
         F_N = float(np.max(st.force))
         mu_F = float(tg.sliding_force(mu, F_N))  # Coulomb's limit
         base = dict(sliding=mu_F, stiffness=float(tg.stiffness(a, self.materials.G_star)),
-                    rel=float(st.rel_error))
+                    rel=float(st.rel_error), source=spec.source)
         tl = spec.load.tangential
         if tl is None:
             self._profile_or_fail(spec)
@@ -235,7 +236,7 @@ class TangentialEffects:
             what = ("[load] oscillating = {amplitude = ..., cycles = N} or a history"
                     if oscillating else "[load] tangential = {force = ...} or "
                     "{displacement = ...}, oscillating or history")
-            raise SceneError("<scene>", "effects", f"effect {effect!r} needs {what}")
+            raise SceneError(ts.source, "effects", f"effect {effect!r} needs {what}")
 
     @staticmethod
     def _series(ts: TangentialState, name: str, label: str) -> Value:
