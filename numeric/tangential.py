@@ -649,12 +649,15 @@ def _force_table(gv, w, E_star):
     return W * gen.mdr_normal_line_load(E_star, gv, S / W), W, S
 
 
-def _depth_of_force(F, table, E_star, step, x_max):
+def _depth_of_force(F, table, E_star, step, x_max, wall=False):
     """d with E* sum_i w_i (d - g_i)_+ = F: the depth (5.58) at which the mean gap S/W of the
-    springs in contact carries the mean line load F/W."""
+    springs in contact carries the mean line load F/W (beyond the last node, with a wall
+    there, every spring is in contact)."""
     F_nodes, W, S = table
     k = int(np.searchsorted(F_nodes, F, side="right")) - 1
-    if k >= F_nodes.size - 1:
+    if wall:
+        k = min(k, F_nodes.size - 1)
+    elif k >= F_nodes.size - 1:
         raise ValueError(f"normal_force[{step}] = {float(F)!r} N needs a contact wider than "
                          "the grid "
                          f"(x_max = {x_max!r} m); valid: a larger x_max")
@@ -684,7 +687,7 @@ def _solve_shift(f, cap, w, m, G_star, target, total, step):
     return float(b[m] + (target - phi[m]) / slope[m]), False
 
 
-def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
+def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl, wall=False):
     x = np.linspace(0.0, x_max, n + 1)
     h = x_max / n
     gv = np.asarray(gfun(x), dtype=float)
@@ -703,11 +706,12 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
     for k in range(steps):
         if depth is not None:
             d = depth[k]
-            if d > gv[-1]:
+            if d > gv[-1] and not wall:
                 raise ValueError(f"depth[{k}] = {float(d)!r} m reaches beyond x_max = {x_max!r} m; "
                                  "valid: a larger x_max")
         else:
-            d = _depth_of_force(force[k], table, E_star, k, x_max) if force[k] > 0 else 0.0
+            d = (_depth_of_force(force[k], table, E_star, k, x_max, wall) if force[k] > 0
+                 else 0.0)
         qz = gen.mdr_normal_line_load(E_star, d, np.minimum(gv, d))  # (5.58), 0 for g >= d
         cap = gen.coulomb_sliding_force(mu, qz)  # Coulomb's limit of each spring
         wcap = w * cap
@@ -768,7 +772,8 @@ def _run(gfun, x_max, n, E_star, G_star, mu, depth, force, u_ctrl, F_ctrl):
 
 
 def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=None,
-            F_x=None, n_grid: int = 1000, estimate_error: bool = True) -> History:
+            F_x=None, n_grid: int = 1000, estimate_error: bool = True,
+            wall: bool = False) -> History:
     """Run the MDR's normal and tangential springs through a load history.
 
     Each state k is reached from state k - 1 by first changing the normal load (springs that
@@ -789,7 +794,8 @@ def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=
     mu : float
         Coefficient of friction, >= 0.
     x_max : float
-        Extent of the grid [m] > 0: larger than every contact radius of the history.
+        Extent of the grid [m] > 0: larger than every contact radius of the history, or, with
+        ``wall``, the radius of a flat punch's wall.
     depth, normal_force : sequence of float
         Exactly one: the normal depth [m] or force [N] at each state (>= 0).
     u_x, F_x : sequence of float
@@ -800,6 +806,10 @@ def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=
     estimate_error : bool
         Also run on n_grid/2 intervals and report the grid error of the history (the method is
         second order in the spacing: the trapezoid rule across the contact and stick edges).
+    wall : bool
+        g is infinite beyond x_max (a flat punch of radius x_max: g = 0 inside, Problem 7 a):
+        a depth beyond g(x_max) keeps every spring on the grid in contact instead of needing
+        a wider grid.
 
     Returns
     -------
@@ -826,14 +836,15 @@ def history(g, *, E_star, G_star, mu, x_max, depth=None, normal_force=None, u_x=
     uc = None if u_x is None else _series("u_x", u_x, steps)
     Fc = None if F_x is None else _series("F_x", F_x, steps)
     gfun = _g_callable(g)
+    wall = bool(wall)
     fine, sliding, x, qz, qx, stuck = _run(gfun, x_max, int(n_grid), E_star, G_star, mu, dep,
-                                           frc, uc, Fc)
+                                           frc, uc, Fc, wall)
     res = History(fine["depth"], fine["normal_force"], fine["contact_radius"], fine["u_x"],
                   fine["F_x"], fine["stick_radius"], sliding, fine["dissipated"], x, qz, qx,
                   stuck)
     if estimate_error:
         coarse, _, xc, _, qxc, _ = _run(gfun, x_max, int(n_grid) // 2, E_star, G_star, mu,
-                                        dep, frc, uc, Fc)
+                                        dep, frc, uc, Fc, wall)
         (res.u_x_error, res.F_x_error, res.stick_radius_error, res.dissipated_error,
          res.normal_force_error, res.contact_radius_error) = (
             float(np.max(np.abs(fine[k] - coarse[k])))

@@ -613,3 +613,31 @@ def test_effect_refusal_names_the_scene_file(tmp_path):
         with pytest.raises(SceneError, match=f"effect '{effect}' needs") as info:
             scene.load(path).run()
         assert (info.value.where, info.value.key) == (str(path), "effects"), effect
+
+
+@pytest.mark.parametrize("normal, rows", [
+    ("force", [(0.0, 0.0), (10.0, 0.0), (10.0, 2.0), (10.0, -2.0)]),
+    ("depth", [(0.0, 0.0), (1e-6, 0.0), (1e-6, 2.0), (1e-6, -2.0)])])
+def test_flat_punch_history(tmp_path, monkeypatch, normal, rows):
+    """A flat punch (radius a = 0.1 mm, steel on steel) through a history: its grid ends at
+    the punch's wall, where every spring is in contact at any depth (before: every history
+    was refused, "needs a contact wider than the grid ... valid: a larger x_max", which the
+    scene cannot set). With g = 0 every spring carries the same load: d = F/(2 E* a),
+    F = 2 E* a d, and below mu F all stick with u = F_x/(2 G* a) (the punch's stiffnesses,
+    closed forms at 30 digits), the stick radius a and nothing dissipated."""
+    punch = {"shape": "flat_punch", "radius": "0.1 mm", **STEEL}
+    eff = _history(tmp_path, monkeypatch, rows,
+                   ["force", "depth", "tangential_displacement", "stick_radius",
+                    "dissipated_energy"], normal=normal, bodies=(punch, FLAT))
+    m, a = Mindlin(), mp.mpf("1e-4")
+    for k, (n, fx) in enumerate(rows[1:], start=1):
+        d = n / (2 * m.E_star * a) if normal == "force" else mp.mpf(n)
+        F = 2 * m.E_star * a * d
+        close(eff["depth"]["value"][k], d, 1e-13)
+        close(eff["force"]["value"][k], F, 1e-13)
+        # relative to the largest displacement, 2 N/(2 G* a): u = 0 comes out as 1e-21 m
+        scale = 2 / (2 * m.G_star * a)
+        u = eff["tangential_displacement"]["value"][k]
+        assert abs(u - fx / (2 * m.G_star * a)) <= 1e-13 * scale, (k, u)
+        close(eff["stick_radius"]["value"][k], a, 1e-13)
+    assert eff["dissipated_energy"]["value"] == 0.0

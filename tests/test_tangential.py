@@ -934,3 +934,26 @@ def test_tangential_line_load_against_the_stiffness():
     w = 10.0 ** rng.uniform(-15, -3, 50)
     back = gen.mdr_tangential_spring_shear(G_STAR, gen.mdr_tangential_line_load(G_STAR, w))
     assert np.all(np.abs(back / w - 1) <= 2 * 2.0**-52)
+
+
+def test_history_with_a_wall_at_the_grid_end():
+    """A flat punch as g = 0 on [0, a] with its wall at x_max = a (wall=True): at any depth
+    every spring is in contact, F = 2 E* a d and the tangential stiffness is 2 G* a (all
+    springs carry the same load: no partial slip in the MDR of a punch), until all slide at
+    mu F. Without the wall the same grid is too narrow for any load (its one clear line)."""
+    E, G, mu, a = 1e11, 4e10, 0.5, 1e-4
+    zero = lambda x: np.zeros_like(np.asarray(x, float))  # noqa: E731
+    H = tg.history(zero, E_star=E, G_star=G, mu=mu, x_max=a, normal_force=[10.0, 10.0, 10.0],
+                   F_x=[0.0, 2.0, 5.0], n_grid=16, wall=True)
+    assert H.depth == pytest.approx(10.0 / (2 * E * a), rel=1e-14, abs=0)
+    assert H.contact_radius.tolist() == [a] * 3 and H.stick_radius[1] == a
+    assert H.u_x[1] == pytest.approx(2.0 / (2 * G * a), rel=1e-13, abs=0)
+    assert H.sliding.tolist() == [False, False, True]  # 5 N = mu F: all slide
+    d = tg.history(zero, E_star=E, G_star=G, mu=mu, x_max=a, depth=[1e-6], u_x=[0.0],
+                   n_grid=16, wall=True)
+    assert d.normal_force[0] == pytest.approx(2 * E * a * 1e-6, rel=1e-14, abs=0)
+    with pytest.raises(ValueError, match=r"^normal_force\[0\] = 10\.0 N needs a contact wider "
+                                         r"than the grid \(x_max = 0\.0001 m\); valid: a larger "
+                                         r"x_max$"):
+        tg.history(zero, E_star=E, G_star=G, mu=mu, x_max=a, normal_force=[10.0], F_x=[0.0],
+                   n_grid=16)

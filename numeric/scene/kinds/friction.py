@@ -157,7 +157,7 @@ class TangentialEffects:
         n = SPRING_GRID // 2 if kw.pop("half", False) else SPRING_GRID
         try:
             return tg.history(E_star=self.E_star, G_star=self.materials.G_star,
-                              mu=self.interface.friction, n_grid=n, **kw)
+                              mu=self.interface.friction, n_grid=n, wall=self._wall(), **kw)
         except ValueError as exc:
             msg = str(exc)
             if lines is not None:
@@ -165,6 +165,12 @@ class TangentialEffects:
                 msg = re.sub(r"(\w+)\[(\d+)\]", lambda m: f"{m.group(1)} of {h.file} line "
                              f"{lines[int(m.group(2))]}", msg)
             raise SceneError(spec.source, key, msg) from None
+
+    def _wall(self) -> bool:
+        """Whether the springs' grid ends at a wall (a profile with a fixed extent: the flat
+        punch, whose g is infinite beyond its radius)."""
+        sp = self.spring_profile()
+        return sp is not None and sp[1] is not None
 
     def _history_state(self, spec, mu) -> TangentialState:
         """An explicit history: every state through the springs, normal load included."""
@@ -319,7 +325,7 @@ class TangentialEffects:
         return tg.history(self.spring_profile()[0], E_star=self.E_star,
                           G_star=self.materials.G_star, mu=self.interface.friction,
                           x_max=float(H.x[-1]), n_grid=SPRING_GRID, depth=H.depth[:k + 1],
-                          F_x=H.F_x[:k + 1])
+                          F_x=H.F_x[:k + 1], wall=self._wall())
 
     def effect_dissipated_energy(self, ts: TangentialState) -> Value:
         self._need_load(ts, "dissipated_energy", oscillating=True)
