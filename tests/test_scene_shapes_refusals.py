@@ -120,12 +120,17 @@ def test_breakpoint_tolerance_is_1e_9_of_r_max():
 
 def test_breakpoint_off_the_samples_names_them():
     """The refusal of a value that is no sample: the value, the valid range (0, r_max), the
-    inner samples r[1] ... r[n-2] and the nearest sample, each by index and value."""
+    inner samples r[1] ... r[n-2] and the nearest sample, each by index and value; the value
+    and the nearest sample in all their digits and how far apart (at 6 digits a value 1e-13 m
+    off a sample read as that sample)."""
     key, message = refusal([2.4e-6])
     assert key == "body[0] (body 1).breakpoints[0]"
     assert message == ("2.4e-06 m is not one of the samples inside the profile; valid: a "
                        "sample radius strictly between 0 and r_max = 7.10543e-06 m (r[1] = "
-                       "1e-06 m ... r[6] = 6e-06 m; nearest: r[2] = 2e-06 m)")
+                       "1e-06 m ... r[6] = 6e-06 m; nearest: r[2] = 2e-06 m, 4e-07 m away)")
+    key, message = refusal([2e-6 + 1e-13])
+    assert message.startswith("2.0000001e-06 m is not one of the samples")
+    assert message.endswith("nearest: r[2] = 2e-06 m, 1e-13 m away)")
 
 
 def test_breakpoint_given_twice_is_refused():

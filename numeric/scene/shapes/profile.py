@@ -61,9 +61,12 @@ class Profile(Shape):
             i = min(range(len(r)), key=lambda i: abs(r[i] - b))
             if not 0 < i < len(r) - 1 or abs(r[i] - b) > 1e-9 * r[-1]:
                 inner = f"r[1] = {r[1]:.6g} m ... r[{len(r) - 2}] = {r[-2]:.6g} m"
-                fail(f"breakpoints[{j}]", f"{b:.6g} m is not one of the samples inside the "
-                     f"profile; valid: a sample radius strictly between 0 and r_max = "
-                     f"{r[-1]:.6g} m ({inner}; nearest: r[{i}] = {r[i]:.6g} m)")
+                # the value and its nearest sample in all their digits, and how far apart:
+                # at 6 digits 1.0000001 um read as the sample 1 um it misses
+                fail(f"breakpoints[{j}]", f"{float(b)!r} m is not one of the samples inside "
+                     f"the profile; valid: a sample radius strictly between 0 and r_max = "
+                     f"{r[-1]:.6g} m ({inner}; nearest: r[{i}] = {float(r[i])!r} m, "
+                     f"{abs(float(r[i]) - float(b)):.3g} m away)")
             if r[i] in out:
                 fail(f"breakpoints[{j}]", f"{b:.6g} m is given twice (as r[{i}] = {r[i]:.6g} m); "
                      "valid: each kink once")
