@@ -641,3 +641,13 @@ def test_flat_punch_history(tmp_path, monkeypatch, normal, rows):
         assert abs(u - fx / (2 * m.G_star * a)) <= 1e-13 * scale, (k, u)
         close(eff["stick_radius"]["value"][k], a, 1e-13)
     assert eff["dissipated_energy"]["value"] == 0.0
+
+
+def test_flat_punch_history_that_never_presses_is_refused(tmp_path, monkeypatch):
+    """A history whose normal load stays 0 under a flat punch is refused as under every other
+    shape (before: it ran, with stiffness 0 and no contact in any state)."""
+    punch = {"shape": "flat_punch", "radius": "0.1 mm", **STEEL}
+    with pytest.raises(SceneError, match=r"load: the load never presses the bodies "
+                                               r"together \(contact radius 0 in every state\)"):
+        _history(tmp_path, monkeypatch, [(0.0, 0.0), (0.0, 0.0)], ["tangential_stiffness"],
+                 bodies=(punch, FLAT))

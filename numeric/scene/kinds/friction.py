@@ -139,11 +139,12 @@ class TangentialEffects:
         from hertzmdr.numeric.scene.schema import SceneError
 
         g, fixed = self._profile_or_fail(spec)
-        if fixed is not None:
-            return g, fixed
+        # a flat punch's grid is fixed too, but a load that never presses is refused alike
         if not a_max > 0:
             raise SceneError(spec.source, "load", "the load never presses the bodies together "
                              "(contact radius 0 in every state): no tangential contact")
+        if fixed is not None:
+            return g, fixed
         x_max = GRID_MARGIN * a_max
         r_max = getattr(getattr(self, "profile", None), "r_max", None)  # a sampled profile
         return g, (min(x_max, r_max) if r_max is not None else x_max)
