@@ -144,20 +144,24 @@ def test_nearly_equal_radii_make_hertz_with_the_gaussian_radius():
     of the Gaussian radius sqrt(R1 R2) (5.30), which keeps the two principal radii it was made
     of; 1e-11 apart they make an elliptical contact (the threshold is relative to the larger
     radius, not absolute). The model block says why, in words that do not mention the exact
-    sphere (no body is a 'sphere')."""
+    sphere (no body is a 'sphere'). Exactly equal radii (a sphere) give R itself."""
     R1, R2 = 0.01, 0.01 * (1 + 1e-13)
     _, res, doc = run_full([{"shape": "ellipsoid", "radii": [R1, R2], **STEEL}, RIGID_FLAT],
                            {"force": 10.0}, ["principal_radii", "effective_radius"])
     assert doc["model"]["kind"] == "hertz"
     assert res["principal_radii"].value == [R1, R2]
     assert doc["model"]["principal_radii"] == [R1, R2]
-    # 1e-15: a product and a square root; R1 itself is 5e-14 off
+    # 1e-15: a product and a square root; R1 itself is 5e-14 (relative) off
     assert res["effective_radius"].value == pytest.approx(math.sqrt(R1 * R2), rel=1e-15, abs=0)
     assert "equal (to a relative 1e-12) -> circular Hertz" in doc["model"]["why"]
     assert "exact_sphere" not in doc["model"]["why"]
     _, _, doc = run_full([{"shape": "ellipsoid", "radii": [R1, 0.01 * (1 + 1e-11)], **STEEL},
                           RIGID_FLAT], {"force": 10.0}, ["force"])
     assert doc["model"]["kind"] == "elliptic"
+    # equal radii: R itself, not the Gaussian radius, whose float64 sqrt(R R) is 2e-18 m off
+    _, res, _ = run_full([{"shape": "sphere", "radius": 0.01, **STEEL}, RIGID_FLAT],
+                         {"force": 10.0}, ["effective_radius"])
+    assert res["effective_radius"].value == 0.01
 
 
 def test_the_model_says_which_quadratic_contact_and_why():
@@ -489,9 +493,11 @@ def test_force_law_of_a_closed_form_profile():
 def test_pressure_radii_step_off_the_kink():
     """A worn parabola's pressure is log-infinite at its kink r = b: a point of the pressure
     profile's grid that falls on b (to 1e-12 a) moves 1e-3 of the first step outward; every
-    other point stays where linspace put it (the first at 1e-3 a off the axis... here on it:
-    the worn parabola's p is finite at r = 0). Contact radii chosen to put b on the grid, and
-    1e-11 off it (not moved: 1e-11 > 1e-12 a for a = 1.5e-3 m)."""
+    other point stays where linspace put it (the first on the axis: the worn parabola's p is
+    finite there; with the first point off the axis, as a cone's, the first step is the one
+    from 1e-3 a). Contact radii chosen to put b on the grid, and 1e-11 m off it (not moved:
+    1e-11 m > 1e-12 a for a = 1.5e-3 m); a kink at 1e-12 a, the tolerance's edge, moves the
+    point r = 0."""
     from hertzmdr.numeric.scene import model
 
     b = 1e-4
@@ -508,10 +514,19 @@ def test_pressure_radii_step_off_the_kink():
     moved = plain.copy()
     moved[20] += 1e-3 * (plain[1] - plain[0])
     assert np.array_equal(r, moved)
+    c.off_axis = True  # as a cone's profile: the first point at 1e-3 a, the step shorter
+    moved[0] = 1e-3 * a
+    moved[20] = plain[20] + 1e-3 * (plain[1] - moved[0])
+    assert np.array_equal(c.pressure_radii(a), moved)
+    c.off_axis = False
     a = 1.5e-3
     plain = np.linspace(0.0, 1.5 * a, 201)
     c.kink = plain[20] + 1e-11  # off the grid by 1e-11 m, more than 1e-12 a
     assert np.array_equal(c.pressure_radii(a), plain)
+    c.kink = 1e-12 * a  # r[0] = 0 exactly 1e-12 a from it (in float64 too): moved
+    moved = plain.copy()
+    moved[0] = 1e-3 * plain[1]
+    assert np.array_equal(c.pressure_radii(a), moved)
 
 
 @pytest.mark.parametrize("body, n", [(CONE, 1.0),
@@ -676,6 +691,7 @@ def test_superposed_bookkeeping(monkeypatch):
     assert not np.any(x) and not np.any(y)
     szz = -4.0 * (1 + np.arange(n - 1))
     assert np.array_equal(ax.value["z"], z) and np.array_equal(ax.value["sigma_zz"], szz)
+    assert ax.method == "superposition of the point-force field (5.47), tanh-sinh"
     assert np.array_equal(ax.value["sigma_rr"], np.full(n - 1, -1.0))
     assert np.allclose(ax.value["tau_1"], np.abs(szz + 1.0) / 2, rtol=1e-15, atol=0)
     assert ax.rel_error == pytest.approx(2 * 4e-6 / (4.0 * (n - 1)) + 1e-14 + pe, rel=1e-15,
