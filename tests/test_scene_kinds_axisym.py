@@ -143,8 +143,9 @@ def test_nearly_equal_radii_make_hertz_with_the_gaussian_radius():
     """Principal radii equal to a relative 1e-12 (CIRCULAR_RTOL) make a circular Hertz contact
     of the Gaussian radius sqrt(R1 R2) (5.30), which keeps the two principal radii it was made
     of; 1e-11 apart they make an elliptical contact (the threshold is relative to the larger
-    radius, not absolute). The model block says why, in words that do not mention the exact
-    sphere (no body is a 'sphere'). Exactly equal radii (a sphere) give R itself."""
+    radius, not absolute; radii exactly 1e-12 apart are still circular). The model block says
+    why, in words that do not mention the exact sphere (no body is a 'sphere'). Exactly equal
+    radii (a sphere) give R itself."""
     R1, R2 = 0.01, 0.01 * (1 + 1e-13)
     _, res, doc = run_full([{"shape": "ellipsoid", "radii": [R1, R2], **STEEL}, RIGID_FLAT],
                            {"force": 10.0}, ["principal_radii", "effective_radius"])
@@ -158,6 +159,13 @@ def test_nearly_equal_radii_make_hertz_with_the_gaussian_radius():
     _, _, doc = run_full([{"shape": "ellipsoid", "radii": [R1, 0.01 * (1 + 1e-11)], **STEEL},
                           RIGID_FLAT], {"force": 10.0}, ["force"])
     assert doc["model"]["kind"] == "elliptic"
+    # radii exactly at the threshold, |R1 - R2| = 1e-12 R2 in float64 (found by a search over
+    # R2 = k ulp / 1e-12): still circular
+    R1, R2 = 0.011267028976458095, 0.011267028976469362
+    assert abs(R1 - R2) == 1e-12 * R2
+    _, _, doc = run_full([{"shape": "ellipsoid", "radii": [R1, R2], **STEEL}, RIGID_FLAT],
+                         {"force": 10.0}, ["force"])
+    assert doc["model"]["kind"] == "hertz"
     # equal radii: R itself, not the Gaussian radius, whose float64 sqrt(R R) is 2e-18 m off
     _, res, _ = run_full([{"shape": "sphere", "radius": 0.01, **STEEL}, RIGID_FLAT],
                          {"force": 10.0}, ["effective_radius"])
