@@ -1004,9 +1004,15 @@ def test_undetermined_parameters_have_error_inf():
                                "not measured")
     assert len(fit.warnings) == 3
     Fp = 2 * 3e-6 * E_TRUE * (z - Z0_TRUE) + F0_TRUE + S0_TRUE * z
-    with pytest.raises(NoContactError, match=r"^no contact in the curve: the fitted E\* = "
+    # which of the two refusals of a curve without contact speaks depends on the roundings of
+    # this degenerate fit (a line fitted by a line: both seen, on two machines of this
+    # project, with the same packages): E* within 3 of its (infinite) errors, or E* ~ 0 and
+    # the tip's force at the deepest point below 5 standard deviations of the residuals
+    with pytest.raises(NoContactError, match=r"^no contact in the curve: (the fitted E\* = "
                                              r"[0-9.]+e\+06 Pa is below 3 of its standard errors "
-                                             r"\(inf Pa\)"):
+                                             r"\(inf Pa\)|the tip's force at the deepest point, "
+                                             r"\S+ N, is below 5 standard deviations of the "
+                                             r"residuals)"):
         fit_curve(z, Fp, FlatPunch(a=3e-6))
 
 
