@@ -423,6 +423,10 @@ def find_note(module: str, s: Survivor, notes: list[dict]) -> str | None:
         # optional "file" (under numeric/) the files of a folder's run
         if n.get("line", s.line) != s.line or n.get("file", s.file) != s.file:
             continue
+        # an "exact" note's mutant is the whole mutated line, not a part of it (a part that
+        # every other mutant of the line contains too, such as its unchanged tail)
+        if n.get("exact") and squash(n["mutant"]) != squash(s.mutant):
+            continue
         if (n["module"] == module and squash(n["original"]) in squash(s.original)
                 and squash(n["mutant"]) in squash(s.mutant)):
             return n["reason"]

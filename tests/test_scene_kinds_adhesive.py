@@ -599,3 +599,20 @@ def test_line_contact_ratios_rtol_ranges_and_law():
         (contact.state_method, contact.state_range),
         *((f"{n} (closed form)", (line[n], 1.0)) for n in names)]
     assert "from (5.34): K and stiffness_K" in eff["force_law"]["method"]
+
+
+def test_model_block_reports_the_scenes_rtol():
+    """The adhesive contact's model block states the rtol the scene asked for (base.Contact's
+    info; the adhesive kind passes it on to its base)."""
+    doc = spec(SPHERE, {"depth": 1e-8}, accuracy={"rtol": 1e-6}).run()
+    assert doc["model"]["rtol"] == 1e-6 and doc["model"]["work_of_adhesion"] == DG
+
+
+def test_depth_controlled_line_contact_names_its_depth():
+    """A line contact under a prescribed depth: the force by (5.34) at the depth of (5.35)
+    (a = sqrt(R d), not the approach of the axes), and the method says which depth it is."""
+    steel = {"E": 210e9, "nu": 0.3}
+    doc = scene.load({"effects": ["force"], "body": [
+        {"shape": "cylinder", "radius": 0.01, "length": 0.02, **steel},
+        {"shape": "flat", **steel}], "load": {"depth": 1e-6}}).run()
+    assert doc["effects"]["force"]["method"] == "(5.34) with d defined by (5.35)"
