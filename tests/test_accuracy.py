@@ -189,3 +189,10 @@ def test_every_way_within_the_bound_of_its_error_model(case):
     outside = [(r.method, r.setting, r.rel_error, r.bound) for r in m.rows if not r.within]
     assert not outside
     assert len(m.rows) >= 4
+
+
+def test_the_steel_pair():
+    """E_STEEL, the cases' modulus: (5.26) for two steel bodies, E = 210 GPa and nu = 0.3,
+    is E / (2 (1 - nu^2)) (equal bodies)."""
+    assert _accuracy_cases.E_STEEL == pytest.approx(210e9 / (2 * (1 - 0.3**2)), rel=1e-15,
+                                                    abs=0)
