@@ -36,8 +36,9 @@ def build(spec: SceneSpec) -> Contact:
                 from hertzmdr.numeric.scene.kinds.adhesive import adhesive
 
                 contact = adhesive(setup, contact)
-                why += (f"; work of adhesion {spec.interface.work_of_adhesion:g} J/m^2 > 0 "
-                        f"-> made adhesive by the MDR: {contact.label}")
+                why += (f"; work of adhesion {spec.interface.work_of_adhesion:g} J/m^2 "
+                        + ("> 0" if spec.interface.adhesive else "and a [load] cycle")
+                        + f" -> made adhesive by the MDR: {contact.label}")
             contact.why = why
             check_rtol(spec, contact)
             return contact

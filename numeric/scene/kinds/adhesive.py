@@ -133,7 +133,7 @@ class AdhesiveKind(StressEffects, Contact):
         if mu is not None:
             out["range"] = self.interface.range
             out["tabor_parameter"] = mu
-        return out
+        return {**out, "why": self.why} if self.why else out  # model.build's, with adhesion
 
     def ratios(self, nodes):
         """The inner kind's geometric ratios, measured on the adhesive state at the largest
