@@ -277,3 +277,19 @@ def test_json_values_that_are_no_numbers_pass_through():
     flag = np.bool_(True)
     assert to_json_value(flag) is flag
     assert to_json_value("hertz") == "hertz"
+
+
+def test_two_rigid_bodies_are_refused_naming_what_one_needs(tmp_path):
+    """Materials.of: with no elastic body there is no E* (5.26); the message says what one
+    body must have, word for word."""
+    path = write(tmp_path, [{**PLATE, "name": "a"}, {**PLATE, "name": "b"}], {"depth": 1e-6},
+                 ["force"])
+    exc = refusal(path)
+    assert (exc.where, exc.key) == (path, "body")
+    assert str(exc) == f"{path}: body: both bodies are rigid: at least one must have E and nu"
+    # the scene reader refuses it first; the Python API (Materials.of) in the same words
+    from hertzmdr.numeric.scene.materials import Material, Materials
+
+    with pytest.raises(ValueError) as info:
+        Materials.of(Material("a", None, None), Material("b", None, None))
+    assert str(info.value) == "both bodies are rigid: at least one must have E and nu"
