@@ -11,6 +11,7 @@ turned relative to the stress), the ways that predict their error, and the texts
 
 from __future__ import annotations
 
+import inspect
 import math
 from functools import cache
 
@@ -311,6 +312,7 @@ def measured(case) -> accuracy.Measured:
 
 #: the sweeps of a numerical method over its resolution, by case and method
 SWEEPS = {
+    "hertz_force": "SciPy quad of the pressure (5.17)",
     "powerlaw_pressure_large_n": "Gauss-Legendre of the (5.59) integrand (hertzmdr: 16)",
     "numerical_mdr_force": "numerical MDR of samples",
     "stress_superposition": "superposition of (5.43) over the pressure",
@@ -324,8 +326,9 @@ def test_each_sweep_shows_what_its_resolution_buys(case):
     """A method's rows from its coarsest to its finest setting (the report's order): the
     error does not grow (beyond the roundings near 1e-15), and the coarsest is at least a
     hundred times the finest: each row is computed at the resolution it names (measured:
-    1.1e-6 to 1.7e-16 (power law), 9e-8 to 1.6e-14 (MDR), 1e-9 to 2e-16 (superposition),
-    3.7e-6 to 1e-10 (adhesion), 5.2e-6 to 2e-16 (ellipse))."""
+    3.2e-7 to 8.5e-16 (SciPy's quad, epsrel 1e-3 to 1e-12), 1.1e-6 to 1.7e-16 (power law),
+    9e-8 to 1.6e-14 (MDR), 1e-9 to 2e-16 (superposition), 3.7e-6 to 1e-10 (adhesion), 5.2e-6
+    to 2e-16 (ellipse))."""
     rows = [r for r in measured(case).rows if r.method == SWEEPS[case]]
     assert len(rows) >= 3
     errs = [r.rel_error for r in rows]
@@ -342,7 +345,8 @@ def test_the_ellipse_bound_turns_its_rtol_relative_to_the_stress():
     for r in m.rows:
         rtol = float(r.setting.removeprefix("rtol="))
         want = rtol / 0.37873169247983486760 + 64 * U15 + 1e-20
-        assert r.bound == pytest.approx(want, rel=0.03 if rtol > 1e-3 else 1e-3), r.setting
+        assert r.bound == pytest.approx(want, rel=0.03 if rtol > 1e-3 else 1e-3, abs=0), (
+            r.setting)
     # 20 digits agreed by two rules: the truth says so, and it stays far below every bound
     assert 1e-21 <= m.quantity.truth_error <= 1e-20
 
@@ -358,7 +362,7 @@ def test_a_reported_bound_is_relative_to_the_value():
     closed = rows["closed form (derive/adhesion.py)"]
     root = rows["bracketed root of the derived dF/da"]
     eps8 = 8 * 2.0**-52
-    assert closed.bound == pytest.approx(eps8 + 1e-55, rel=1e-12)
+    assert closed.bound == pytest.approx(eps8 + 1e-55, rel=1e-12, abs=0)
     assert root.bound > 1.01 * closed.bound
 
 
@@ -384,6 +388,124 @@ def test_each_case_states_its_parameters(case):
     """The report shows each quantity's name and description: they state the parameters
     the truth is computed at (checked by the routes above)."""
     q = getattr(_accuracy_cases, case)()
+    assert isinstance(q.description, str) and len(q.description) > 80
     text = f"{q.name}\n{q.description}"
     for s in STATED[case]:
         assert s in text, s
+
+
+
+#: the cases with mpmath sweeps (a method's rows at "N digits")
+DIGITS = ["hertz_force", "hertz_far_displacement", "kappa_large_n", "worn_small_depth",
+          "powerlaw_pressure_large_n", "impact_time"]
+
+
+@pytest.mark.parametrize("case", DIGITS)
+def test_each_mpmath_sweep_starts_at_float64s_precision(case):
+    """An mpmath sweep starts at 15 digits, float64's 53 bits (so its row beside the float64
+    one tells a formula's error from float64's); the report's docstring says mpmath runs at
+    15 to 100 digits: the sweeps end within that, the Hertz force's at 100."""
+    sweeps = {}
+    for w in getattr(_accuracy_cases, case)().ways():
+        if w.setting.endswith(" digits"):
+            sweeps.setdefault(w.method, []).append(int(w.setting.split()[0]))
+    assert sweeps
+    for method, dps in sweeps.items():
+        assert min(dps) == 15 and max(dps) <= 100, (method, dps)
+        assert max(dps) == 100 or case != "hertz_force", (method, dps)
+    with mp.workdps(15):
+        assert mp.mp.prec == 53
+
+
+def test_the_samples_are_those_the_description_states():
+    """The numerical MDR's profiles: f = c r^2.5 "sampled at N + 1 points on [0, 2a]" (a =
+    (d/(kappa c))^(1/n): c = 100, d = 1 um) and, with adhesion, on [0, 10 a_c] (a_c of the
+    pull-off, from dF/da = 0 (tests above): E* = 3 MPa, 0.04 J/m^2, c = 1e9); the row's
+    setting says N samples: its profile has N + 1 (the description's N intervals)."""
+    with mp.workdps(30):
+        a = float((mp.mpf(1e-6) / (kappa(2.5) * 100)) ** (1 / mp.mpf(2.5)))
+        E, dg, c, n = mp.mpf(3e6), mp.mpf(0.04), mp.mpf(1e9), mp.mpf(2.5)
+        a_c = float((3 * mp.sqrt(8 * mp.pi * dg * E) / (4 * E * n * kappa(n) * c))
+                    ** (1 / (n - mp.mpf(1) / 2)))
+    seen = 0
+    for w in _accuracy_cases.numerical_mdr_force().ways():
+        if w.method == "numerical MDR of samples":
+            prof = w.run.__defaults__[0]
+            N = int(w.setting.removesuffix(" samples"))
+            assert prof.source == f"{N + 1} samples"
+            assert prof.r_max == pytest.approx(2 * a, rel=1e-12, abs=0)
+            seen += 1
+    assert seen == 6
+    seen = 0
+    for w in _accuracy_cases.adhesive_pull_off().ways():
+        if w.method == "numerical MDR of samples, with adhesion":
+            sampled = w.run.__defaults__[0]
+            shape = inspect.getclosurevars(sampled).nonlocals["shape_"]
+            N = int(w.setting.removesuffix(" samples"))
+            assert shape.profile.source == f"{N + 1} samples"
+            # a_c as the case computes it (float64, closed form): within 1e-14 of the truth
+            assert shape.profile.r_max == pytest.approx(10 * a_c, rel=1e-13, abs=0)
+            seen += 1
+    assert seen == 4
+
+
+# -- accuracy.py: what the report prints of the rows --------------------------------------------
+
+
+def made_up(name: str, n: int) -> accuracy.Quantity:
+    """n/3 by two float64 ways (errors of a rounding, 1e-16 at most) and one 1e-3 slip."""
+    return accuracy.Quantity(name, "made up", lambda: mp.mpf(n) / 3, lambda: [
+        accuracy.Way("float", "float64", lambda: n / 3, 1e-15),
+        accuracy.Way("float", "again", lambda: n / 3, 1e-15),
+        accuracy.Way("slip", "1e-3", lambda: n * (1 + 1e-3) / 3, 2e-3)])
+
+
+def test_the_report_names_every_row_outside_and_keeps_its_tables():
+    """Two rows outside their bounds are both named, "; " between them; the headline's and
+    each quantity's table have their header and rule (markdown draws no table without); a
+    way whose error is 1e-12 exactly reaches 1e-12."""
+    from hertzmdr.numeric import _timing
+
+    q = made_up("q", 1)
+    rows = [accuracy.Row("a", "s1", 1e-12, 1e-6, (1e-6, 1e-6), 1e-13),
+            accuracy.Row("b", "s2", 1e-3, 1e-7, (1e-7, 1e-7), 1e-4),
+            accuracy.Row("c", "s3", 1e-20, 1e-3, (1e-3, 1e-3), 1e-19)]
+    text = accuracy.markdown([accuracy.Measured(q, rows)], None, _timing.QUICK)
+    lines = text.splitlines()
+    assert "1 of 3 ways within their bounds: **a (s1); b (s2)** not." in lines
+    head = lines.index("| quantity | fastest way to 1e-12 | its time | most digits | "
+                       "at what cost |")
+    assert lines[head + 1] == "| --- | --- | --- | --- | --- |"
+    assert lines[head + 2].startswith("| q | a (s1) | 1 µs |")  # 1e-12 reaches 1e-12
+    table = lines.index("## q")
+    assert lines[table + 4:table + 6] == [
+        "| method | setting | rel. error | bound | digits | time per evaluation | spread |",
+        "| --- | --- | --- | --- | --- | --- | --- |"]
+
+
+def test_main_measures_with_its_budget_and_shows_its_progress(tmp_path, monkeypatch, capsys):
+    """Without --quick the report is timed with the full budget (here made small), with it
+    the quick one, and says which; the progress bar on stderr counts the ways, one each; the
+    report's folder is made with its parents, and a second report may go to the same one."""
+    from hertzmdr.numeric import _timing
+
+    monkeypatch.setattr(accuracy, "quantities", lambda: [made_up("one third", 1)])
+    monkeypatch.setattr(_timing, "FULL", _timing.Budget(repeats=3, min_time=0.0))
+    out = tmp_path / "a" / "b" / "acc.md"
+    accuracy.main(out)
+    assert "up to 3 rounds of at least 0 s together" in out.read_text()
+    err = capsys.readouterr().err
+    assert "ways measured" in err and "3/3" in err and "/6" not in err
+    assert "way/s" in err or "s/way" in err
+    accuracy.main(out, quick=True)
+    assert "up to 2 rounds of at least 0 s together" in out.read_text()
+
+
+def test_an_unmatched_only_names_every_quantity(tmp_path, monkeypatch):
+    """The refusal of --only lists the names it could match, "; " between them."""
+    monkeypatch.setattr(accuracy, "quantities", lambda: [made_up("one third", 1),
+                                                         made_up("two thirds", 2)])
+    with pytest.raises(ValueError) as e:
+        accuracy.main(tmp_path / "acc.md", only="half", quick=True)
+    assert str(e.value) == ("only = 'half' matches no quantity; the names: one third; "
+                            "two thirds")
