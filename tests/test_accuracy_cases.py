@@ -490,15 +490,22 @@ def test_main_measures_with_its_budget_and_shows_its_progress(tmp_path, monkeypa
     from hertzmdr.numeric import _timing
 
     monkeypatch.setattr(accuracy, "quantities", lambda: [made_up("one third", 1)])
-    monkeypatch.setattr(_timing, "FULL", _timing.Budget(repeats=3, min_time=0.0))
+    full = _timing.Budget(repeats=3, min_time=0.0)
+    monkeypatch.setattr(_timing, "FULL", full)
+    budgets = []  # the budget each way is timed with
+    measure = _timing.measure
+    monkeypatch.setattr(_timing, "measure", lambda fn, b: budgets.append(b) or measure(fn, b))
     out = tmp_path / "a" / "b" / "acc.md"
     accuracy.main(out)
     assert "up to 3 rounds of at least 0 s together" in out.read_text()
+    assert budgets == [full] * 3
     err = capsys.readouterr().err
     assert "ways measured" in err and "3/3" in err and "/6" not in err
     assert "way/s" in err or "s/way" in err
+    budgets.clear()
     accuracy.main(out, quick=True)
     assert "up to 2 rounds of at least 0 s together" in out.read_text()
+    assert budgets == [_timing.QUICK] * 3
 
 
 def test_an_unmatched_only_names_every_quantity(tmp_path, monkeypatch):
@@ -509,3 +516,17 @@ def test_an_unmatched_only_names_every_quantity(tmp_path, monkeypatch):
         accuracy.main(tmp_path / "acc.md", only="half", quick=True)
     assert str(e.value) == ("only = 'half' matches no quantity; the names: one third; "
                             "two thirds")
+
+
+def test_the_domain_search_section_is_a_table(tmp_path):
+    """The section on the documented-domain search ends in a table of its record's counts:
+    header, rule, one row (markdown draws no table without the rule)."""
+    import json
+
+    record = tmp_path / "record.json"
+    record.write_text(json.dumps({"command": "c", "points_per_row": 1, "functions": 2,
+                                  "parameters": 3, "cases": 4, "failures": 5, "seconds": 6}))
+    text = accuracy.domain_search_section(record)
+    assert text.startswith("\n## Documented domains searched\n\n")
+    assert text.endswith("\n\n| functions | parameters | cases | failures | seconds |\n"
+                         "| --- | --- | --- | --- | --- |\n| 2 | 3 | 4 | 5 | 6 |\n")
