@@ -1,12 +1,21 @@
 """The result table a user reads (numeric/scene/report.py), checked against text written out by
 hand: every value with its unit and SI prefix, a force law's K in N/m^n with its n, the "near
 zero" cut of a maximum's coordinates, arrays of one, three and more values, the "> rtol (!)"
-flag and its closing line, the time in ms, and the columns' alignment."""
+flag and its closing line, the time in ms, and the columns' alignment. Then what else a user
+reads of a run: a result.json read back (echo.py) and its refusals, the assumptions' table
+(assumptions.py), and the study point a study's warning or refusal names (study.py)."""
+
+import json
 
 import pytest
 
+from hertzmdr.numeric import scene
+from hertzmdr.numeric.scene.assumptions import ASSUMPTIONS, Assumption, markdown
+from hertzmdr.numeric.scene.echo import read_result, scene_of
 from hertzmdr.numeric.scene.report import NEAR_ZERO, format_value, positions_scale, table, unit_of
 from hertzmdr.numeric.scene.runner import Result
+from hertzmdr.numeric.scene.schema import SceneError
+from hertzmdr.numeric.scene.study import VECTOR_EFFECTS
 
 MAX_VM = "{value: Pa, x: m, z: m}"
 ORTHO = "{value: Pa, x: m, z: m, y: m, value_xz: Pa, x_xz: m, z_xz: m}"
@@ -200,3 +209,303 @@ def test_table_without_misses_has_no_flag():
     text = table("t", {"kind": "sphere", "effective_modulus": 1e9, "rtol": 1e-8}, res)
     assert text.splitlines()[-1] == "force   2 N    (5.24)  1.0e-16     0.00 ms"
     assert "(!)" not in text and "warning" not in text
+
+
+# -- echo.py: reading a run's result.json back ---------------------------------------------
+
+def _result_doc(tmp_path):
+    """A result.json's document with one file it read (its SHA-256 from hashlib, by hand)."""
+    import hashlib
+
+    tip = tmp_path / "tip.csv"
+    tip.write_bytes(b"0 0\n1e-4 5e-7\n")
+    return tip, {"scene": {"title": "t", "body": [{"radius": {"value": 0.005, "unit": "m"}}]},
+                 "files": [{"key": "body[0] (tip).file", "path": str(tip),
+                            "sha256": hashlib.sha256(b"0 0\n1e-4 5e-7\n").hexdigest()}]}
+
+
+def test_result_json_gives_its_scene_back(tmp_path):
+    """The scene with each {value, unit} pair as its SI number; a document without "files"
+    (a scene that read none) is read all the same."""
+    _, doc = _result_doc(tmp_path)
+    assert scene_of(doc, "r.json") == {"title": "t", "body": [{"radius": 0.005}]}
+    del doc["files"]
+    assert read_result(json.dumps(doc), "r.json") == {"title": "t", "body": [{"radius": 0.005}]}
+
+
+def _refused(call, *args):
+    with pytest.raises(SceneError) as info:
+        call(*args)
+    return info.value.where, info.value.key, info.value.message
+
+
+def test_result_json_refusals(tmp_path):
+    """Each refusal names the document, the key and what to do."""
+    tip, doc = _result_doc(tmp_path)
+    assert _refused(read_result, json.dumps([doc]), "tour.json") == (
+        "tour.json", "scene", "a result.json of `hertzmdr run` has the scene it ran under "
+        "\"scene\"; this document has none (the tour's --json prints a list: read one scene's "
+        "result.json)")
+    assert _refused(read_result, "{\"scene\": ", "bad.json")[:2] == ("bad.json", "")
+    assert _refused(read_result, "{\"scene\": ", "bad.json")[2].startswith("JSON syntax error: ")
+    tip.write_bytes(b"0 0\n1e-4 6e-7\n")
+    assert _refused(scene_of, doc, "r.json") == (
+        "r.json", "body[0] (tip).file", f"the file {tip} changed since the run (its SHA-256 "
+        "differs): the run cannot be reproduced from it")
+    tip.unlink()
+    assert _refused(scene_of, doc, "r.json") == (
+        "r.json", "body[0] (tip).file", f"the file {tip} that the run read is gone")
+
+
+# -- assumptions.py -------------------------------------------------------------------------
+
+def test_assumption_direction_is_checked():
+    for direction in ("above", "below"):
+        Assumption("a/R", "small", 0.1, "why", "Hertz", direction)
+    with pytest.raises(ValueError) as info:
+        Assumption("a/R", "small", 0.1, "why", "Hertz", "Above")
+    assert str(info.value) == "direction = 'Above' is not 'above' or 'below'"
+
+
+def test_assumptions_markdown_has_a_row_per_assumption():
+    """The header, the separator, then one row per assumption, in ASSUMPTIONS' order."""
+    lines = markdown().splitlines()
+    assert lines[:2] == ["| ratio | assumption | limit | why this limit | measured by |",
+                         "| --- | --- | --- | --- | --- |"]
+    assert len(lines) == 2 + len(ASSUMPTIONS)
+    for line, a in zip(lines[2:], ASSUMPTIONS.values(), strict=True):
+        assert line.startswith(f"| `{a.ratio}` | {a.assumption} | ")
+
+
+# -- study.py: the points a study's messages name -------------------------------------------
+
+STEEL_BALL = {"name": "ball", "shape": "sphere", "E": "210 GPa", "nu": 0.3}
+ALU_PLATE = {"name": "plate", "shape": "flat", "E": "70 GPa", "nu": 0.33}
+
+
+@pytest.mark.parametrize("load_first", [False, True])
+def test_array_study_names_its_worst_corner(load_first):
+    """A ball's radius x force map (3 x 4, evaluated as arrays, assumptions checked at the 4
+    corners): a/R is largest at R = 0.1 mm, F = 1 kN, where the closed form
+    a = (3 F R / (4 E*))^(1/3) (5.23), written here, gives a/R = 1.0857; the message names that
+    corner and counts the 2 corners of R = 0.1 mm. The axes come in the document's order: that
+    corner is the second of the four (R first) or the third (the load first). The model keeps
+    the scene's rtol."""
+    body = {"body": [{**STEEL_BALL, "radius": {"from": "0.1 mm", "to": "10 mm", "points": 3}},
+                     ALU_PLATE]}
+    load = {"load": {"force": {"from": "1 N", "to": "1 kN", "points": 4}}}
+    doc = {"title": "s", "effects": ["force", "contact_radius"],
+           **({**load, **body} if load_first else {**body, **load}), "accuracy": {"rtol": 1e-8}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "arrays" and out["model"]["rtol"] == 1e-8
+    E_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.33**2) / 70e9)
+    R, F = 1e-4, 1e3
+    (w,) = [w for w in out["warnings"] if w["ratio"] == "a/R"]
+    # the same float operations in another order: a few ulp
+    assert w["value"] == pytest.approx((3 * F * R / (4 * E_star)) ** (1 / 3) / R, rel=1e-14)
+    at = ("load.force = 1 kN, body[0] (ball).radius = 100 µm" if load_first
+          else "body[0] (ball).radius = 100 µm, load.force = 1 kN")
+    assert w["message"].endswith("(at 2 of the 4 corners of the study, where it is checked; "
+                                 f"the largest at {at})")
+
+
+def test_study_error_names_the_point():
+    """Crossed cylinders swept from 0 deg (parallel: a line contact, which needs a length):
+    the refusal of the first point names both swept keys at that point."""
+    doc = {"title": "x", "effects": ["force"],
+           "body": [{"name": "c1", "shape": "cylinder", "radius": "20 mm", "axis": "0 deg",
+                     "E": "210 GPa", "nu": 0.3},
+                    {"name": "c2", "shape": "cylinder", "radius": "10 mm",
+                     "axis": {"from": "0 deg", "to": "90 deg", "points": 2},
+                     "E": "210 GPa", "nu": 0.3}],
+           "load": {"depth": {"from": "1 um", "to": "2 um", "points": 2}}}
+    with pytest.raises(SceneError) as info:
+        scene.load(doc).run_full()
+    assert (info.value.where, info.value.key) == ("<scene>", "body")
+    assert info.value.message == (
+        "parallel cylinders make a line contact, whose force depends on the contact length: "
+        "give the cylinder(s) a length (at the study point body[1] (c2).axis = 0 deg, "
+        "load.depth = 1 µm)")
+
+
+def test_nearly_flat_sphere_study_runs_as_arrays():
+    """A sphere of R = 100 m to 1 km (4 points) on a plate: the gap's principal radii from the
+    eigenvalues of its curvature differ by rounding (1.1e-13 m at R = 700 m, 1.6e-16 of it),
+    far inside the circular tolerance 1e-12 of R: the study runs as arrays, R at each point the
+    sphere's own radius to that rounding (a few ulp)."""
+    doc = {"title": "s", "effects": ["effective_radius"],
+           "body": [{**STEEL_BALL, "radius": {"from": "100 m", "to": "1 km", "points": 4}},
+                    ALU_PLATE],
+           "load": {"force": "1 N"}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "arrays"
+    assert out["effects"]["effective_radius"]["value"] == \
+        pytest.approx([100.0, 400.0, 700.0, 1000.0], rel=1e-15)
+
+
+# -- study.py: a bad sweep is refused in one line naming the key -----------------------------
+
+def _sweep_refusal(radius):
+    doc = {"title": "s", "effects": ["force"], "body": [{**STEEL_BALL, "radius": radius},
+                                                        ALU_PLATE], "load": {"force": "1 N"}}
+    with pytest.raises(SceneError) as info:
+        scene.load(doc)
+    return info.value.key, info.value.message
+
+
+@pytest.mark.parametrize("radius, key, message", [
+    ({"from": "1 mm", "to": "2 mm"}, "body[0] (ball).radius.points",
+     "missing: a sweep is {from, to, points} (and optionally spacing = \"linear\" or \"log\")"),
+    ({"from": "1 mm", "to": "2 mm", "points": 1}, "body[0] (ball).radius.points",
+     "must be an integer in [2, 100000], got 1"),
+    ({"from": "1 mm", "to": "2 mm", "points": 100_001}, "body[0] (ball).radius.points",
+     "must be an integer in [2, 100000], got 100001"),
+    ({"from": "1 mm", "to": "2 mm", "points": True}, "body[0] (ball).radius.points",
+     "must be an integer in [2, 100000], got True"),
+    ({"from": "1 mm", "to": "2 mm", "points": 3.0}, "body[0] (ball).radius.points",
+     "must be an integer in [2, 100000], got 3.0"),
+    ({"from": "1 mm", "to": "2 mm", "points": 3, "spacing": "cubic"},
+     "body[0] (ball).radius.spacing", "must be \"linear\" or \"log\", got 'cubic'"),
+    ({"from": "2 mm", "to": "2 mm", "points": 3}, "body[0] (ball).radius",
+     "a sweep needs from < to, got 0.002 and 0.002"),
+])
+def test_bad_sweep(radius, key, message):
+    assert _sweep_refusal(radius) == (key, message)
+
+
+def test_bad_sweep_of_a_number_and_of_log_spacing():
+    doc = {"title": "s", "effects": ["force"],
+           "body": [{**STEEL_BALL, "radius": "1 mm", "nu": {"from": "0.1", "to": 0.4,
+                                                            "points": 2}}, dict(ALU_PLATE)],
+           "load": {"force": "1 N"}}
+    with pytest.raises(SceneError) as info:
+        scene.load(doc)
+    assert (info.value.key, info.value.message) == ("body[0] (ball).nu.from",
+                                                    "must be a finite number, got '0.1'")
+    doc["body"][0]["nu"] = 0.3
+    doc["body"][1]["E"] = {"from": "0 GPa", "to": "70 GPa", "points": 3, "spacing": "log"}
+    with pytest.raises(SceneError) as info:
+        scene.load(doc)
+    assert (info.value.key, info.value.message) == ("body[1] (plate).E.spacing",
+                                                    "log spacing needs 0 < from, got 0")
+
+
+@pytest.mark.parametrize("points", [2, 100_000])
+def test_sweep_points_at_the_limits(points):
+    """2 and 100000 points are both accepted (the closed range the refusal names)."""
+    doc = {"title": "s", "effects": ["force"],
+           "body": [{**STEEL_BALL, "radius": {"from": "1 mm", "to": "2 mm", "points": points}},
+                    ALU_PLATE], "load": {"force": "1 N"}}
+    spec = scene.load(doc).spec
+    (axis,) = spec.study.axes
+    assert len(axis.values) == points and axis.values[0] == 1e-3 and axis.values[-1] == 2e-3
+
+
+def test_per_point_study_of_a_cone():
+    """A rigid cone's slope angle swept 2, 6, 10 deg (run point by point: a cone is no array
+    contact): each point's force is Sneddon's 2 E* d^2 / (pi tan(theta)) (5.38), written here;
+    the model keeps what changes per point as a list; the slope warning counts the 2 points
+    past tan(theta) = 0.1 and names the steepest; every point's effects were evaluated."""
+    import math
+
+    doc = {"title": "c", "effects": ["force", "contact_radius"],
+           "body": [{"name": "tip", "shape": "cone", "rigid": True,
+                     "angle": {"from": "2 deg", "to": "10 deg", "points": 3}},
+                    dict(ALU_PLATE)],
+           "load": {"depth": "1 um"}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "per point" and record.evaluated.count("force") == 3
+    E_star, d = 70e9 / (1 - 0.33**2), 1e-6
+    angles = [math.radians(t) for t in (2.0, 6.0, 10.0)]
+    # closed forms of the same floats in another order: a few ulp
+    assert out["effects"]["force"]["value"] == pytest.approx(
+        [2 * E_star * d**2 / (math.pi * math.tan(t)) for t in angles], rel=1e-14)
+    assert isinstance(out["effects"]["force"]["seconds"], float)
+    assert out["model"]["kind"] == "cone"
+    assert out["model"]["angle"] == pytest.approx(angles, rel=1e-15)
+    assert 0 < out["study"]["seconds"] < 60  # a wall-clock time of this run, not a clock
+    (w,) = out["warnings"]
+    assert w["ratio"] == "tan(theta)" and w["value"] == pytest.approx(math.tan(angles[2]),
+                                                                      rel=1e-15)
+    assert w["message"].endswith("(at 2 of 3 points; the largest at body[0] (tip).angle = "
+                                 "10 deg)")
+
+
+@pytest.mark.parametrize("sweep, effects", [
+    ("E", sorted(VECTOR_EFFECTS)),   # every effect the arrays have, stress maxima included
+    ("nu", ["force"]),               # nu swept, no stress maximum asked for
+])
+def test_material_sweeps_run_as_arrays(sweep, effects):
+    """A ball's E (100 to 300 GPa) or nu (0.2 to 0.4) swept on a rigid plate at a depth of
+    1 um: one array evaluation, each point's force Hertz's (4/3) E* sqrt(R) d^1.5 (5.22),
+    written here, with E* = E / (1 - nu^2)."""
+    import math
+
+    ball = {**STEEL_BALL, "radius": "5 mm"}
+    ball[sweep] = ({"from": "100 GPa", "to": "300 GPa", "points": 3} if sweep == "E"
+                   else {"from": 0.2, "to": 0.4, "points": 3})
+    doc = {"title": "s", "effects": effects,
+           "body": [ball, {"name": "plate", "shape": "flat", "rigid": True}],
+           "load": {"depth": "1 um"}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "arrays"
+    E = [100e9, 200e9, 300e9] if sweep == "E" else [210e9] * 3
+    nu = [0.3] * 3 if sweep == "E" else [0.2, 0.3, 0.4]
+    R, d = 5e-3, 1e-6
+    # the same closed form, its floats in another order: a few ulp
+    assert out["effects"]["force"]["value"] == pytest.approx(
+        [4 / 3 * e / (1 - n**2) * math.sqrt(R) * d**1.5 for e, n in zip(E, nu, strict=True)],
+        rel=1e-14)
+
+
+def test_friction_sweep():
+    """The coefficient of friction swept 0.2, 0.4, 0.6 under 10 N (point by point: the
+    tangential effects are no array effect): the sliding force mu F (Amontons) at each point."""
+    doc = {"title": "f", "effects": ["sliding_force"],
+           "body": [{**STEEL_BALL, "radius": "5 mm"}, dict(ALU_PLATE)],
+           "interface": {"friction": {"from": 0.2, "to": 0.6, "points": 3}},
+           "load": {"force": "10 N"}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "per point"
+    # 0.2 + 0.4 i / 2 in floats against 0.2, 0.4, 0.6 times 10: a rounding apart
+    assert out["effects"]["sliding_force"]["value"] == pytest.approx([2.0, 4.0, 6.0], rel=1e-15)
+
+
+def test_adhesive_study_keeps_its_adhesion():
+    """A sphere of R = 1 and 2 mm with a work of adhesion of 50 mJ/m^2 at a depth of 1 um:
+    an adhesive contact, run point by point, never the arrays of plain Hertz: each point's
+    force lies below Hertz's (4/3) E* sqrt(R) d^1.5 (5.22): the adhesive pull, 6e-5 of the force
+    between these stiff bodies, far above rounding (1e-15)."""
+    import math
+
+    doc = {"title": "a", "effects": ["force"],
+           "body": [{**STEEL_BALL, "radius": {"from": "1 mm", "to": "2 mm", "points": 2}},
+                    dict(ALU_PLATE)],
+           "interface": {"work_of_adhesion": "0.05 J/m^2"},
+           "load": {"depth": "1 um"}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "per point"
+    E_star = 1 / ((1 - 0.3**2) / 210e9 + (1 - 0.33**2) / 70e9)
+    hertz = [4 / 3 * E_star * math.sqrt(R) * 1e-6**1.5 for R in (1e-3, 2e-3)]
+    assert all(f < (1 - 3e-5) * h for f, h in zip(out["effects"]["force"]["value"], hertz,
+                                            strict=True))
+
+
+def test_per_point_study_with_a_load_sweep():
+    """A rigid cone's slope angle (2, 10 deg) times the depth (1, 2 um), point by point: each
+    point runs its own single depth, Sneddon's 2 E* d^2 / (pi tan(theta)) (5.38), written
+    here."""
+    import math
+
+    doc = {"title": "c", "effects": ["force"],
+           "body": [{"name": "tip", "shape": "cone", "rigid": True,
+                     "angle": {"from": "2 deg", "to": "10 deg", "points": 2}},
+                    dict(ALU_PLATE)],
+           "load": {"depth": {"from": "1 um", "to": "2 um", "points": 2}}}
+    record, _, out = scene.load(doc).run_full()
+    assert record.route == "per point"
+    E_star = 70e9 / (1 - 0.33**2)
+    want = [2 * E_star * d**2 / (math.pi * math.tan(math.radians(t)))
+            for t in (2.0, 10.0) for d in (1e-6, 2e-6)]
+    # closed forms of the same floats in another order: a few ulp
+    assert out["effects"]["force"]["value"] == pytest.approx(want, rel=1e-14)
