@@ -421,6 +421,9 @@ def test_per_point_study_of_a_cone():
     assert out["effects"]["force"]["value"] == pytest.approx(
         [2 * E_star * d**2 / (math.pi * math.tan(t)) for t in angles], rel=1e-14)
     assert isinstance(out["effects"]["force"]["seconds"], float)
+    # one method text for the three points, each met rtol
+    assert out["effects"]["force"]["method"] == "(5.38)-(5.40)"
+    assert out["effects"]["force"]["met_rtol"] is True and record.results["force"].name == "force"
     assert out["model"]["kind"] == "cone"
     assert out["model"]["angle"] == pytest.approx(angles, rel=1e-15)
     assert 0 < out["study"]["seconds"] < 60  # a wall-clock time of this run, not a clock
