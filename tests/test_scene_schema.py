@@ -327,17 +327,26 @@ def test_history_forces_in_si_and_in_units(tmp_path, monkeypatch):
     assert scaled.load.tangential.history.values == approx((0.0, 1e-6, -2.5e-6))
 
 
-def test_history_file_beside_a_scene_file(tmp_path, monkeypatch):
-    """A scene file's history is named relative to the scene's folder, not to cwd."""
+def scene_in_a_folder(tmp_path, monkeypatch, data: str, tables: str):
+    """A scene file scenes/s.toml with a data file scenes/<data name> beside it (data: the
+    name, a colon, its text), read with the current folder elsewhere (tmp_path)."""
     folder = tmp_path / "scenes"
     folder.mkdir()
-    (folder / "h.csv").write_text("1, 2\n3, 4\n")
+    name, text = data.split(":", 1)
+    (folder / name).write_text(text)
     (folder / "s.toml").write_text(
         'effects = ["force"]\n[[body]]\nshape = "sphere"\nradius = 1e-3\nrigid = true\n'
-        '[[body]]\nshape = "flat"\nE = 1e9\nnu = 0.3\n'
-        '[load.history]\nfile = "h.csv"\nnormal = "depth"\ntangential = "force"\n')
+        '[[body]]\nshape = "flat"\nE = 1e9\nnu = 0.3\n' + tables)
     monkeypatch.chdir(tmp_path)
-    ld = scene.load(folder / "s.toml").spec.load
+    return folder, scene.load(folder / "s.toml").spec
+
+
+def test_history_file_beside_a_scene_file(tmp_path, monkeypatch):
+    """A scene file's history is named relative to the scene's folder, not to cwd."""
+    _, spec = scene_in_a_folder(
+        tmp_path, monkeypatch, "h.csv:1, 2\n3, 4\n",
+        '[load.history]\nfile = "h.csv"\nnormal = "depth"\ntangential = "force"\n')
+    ld = spec.load
     assert ld.values == [1.0, 3.0] and ld.tangential.history.values == (2.0, 4.0)
 
 
@@ -476,15 +485,10 @@ def test_fit_curve_folder_and_fixed_contact_point(tmp_path, monkeypatch):
 
 
 def test_fit_curve_beside_a_scene_file(tmp_path, monkeypatch):
-    folder = tmp_path / "scenes"
-    folder.mkdir()
-    (folder / "c.csv").write_text("0, 0\n")
-    (folder / "s.toml").write_text(
-        'effects = ["force"]\n[[body]]\nshape = "sphere"\nradius = 1e-3\nrigid = true\n'
-        '[[body]]\nshape = "flat"\nE = 1e9\nnu = 0.3\n[load]\ndepth = 1e-9\n'
-        '[fit]\ncurve = "c.csv"\n')
-    monkeypatch.chdir(tmp_path)
-    assert scene.load(folder / "s.toml").spec.fit.curve == folder / "c.csv"
+    """[fit] curve is named relative to the scene's folder too."""
+    folder, spec = scene_in_a_folder(tmp_path, monkeypatch, "c.csv:0, 0\n",
+                                     '[load]\ndepth = 1e-9\n[fit]\ncurve = "c.csv"\n')
+    assert spec.fit.curve == folder / "c.csv"
 
 
 COLUMNS = "must be the header names of two different columns, position then force, e.g. " \
